@@ -1,0 +1,19 @@
+//! Vectors, matrices and quaternions.
+//!
+//! Conventions used throughout rasterm: column vectors (`m * v`), matrices stored by columns, right-handed
+//! coordinates, angles in radians. All non-trivial float functions go through [`float`], which calls `libm`.
+
+pub(crate) mod float;
+mod mat3;
+mod mat4;
+mod quat;
+mod vec2;
+mod vec3;
+mod vec4;
+
+pub use mat3::Mat3;
+pub use mat4::Mat4;
+pub use quat::Quat;
+pub use vec2::Vec2;
+pub use vec3::Vec3;
+pub use vec4::Vec4;

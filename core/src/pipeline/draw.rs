@@ -1,0 +1,254 @@
+//! A draw call: mesh → vertex stage → clip → raster → fragment → target.
+
+use super::clip::{CLIP_MASK, ClipVertex, ClipVolume};
+use super::depth_stage::{DepthLess, DepthOff, DepthStage, DynamicDepth};
+use super::interpolator::{Affine, DynamicInterpolator, Interpolator, PerspectiveCorrect};
+use super::raster::{Rasterizer, ScreenVertex, Setup, Stages};
+use super::{DepthTest, DrawState, DrawStats, Interpolation, MAX_SUBPIXEL_BITS, Shader, Varyings};
+use crate::mesh::{Attributes, Mesh};
+use crate::target::{ColorBuffer, DepthBuffer, Target};
+
+/// Why a draw was refused (nothing was drawn).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DrawError {
+    /// The shader reads a vertex attribute the mesh does not have.
+    MissingAttributes {
+        /// What the shader reads.
+        needed: Attributes,
+        /// What the mesh has.
+        present: Attributes,
+    },
+    /// [`DrawState::subpixel_bits`] is above [`MAX_SUBPIXEL_BITS`].
+    SubpixelBits(u8),
+}
+
+impl core::fmt::Display for DrawError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Self::MissingAttributes { needed, present } => {
+                write!(
+                    f,
+                    "the shader needs mesh attributes {needed:?} but the mesh has {present:?}"
+                )
+            }
+            Self::SubpixelBits(b) => write!(
+                f,
+                "{b} sub-pixel bits requested, at most {MAX_SUBPIXEL_BITS} supported"
+            ),
+        }
+    }
+}
+
+/// Draws the triangles of `mesh` with `shader` into `target`.
+///
+/// The interpolation mode and the depth test of `state` select one of four compiled pixel loops, once for the
+/// whole draw; together with the shader type that makes a loop that does exactly what this draw needs.
+///
+/// # Errors
+/// [`DrawError`] when the mesh lacks an attribute the shader reads or the state is out of range. Bad triangles
+/// (indices out of range, NaN or infinite values) are skipped and counted instead.
+///
+/// # Examples
+/// ```
+/// use rasterm_core::{math::{Vec3, Vec4}, mesh::{Attributes, Indices, Mesh}, pipeline::*, target::*};
+///
+/// /// Positions are already in clip space; every pixel is red.
+/// struct Red;
+/// impl Shader for Red {
+///     type Varyings = ();
+///     type Face = ();
+///     const ATTRIBUTES: Attributes = Attributes::NONE;
+///     fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, ()) {
+///         (mesh.position(i).extend(1.0), ())
+///     }
+///     fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
+///     fn fragment(&self, _: &Fragment, _: &(), _: &()) -> Vec3 {
+///         Vec3::new(1.0, 0.0, 0.0)
+///     }
+/// }
+///
+/// let positions = [Vec3::new(-1.0, -1.0, 0.5), Vec3::new(1.0, -1.0, 0.5), Vec3::new(-1.0, 1.0, 0.5)];
+/// let mesh = Mesh::new(&positions, Indices::Sequential).unwrap();
+/// let (mut color, mut depth) = ([0u32; 16], [0f32; 16]);
+/// let mut target = Target::new(Rgb888(&mut color), &mut depth[..], 4, 4).unwrap();
+/// target.clear(Vec3::ZERO);
+/// let stats = draw(&mut target, &mesh, &Red, &DrawState::default()).unwrap();
+/// // The lower-left half of 4x4. The 4 centres on the diagonal lie on its right edge: the top-left rule leaves
+/// // them to a neighbour, so 0 + 1 + 2 + 3 pixels remain.
+/// assert_eq!(stats.fragments, 6);
+/// assert_eq!(color[12], 0xFF0000);
+/// ```
+pub fn draw<S, C, D>(
+    target: &mut Target<C, D>,
+    mesh: &Mesh<'_>,
+    shader: &S,
+    state: &DrawState,
+) -> Result<DrawStats, DrawError>
+where
+    S: Shader,
+    C: ColorBuffer,
+    D: DepthBuffer,
+{
+    check(mesh, S::ATTRIBUTES, state)?;
+    use {DepthTest as T, Interpolation as I};
+    Ok(match (state.interpolation, state.depth_test) {
+        (I::PerspectiveCorrect, T::Less) => {
+            run(target, mesh, shader, state, PerspectiveCorrect, DepthLess)
+        }
+        (I::PerspectiveCorrect, T::Off) => {
+            run(target, mesh, shader, state, PerspectiveCorrect, DepthOff)
+        }
+        (I::Affine, T::Less) => run(target, mesh, shader, state, Affine, DepthLess),
+        (I::Affine, T::Off) => run(target, mesh, shader, state, Affine, DepthOff),
+    })
+}
+
+/// Like [`draw`], but through one general pixel loop that decides interpolation and depth test per pixel.
+///
+/// Slower, and otherwise identical to the pixel: it exists so tests can prove that the specialised loops compute
+/// exactly what the general one does, and benchmarks can show what specialising saves.
+///
+/// # Errors
+/// As [`draw`].
+pub fn draw_unspecialised<S, C, D>(
+    target: &mut Target<C, D>,
+    mesh: &Mesh<'_>,
+    shader: &S,
+    state: &DrawState,
+) -> Result<DrawStats, DrawError>
+where
+    S: Shader,
+    C: ColorBuffer,
+    D: DepthBuffer,
+{
+    check(mesh, S::ATTRIBUTES, state)?;
+    let (interpolator, depth) = (
+        DynamicInterpolator(state.interpolation),
+        DynamicDepth(state.depth_test),
+    );
+    Ok(run(target, mesh, shader, state, interpolator, depth))
+}
+
+fn check(mesh: &Mesh<'_>, needed: Attributes, state: &DrawState) -> Result<(), DrawError> {
+    let present = mesh.attributes();
+    if !present.contains(needed) {
+        return Err(DrawError::MissingAttributes { needed, present });
+    }
+    if state.subpixel_bits > MAX_SUBPIXEL_BITS {
+        return Err(DrawError::SubpixelBits(state.subpixel_bits));
+    }
+    Ok(())
+}
+
+/// What happened to the pieces of one input triangle, to count it once in [`DrawStats`].
+#[derive(Default)]
+struct Outcome {
+    rasterized: bool,
+    culled: bool,
+    degenerate: bool,
+}
+
+impl Outcome {
+    fn record(self, stats: &mut DrawStats) {
+        if self.rasterized {
+            stats.rasterized += 1;
+        } else if self.culled {
+            stats.culled += 1;
+        } else if self.degenerate {
+            stats.degenerate += 1;
+        } else {
+            stats.outside += 1;
+        }
+    }
+}
+
+/// The draw loop, monomorphised on the shader, the interpolator and the depth stage.
+fn run<S, C, D, I, Z>(
+    target: &mut Target<C, D>,
+    mesh: &Mesh<'_>,
+    shader: &S,
+    state: &DrawState,
+    interpolator: I,
+    depth: Z,
+) -> DrawStats
+where
+    S: Shader,
+    C: ColorBuffer,
+    D: DepthBuffer,
+    I: Interpolator,
+    Z: DepthStage,
+{
+    let rows = target.rows();
+    let volume = ClipVolume::new(target.width(), target.height(), rows.start, rows.end);
+    let raster = Rasterizer::new(target, state.subpixel_bits, state.cull, state.front_face);
+    let stages = Stages {
+        shader,
+        interpolator,
+        depth,
+    };
+    let mut stats = DrawStats::default();
+
+    for t in 0..mesh.triangle_count() {
+        stats.triangles_in += 1;
+        let Some(indices) = mesh.triangle(t) else {
+            stats.invalid += 1;
+            continue;
+        };
+        let verts = indices.map(|i| {
+            let (pos, var) = shader.vertex(mesh, i);
+            ClipVertex { pos, var }
+        });
+        if !verts.iter().all(|v| v.pos.is_finite() && v.var.is_finite()) {
+            stats.invalid += 1;
+            continue;
+        }
+        let codes = verts.map(|v| volume.outcode(v.pos));
+        if codes[0] & codes[1] & codes[2] != 0 {
+            stats.outside += 1;
+            continue;
+        }
+
+        let mut face = None;
+        let mut outcome = Outcome::default();
+        let mut fragments = 0;
+        let mut piece =
+            |tri: [&ScreenVertex<S::Varyings>; 3], target: &mut Target<C, D>| match raster
+                .setup(tri)
+            {
+                Setup::Degenerate => outcome.degenerate = true,
+                Setup::Culled => outcome.culled = true,
+                Setup::Empty => outcome.rasterized = true,
+                Setup::Ready(triangle) => {
+                    outcome.rasterized = true;
+                    let face = face.get_or_insert_with(|| shader.face(mesh, indices));
+                    fragments += triangle.fill(&stages, face, target);
+                }
+            };
+
+        let clip_mask = (codes[0] | codes[1] | codes[2]) & CLIP_MASK;
+        if clip_mask == 0 {
+            if let [Some(a), Some(b), Some(c)] = verts.each_ref().map(|v| raster.snap(v)) {
+                piece([&a, &b, &c], target);
+            }
+        } else {
+            stats.clipped += 1;
+            let polygon = volume.clip(&verts, clip_mask);
+            let mut snapped = [None; super::clip::MAX_CLIPPED];
+            for (s, v) in snapped.iter_mut().zip(polygon.vertices()) {
+                *s = raster.snap(v);
+            }
+            let n = polygon.vertices().len();
+            if let Some(Some(first)) = snapped.first() {
+                // A convex polygon is a fan around its first vertex.
+                for i in 1..n.saturating_sub(1) {
+                    if let (Some(b), Some(c)) = (&snapped[i], &snapped[i + 1]) {
+                        piece([first, b, c], target);
+                    }
+                }
+            }
+        }
+        stats.fragments += fragments;
+        outcome.record(&mut stats);
+    }
+    stats
+}

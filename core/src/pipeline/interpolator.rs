@@ -1,0 +1,82 @@
+//! Barycentric weights per pixel, perspective-correct or affine, chosen once per draw.
+//!
+//! The rasterizer hands over each covered pixel's three edge-function values `e_k` (proportional to the
+//! screen-space barycentric coordinates) and an interpolator turns them into the weights `(w1, w2)` of vertices 1
+//! and 2 for [`super::Varyings::interpolate`].
+
+use super::Interpolation;
+
+/// Turns a pixel's edge-function values into varying weights.
+pub(crate) trait Interpolator: Copy {
+    /// Per-triangle constants.
+    type Setup: Copy;
+    /// Prepares a triangle from its vertices' `1/w` and the reciprocal of its doubled screen area.
+    fn setup(&self, inv_w: [f32; 3], inv_area: f32) -> Self::Setup;
+    /// The weights of vertices 1 and 2 at a pixel with edge-function values `e`.
+    fn weights(&self, setup: &Self::Setup, e: [f32; 3]) -> (f32, f32);
+}
+
+/// Perspective-correct: `w_k = (e_k / w_k) / sum_j (e_j / w_j)` (Heckbert and Moreton, "Interpolation for
+/// Polygon Texture Mapping and Shading", 1991). One division per pixel.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct PerspectiveCorrect;
+
+impl Interpolator for PerspectiveCorrect {
+    type Setup = [f32; 3];
+
+    #[inline(always)]
+    fn setup(&self, inv_w: [f32; 3], _: f32) -> [f32; 3] {
+        // Only the ratios matter: scale so the largest is 1, which keeps the per-pixel sum away from underflow.
+        let m = crate::math::float::max(inv_w[0], crate::math::float::max(inv_w[1], inv_w[2]));
+        [inv_w[0] / m, inv_w[1] / m, inv_w[2] / m]
+    }
+
+    #[inline(always)]
+    fn weights(&self, q: &[f32; 3], e: [f32; 3]) -> (f32, f32) {
+        let (l0, l1, l2) = (e[0] * q[0], e[1] * q[1], e[2] * q[2]);
+        let r = 1.0 / (l0 + l1 + l2);
+        (l1 * r, l2 * r)
+    }
+}
+
+/// Affine (screen-space linear): `w_k = e_k / area`. No division per pixel.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Affine;
+
+impl Interpolator for Affine {
+    type Setup = f32;
+
+    #[inline(always)]
+    fn setup(&self, _: [f32; 3], inv_area: f32) -> f32 {
+        inv_area
+    }
+
+    #[inline(always)]
+    fn weights(&self, inv_area: &f32, e: [f32; 3]) -> (f32, f32) {
+        (e[1] * inv_area, e[2] * inv_area)
+    }
+}
+
+/// Either of the above, decided per pixel: the general path that the specialised ones are tested against.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct DynamicInterpolator(pub Interpolation);
+
+impl Interpolator for DynamicInterpolator {
+    type Setup = ([f32; 3], f32);
+
+    #[inline(always)]
+    fn setup(&self, inv_w: [f32; 3], inv_area: f32) -> Self::Setup {
+        (
+            PerspectiveCorrect.setup(inv_w, inv_area),
+            Affine.setup(inv_w, inv_area),
+        )
+    }
+
+    #[inline(always)]
+    fn weights(&self, setup: &Self::Setup, e: [f32; 3]) -> (f32, f32) {
+        match self.0 {
+            Interpolation::PerspectiveCorrect => PerspectiveCorrect.weights(&setup.0, e),
+            Interpolation::Affine => Affine.weights(&setup.1, e),
+        }
+    }
+}

@@ -1,0 +1,39 @@
+//! The rendering pipeline: vertex stage, clipping, rasterization, depth test, fragment stage.
+//!
+//! Data flow of a [`draw`]:
+//!
+//! 1. **Vertex stage** ([`Shader::vertex`]): each triangle's three vertices to clip space, plus [`Varyings`].
+//!    Triangles with an index out of range or a non-finite value are skipped.
+//! 2. **Clip** ([`clip`](self#clipping)): rejected when all vertices are outside one plane of the view volume or
+//!    the target's rows; cut when crossing the near or far plane or the guard band.
+//! 3. **Raster** ([`raster`](self#rasterization)): divide by `w`, snap to fixed point, cull by winding, walk the
+//!    covered pixel centres with exact integer edge functions and the top-left rule.
+//! 4. **Fragment**: depth test ([`DepthTest`]), interpolation ([`Interpolation`]), [`Shader::fragment`], write.
+//!
+//! # Clipping
+//! Near plane `z >= 0`, far plane `z <= w`, and a guard band of ±[`GUARD_BAND`] pixels in x and y; see the
+//! `clip` module source for the details.
+//!
+//! # Rasterization
+//! Vertices snap to `2^-subpixel_bits` of a pixel; coverage is exact in `i64`; pixel centres at
+//! `(x + 0.5, y + 0.5)`; top-left fill rule (Direct3D 11.3 functional specification, 3.4.2.1). Depth is linear in
+//! screen space; varyings are perspective-correct or affine.
+
+mod clip;
+mod depth_stage;
+mod draw;
+mod interpolator;
+mod line;
+mod raster;
+mod shader;
+mod state;
+mod stats;
+mod varyings;
+
+pub use clip::GUARD_BAND;
+pub use draw::{DrawError, draw, draw_unspecialised};
+pub use line::{LineStyle, draw_wireframe};
+pub use shader::{Fragment, Shader};
+pub use state::{Cull, DepthTest, DrawState, Interpolation, MAX_SUBPIXEL_BITS, Winding};
+pub use stats::DrawStats;
+pub use varyings::Varyings;

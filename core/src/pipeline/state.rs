@@ -1,0 +1,92 @@
+//! Fixed-function settings of a draw.
+
+/// Which winding counts as front-facing, judged in NDC (`+y` up) as seen by the camera.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Winding {
+    /// Counter-clockwise triangles face the camera (the OpenGL and OBJ convention).
+    #[default]
+    CounterClockwise,
+    /// Clockwise triangles face the camera.
+    Clockwise,
+}
+
+impl Winding {
+    /// The other winding.
+    pub fn flipped(self) -> Self {
+        match self {
+            Self::CounterClockwise => Self::Clockwise,
+            Self::Clockwise => Self::CounterClockwise,
+        }
+    }
+}
+
+/// Which triangles to discard by facing.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Cull {
+    /// Draw both sides.
+    None,
+    /// Discard triangles facing away from the camera.
+    #[default]
+    Back,
+    /// Discard triangles facing the camera.
+    Front,
+}
+
+/// The depth test.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum DepthTest {
+    /// Keep a fragment when its depth is less than the stored one, and store it (see [`crate::target`]).
+    #[default]
+    Less,
+    /// Neither read nor write the depth buffer.
+    Off,
+}
+
+/// How varyings are interpolated across a triangle.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Interpolation {
+    /// Perspective-correct: linear in 3D, so textures do not swim. One division per pixel.
+    #[default]
+    PerspectiveCorrect,
+    /// Linear in screen space: exact when every vertex has the same `w` (an orthographic projection), a
+    /// visible approximation otherwise. No division per pixel.
+    Affine,
+}
+
+/// Largest supported number of sub-pixel bits.
+pub const MAX_SUBPIXEL_BITS: u8 = 8;
+
+/// The fixed-function state of a draw.
+///
+/// # Examples
+/// ```
+/// use rasterm_core::pipeline::{Cull, DrawState};
+/// let state = DrawState { cull: Cull::None, ..DrawState::default() };
+/// assert_eq!(state.subpixel_bits, 8);
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DrawState {
+    /// Which faces to discard.
+    pub cull: Cull,
+    /// Which winding faces the camera.
+    pub front_face: Winding,
+    /// The depth test.
+    pub depth_test: DepthTest,
+    /// How varyings are interpolated.
+    pub interpolation: Interpolation,
+    /// Fractional bits of the fixed-point screen coordinates that vertices snap to, `0..=8` (D3D uses 8, Vulkan
+    /// requires at least 4). More bits place edges more precisely; fewer make slivers pop.
+    pub subpixel_bits: u8,
+}
+
+impl Default for DrawState {
+    fn default() -> Self {
+        Self {
+            cull: Cull::Back,
+            front_face: Winding::CounterClockwise,
+            depth_test: DepthTest::Less,
+            interpolation: Interpolation::PerspectiveCorrect,
+            subpixel_bits: MAX_SUBPIXEL_BITS,
+        }
+    }
+}

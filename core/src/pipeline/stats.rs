@@ -1,0 +1,40 @@
+//! What a draw did.
+
+use core::ops::AddAssign;
+
+/// Counts from one draw (or several, added up).
+///
+/// Every input triangle ends in exactly one of `invalid`, `outside`, `culled`, `degenerate` and `rasterized`;
+/// `clipped` counts, in addition, the triangles that had to be clipped on their way.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct DrawStats {
+    /// Triangles submitted.
+    pub triangles_in: u64,
+    /// Skipped: an index out of range, or a NaN or infinite position or varying.
+    pub invalid: u64,
+    /// Entirely outside the view volume or the target's rows.
+    pub outside: u64,
+    /// Discarded by face culling.
+    pub culled: u64,
+    /// Zero area once snapped to the sub-pixel grid.
+    pub degenerate: u64,
+    /// Crossed the near or far plane or the guard band and were clipped.
+    pub clipped: u64,
+    /// Reached the pixel loop (they may still cover no pixel centre).
+    pub rasterized: u64,
+    /// Fragments that passed the depth test and were shaded.
+    pub fragments: u64,
+}
+
+impl AddAssign for DrawStats {
+    fn add_assign(&mut self, o: Self) {
+        self.triangles_in += o.triangles_in;
+        self.invalid += o.invalid;
+        self.outside += o.outside;
+        self.culled += o.culled;
+        self.degenerate += o.degenerate;
+        self.clipped += o.clipped;
+        self.rasterized += o.rasterized;
+        self.fragments += o.fragments;
+    }
+}

@@ -1,0 +1,52 @@
+//! What every lit shader knows about the surface it shades.
+
+use super::{Lighting, Material, Transforms};
+use crate::math::{Vec3, Vec4};
+use crate::mesh::Mesh;
+
+/// Transforms, material and lights of a lit draw.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Surface<'a> {
+    /// The draw's matrices.
+    pub transforms: Transforms,
+    /// The surface material.
+    pub material: Material,
+    /// The scene's lights.
+    pub lighting: Lighting<'a>,
+}
+
+impl Surface<'_> {
+    /// Clip-space position of a vertex.
+    #[inline(always)]
+    pub(crate) fn clip(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+        self.transforms
+            .clip_from_object
+            .project_point(mesh.position(i))
+    }
+
+    /// World-space position of a vertex.
+    #[inline(always)]
+    pub(crate) fn world(&self, mesh: &Mesh<'_>, i: usize) -> Vec3 {
+        self.transforms.model.transform_point(mesh.position(i))
+    }
+
+    /// Unit world-space normal of a vertex (zero if the normal is zero).
+    #[inline(always)]
+    pub(crate) fn normal(&self, mesh: &Mesh<'_>, i: usize) -> Vec3 {
+        (self.transforms.normal * mesh.normal(i)).normalize_or_zero()
+    }
+
+    /// Unit vector from a world-space point toward the camera.
+    #[inline(always)]
+    pub(crate) fn to_eye(&self, world: Vec3) -> Vec3 {
+        (self.transforms.eye - world).normalize_or_zero()
+    }
+
+    /// The specular highlight at a point with unit normal `n`, times the material's specular colour.
+    #[inline(always)]
+    pub(crate) fn highlight(&self, n: Vec3, world: Vec3) -> Vec3 {
+        let m = &self.material;
+        m.specular
+            .mul_elem(self.lighting.specular(n, self.to_eye(world), m.shininess))
+    }
+}

@@ -1,0 +1,42 @@
+//! The matrices a lit draw needs, derived once per draw.
+
+use crate::math::{Mat3, Mat4, Vec3};
+
+/// Object-to-world, object-to-clip and normal transforms, and the camera position.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Transforms {
+    /// Object space to world space.
+    pub model: Mat4,
+    /// Object space to clip space: `projection * view * model`.
+    pub clip_from_object: Mat4,
+    /// Object-space normals to world space: the model's [`Mat4::normal_matrix`].
+    pub normal: Mat3,
+    /// Camera position in world space (for specular highlights).
+    pub eye: Vec3,
+    /// True when the projection is orthographic (`w` is the same everywhere).
+    pub orthographic: bool,
+}
+
+impl Transforms {
+    /// Derives the transforms from model, view and projection matrices.
+    ///
+    /// The eye is the view matrix's inverse applied to the origin; a singular view matrix puts it at the origin.
+    pub fn new(model: Mat4, view: Mat4, projection: Mat4) -> Self {
+        let eye = view
+            .inverse()
+            .map_or(Vec3::ZERO, |inv| inv.transform_point(Vec3::ZERO));
+        Self {
+            model,
+            clip_from_object: projection * view * model,
+            normal: model.normal_matrix(),
+            eye,
+            orthographic: projection.is_affine(),
+        }
+    }
+
+    /// True when the model matrix mirrors (negative determinant), which turns counter-clockwise triangles into
+    /// clockwise ones.
+    pub fn mirrors(&self) -> bool {
+        self.model.to_mat3().determinant() < 0.0
+    }
+}

@@ -1,0 +1,206 @@
+//! Render targets over memory the caller owns: a whole frame, or one horizontal band of it.
+//!
+//! A [`Target`] pairs a [`ColorBuffer`] with a [`DepthBuffer`] and says which rows of which frame they hold.
+//! Rendering a frame as several bands, each into the same small buffers, gives exactly the pixels of rendering it
+//! whole: every pixel is computed from frame coordinates only, never from where its band starts.
+//!
+//! ```
+//! use rasterm_core::target::{Rgb565, Target};
+//! // A 320x240 display drawn 16 rows at a time: 10 KiB of colour and 10 KiB of depth, not 300 KiB.
+//! let mut color = [0u16; 320 * 16];
+//! let mut depth = [0u16; 320 * 16];
+//! for y0 in (0..240).step_by(16) {
+//!     let mut band = Target::band(Rgb565(&mut color), &mut depth[..], 320, 240, y0..y0 + 16).unwrap();
+//!     band.clear(rasterm_core::math::Vec3::ZERO);
+//!     // ... draw the scene into `band`, then send its rows to the display.
+//! }
+//! ```
+
+mod color_buffer;
+mod depth_buffer;
+
+use core::ops::Range;
+
+pub use color_buffer::{ColorBuffer, NoColor, Rgb565, Rgb888};
+pub use depth_buffer::{DepthBuffer, NoDepth, depth_to_u16};
+
+use crate::math::Vec3;
+
+/// Largest frame width or height, in pixels.
+///
+/// It keeps every frame well inside the rasterizer's guard band (see [`crate::pipeline`]).
+pub const MAX_DIMENSION: u32 = 8192;
+
+/// Why a target could not be built.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum TargetError {
+    /// The frame is zero pixels wide or high.
+    Empty,
+    /// The frame is wider or higher than [`MAX_DIMENSION`].
+    TooLarge {
+        /// Requested width.
+        width: u32,
+        /// Requested height.
+        height: u32,
+    },
+    /// The band's rows are empty or not within the frame.
+    Rows {
+        /// The band's rows.
+        rows: Range<u32>,
+        /// The frame's height.
+        height: u32,
+    },
+    /// The colour buffer does not hold exactly one value per pixel of the band.
+    ColorLength {
+        /// Pixels in the band.
+        expected: usize,
+        /// Values in the buffer.
+        actual: usize,
+    },
+    /// The depth buffer does not hold exactly one value per pixel of the band.
+    DepthLength {
+        /// Pixels in the band.
+        expected: usize,
+        /// Values in the buffer.
+        actual: usize,
+    },
+}
+
+impl core::fmt::Display for TargetError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Self::Empty => f.write_str("the frame has no pixels"),
+            Self::TooLarge { width, height } => {
+                write!(
+                    f,
+                    "a {width}x{height} frame is larger than {MAX_DIMENSION}x{MAX_DIMENSION}"
+                )
+            }
+            Self::Rows { rows, height } => {
+                write!(
+                    f,
+                    "rows {}..{} are not a non-empty band of a {height}-row frame",
+                    rows.start, rows.end
+                )
+            }
+            Self::ColorLength { expected, actual } => {
+                write!(
+                    f,
+                    "the colour buffer holds {actual} pixels, the band has {expected}"
+                )
+            }
+            Self::DepthLength { expected, actual } => {
+                write!(
+                    f,
+                    "the depth buffer holds {actual} pixels, the band has {expected}"
+                )
+            }
+        }
+    }
+}
+
+/// A colour buffer and a depth buffer holding rows `[y0, y1)` of a `width x height` frame.
+#[derive(Debug)]
+pub struct Target<C: ColorBuffer, D: DepthBuffer> {
+    pub(crate) color: C,
+    pub(crate) depth: D,
+    width: u32,
+    height: u32,
+    rows: Range<u32>,
+}
+
+impl<C: ColorBuffer, D: DepthBuffer> Target<C, D> {
+    /// A target for a whole `width x height` frame.
+    ///
+    /// # Errors
+    /// As [`Target::band`].
+    pub fn new(color: C, depth: D, width: u32, height: u32) -> Result<Self, TargetError> {
+        Self::band(color, depth, width, height, 0..height)
+    }
+
+    /// A target for rows `rows` of a `width x height` frame: the buffers hold `width * rows.len()` pixels, row
+    /// `rows.start` first.
+    ///
+    /// # Errors
+    /// [`TargetError::Empty`] or [`TargetError::TooLarge`] for a frame of zero or more than [`MAX_DIMENSION`]
+    /// pixels a side, [`TargetError::Rows`] for an empty band or one outside the frame, and
+    /// [`TargetError::ColorLength`] / [`TargetError::DepthLength`] when a buffer has the wrong length.
+    pub fn band(
+        color: C,
+        depth: D,
+        width: u32,
+        height: u32,
+        rows: Range<u32>,
+    ) -> Result<Self, TargetError> {
+        if width == 0 || height == 0 {
+            return Err(TargetError::Empty);
+        }
+        if width > MAX_DIMENSION || height > MAX_DIMENSION {
+            return Err(TargetError::TooLarge { width, height });
+        }
+        if rows.start >= rows.end || rows.end > height {
+            return Err(TargetError::Rows { rows, height });
+        }
+        let expected = width as usize * (rows.end - rows.start) as usize;
+        match color.pixel_count() {
+            Some(actual) if actual != expected => {
+                return Err(TargetError::ColorLength { expected, actual });
+            }
+            _ => {}
+        }
+        match depth.pixel_count() {
+            Some(actual) if actual != expected => {
+                return Err(TargetError::DepthLength { expected, actual });
+            }
+            _ => {}
+        }
+        Ok(Self {
+            color,
+            depth,
+            width,
+            height,
+            rows,
+        })
+    }
+
+    /// Fills the colour buffer with `color` and resets the depth buffer to the far plane.
+    pub fn clear(&mut self, color: Vec3) {
+        self.color.fill(color);
+        self.depth.clear();
+    }
+
+    /// Width of the frame (and of the band) in pixels.
+    pub fn width(&self) -> u32 {
+        self.width
+    }
+
+    /// Height of the whole frame in pixels.
+    pub fn height(&self) -> u32 {
+        self.height
+    }
+
+    /// The frame rows this target holds.
+    pub fn rows(&self) -> Range<u32> {
+        self.rows.clone()
+    }
+
+    /// The colour buffer.
+    pub fn color(&self) -> &C {
+        &self.color
+    }
+
+    /// The colour buffer, mutably.
+    pub fn color_mut(&mut self) -> &mut C {
+        &mut self.color
+    }
+
+    /// The depth buffer.
+    pub fn depth(&self) -> &D {
+        &self.depth
+    }
+
+    /// Gives the buffers back.
+    pub fn into_parts(self) -> (C, D) {
+        (self.color, self.depth)
+    }
+}

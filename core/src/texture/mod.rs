@@ -1,0 +1,122 @@
+//! Textures over borrowed texels, and how they are sampled.
+//!
+//! A texture is a `&[u32]` of `0x00RRGGBB` texels, row 0 at the top of the image. Texture coordinates follow the
+//! OBJ and OpenGL convention: `u` runs left to right, `v` bottom to top, and `(0, 0)` is the bottom-left corner of
+//! the image.
+
+mod sampler;
+
+pub use sampler::{Bilinear, Clamp, Filter, FilterMode, Nearest, Repeat, Wrap, WrapMode};
+
+use crate::color::unpack_rgb888;
+use crate::math::{Vec2, Vec3};
+
+/// Why a texture could not be built.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TextureError {
+    /// Zero width or height.
+    Empty,
+    /// Wider or higher than `i32::MAX` texels.
+    TooLarge,
+    /// The texel slice does not hold `width * height` texels.
+    Length {
+        /// `width * height`.
+        expected: usize,
+        /// Texels given.
+        actual: usize,
+    },
+}
+
+impl core::fmt::Display for TextureError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Self::Empty => f.write_str("the texture has no texels"),
+            Self::TooLarge => f.write_str("the texture is too large"),
+            Self::Length { expected, actual } => {
+                write!(f, "the texture needs {expected} texels, {actual} given")
+            }
+        }
+    }
+}
+
+/// A borrowed image of `0x00RRGGBB` texels.
+#[derive(Clone, Copy, Debug)]
+pub struct Texture<'a> {
+    texels: &'a [u32],
+    width: i32,
+    height: i32,
+}
+
+impl<'a> Texture<'a> {
+    /// A `width x height` texture; `texels` are row-major, the top row first.
+    ///
+    /// # Errors
+    /// [`TextureError`] for an empty or oversized texture or a slice of the wrong length.
+    pub fn new(texels: &'a [u32], width: u32, height: u32) -> Result<Self, TextureError> {
+        if width == 0 || height == 0 {
+            return Err(TextureError::Empty);
+        }
+        let (Ok(w), Ok(h)) = (i32::try_from(width), i32::try_from(height)) else {
+            return Err(TextureError::TooLarge);
+        };
+        let expected = (width as usize)
+            .checked_mul(height as usize)
+            .ok_or(TextureError::TooLarge)?;
+        if texels.len() != expected {
+            return Err(TextureError::Length {
+                expected,
+                actual: texels.len(),
+            });
+        }
+        Ok(Self {
+            texels,
+            width: w,
+            height: h,
+        })
+    }
+
+    /// Width in texels.
+    pub fn width(&self) -> u32 {
+        self.width as u32
+    }
+
+    /// Height in texels.
+    pub fn height(&self) -> u32 {
+        self.height as u32
+    }
+
+    /// The texel at column `x`, row `y` (row 0 at the top); the caller keeps them in range.
+    #[inline(always)]
+    fn texel(&self, x: i32, y: i32) -> Vec3 {
+        let i = y as usize * self.width as usize + x as usize;
+        unpack_rgb888(self.texels.get(i).copied().unwrap_or(0))
+    }
+
+    /// Samples the texture at `uv` with filter `F` and wrap mode `W`, chosen at compile time.
+    ///
+    /// Any `uv` is safe: NaN or infinite coordinates select the texel at `u = 0` or `v = 0` (see [`Wrap`]).
+    ///
+    /// # Examples
+    /// ```
+    /// use rasterm_core::{math::{Vec2, Vec3}, texture::{Nearest, Repeat, Texture}};
+    /// // 2x1: red on the left, blue on the right.
+    /// let texels = [0xFF0000, 0x0000FF];
+    /// let t = Texture::new(&texels, 2, 1).unwrap();
+    /// assert_eq!(t.sample::<Nearest, Repeat>(Vec2::new(0.25, 0.5)), Vec3::new(1.0, 0.0, 0.0));
+    /// assert_eq!(t.sample::<Nearest, Repeat>(Vec2::new(1.75, 0.5)), Vec3::new(0.0, 0.0, 1.0));
+    /// ```
+    #[inline(always)]
+    pub fn sample<F: Filter, W: Wrap>(&self, uv: Vec2) -> Vec3 {
+        F::sample::<W>(self, uv)
+    }
+
+    /// Samples with a filter and wrap mode chosen at run time (a branch per sample; prefer [`Texture::sample`]).
+    pub fn sample_with(&self, filter: FilterMode, wrap: WrapMode, uv: Vec2) -> Vec3 {
+        match (filter, wrap) {
+            (FilterMode::Nearest, WrapMode::Repeat) => self.sample::<Nearest, Repeat>(uv),
+            (FilterMode::Nearest, WrapMode::Clamp) => self.sample::<Nearest, Clamp>(uv),
+            (FilterMode::Bilinear, WrapMode::Repeat) => self.sample::<Bilinear, Repeat>(uv),
+            (FilterMode::Bilinear, WrapMode::Clamp) => self.sample::<Bilinear, Clamp>(uv),
+        }
+    }
+}
