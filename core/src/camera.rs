@@ -61,15 +61,11 @@ pub fn look_at(eye: Vec3, target: Vec3, up: Vec3) -> Result<Mat4, CameraError> {
     if !(eye.is_finite() && target.is_finite() && up.is_finite()) {
         return Err(CameraError::NotFinite);
     }
-    let forward = (target - eye)
-        .try_normalize()
-        .ok_or(CameraError::EyeAtTarget)?;
+    let forward = (target - eye).try_normalize().ok_or(CameraError::EyeAtTarget)?;
     let right = match forward.cross(up).try_normalize() {
         // Accept `up` unless it is (nearly) parallel to the view direction.
         Some(r) if float::abs(forward.dot(up.normalize_or_zero())) < 0.999_999 => r,
-        _ => forward
-            .cross(least_aligned_axis(forward))
-            .normalize_or_zero(),
+        _ => forward.cross(least_aligned_axis(forward)).normalize_or_zero(),
     };
     let true_up = right.cross(forward);
     // Rows of the rotation are the camera axes; the translation moves the eye to the origin.
@@ -131,20 +127,10 @@ impl Projection {
     /// As [`perspective`] and [`orthographic`].
     pub fn matrix(&self) -> Result<Mat4, CameraError> {
         match *self {
-            Self::Perspective {
-                fovy,
-                aspect,
-                near,
-                far,
-            } => perspective(fovy, aspect, near, far),
-            Self::Orthographic {
-                left,
-                right,
-                bottom,
-                top,
-                near,
-                far,
-            } => orthographic(left, right, bottom, top, near, far),
+            Self::Perspective { fovy, aspect, near, far } => perspective(fovy, aspect, near, far),
+            Self::Orthographic { left, right, bottom, top, near, far } => {
+                orthographic(left, right, bottom, top, near, far)
+            }
         }
     }
 }
@@ -186,11 +172,7 @@ pub fn perspective(fovy: f32, aspect: f32, near: f32, far: f32) -> Result<Mat4, 
         [0.0, 0.0, far * range, near * far * range],
         [0.0, 0.0, -1.0, 0.0],
     );
-    if m.is_finite() {
-        Ok(m)
-    } else {
-        Err(CameraError::NotFinite)
-    }
+    if m.is_finite() { Ok(m) } else { Err(CameraError::NotFinite) }
 }
 
 /// A right-handed orthographic projection of the view-space box `[left, right] x [bottom, top] x [-near, -far]`
@@ -199,14 +181,7 @@ pub fn perspective(fovy: f32, aspect: f32, near: f32, far: f32) -> Result<Mat4, 
 /// # Errors
 /// [`CameraError::EmptyBox`] if `left == right` or `bottom == top`, [`CameraError::DepthRange`] if
 /// `near == far`, [`CameraError::NotFinite`] for NaN or infinite input or a box too thin to invert.
-pub fn orthographic(
-    left: f32,
-    right: f32,
-    bottom: f32,
-    top: f32,
-    near: f32,
-    far: f32,
-) -> Result<Mat4, CameraError> {
+pub fn orthographic(left: f32, right: f32, bottom: f32, top: f32, near: f32, far: f32) -> Result<Mat4, CameraError> {
     let all = [left, right, bottom, top, near, far];
     if !all.iter().all(|v| v.is_finite()) {
         return Err(CameraError::NotFinite);
@@ -217,22 +192,14 @@ pub fn orthographic(
     if near == far {
         return Err(CameraError::DepthRange);
     }
-    let (rl, tb, fun) = (
-        1.0 / (right - left),
-        1.0 / (top - bottom),
-        1.0 / (far - near),
-    );
+    let (rl, tb, fun) = (1.0 / (right - left), 1.0 / (top - bottom), 1.0 / (far - near));
     let m = Mat4::from_rows(
         [2.0 * rl, 0.0, 0.0, -(right + left) * rl],
         [0.0, 2.0 * tb, 0.0, -(top + bottom) * tb],
         [0.0, 0.0, -fun, -near * fun],
         [0.0, 0.0, 0.0, 1.0],
     );
-    if m.is_finite() {
-        Ok(m)
-    } else {
-        Err(CameraError::NotFinite)
-    }
+    if m.is_finite() { Ok(m) } else { Err(CameraError::NotFinite) }
 }
 
 /// The rectangle of the frame that NDC `[-1, 1]^2` maps to, in pixels.
@@ -251,22 +218,13 @@ pub struct Viewport {
 impl Viewport {
     /// A viewport covering a whole `width x height` frame.
     pub fn full(width: u32, height: u32) -> Self {
-        Self {
-            x: 0.0,
-            y: 0.0,
-            width: width as f32,
-            height: height as f32,
-        }
+        Self { x: 0.0, y: 0.0, width: width as f32, height: height as f32 }
     }
 
     /// Maps an NDC point to screen space: `x` right, `y` down, depth unchanged.
     #[inline(always)]
     pub fn to_screen(&self, ndc: Vec3) -> Vec3 {
-        Vec3::new(
-            self.x + (ndc.x + 1.0) * (self.width * 0.5),
-            self.y + (1.0 - ndc.y) * (self.height * 0.5),
-            ndc.z,
-        )
+        Vec3::new(self.x + (ndc.x + 1.0) * (self.width * 0.5), self.y + (1.0 - ndc.y) * (self.height * 0.5), ndc.z)
     }
 
     /// The viewport transform as a matrix (NDC to screen space): the same map as [`Viewport::to_screen`], up to

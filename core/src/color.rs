@@ -33,11 +33,7 @@ pub fn pack_rgb888(c: Vec3) -> u32 {
 #[inline(always)]
 pub fn unpack_rgb888(p: u32) -> Vec3 {
     const S: f32 = 1.0 / 255.0;
-    Vec3::new(
-        ((p >> 16) & 0xFF) as f32 * S,
-        ((p >> 8) & 0xFF) as f32 * S,
-        (p & 0xFF) as f32 * S,
-    )
+    Vec3::new(((p >> 16) & 0xFF) as f32 * S, ((p >> 8) & 0xFF) as f32 * S, (p & 0xFF) as f32 * S)
 }
 
 /// Packs a colour as RGB565.
@@ -56,11 +52,7 @@ pub fn pack_rgb565(c: Vec3) -> u16 {
 #[inline(always)]
 pub fn unpack_rgb565(p: u16) -> Vec3 {
     let p = u32::from(p);
-    Vec3::new(
-        ((p >> 11) & 31) as f32 / 31.0,
-        ((p >> 5) & 63) as f32 / 63.0,
-        (p & 31) as f32 / 31.0,
-    )
+    Vec3::new(((p >> 11) & 31) as f32 / 31.0, ((p >> 5) & 63) as f32 / 63.0, (p & 31) as f32 / 31.0)
 }
 
 /// Converts RGB565 to `0x00RRGGBB`, replicating the high bits into the low ones (exact for 0 and full scale).

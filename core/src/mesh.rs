@@ -27,26 +27,16 @@ pub struct Attributes {
 
 impl Attributes {
     /// No optional attributes.
-    pub const NONE: Self = Self {
-        normals: false,
-        uvs: false,
-        colors: false,
-    };
+    pub const NONE: Self = Self { normals: false, uvs: false, colors: false };
 
     /// The attributes both `self` and `other` name.
     pub const fn union(self, other: Self) -> Self {
-        Self {
-            normals: self.normals || other.normals,
-            uvs: self.uvs || other.uvs,
-            colors: self.colors || other.colors,
-        }
+        Self { normals: self.normals || other.normals, uvs: self.uvs || other.uvs, colors: self.colors || other.colors }
     }
 
     /// True when every attribute in `needed` is in `self`.
     pub const fn contains(self, needed: Self) -> bool {
-        (self.normals || !needed.normals)
-            && (self.uvs || !needed.uvs)
-            && (self.colors || !needed.colors)
+        (self.normals || !needed.normals) && (self.uvs || !needed.uvs) && (self.colors || !needed.colors)
     }
 }
 
@@ -69,15 +59,8 @@ pub enum MeshError {
 impl core::fmt::Display for MeshError {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match self {
-            Self::IndexCount(n) => write!(
-                f,
-                "{n} indices do not form whole triangles (not a multiple of 3)"
-            ),
-            Self::AttributeLength {
-                attribute,
-                expected,
-                actual,
-            } => {
+            Self::IndexCount(n) => write!(f, "{n} indices do not form whole triangles (not a multiple of 3)"),
+            Self::AttributeLength { attribute, expected, actual } => {
                 write!(f, "{actual} {attribute} given for {expected} positions")
             }
         }
@@ -123,26 +106,12 @@ impl<'a> Mesh<'a> {
         if n % 3 != 0 {
             return Err(MeshError::IndexCount(n));
         }
-        Ok(Self {
-            positions,
-            normals: None,
-            uvs: None,
-            colors: None,
-            indices,
-        })
+        Ok(Self { positions, normals: None, uvs: None, colors: None, indices })
     }
 
     fn check_length(&self, attribute: &'static str, actual: usize) -> Result<(), MeshError> {
         let expected = self.positions.len();
-        if actual == expected {
-            Ok(())
-        } else {
-            Err(MeshError::AttributeLength {
-                attribute,
-                expected,
-                actual,
-            })
-        }
+        if actual == expected { Ok(()) } else { Err(MeshError::AttributeLength { attribute, expected, actual }) }
     }
 
     /// Attaches per-vertex normals (object space; need not be unit length).
@@ -177,11 +146,7 @@ impl<'a> Mesh<'a> {
 
     /// The attributes this mesh carries.
     pub fn attributes(&self) -> Attributes {
-        Attributes {
-            normals: self.normals.is_some(),
-            uvs: self.uvs.is_some(),
-            colors: self.colors.is_some(),
-        }
+        Attributes { normals: self.normals.is_some(), uvs: self.uvs.is_some(), colors: self.colors.is_some() }
     }
 
     /// Number of vertices.
@@ -246,10 +211,7 @@ impl<'a> Mesh<'a> {
     /// Normal of vertex `i` (zero if absent or out of range).
     #[inline(always)]
     pub fn normal(&self, i: usize) -> Vec3 {
-        self.normals
-            .and_then(|n| n.get(i))
-            .copied()
-            .unwrap_or_default()
+        self.normals.and_then(|n| n.get(i)).copied().unwrap_or_default()
     }
 
     /// Texture coordinates of vertex `i` (zero if absent or out of range).
@@ -261,9 +223,6 @@ impl<'a> Mesh<'a> {
     /// Colour of vertex `i` (white if absent or out of range).
     #[inline(always)]
     pub fn color(&self, i: usize) -> Vec3 {
-        self.colors
-            .and_then(|n| n.get(i))
-            .copied()
-            .unwrap_or(Vec3::ONE)
+        self.colors.and_then(|n| n.get(i)).copied().unwrap_or(Vec3::ONE)
     }
 }

@@ -24,11 +24,7 @@ impl Mat3 {
     /// A diagonal (scaling) matrix.
     #[inline]
     pub const fn from_diagonal(d: Vec3) -> Self {
-        Self::from_cols(
-            Vec3::new(d.x, 0.0, 0.0),
-            Vec3::new(0.0, d.y, 0.0),
-            Vec3::new(0.0, 0.0, d.z),
-        )
+        Self::from_cols(Vec3::new(d.x, 0.0, 0.0), Vec3::new(0.0, d.y, 0.0), Vec3::new(0.0, 0.0, d.z))
     }
 
     /// Row `i` as a vector.
@@ -79,11 +75,7 @@ impl Mat3 {
     /// Normals transformed this way are not unit length; normalise after transforming.
     pub fn normal_matrix(&self) -> Self {
         let cof = self.cofactor();
-        if self.determinant() < 0.0 {
-            cof * -1.0
-        } else {
-            cof
-        }
+        if self.determinant() < 0.0 { cof * -1.0 } else { cof }
     }
 
     /// True when every element is finite.

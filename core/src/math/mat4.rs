@@ -26,9 +26,7 @@ impl Mat4 {
     /// Builds a matrix from its columns.
     #[inline(always)]
     pub const fn from_cols(c0: Vec4, c1: Vec4, c2: Vec4, c3: Vec4) -> Self {
-        Self {
-            cols: [c0, c1, c2, c3],
-        }
+        Self { cols: [c0, c1, c2, c3] }
     }
 
     /// Builds a matrix from its rows (convenient for writing matrices down as they appear on paper).
@@ -62,21 +60,12 @@ impl Mat4 {
     /// Embeds a 3x3 linear map (no translation).
     pub const fn from_mat3(m: Mat3) -> Self {
         let [a, b, c] = m.cols;
-        Self::from_cols(
-            a.extend(0.0),
-            b.extend(0.0),
-            c.extend(0.0),
-            Vec4::new(0.0, 0.0, 0.0, 1.0),
-        )
+        Self::from_cols(a.extend(0.0), b.extend(0.0), c.extend(0.0), Vec4::new(0.0, 0.0, 0.0, 1.0))
     }
 
     /// The upper-left 3x3 block (the linear part of an affine transform).
     pub const fn to_mat3(&self) -> Mat3 {
-        Mat3::from_cols(
-            self.cols[0].truncate(),
-            self.cols[1].truncate(),
-            self.cols[2].truncate(),
-        )
+        Mat3::from_cols(self.cols[0].truncate(), self.cols[1].truncate(), self.cols[2].truncate())
     }
 
     /// Row `i` as a vector.
@@ -209,10 +198,7 @@ impl Mat4 {
             let d = *a - *b;
             m = float::max(
                 m,
-                float::max(
-                    float::max(float::abs(d.x), float::abs(d.y)),
-                    float::max(float::abs(d.z), float::abs(d.w)),
-                ),
+                float::max(float::max(float::abs(d.x), float::abs(d.y)), float::max(float::abs(d.z), float::abs(d.w))),
             );
         }
         m
@@ -236,11 +222,6 @@ impl Mul<Vec4> for Mat4 {
 impl Mul for Mat4 {
     type Output = Self;
     fn mul(self, o: Self) -> Self {
-        Self::from_cols(
-            self * o.cols[0],
-            self * o.cols[1],
-            self * o.cols[2],
-            self * o.cols[3],
-        )
+        Self::from_cols(self * o.cols[0], self * o.cols[1], self * o.cols[2], self * o.cols[3])
     }
 }

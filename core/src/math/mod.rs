@@ -1,7 +1,7 @@
 //! Vectors, matrices and quaternions.
 //!
 //! Conventions used throughout rasterm: column vectors (`m * v`), matrices stored by columns, right-handed
-//! coordinates, angles in radians. All non-trivial float functions go through [`float`], which calls `libm`.
+//! coordinates, angles in radians. All non-trivial float functions go through the crate-internal `math::float` module, which calls `libm`.
 
 pub(crate) mod float;
 mod mat3;

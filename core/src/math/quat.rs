@@ -22,12 +22,7 @@ pub struct Quat {
 
 impl Quat {
     /// No rotation.
-    pub const IDENTITY: Self = Self {
-        x: 0.0,
-        y: 0.0,
-        z: 0.0,
-        w: 1.0,
-    };
+    pub const IDENTITY: Self = Self { x: 0.0, y: 0.0, z: 0.0, w: 1.0 };
 
     /// A rotation by `angle` radians about `axis` (right-handed: counter-clockwise looking down the axis toward the
     /// origin). The axis need not be unit length; a zero or non-finite axis or angle gives the identity.
@@ -36,12 +31,7 @@ impl Quat {
             Some(a) if angle.is_finite() => {
                 let half = angle * 0.5;
                 let s = float::sin(half);
-                Self {
-                    x: a.x * s,
-                    y: a.y * s,
-                    z: a.z * s,
-                    w: float::cos(half),
-                }
+                Self { x: a.x * s, y: a.y * s, z: a.z * s, w: float::cos(half) }
             }
             _ => Self::IDENTITY,
         }
@@ -52,12 +42,7 @@ impl Quat {
         let n = float::sqrt(self.x * self.x + self.y * self.y + self.z * self.z + self.w * self.w);
         if n > 0.0 && n.is_finite() {
             let r = 1.0 / n;
-            Self {
-                x: self.x * r,
-                y: self.y * r,
-                z: self.z * r,
-                w: self.w * r,
-            }
+            Self { x: self.x * r, y: self.y * r, z: self.z * r, w: self.w * r }
         } else {
             Self::IDENTITY
         }
@@ -65,12 +50,7 @@ impl Quat {
 
     /// The inverse rotation (the conjugate, for a unit quaternion).
     pub fn conjugate(self) -> Self {
-        Self {
-            x: -self.x,
-            y: -self.y,
-            z: -self.z,
-            w: self.w,
-        }
+        Self { x: -self.x, y: -self.y, z: -self.z, w: self.w }
     }
 
     /// Rotates a vector.

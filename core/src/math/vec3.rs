@@ -48,11 +48,7 @@ impl Vec3 {
     /// Cross product (right-handed: `X.cross(Y) == Z`).
     #[inline(always)]
     pub fn cross(self, o: Self) -> Self {
-        Self::new(
-            self.y * o.z - self.z * o.y,
-            self.z * o.x - self.x * o.z,
-            self.x * o.y - self.y * o.x,
-        )
+        Self::new(self.y * o.z - self.z * o.y, self.z * o.x - self.x * o.z, self.x * o.y - self.y * o.x)
     }
 
     /// Euclidean length.
@@ -65,11 +61,7 @@ impl Vec3 {
     #[inline]
     pub fn try_normalize(self) -> Option<Self> {
         let len = self.length();
-        if len > 0.0 && len.is_finite() {
-            Some(self / len)
-        } else {
-            None
-        }
+        if len > 0.0 && len.is_finite() { Some(self / len) } else { None }
     }
 
     /// Unit vector in the same direction, or zero when that does not exist (zero or non-finite length).
@@ -87,21 +79,13 @@ impl Vec3 {
     /// Component-wise minimum.
     #[inline(always)]
     pub fn min(self, o: Self) -> Self {
-        Self::new(
-            float::min(self.x, o.x),
-            float::min(self.y, o.y),
-            float::min(self.z, o.z),
-        )
+        Self::new(float::min(self.x, o.x), float::min(self.y, o.y), float::min(self.z, o.z))
     }
 
     /// Component-wise maximum.
     #[inline(always)]
     pub fn max(self, o: Self) -> Self {
-        Self::new(
-            float::max(self.x, o.x),
-            float::max(self.y, o.y),
-            float::max(self.z, o.z),
-        )
+        Self::new(float::max(self.x, o.x), float::max(self.y, o.y), float::max(self.z, o.z))
     }
 
     /// Largest component.

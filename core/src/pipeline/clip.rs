@@ -104,10 +104,7 @@ impl ClipVolume {
     /// Clips a triangle against the clipping planes named in `mask` into a convex polygon (empty if nothing is
     /// left).
     pub fn clip<V: Varyings>(&self, tri: &[ClipVertex<V>; 3], mask: u16) -> Polygon<V> {
-        let mut poly = Polygon {
-            verts: [tri[0]; MAX_CLIPPED],
-            len: 3,
-        };
+        let mut poly = Polygon { verts: [tri[0]; MAX_CLIPPED], len: 3 };
         poly.verts[1] = tri[1];
         poly.verts[2] = tri[2];
         let mut scratch = poly;
@@ -147,17 +144,9 @@ impl ClipVolume {
         }
         let at = |t: f64| {
             let lerp = |p: f32, q: f32| (f64::from(p) + (f64::from(q) - f64::from(p)) * t) as f32;
-            Vec4::new(
-                lerp(a.x, b.x),
-                lerp(a.y, b.y),
-                lerp(a.z, b.z),
-                lerp(a.w, b.w),
-            )
+            Vec4::new(lerp(a.x, b.x), lerp(a.y, b.y), lerp(a.z, b.z), lerp(a.w, b.w))
         };
-        Some((
-            if t0 > 0.0 { at(t0) } else { a },
-            if t1 < 1.0 { at(t1) } else { b },
-        ))
+        Some((if t0 > 0.0 { at(t0) } else { a }, if t1 < 1.0 { at(t1) } else { b }))
     }
 }
 
@@ -206,22 +195,12 @@ fn clip_against<V: Varyings>(plane: &Plane, src: &Polygon<V>, dst: &mut Polygon<
 }
 
 /// The point where the segment from `inside` (distance `d_in >= 0`) to `outside` (`d_out < 0`) meets the plane.
-fn intersect<V: Varyings>(
-    inside: &ClipVertex<V>,
-    d_in: f64,
-    outside: &ClipVertex<V>,
-    d_out: f64,
-) -> ClipVertex<V> {
+fn intersect<V: Varyings>(inside: &ClipVertex<V>, d_in: f64, outside: &ClipVertex<V>, d_out: f64) -> ClipVertex<V> {
     let t = d_in / (d_in - d_out);
     let lerp = |a: f32, b: f32| (f64::from(a) + (f64::from(b) - f64::from(a)) * t) as f32;
     let (a, b) = (inside.pos, outside.pos);
     ClipVertex {
-        pos: Vec4::new(
-            lerp(a.x, b.x),
-            lerp(a.y, b.y),
-            lerp(a.z, b.z),
-            lerp(a.w, b.w),
-        ),
+        pos: Vec4::new(lerp(a.x, b.x), lerp(a.y, b.y), lerp(a.z, b.z), lerp(a.w, b.w)),
         var: inside.var.lerp(&outside.var, t as f32),
     }
 }

@@ -26,15 +26,9 @@ impl core::fmt::Display for DrawError {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match self {
             Self::MissingAttributes { needed, present } => {
-                write!(
-                    f,
-                    "the shader needs mesh attributes {needed:?} but the mesh has {present:?}"
-                )
+                write!(f, "the shader needs mesh attributes {needed:?} but the mesh has {present:?}")
             }
-            Self::SubpixelBits(b) => write!(
-                f,
-                "{b} sub-pixel bits requested, at most {MAX_SUBPIXEL_BITS} supported"
-            ),
+            Self::SubpixelBits(b) => write!(f, "{b} sub-pixel bits requested, at most {MAX_SUBPIXEL_BITS} supported"),
         }
     }
 }
@@ -92,12 +86,8 @@ where
     check(mesh, S::ATTRIBUTES, state)?;
     use {DepthTest as T, Interpolation as I};
     Ok(match (state.interpolation, state.depth_test) {
-        (I::PerspectiveCorrect, T::Less) => {
-            run(target, mesh, shader, state, PerspectiveCorrect, DepthLess)
-        }
-        (I::PerspectiveCorrect, T::Off) => {
-            run(target, mesh, shader, state, PerspectiveCorrect, DepthOff)
-        }
+        (I::PerspectiveCorrect, T::Less) => run(target, mesh, shader, state, PerspectiveCorrect, DepthLess),
+        (I::PerspectiveCorrect, T::Off) => run(target, mesh, shader, state, PerspectiveCorrect, DepthOff),
         (I::Affine, T::Less) => run(target, mesh, shader, state, Affine, DepthLess),
         (I::Affine, T::Off) => run(target, mesh, shader, state, Affine, DepthOff),
     })
@@ -122,10 +112,7 @@ where
     D: DepthBuffer,
 {
     check(mesh, S::ATTRIBUTES, state)?;
-    let (interpolator, depth) = (
-        DynamicInterpolator(state.interpolation),
-        DynamicDepth(state.depth_test),
-    );
+    let (interpolator, depth) = (DynamicInterpolator(state.interpolation), DynamicDepth(state.depth_test));
     Ok(run(target, mesh, shader, state, interpolator, depth))
 }
 
@@ -181,11 +168,7 @@ where
     let rows = target.rows();
     let volume = ClipVolume::new(target.width(), target.height(), rows.start, rows.end);
     let raster = Rasterizer::new(target, state.subpixel_bits, state.cull, state.front_face);
-    let stages = Stages {
-        shader,
-        interpolator,
-        depth,
-    };
+    let stages = Stages { shader, interpolator, depth };
     let mut stats = DrawStats::default();
 
     for t in 0..mesh.triangle_count() {
@@ -211,19 +194,16 @@ where
         let mut face = None;
         let mut outcome = Outcome::default();
         let mut fragments = 0;
-        let mut piece =
-            |tri: [&ScreenVertex<S::Varyings>; 3], target: &mut Target<C, D>| match raster
-                .setup(tri)
-            {
-                Setup::Degenerate => outcome.degenerate = true,
-                Setup::Culled => outcome.culled = true,
-                Setup::Empty => outcome.rasterized = true,
-                Setup::Ready(triangle) => {
-                    outcome.rasterized = true;
-                    let face = face.get_or_insert_with(|| shader.face(mesh, indices));
-                    fragments += triangle.fill(&stages, face, target);
-                }
-            };
+        let mut piece = |tri: [&ScreenVertex<S::Varyings>; 3], target: &mut Target<C, D>| match raster.setup(tri) {
+            Setup::Degenerate => outcome.degenerate = true,
+            Setup::Culled => outcome.culled = true,
+            Setup::Empty => outcome.rasterized = true,
+            Setup::Ready(triangle) => {
+                outcome.rasterized = true;
+                let face = face.get_or_insert_with(|| shader.face(mesh, indices));
+                fragments += triangle.fill(&stages, face, target);
+            }
+        };
 
         let clip_mask = (codes[0] | codes[1] | codes[2]) & CLIP_MASK;
         if clip_mask == 0 {

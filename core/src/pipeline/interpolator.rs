@@ -66,10 +66,7 @@ impl Interpolator for DynamicInterpolator {
 
     #[inline(always)]
     fn setup(&self, inv_w: [f32; 3], inv_area: f32) -> Self::Setup {
-        (
-            PerspectiveCorrect.setup(inv_w, inv_area),
-            Affine.setup(inv_w, inv_area),
-        )
+        (PerspectiveCorrect.setup(inv_w, inv_area), Affine.setup(inv_w, inv_area))
     }
 
     #[inline(always)]

@@ -18,20 +18,17 @@ pub struct LineStyle {
 
 impl Default for LineStyle {
     fn default() -> Self {
-        Self {
-            color: Vec3::ONE,
-            depth_bias: 1e-4,
-        }
+        Self { color: Vec3::ONE, depth_bias: 1e-4 }
     }
 }
 
 /// Draws the edges of `mesh`'s triangles, transformed to clip space by `clip_from_object`.
 ///
 /// Edges are clipped in homogeneous space against the near and far planes and the guard band. Each line lights one
-/// pixel per column (if mostly horizontal) or per row (if mostly vertical): the pixel containing the line at that
-/// column's or row's centre, end point excluded. Each pixel is computed from frame coordinates alone, so bands give
-/// the same pixels as a whole frame. An edge shared by two triangles is drawn from its lower-numbered vertex, so
-/// both draws light the same pixels.
+/// pixel per column (if mostly horizontal) or per row (if mostly vertical), from the pixel containing one end point
+/// to the pixel containing the other: in each column (row), the pixel containing the line at that column's (row's)
+/// centre. Each pixel is computed from frame coordinates alone, so bands give the same pixels as a whole frame. An
+/// edge shared by two triangles is drawn from its lower-numbered vertex, so both draws light the same pixels.
 ///
 /// `state` supplies the depth test (with [`LineStyle::depth_bias`]) and face culling: the edges of a culled
 /// triangle (judged when all its vertices are in front of the camera) are not drawn. In the returned statistics a
@@ -97,8 +94,7 @@ fn is_culled(clip: &[Vec4; 3], state: &DrawState) -> bool {
         return false;
     }
     let ndc = clip.map(|p| (p.x / p.w, p.y / p.w));
-    let area = (ndc[1].0 - ndc[0].0) * (ndc[2].1 - ndc[0].1)
-        - (ndc[1].1 - ndc[0].1) * (ndc[2].0 - ndc[0].0);
+    let area = (ndc[1].0 - ndc[0].0) * (ndc[2].1 - ndc[0].1) - (ndc[1].1 - ndc[0].1) * (ndc[2].0 - ndc[0].0);
     let front = (area > 0.0) == (state.front_face == Winding::CounterClockwise);
     match state.cull {
         Cull::Back => !front && area != 0.0,
@@ -119,19 +115,11 @@ struct Pen {
 
 impl Pen {
     /// Draws one clipped segment (both ends have `w > 0`); returns the pixels written.
-    fn line<C: ColorBuffer, D: DepthBuffer>(
-        &self,
-        target: &mut Target<C, D>,
-        p: Vec4,
-        q: Vec4,
-    ) -> u64 {
+    fn line<C: ColorBuffer, D: DepthBuffer>(&self, target: &mut Target<C, D>, p: Vec4, q: Vec4) -> u64 {
         if !(p.w > 0.0 && q.w > 0.0) {
             return 0;
         }
-        let (a, b) = (
-            self.viewport.clip_to_screen(p),
-            self.viewport.clip_to_screen(q),
-        );
+        let (a, b) = (self.viewport.clip_to_screen(p), self.viewport.clip_to_screen(q));
         let (dx, dy) = (b.x - a.x, b.y - a.y);
         if float::abs(dx) >= float::abs(dy) {
             if dx == 0.0 {
@@ -148,10 +136,7 @@ impl Pen {
                 let c0 = a.x + (self.row0 as f32 - a.y) / slope;
                 let c1 = a.x + (self.row1 as f32 - a.y) / slope;
                 let (c0, c1) = (float::min(c0, c1), float::max(c0, c1));
-                (
-                    lo.max(float::floor_to_i32(c0) - 1),
-                    hi.min(float::floor_to_i32(c1) + 2),
-                )
+                (lo.max(float::floor_to_i32(c0) - 1), hi.min(float::floor_to_i32(c1) + 2))
             };
             self.plot_span(target, lo, hi, &a, &b, slope, |major, minor| (major, minor))
         } else {
@@ -160,29 +145,14 @@ impl Pen {
             let slope = (b.x - a.x) / (b.y - a.y);
             let (lo, hi) = self.major_range(a.y, b.y, self.row0, self.row1);
             let swap = |v: &Vec3| Vec3::new(v.y, v.x, v.z);
-            self.plot_span(
-                target,
-                lo,
-                hi,
-                &swap(&a),
-                &swap(&b),
-                slope,
-                |major, minor| (minor, major),
-            )
+            self.plot_span(target, lo, hi, &swap(&a), &swap(&b), slope, |major, minor| (minor, major))
         }
     }
 
-    /// Pixel indices `i` in `[min, max)` whose centre `i + 0.5` lies in `[from, to)`.
+    /// Pixel indices from the one containing `from` to the one containing `to` (`from <= to`), as a half-open
+    /// range limited to `[min, max)`.
     fn major_range(&self, from: f32, to: f32, min: i32, max: i32) -> (i32, i32) {
-        let first = float::floor_to_i32(from - 0.5);
-        let first = if first as f32 + 0.5 < from {
-            first + 1
-        } else {
-            first
-        };
-        let end = float::floor_to_i32(to - 0.5);
-        let end = if end as f32 + 0.5 < to { end + 1 } else { end };
-        (first.max(min), end.min(max))
+        (float::floor_to_i32(from).max(min), float::floor_to_i32(to).saturating_add(1).min(max))
     }
 
     /// Plots the pixels of major coordinates `lo..hi` along the line from `a` (major axis in `x`) with the given

@@ -87,7 +87,8 @@ impl Rasterizer {
     /// all-zero clip-space point once clipping is done).
     #[inline(always)]
     pub fn snap<V: Copy>(&self, v: &ClipVertex<V>) -> Option<ScreenVertex<V>> {
-        if !(v.pos.w > 0.0) {
+        let w_positive = v.pos.w > 0.0; // false for NaN too
+        if !w_positive {
             return None;
         }
         let s = self.viewport.clip_to_screen(v.pos);
@@ -95,13 +96,7 @@ impl Rasterizer {
             let p = float::clamp(p, -SNAP_LIMIT_PX, SNAP_LIMIT_PX) * self.scale;
             i64::from(float::floor_to_i32(p + 0.5)) << 1
         };
-        Some(ScreenVertex {
-            x: fixed(s.x),
-            y: fixed(s.y),
-            z: s.z,
-            inv_w: 1.0 / v.pos.w,
-            var: v.var,
-        })
+        Some(ScreenVertex { x: fixed(s.x), y: fixed(s.y), z: s.z, inv_w: 1.0 / v.pos.w, var: v.var })
     }
 
     /// Area, facing and bounding box of a triangle, and if it has any pixels, everything the pixel loop needs.
@@ -219,12 +214,7 @@ impl<V: Varyings> Triangle<V> {
     /// Visits every covered pixel centre in the target's rows: depth test, interpolation, fragment stage, write.
     /// Returns the number of fragments shaded.
     #[inline(always)]
-    pub fn fill<S, I, Z, C, D>(
-        &self,
-        stages: &Stages<'_, S, I, Z>,
-        face: &S::Face,
-        target: &mut Target<C, D>,
-    ) -> u64
+    pub fn fill<S, I, Z, C, D>(&self, stages: &Stages<'_, S, I, Z>, face: &S::Face, target: &mut Target<C, D>) -> u64
     where
         S: Shader<Varyings = V>,
         I: Interpolator,
@@ -248,22 +238,13 @@ impl<V: Varyings> Triangle<V> {
             let base = (y - row0) as usize * width;
             while x <= self.x1 && (e[0] | e[1] | e[2]) >= 0 {
                 // Unbiased edge values: >= 0 and summing to the area, so weights are a convex combination.
-                let ef = [
-                    (e[0] - self.bias[0]) as f32,
-                    (e[1] - self.bias[1]) as f32,
-                    (e[2] - self.bias[2]) as f32,
-                ];
+                let ef = [(e[0] - self.bias[0]) as f32, (e[1] - self.bias[1]) as f32, (e[2] - self.bias[2]) as f32];
                 let z = self.z0 + ef[1] * self.dz1 + ef[2] * self.dz2;
                 let index = base + x as usize;
                 if stages.depth.test(&mut target.depth, index, z) {
                     let (w1, w2) = stages.interpolator.weights(&setup, ef);
                     let var = self.var0.interpolate(&self.var_d1, w1, &self.var_d2, w2);
-                    let fragment = Fragment {
-                        x: x as u32,
-                        y: y as u32,
-                        depth: z,
-                        front_facing: self.front_facing,
-                    };
+                    let fragment = Fragment { x: x as u32, y: y as u32, depth: z, front_facing: self.front_facing };
                     let color = stages.shader.fragment(&fragment, face, &var);
                     target.color.write(index, color);
                     shaded += 1;

@@ -1,5 +1,6 @@
 //! Views for debugging a model or a camera: the depth buffer as grey levels, normals as colours.
 
+use super::surface::world_normal;
 use crate::math::{Mat3, Mat4, Vec3, Vec4, float};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{Fragment, Shader};
@@ -19,11 +20,7 @@ impl DepthShader {
     /// A depth view through `clip_from_object`, mapping NDC depths `near..far` to white..black.
     pub fn new(clip_from_object: Mat4, near: f32, far: f32) -> Self {
         let scale = 1.0 / (far - near);
-        Self {
-            clip_from_object,
-            near,
-            scale: if scale.is_finite() { scale } else { 0.0 },
-        }
+        Self { clip_from_object, near, scale: if scale.is_finite() { scale } else { 0.0 } }
     }
 }
 
@@ -56,26 +53,19 @@ pub struct NormalShader {
 impl NormalShader {
     /// A normal view through `clip_from_object`, with `normal` taking object-space normals to world space.
     pub fn new(clip_from_object: Mat4, normal: Mat3) -> Self {
-        Self {
-            clip_from_object,
-            normal,
-        }
+        Self { clip_from_object, normal }
     }
 }
 
 impl Shader for NormalShader {
     type Varyings = Vec3;
     type Face = ();
-    const ATTRIBUTES: Attributes = Attributes {
-        normals: true,
-        uvs: false,
-        colors: false,
-    };
+    const ATTRIBUTES: Attributes = Attributes { normals: true, uvs: false, colors: false };
 
     #[inline(always)]
     fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, Vec3) {
         let clip = self.clip_from_object.project_point(mesh.position(i));
-        (clip, (self.normal * mesh.normal(i)).normalize_or_zero())
+        (clip, world_normal(&self.normal, mesh.normal(i)))
     }
 
     #[inline(always)]

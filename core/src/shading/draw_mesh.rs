@@ -2,9 +2,8 @@
 
 use super::texture_stage::Textured;
 use super::{
-    DepthShader, Effects, FlatShader, GeneralShader, GouraudShader, NoSpecular, NormalShader,
-    PhongShader, ShadingModel, Specular, Surface, Transforms, UnlitShader, Untextured, Variant,
-    VertexColorShader,
+    DepthShader, Effects, FlatShader, GeneralShader, GouraudShader, NoSpecular, NormalShader, PhongShader,
+    ShadingModel, Specular, Surface, Transforms, UnlitShader, Untextured, Variant, VertexColorShader,
 };
 use crate::mesh::Mesh;
 use crate::pipeline::{DrawError, DrawState, DrawStats, draw, draw_unspecialised};
@@ -67,11 +66,7 @@ pub fn draw_mesh<C: ColorBuffer, D: DepthBuffer>(
     state: &DrawState,
 ) -> Result<DrawStats, DrawError> {
     let variant = effects.resolve(mesh, transforms, state)?;
-    let surface = Surface {
-        transforms: *transforms,
-        material: effects.material,
-        lighting: effects.lighting,
-    };
+    let surface = Surface { transforms: *transforms, material: effects.material, lighting: effects.lighting };
     draw_variant(target, mesh, &variant, surface)
 }
 
@@ -88,17 +83,8 @@ pub fn draw_mesh_unspecialised<C: ColorBuffer, D: DepthBuffer>(
     state: &DrawState,
 ) -> Result<DrawStats, DrawError> {
     let variant = effects.resolve(mesh, transforms, state)?;
-    let surface = Surface {
-        transforms: *transforms,
-        material: effects.material,
-        lighting: effects.lighting,
-    };
-    draw_unspecialised(
-        target,
-        mesh,
-        &GeneralShader::new(variant, surface),
-        &variant.state,
-    )
+    let surface = Surface { transforms: *transforms, material: effects.material, lighting: effects.lighting };
+    draw_unspecialised(target, mesh, &GeneralShader::new(variant, surface), &variant.state)
 }
 
 fn draw_variant<C: ColorBuffer, D: DepthBuffer>(
@@ -129,14 +115,7 @@ fn draw_variant<C: ColorBuffer, D: DepthBuffer>(
                 draw(target, mesh, &PhongShader::<_, H>::new(surface, t), state)
             }))
         }
-        ShadingModel::Depth { near, far } => {
-            draw(target, mesh, &DepthShader::new(clip, near, far), state)
-        }
-        ShadingModel::Normals => draw(
-            target,
-            mesh,
-            &NormalShader::new(clip, surface.transforms.normal),
-            state,
-        ),
+        ShadingModel::Depth { near, far } => draw(target, mesh, &DepthShader::new(clip, near, far), state),
+        ShadingModel::Normals => draw(target, mesh, &NormalShader::new(clip, surface.transforms.normal), state),
     }
 }

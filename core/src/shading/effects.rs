@@ -119,10 +119,7 @@ impl<'a> Effects<'a> {
     ) -> Result<Variant<'a>, DrawError> {
         let present = mesh.attributes();
         if self.shading.needs_normals() && !present.normals {
-            let needed = Attributes {
-                normals: true,
-                ..Attributes::NONE
-            };
+            let needed = Attributes { normals: true, ..Attributes::NONE };
             return Err(DrawError::MissingAttributes { needed, present });
         }
         let mut state = *state;
@@ -135,9 +132,7 @@ impl<'a> Effects<'a> {
         Ok(Variant {
             shading: self.shading,
             vertex_colors: self.shading == ShadingModel::Unlit && present.colors,
-            texture: self
-                .texture
-                .filter(|_| self.shading.takes_texture() && present.uvs),
+            texture: self.texture.filter(|_| self.shading.takes_texture() && present.uvs),
             specular: self.shading.is_lit() && self.material.has_specular(),
             state,
         })
@@ -167,11 +162,7 @@ impl fmt::Display for Variant<'_> {
             }
         }
         if self.shading.is_lit() {
-            f.write_str(if self.specular {
-                ", specular"
-            } else {
-                ", no specular"
-            })?;
+            f.write_str(if self.specular { ", specular" } else { ", no specular" })?;
         }
         let s = &self.state;
         f.write_str(match s.interpolation {

@@ -24,28 +24,16 @@ impl<'a, T: TextureStage> FlatShader<'a, T> {
 /// The light terms of a triangle: its face normal (the object-space cross product of two edges, through the
 /// normal matrix) lit at its centroid.
 #[inline(always)]
-pub(crate) fn face_light(
-    surface: &Surface<'_>,
-    mesh: &Mesh<'_>,
-    [a, b, c]: [usize; 3],
-) -> LightTerms {
+pub(crate) fn face_light(surface: &Surface<'_>, mesh: &Mesh<'_>, [a, b, c]: [usize; 3]) -> LightTerms {
     let (p0, p1, p2) = (mesh.position(a), mesh.position(b), mesh.position(c));
     let n = (surface.transforms.normal * (p1 - p0).cross(p2 - p0)).normalize_or_zero();
     let specular = if surface.material.has_specular() {
-        let centroid = surface
-            .transforms
-            .model
-            .transform_point((p0 + p1 + p2) * (1.0 / 3.0));
-        surface
-            .lighting
-            .specular(n, surface.to_eye(centroid), surface.material.shininess)
+        let centroid = surface.transforms.model.transform_point((p0 + p1 + p2) * (1.0 / 3.0));
+        surface.lighting.specular(n, surface.eye_direction(centroid), surface.material.shininess)
     } else {
         Vec3::ZERO
     };
-    LightTerms {
-        diffuse: surface.lighting.diffuse(n),
-        specular,
-    }
+    LightTerms { diffuse: surface.lighting.diffuse(n), specular }
 }
 
 impl<T: TextureStage> Shader for FlatShader<'_, T> {

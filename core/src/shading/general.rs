@@ -25,14 +25,7 @@ pub struct GeneralVaryings {
     pub specular: Vec3,
 }
 
-crate::impl_varyings!(GeneralVaryings {
-    color,
-    normal,
-    world,
-    uv,
-    diffuse,
-    specular
-});
+crate::impl_varyings!(GeneralVaryings { color, normal, world, uv, diffuse, specular });
 
 /// A shader that runs any [`Variant`], branching on it at run time.
 #[derive(Clone, Copy, Debug)]
@@ -50,11 +43,7 @@ impl<'a> GeneralShader<'a> {
             _ => (0.0, 1.0),
         };
         let depth_view = DepthShader::new(surface.transforms.clip_from_object, near, far);
-        Self {
-            variant,
-            surface,
-            depth_view,
-        }
+        Self { variant, surface, depth_view }
     }
 
     fn albedo(&self, base: Vec3, uv: Vec2) -> Vec3 {
@@ -83,11 +72,7 @@ impl Shader for GeneralShader<'_> {
                 out.normal = s.normal(mesh, i);
                 out.diffuse = s.lighting.diffuse(out.normal);
                 if v.specular {
-                    out.specular = s.lighting.specular(
-                        out.normal,
-                        s.to_eye(s.world(mesh, i)),
-                        s.material.shininess,
-                    );
+                    out.specular = s.lighting.specular(out.normal, s.eye_direction(s.world(mesh, i)), s.material.shininess);
                 }
             }
             ShadingModel::Phong => {
@@ -105,10 +90,7 @@ impl Shader for GeneralShader<'_> {
     fn face(&self, mesh: &Mesh<'_>, triangle: [usize; 3]) -> LightTerms {
         match self.variant.shading {
             ShadingModel::Flat => face_light(&self.surface, mesh, triangle),
-            _ => LightTerms {
-                diffuse: Vec3::ZERO,
-                specular: Vec3::ZERO,
-            },
+            _ => LightTerms { diffuse: Vec3::ZERO, specular: Vec3::ZERO },
         }
     }
 
@@ -121,20 +103,12 @@ impl Shader for GeneralShader<'_> {
             ShadingModel::Flat => face.shade(self.albedo(m.color, v.uv), m.specular),
             ShadingModel::Gouraud => {
                 let lit = self.albedo(m.color, v.uv).mul_elem(v.diffuse);
-                if self.variant.specular {
-                    lit + m.specular.mul_elem(v.specular)
-                } else {
-                    lit
-                }
+                if self.variant.specular { lit + m.specular.mul_elem(v.specular) } else { lit }
             }
             ShadingModel::Phong => {
                 let n = v.normal.normalize_or_zero();
                 let lit = self.albedo(m.color, v.uv).mul_elem(s.lighting.diffuse(n));
-                if self.variant.specular {
-                    lit + s.highlight(n, v.world)
-                } else {
-                    lit
-                }
+                if self.variant.specular { lit + s.highlight(n, v.world) } else { lit }
             }
             ShadingModel::Depth { .. } => self.depth_view.fragment(f, &(), &()),
             ShadingModel::Normals => v.normal.normalize_or_zero() * 0.5 + Vec3::splat(0.5),

@@ -18,11 +18,7 @@ pub struct GouraudShader<'a, T, H> {
 impl<'a, T: TextureStage, H: Highlights> GouraudShader<'a, T, H> {
     /// A Gouraud shader for `surface`, coloured by `texture`.
     pub fn new(surface: Surface<'a>, texture: T) -> Self {
-        Self {
-            surface,
-            texture,
-            _highlights: H::default(),
-        }
+        Self { surface, texture, _highlights: H::default() }
     }
 }
 
@@ -30,25 +26,15 @@ impl<T: TextureStage, H: Highlights> Shader for GouraudShader<'_, T, H> {
     /// Diffuse light, specular light (if on), texture varyings.
     type Varyings = (Vec3, H::Value, T::Varyings);
     type Face = ();
-    const ATTRIBUTES: Attributes = T::ATTRIBUTES.union(Attributes {
-        normals: true,
-        uvs: false,
-        colors: false,
-    });
+    const ATTRIBUTES: Attributes = T::ATTRIBUTES.union(Attributes { normals: true, uvs: false, colors: false });
 
     #[inline(always)]
     fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, Self::Varyings) {
         let s = &self.surface;
         let n = s.normal(mesh, i);
         let diffuse = s.lighting.diffuse(n);
-        let specular = H::capture(|| {
-            s.lighting
-                .specular(n, s.to_eye(s.world(mesh, i)), s.material.shininess)
-        });
-        (
-            s.clip(mesh, i),
-            (diffuse, specular, self.texture.vertex(mesh, i)),
-        )
+        let specular = H::capture(|| s.lighting.specular(n, s.eye_direction(s.world(mesh, i)), s.material.shininess));
+        (s.clip(mesh, i), (diffuse, specular, self.texture.vertex(mesh, i)))
     }
 
     #[inline(always)]

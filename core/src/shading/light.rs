@@ -14,10 +14,7 @@ pub struct Light {
 impl Light {
     /// A light shining from `to_light` (normalised here; a zero vector gives a light that adds nothing).
     pub fn directional(to_light: Vec3, color: Vec3) -> Self {
-        Self {
-            to_light: to_light.normalize_or_zero(),
-            color,
-        }
+        Self { to_light: to_light.normalize_or_zero(), color }
     }
 }
 
@@ -78,11 +75,7 @@ impl Material {
 
 impl Default for Material {
     fn default() -> Self {
-        Self {
-            color: Vec3::splat(0.8),
-            specular: Vec3::ZERO,
-            shininess: 32.0,
-        }
+        Self { color: Vec3::splat(0.8), specular: Vec3::ZERO, shininess: 32.0 }
     }
 }
 

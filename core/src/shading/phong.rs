@@ -17,11 +17,7 @@ pub struct PhongShader<'a, T, H> {
 impl<'a, T: TextureStage, H: Highlights> PhongShader<'a, T, H> {
     /// A per-pixel lighting shader for `surface`, coloured by `texture`.
     pub fn new(surface: Surface<'a>, texture: T) -> Self {
-        Self {
-            surface,
-            texture,
-            _highlights: H::default(),
-        }
+        Self { surface, texture, _highlights: H::default() }
     }
 }
 
@@ -29,20 +25,13 @@ impl<T: TextureStage, H: Highlights> Shader for PhongShader<'_, T, H> {
     /// World normal, world position (only with highlights), texture varyings.
     type Varyings = (Vec3, H::Value, T::Varyings);
     type Face = ();
-    const ATTRIBUTES: Attributes = T::ATTRIBUTES.union(Attributes {
-        normals: true,
-        uvs: false,
-        colors: false,
-    });
+    const ATTRIBUTES: Attributes = T::ATTRIBUTES.union(Attributes { normals: true, uvs: false, colors: false });
 
     #[inline(always)]
     fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, Self::Varyings) {
         let s = &self.surface;
         let world = H::capture(|| s.world(mesh, i));
-        (
-            s.clip(mesh, i),
-            (s.normal(mesh, i), world, self.texture.vertex(mesh, i)),
-        )
+        (s.clip(mesh, i), (s.normal(mesh, i), world, self.texture.vertex(mesh, i)))
     }
 
     #[inline(always)]
@@ -52,10 +41,7 @@ impl<T: TextureStage, H: Highlights> Shader for PhongShader<'_, T, H> {
     fn fragment(&self, _: &Fragment, _: &(), v: &Self::Varyings) -> Vec3 {
         let s = &self.surface;
         let n = v.0.normalize_or_zero();
-        let lit = self
-            .texture
-            .albedo(s.material.color, &v.2)
-            .mul_elem(s.lighting.diffuse(n));
+        let lit = self.texture.albedo(s.material.color, &v.2).mul_elem(s.lighting.diffuse(n));
         H::apply(lit, &v.1, |world| s.highlight(n, world))
     }
 }

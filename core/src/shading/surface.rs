@@ -1,7 +1,7 @@
 //! What every lit shader knows about the surface it shades.
 
 use super::{Lighting, Material, Transforms};
-use crate::math::{Vec3, Vec4};
+use crate::math::{Mat3, Vec3, Vec4};
 use crate::mesh::Mesh;
 
 /// Transforms, material and lights of a lit draw.
@@ -19,9 +19,7 @@ impl Surface<'_> {
     /// Clip-space position of a vertex.
     #[inline(always)]
     pub(crate) fn clip(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
-        self.transforms
-            .clip_from_object
-            .project_point(mesh.position(i))
+        self.transforms.clip_from_object.project_point(mesh.position(i))
     }
 
     /// World-space position of a vertex.
@@ -30,15 +28,15 @@ impl Surface<'_> {
         self.transforms.model.transform_point(mesh.position(i))
     }
 
-    /// Unit world-space normal of a vertex (zero if the normal is zero).
+    /// Unit world-space normal of a vertex: see [`world_normal`].
     #[inline(always)]
     pub(crate) fn normal(&self, mesh: &Mesh<'_>, i: usize) -> Vec3 {
-        (self.transforms.normal * mesh.normal(i)).normalize_or_zero()
+        world_normal(&self.transforms.normal, mesh.normal(i))
     }
 
     /// Unit vector from a world-space point toward the camera.
     #[inline(always)]
-    pub(crate) fn to_eye(&self, world: Vec3) -> Vec3 {
+    pub(crate) fn eye_direction(&self, world: Vec3) -> Vec3 {
         (self.transforms.eye - world).normalize_or_zero()
     }
 
@@ -46,7 +44,14 @@ impl Surface<'_> {
     #[inline(always)]
     pub(crate) fn highlight(&self, n: Vec3, world: Vec3) -> Vec3 {
         let m = &self.material;
-        m.specular
-            .mul_elem(self.lighting.specular(n, self.to_eye(world), m.shininess))
+        m.specular.mul_elem(self.lighting.specular(n, self.eye_direction(world), m.shininess))
     }
+}
+
+/// An object-space normal in world space, unit length; zero stays zero, and a NaN or infinite normal stays
+/// non-finite so that its triangle is skipped rather than drawn black.
+#[inline(always)]
+pub(crate) fn world_normal(normal_matrix: &Mat3, n: Vec3) -> Vec3 {
+    let n = *normal_matrix * n;
+    if n.is_finite() { n.normalize_or_zero() } else { n }
 }

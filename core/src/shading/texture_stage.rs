@@ -45,20 +45,13 @@ pub struct Textured<'t, F, W> {
 impl<'t, F: Filter, W: Wrap> Textured<'t, F, W> {
     /// Samples `texture`.
     pub fn new(texture: Texture<'t>) -> Self {
-        Self {
-            texture,
-            _mode: core::marker::PhantomData,
-        }
+        Self { texture, _mode: core::marker::PhantomData }
     }
 }
 
 impl<F: Filter + Copy, W: Wrap + Copy> TextureStage for Textured<'_, F, W> {
     type Varyings = Vec2;
-    const ATTRIBUTES: Attributes = Attributes {
-        normals: false,
-        uvs: true,
-        colors: false,
-    };
+    const ATTRIBUTES: Attributes = Attributes { normals: false, uvs: true, colors: false };
     #[inline(always)]
     fn vertex(&self, mesh: &Mesh<'_>, index: usize) -> Vec2 {
         mesh.uv(index)

@@ -22,9 +22,7 @@ impl Transforms {
     ///
     /// The eye is the view matrix's inverse applied to the origin; a singular view matrix puts it at the origin.
     pub fn new(model: Mat4, view: Mat4, projection: Mat4) -> Self {
-        let eye = view
-            .inverse()
-            .map_or(Vec3::ZERO, |inv| inv.transform_point(Vec3::ZERO));
+        let eye = view.inverse().map_or(Vec3::ZERO, |inv| inv.transform_point(Vec3::ZERO));
         Self {
             model,
             clip_from_object: projection * view * model,

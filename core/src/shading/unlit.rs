@@ -16,11 +16,7 @@ pub struct UnlitShader<T> {
 impl<T: TextureStage> UnlitShader<T> {
     /// A shader drawing `color` (times `texture`) through `clip_from_object`.
     pub fn new(clip_from_object: Mat4, color: Vec3, texture: T) -> Self {
-        Self {
-            clip_from_object,
-            color,
-            texture,
-        }
+        Self { clip_from_object, color, texture }
     }
 }
 
@@ -31,10 +27,7 @@ impl<T: TextureStage> Shader for UnlitShader<T> {
 
     #[inline(always)]
     fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, T::Varyings) {
-        (
-            self.clip_from_object.project_point(mesh.position(i)),
-            self.texture.vertex(mesh, i),
-        )
+        (self.clip_from_object.project_point(mesh.position(i)), self.texture.vertex(mesh, i))
     }
 
     #[inline(always)]
@@ -56,21 +49,14 @@ pub struct VertexColorShader<T> {
 impl<T: TextureStage> VertexColorShader<T> {
     /// A shader drawing vertex colours (times `texture`) through `clip_from_object`.
     pub fn new(clip_from_object: Mat4, texture: T) -> Self {
-        Self {
-            clip_from_object,
-            texture,
-        }
+        Self { clip_from_object, texture }
     }
 }
 
 impl<T: TextureStage> Shader for VertexColorShader<T> {
     type Varyings = (Vec3, T::Varyings);
     type Face = ();
-    const ATTRIBUTES: Attributes = T::ATTRIBUTES.union(Attributes {
-        normals: false,
-        uvs: false,
-        colors: true,
-    });
+    const ATTRIBUTES: Attributes = T::ATTRIBUTES.union(Attributes { normals: false, uvs: false, colors: true });
 
     #[inline(always)]
     fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, Self::Varyings) {

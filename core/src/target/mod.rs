@@ -71,29 +71,16 @@ impl core::fmt::Display for TargetError {
         match self {
             Self::Empty => f.write_str("the frame has no pixels"),
             Self::TooLarge { width, height } => {
-                write!(
-                    f,
-                    "a {width}x{height} frame is larger than {MAX_DIMENSION}x{MAX_DIMENSION}"
-                )
+                write!(f, "a {width}x{height} frame is larger than {MAX_DIMENSION}x{MAX_DIMENSION}")
             }
             Self::Rows { rows, height } => {
-                write!(
-                    f,
-                    "rows {}..{} are not a non-empty band of a {height}-row frame",
-                    rows.start, rows.end
-                )
+                write!(f, "rows {}..{} are not a non-empty band of a {height}-row frame", rows.start, rows.end)
             }
             Self::ColorLength { expected, actual } => {
-                write!(
-                    f,
-                    "the colour buffer holds {actual} pixels, the band has {expected}"
-                )
+                write!(f, "the colour buffer holds {actual} pixels, the band has {expected}")
             }
             Self::DepthLength { expected, actual } => {
-                write!(
-                    f,
-                    "the depth buffer holds {actual} pixels, the band has {expected}"
-                )
+                write!(f, "the depth buffer holds {actual} pixels, the band has {expected}")
             }
         }
     }
@@ -125,13 +112,7 @@ impl<C: ColorBuffer, D: DepthBuffer> Target<C, D> {
     /// [`TargetError::Empty`] or [`TargetError::TooLarge`] for a frame of zero or more than [`MAX_DIMENSION`]
     /// pixels a side, [`TargetError::Rows`] for an empty band or one outside the frame, and
     /// [`TargetError::ColorLength`] / [`TargetError::DepthLength`] when a buffer has the wrong length.
-    pub fn band(
-        color: C,
-        depth: D,
-        width: u32,
-        height: u32,
-        rows: Range<u32>,
-    ) -> Result<Self, TargetError> {
+    pub fn band(color: C, depth: D, width: u32, height: u32, rows: Range<u32>) -> Result<Self, TargetError> {
         if width == 0 || height == 0 {
             return Err(TargetError::Empty);
         }
@@ -154,13 +135,7 @@ impl<C: ColorBuffer, D: DepthBuffer> Target<C, D> {
             }
             _ => {}
         }
-        Ok(Self {
-            color,
-            depth,
-            width,
-            height,
-            rows,
-        })
+        Ok(Self { color, depth, width, height, rows })
     }
 
     /// Fills the colour buffer with `color` and resets the depth buffer to the far plane.

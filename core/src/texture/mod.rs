@@ -59,20 +59,11 @@ impl<'a> Texture<'a> {
         let (Ok(w), Ok(h)) = (i32::try_from(width), i32::try_from(height)) else {
             return Err(TextureError::TooLarge);
         };
-        let expected = (width as usize)
-            .checked_mul(height as usize)
-            .ok_or(TextureError::TooLarge)?;
+        let expected = (width as usize).checked_mul(height as usize).ok_or(TextureError::TooLarge)?;
         if texels.len() != expected {
-            return Err(TextureError::Length {
-                expected,
-                actual: texels.len(),
-            });
+            return Err(TextureError::Length { expected, actual: texels.len() });
         }
-        Ok(Self {
-            texels,
-            width: w,
-            height: h,
-        })
+        Ok(Self { texels, width: w, height: h })
     }
 
     /// Width in texels.

@@ -1,0 +1,274 @@
+//! Helpers shared by the core's integration tests: screen-space triangles, a coverage-count target, ASCII art.
+#![allow(dead_code)]
+
+use rasterm_core::math::{Vec3, Vec4};
+use rasterm_core::mesh::{Attributes, Indices, Mesh};
+use rasterm_core::pipeline::{DrawState, DrawStats, Fragment, Shader, draw};
+use rasterm_core::target::{ColorBuffer, NoDepth, Target};
+
+/// Counts how many times each pixel is written.
+pub struct Count<'a>(pub &'a mut [u32]);
+
+impl ColorBuffer for Count<'_> {
+    fn pixel_count(&self) -> Option<usize> {
+        Some(self.0.len())
+    }
+    fn write(&mut self, index: usize, _: Vec3) {
+        self.0[index] += 1;
+    }
+    fn fill(&mut self, _: Vec3) {
+        self.0.fill(0);
+    }
+}
+
+/// A shader whose mesh positions are screen pixels (x right, y down), depth z, on a `width x height` frame.
+pub struct ScreenSpace {
+    pub width: f32,
+    pub height: f32,
+}
+
+impl Shader for ScreenSpace {
+    type Varyings = ();
+    type Face = ();
+    const ATTRIBUTES: Attributes = Attributes::NONE;
+    fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, ()) {
+        let p = mesh.position(i);
+        (Vec4::new(2.0 * p.x / self.width - 1.0, 1.0 - 2.0 * p.y / self.height, p.z, 1.0), ())
+    }
+    fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
+    fn fragment(&self, _: &Fragment, _: &(), _: &()) -> Vec3 {
+        Vec3::ONE
+    }
+}
+
+/// Screen-space triangle corners `(x, y)`, depth 0.5.
+pub type Tri = [(f32, f32); 3];
+
+/// Renders screen-space triangles into a coverage count of a `width x height` frame (rows `rows`).
+pub fn coverage_rows(
+    width: u32,
+    height: u32,
+    rows: core::ops::Range<u32>,
+    tris: &[Tri],
+    state: &DrawState,
+) -> (Vec<u32>, DrawStats) {
+    let positions: Vec<Vec3> = tris.iter().flatten().map(|&(x, y)| Vec3::new(x, y, 0.5)).collect();
+    let mesh = Mesh::new(&positions, Indices::Sequential).unwrap();
+    let mut counts = vec![0u32; (width * (rows.end - rows.start)) as usize];
+    let mut target = Target::band(Count(&mut counts), NoDepth, width, height, rows).unwrap();
+    let shader = ScreenSpace { width: width as f32, height: height as f32 };
+    let stats = draw(&mut target, &mesh, &shader, state).unwrap();
+    (counts, stats)
+}
+
+/// [`coverage_rows`] for the whole frame.
+pub fn coverage(width: u32, height: u32, tris: &[Tri], state: &DrawState) -> (Vec<u32>, DrawStats) {
+    coverage_rows(width, height, 0..height, tris, state)
+}
+
+/// No culling: the tests choose windings freely.
+pub fn both_sides() -> DrawState {
+    DrawState { cull: rasterm_core::pipeline::Cull::None, ..DrawState::default() }
+}
+
+/// Counts as ASCII art: `.` for 0, `#` for 1, digits for more.
+pub fn ascii(counts: &[u32], width: u32) -> Vec<String> {
+    counts
+        .chunks(width as usize)
+        .map(|row| {
+            row.iter()
+                .map(|&c| match c {
+                    0 => '.',
+                    1 => '#',
+                    n => char::from_digit(n.min(9), 10).unwrap(),
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// Asserts that `counts` draws `expected`, printing both on failure.
+#[track_caller]
+pub fn assert_pattern(counts: &[u32], width: u32, expected: &[&str]) {
+    let actual = ascii(counts, width);
+    if actual != expected {
+        panic!("pattern mismatch\nexpected:\n{}\nactual:\n{}\n", expected.join("\n"), actual.join("\n"));
+    }
+}
+
+/// A shader drawing object-space positions through one matrix.
+pub struct Transformed {
+    pub clip_from_object: rasterm_core::math::Mat4,
+}
+
+impl Shader for Transformed {
+    type Varyings = ();
+    type Face = ();
+    const ATTRIBUTES: Attributes = Attributes::NONE;
+    fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, ()) {
+        (self.clip_from_object.project_point(mesh.position(i)), ())
+    }
+    fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
+    fn fragment(&self, _: &Fragment, _: &(), _: &()) -> Vec3 {
+        Vec3::ONE
+    }
+}
+
+/// A camera at the origin looking down -z with a symmetric perspective frustum.
+#[derive(Clone, Copy)]
+pub struct PinholeCamera {
+    pub fovy: f64,
+    pub near: f64,
+    pub far: f64,
+    pub width: u32,
+    pub height: u32,
+}
+
+impl PinholeCamera {
+    pub fn projection(&self) -> rasterm_core::math::Mat4 {
+        let aspect = self.width as f32 / self.height as f32;
+        rasterm_core::camera::perspective(self.fovy as f32, aspect, self.near as f32, self.far as f32).unwrap()
+    }
+
+    /// Renders view-space triangles (camera at the origin) through the core.
+    pub fn render(&self, tris: &[[[f32; 3]; 3]], state: &DrawState) -> (Vec<u32>, DrawStats) {
+        let positions: Vec<Vec3> = tris.iter().flatten().map(|p| Vec3::new(p[0], p[1], p[2])).collect();
+        let mesh = Mesh::new(&positions, Indices::Sequential).unwrap();
+        let mut counts = vec![0u32; (self.width * self.height) as usize];
+        let mut target = Target::new(Count(&mut counts), NoDepth, self.width, self.height).unwrap();
+        let shader = Transformed { clip_from_object: self.projection() };
+        let stats = draw(&mut target, &mesh, &shader, state).unwrap();
+        (counts, stats)
+    }
+
+    /// Exact coverage in f64 by casting the ray through each pixel centre (offset by `(dx, dy)` pixels) and
+    /// intersecting it with each triangle between the near and far planes.
+    pub fn ray_cast(&self, tris: &[[[f32; 3]; 3]], dx: f64, dy: f64) -> Vec<u32> {
+        let (w, h) = (self.width as f64, self.height as f64);
+        let t = (self.fovy / 2.0).tan();
+        let mut out = vec![0u32; (self.width * self.height) as usize];
+        for j in 0..self.height {
+            for i in 0..self.width {
+                let x = (2.0 * (i as f64 + 0.5 + dx) / w - 1.0) * t * (w / h);
+                let y = (1.0 - 2.0 * (j as f64 + 0.5 + dy) / h) * t;
+                let dir = [x, y, -1.0];
+                for tri in tris {
+                    if let Some(dist) = ray_triangle(dir, tri) {
+                        if dist >= self.near && dist <= self.far {
+                            out[(j * self.width + i) as usize] += 1;
+                        }
+                    }
+                }
+            }
+        }
+        out
+    }
+
+    /// [`Self::ray_cast`] at the centres, and whether it agrees with itself ±0.01 px around every centre (so that
+    /// sub-pixel snapping cannot change any pixel).
+    pub fn robust_ray_cast(&self, tris: &[[[f32; 3]; 3]]) -> (Vec<u32>, usize) {
+        let centre = self.ray_cast(tris, 0.0, 0.0);
+        let mut fragile = vec![false; centre.len()];
+        for (dx, dy) in [(-0.01, 0.0), (0.01, 0.0), (0.0, -0.01), (0.0, 0.01)] {
+            for (f, (a, b)) in fragile.iter_mut().zip(centre.iter().zip(self.ray_cast(tris, dx, dy))) {
+                *f |= *a != b;
+            }
+        }
+        (centre, fragile.iter().filter(|&&f| f).count())
+    }
+}
+
+/// Distance along `dir` (from the origin, in units of `dir`'s -z component) at which the ray meets the triangle,
+/// by Moller-Trumbore.
+fn ray_triangle(dir: [f64; 3], tri: &[[f32; 3]; 3]) -> Option<f64> {
+    let p = tri.map(|v| v.map(f64::from));
+    let sub = |a: [f64; 3], b: [f64; 3]| [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+    let cross =
+        |a: [f64; 3], b: [f64; 3]| [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+    let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    let (e1, e2) = (sub(p[1], p[0]), sub(p[2], p[0]));
+    let q = cross(dir, e2);
+    let det = dot(e1, q);
+    if det == 0.0 {
+        return None;
+    }
+    let s = sub([0.0; 3], p[0]);
+    let u = dot(s, q) / det;
+    let r = cross(s, e1);
+    let v = dot(dir, r) / det;
+    let t = dot(e2, r) / det;
+    (u >= 0.0 && v >= 0.0 && u + v <= 1.0 && t > 0.0).then_some(t)
+}
+
+/// A torus with normals, texture coordinates and colours: self-occluding, so the depth test matters.
+pub struct Torus {
+    pub positions: Vec<Vec3>,
+    pub normals: Vec<Vec3>,
+    pub uvs: Vec<rasterm_core::math::Vec2>,
+    pub colors: Vec<Vec3>,
+    pub indices: Vec<u16>,
+}
+
+impl Torus {
+    pub fn new(major: f32, minor: f32, rings: u16, sides: u16) -> Self {
+        let mut t = Torus { positions: vec![], normals: vec![], uvs: vec![], colors: vec![], indices: vec![] };
+        let tau = core::f32::consts::TAU;
+        for i in 0..=rings {
+            for j in 0..=sides {
+                let (u, v) = (i as f32 / rings as f32, j as f32 / sides as f32);
+                let (a, b) = (u * tau, v * tau);
+                let centre = Vec3::new(a.cos() * major, a.sin() * major, 0.0);
+                let n = Vec3::new(a.cos() * b.cos(), a.sin() * b.cos(), b.sin());
+                t.positions.push(centre + n * minor);
+                t.normals.push(n);
+                t.uvs.push(rasterm_core::math::Vec2::new(u * 3.0, v));
+                t.colors.push(Vec3::new(u, v, 1.0 - u));
+            }
+        }
+        let row = sides + 1;
+        for i in 0..rings {
+            for j in 0..sides {
+                let (a, b) = (i * row + j, (i + 1) * row + j);
+                t.indices.extend_from_slice(&[a, b, b + 1, a, b + 1, a + 1]);
+            }
+        }
+        t
+    }
+
+    pub fn mesh(&self) -> Mesh<'_> {
+        Mesh::new(&self.positions, Indices::U16(&self.indices))
+            .unwrap()
+            .with_normals(&self.normals)
+            .unwrap()
+            .with_uvs(&self.uvs)
+            .unwrap()
+            .with_colors(&self.colors)
+            .unwrap()
+    }
+}
+
+/// An 8x8 checkerboard of two colours with a red texel in the top-left corner (so flips show).
+pub fn checker_texels() -> Vec<u32> {
+    (0..64)
+        .map(|i| match (i % 8, i / 8) {
+            (0, 0) => 0xFF0000,
+            (x, y) if (x + y) % 2 == 0 => 0xF0E0C0,
+            _ => 0x203060,
+        })
+        .collect()
+}
+
+/// Keeps the exact `f32` colour of each pixel, so comparisons see differences that 8-bit packing would hide.
+pub struct ExactColor<'a>(pub &'a mut [[u32; 3]]);
+
+impl ColorBuffer for ExactColor<'_> {
+    fn pixel_count(&self) -> Option<usize> {
+        Some(self.0.len())
+    }
+    fn write(&mut self, index: usize, c: Vec3) {
+        self.0[index] = [c.x.to_bits(), c.y.to_bits(), c.z.to_bits()];
+    }
+    fn fill(&mut self, c: Vec3) {
+        self.0.fill([c.x.to_bits(), c.y.to_bits(), c.z.to_bits()]);
+    }
+}

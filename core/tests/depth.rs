@@ -1,0 +1,86 @@
+//! The z-buffer: comparison, formats, clearing, and the depth test switched off.
+
+mod common;
+
+use common::ScreenSpace;
+use rasterm_core::math::{Vec3, Vec4};
+use rasterm_core::mesh::{Attributes, Indices, Mesh};
+use rasterm_core::pipeline::{DepthTest, DrawState, Fragment, Shader, draw};
+use rasterm_core::target::{DepthBuffer, Rgb888, Target, depth_to_u16};
+
+/// Colours each triangle by its first vertex's index, so the winner of each pixel is visible.
+struct ByTriangle(ScreenSpace);
+
+impl Shader for ByTriangle {
+    type Varyings = ();
+    type Face = Vec3;
+    const ATTRIBUTES: Attributes = Attributes::NONE;
+    fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, ()) {
+        self.0.vertex(mesh, i)
+    }
+    fn face(&self, _: &Mesh<'_>, t: [usize; 3]) -> Vec3 {
+        Vec3::new(t[0] as f32 / 255.0, 0.0, 0.0)
+    }
+    fn fragment(&self, _: &Fragment, face: &Vec3, _: &()) -> Vec3 {
+        *face
+    }
+}
+
+/// Two full-frame quads at depths `z0` (vertices 0..6) and `z1` (6..12) on a 4x4 frame; returns which quad each
+/// pixel shows (0 or 6) and the final depth buffer.
+fn two_quads<D: DepthBuffer>(z0: f32, z1: f32, depth: D, test: DepthTest) -> (Vec<u32>, D) {
+    let quad = |z: f32| {
+        [(0.0, 0.0), (0.0, 4.0), (4.0, 4.0), (0.0, 0.0), (4.0, 4.0), (4.0, 0.0)].map(|(x, y)| Vec3::new(x, y, z))
+    };
+    let positions: Vec<Vec3> = quad(z0).into_iter().chain(quad(z1)).collect();
+    let mesh = Mesh::new(&positions, Indices::Sequential).unwrap();
+    let mut color = vec![0u32; 16];
+    let mut target = Target::new(Rgb888(&mut color), depth, 4, 4).unwrap();
+    target.clear(Vec3::ONE);
+    let state = DrawState { depth_test: test, ..DrawState::default() };
+    draw(&mut target, &mesh, &ByTriangle(ScreenSpace { width: 4.0, height: 4.0 }), &state).unwrap();
+    let (_, depth) = target.into_parts();
+    (color.iter().map(|&c| (c >> 16) & 0xFF).collect(), depth)
+}
+
+#[test]
+fn the_nearer_surface_wins_in_either_order() {
+    let mut d = [0f32; 16];
+    assert!(two_quads(0.3, 0.6, &mut d[..], DepthTest::Less).0.iter().all(|&w| w <= 3), "first (nearer) wins");
+    assert!(d.iter().all(|&z| z == 0.3));
+    assert!(two_quads(0.6, 0.3, &mut d[..], DepthTest::Less).0.iter().all(|&w| w >= 6), "second (nearer) wins");
+    let mut d16 = [0u16; 16];
+    assert!(two_quads(0.3, 0.6, &mut d16[..], DepthTest::Less).0.iter().all(|&w| w <= 3));
+    assert!(two_quads(0.6, 0.3, &mut d16[..], DepthTest::Less).0.iter().all(|&w| w >= 6));
+    assert!(d16.iter().all(|&z| z == depth_to_u16(0.3)));
+}
+
+#[test]
+fn coplanar_surfaces_keep_the_first_drawn_every_frame() {
+    // The comparison is strictly less: at equal depth the surface already there stays, frame after frame.
+    for _ in 0..3 {
+        let mut d = [0f32; 16];
+        assert!(two_quads(0.5, 0.5, &mut d[..], DepthTest::Less).0.iter().all(|&w| w <= 3));
+        let mut d16 = [0u16; 16];
+        // 0.5 and 0.500001 differ as f32 but quantise to the same u16 level: still the first wins.
+        assert!(two_quads(0.5, 0.500_001, &mut d16[..], DepthTest::Less).0.iter().all(|&w| w <= 3));
+    }
+}
+
+#[test]
+fn depth_test_off_draws_in_order_and_leaves_the_buffer_alone() {
+    let mut d = [0f32; 16];
+    let (winners, _) = two_quads(0.3, 0.6, &mut d[..], DepthTest::Off);
+    assert!(winners.iter().all(|&w| w >= 6), "the last drawn wins");
+    assert!(d.iter().all(|&z| z == 1.0), "cleared to far and never written");
+}
+
+#[test]
+fn u16_depth_quantisation() {
+    assert_eq!(depth_to_u16(0.0), 0);
+    assert_eq!(depth_to_u16(1.0), u16::MAX);
+    assert_eq!(depth_to_u16(0.5), 32768);
+    assert_eq!(depth_to_u16(-0.1), 0);
+    assert_eq!(depth_to_u16(2.0), u16::MAX);
+    assert_eq!(depth_to_u16(f32::NAN), 0);
+}

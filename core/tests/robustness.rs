@@ -1,0 +1,179 @@
+//! Bad input never panics: out-of-range indices and non-finite values skip their triangle only, and buffers of
+//! the wrong size are refused with an error value.
+
+mod common;
+
+use common::{Count, ScreenSpace, Torus, coverage};
+use rasterm_core::camera::{look_at, perspective};
+use rasterm_core::math::{Mat4, Vec2, Vec3};
+use rasterm_core::mesh::{Attributes, Indices, Mesh, MeshError};
+use rasterm_core::pipeline::{DrawError, DrawState, DrawStats, draw};
+use rasterm_core::shading::{Effects, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh};
+use rasterm_core::target::{MAX_DIMENSION, NoColor, NoDepth, Rgb888, Target, TargetError};
+use rasterm_core::texture::{FilterMode, Texture, WrapMode};
+
+fn quad_positions() -> Vec<Vec3> {
+    // Two triangles side by side on an 8x4 frame, plus a spare vertex.
+    [(0.0, 0.0), (0.0, 4.0), (4.0, 4.0), (4.0, 0.0), (8.0, 4.0), (8.0, 0.0), (1.0, 1.0)]
+        .map(|(x, y)| Vec3::new(x, y, 0.5))
+        .to_vec()
+}
+
+fn render(positions: &[Vec3], indices: &[u32]) -> (Vec<u32>, DrawStats) {
+    let mesh = Mesh::new(positions, Indices::U32(indices)).unwrap();
+    let mut counts = vec![0u32; 32];
+    let mut target = Target::new(Count(&mut counts), NoDepth, 8, 4).unwrap();
+    let state = DrawState { cull: rasterm_core::pipeline::Cull::None, ..DrawState::default() };
+    let stats = draw(&mut target, &mesh, &ScreenSpace { width: 8.0, height: 4.0 }, &state).unwrap();
+    (counts, stats)
+}
+
+#[test]
+fn an_index_out_of_range_skips_only_its_triangle() {
+    let p = quad_positions();
+    let (good, _) = render(&p, &[0, 1, 2, 3, 4, 5]);
+    let (only_second, _) = render(&p, &[3, 4, 5]);
+    let (c, stats) = render(&p, &[0, 1, 99, 3, 4, 5]);
+    assert_eq!(c, only_second);
+    assert_ne!(c, good);
+    assert_eq!((stats.triangles_in, stats.invalid, stats.rasterized), (2, 1, 1));
+    let (_, stats) = render(&p, &[u32::MAX, 0, 1]);
+    assert_eq!(stats.invalid, 1);
+}
+
+#[test]
+fn a_non_finite_position_skips_only_its_triangle() {
+    let (only_second, _) = render(&quad_positions(), &[3, 4, 5]);
+    for bad in [f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
+        let mut p = quad_positions();
+        p[1].y = bad;
+        let (c, stats) = render(&p, &[0, 1, 2, 3, 4, 5]);
+        assert_eq!(c, only_second, "{bad}");
+        assert_eq!((stats.invalid, stats.rasterized), (1, 1));
+    }
+}
+
+/// A NaN normal or UV skips a triangle only in draws that read it.
+#[test]
+fn non_finite_attributes_skip_triangles_only_where_used() {
+    let torus = Torus::new(1.0, 0.4, 12, 8);
+    let mut normals = torus.normals.clone();
+    let mut uvs = torus.uvs.clone();
+    normals[5] = Vec3::new(f32::NAN, 0.0, 1.0);
+    uvs[40] = Vec2::new(f32::INFINITY, 0.0);
+    let mesh = Mesh::new(&torus.positions, Indices::U16(&torus.indices))
+        .unwrap()
+        .with_normals(&normals)
+        .unwrap()
+        .with_uvs(&uvs)
+        .unwrap();
+    let texels = common::checker_texels();
+    let texture = TextureBinding {
+        texture: Texture::new(&texels, 8, 8).unwrap(),
+        filter: FilterMode::Nearest,
+        wrap: WrapMode::Repeat,
+    };
+    let view = look_at(Vec3::new(0.0, 0.0, 4.0), Vec3::ZERO, Vec3::Y).unwrap();
+    let transforms = Transforms::new(Mat4::IDENTITY, view, perspective(1.0, 1.0, 0.1, 10.0).unwrap());
+    let uses = |b: u32| torus.indices.chunks(3).filter(|t| t.contains(&(b as u16))).count() as u64;
+    let stats = |shading, texture| {
+        let effects = Effects {
+            shading,
+            material: Material::default(),
+            lighting: Lighting { ambient: Vec3::ONE, lights: &[] },
+            texture,
+        };
+        let mut color = vec![0u32; 32 * 32];
+        let mut target = Target::new(Rgb888(&mut color), NoDepth, 32, 32).unwrap();
+        let state = DrawState { cull: rasterm_core::pipeline::Cull::None, ..DrawState::default() };
+        draw_mesh(&mut target, &mesh, &transforms, &effects, &state).unwrap()
+    };
+    assert_eq!(stats(ShadingModel::Unlit, None).invalid, 0);
+    assert_eq!(stats(ShadingModel::Flat, None).invalid, 0, "flat shading reads no vertex normals");
+    assert_eq!(stats(ShadingModel::Phong, None).invalid, uses(5));
+    assert_eq!(stats(ShadingModel::Unlit, Some(texture)).invalid, uses(40));
+    assert_eq!(stats(ShadingModel::Phong, Some(texture)).invalid, uses(5) + uses(40));
+}
+
+#[test]
+fn every_triangle_is_counted_exactly_once() {
+    let torus = Torus::new(1.0, 0.4, 16, 10);
+    // Close enough that the near plane cuts the ring.
+    let view = look_at(Vec3::new(0.0, 0.9, 0.5), Vec3::ZERO, Vec3::Y).unwrap();
+    let transforms = Transforms::new(Mat4::IDENTITY, view, perspective(1.4, 1.0, 0.8, 10.0).unwrap());
+    let effects = Effects {
+        shading: ShadingModel::Flat,
+        material: Material::default(),
+        lighting: Lighting { ambient: Vec3::ONE, lights: &[] },
+        texture: None,
+    };
+    let mut color = vec![0u32; 24 * 24];
+    let mut target = Target::new(Rgb888(&mut color), NoDepth, 24, 24).unwrap();
+    let s = draw_mesh(&mut target, &torus.mesh(), &transforms, &effects, &DrawState::default()).unwrap();
+    assert_eq!(s.triangles_in, torus.indices.len() as u64 / 3);
+    assert_eq!(s.invalid + s.outside + s.culled + s.degenerate + s.rasterized, s.triangles_in, "{s:?}");
+    assert!(s.culled > 0 && s.rasterized > 0 && s.clipped > 0 && s.outside > 0, "{s:?}");
+}
+
+#[test]
+fn buffers_of_the_wrong_size_are_refused() {
+    let mut c = [0u32; 12];
+    let mut d = [0f32; 12];
+    assert!(Target::new(Rgb888(&mut c), &mut d[..], 4, 3).is_ok());
+    assert_eq!(
+        Target::new(Rgb888(&mut c), &mut d[..], 3, 3).unwrap_err(),
+        TargetError::ColorLength { expected: 9, actual: 12 }
+    );
+    assert_eq!(
+        Target::new(Rgb888(&mut c), &mut d[..2], 4, 3).unwrap_err(),
+        TargetError::DepthLength { expected: 12, actual: 2 }
+    );
+    assert_eq!(Target::new(NoColor, NoDepth, 0, 3).unwrap_err(), TargetError::Empty);
+    assert_eq!(
+        Target::new(NoColor, NoDepth, MAX_DIMENSION + 1, 3).unwrap_err(),
+        TargetError::TooLarge { width: MAX_DIMENSION + 1, height: 3 }
+    );
+    assert_eq!(Target::band(NoColor, NoDepth, 4, 3, 2..4).unwrap_err(), TargetError::Rows { rows: 2..4, height: 3 });
+    assert_eq!(Target::band(NoColor, NoDepth, 4, 3, 2..2).unwrap_err(), TargetError::Rows { rows: 2..2, height: 3 });
+    assert!(Target::band(Rgb888(&mut c[..4]), NoDepth, 4, 3, 2..3).is_ok());
+}
+
+#[test]
+fn malformed_meshes_and_states_are_refused() {
+    let p = quad_positions();
+    assert_eq!(Mesh::new(&p, Indices::U16(&[0, 1])).unwrap_err(), MeshError::IndexCount(2));
+    assert_eq!(Mesh::new(&p, Indices::Sequential).unwrap_err(), MeshError::IndexCount(7));
+    let short = [Vec3::Z; 3];
+    let err = Mesh::new(&p, Indices::U16(&[0, 1, 2])).unwrap().with_normals(&short).unwrap_err();
+    assert_eq!(err, MeshError::AttributeLength { attribute: "normals", expected: 7, actual: 3 });
+
+    let mesh = Mesh::new(&p, Indices::U16(&[0, 1, 2])).unwrap();
+    let mut target = Target::new(NoColor, NoDepth, 8, 4).unwrap();
+    let shader = ScreenSpace { width: 8.0, height: 4.0 };
+    let nine_bits = DrawState { subpixel_bits: 9, ..DrawState::default() };
+    assert_eq!(draw(&mut target, &mesh, &shader, &nine_bits).unwrap_err(), DrawError::SubpixelBits(9));
+    struct NeedsUv;
+    impl rasterm_core::pipeline::Shader for NeedsUv {
+        type Varyings = ();
+        type Face = ();
+        const ATTRIBUTES: Attributes = Attributes { normals: false, uvs: true, colors: false };
+        fn vertex(&self, m: &Mesh<'_>, i: usize) -> (rasterm_core::math::Vec4, ()) {
+            (m.position(i).extend(1.0), ())
+        }
+        fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
+        fn fragment(&self, _: &rasterm_core::pipeline::Fragment, _: &(), _: &()) -> Vec3 {
+            Vec3::ONE
+        }
+    }
+    assert!(matches!(
+        draw(&mut target, &mesh, &NeedsUv, &DrawState::default()),
+        Err(DrawError::MissingAttributes { .. })
+    ));
+}
+
+#[test]
+fn coverage_helper_counts_once_per_pixel() {
+    // Sanity check of the test helper itself: one triangle, no overlaps.
+    let (c, _) = coverage(4, 4, &[[(0.0, 0.0), (0.0, 4.0), (4.0, 4.0)]], &common::both_sides());
+    assert!(c.iter().all(|&n| n <= 1));
+}

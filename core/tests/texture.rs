@@ -1,0 +1,81 @@
+//! Texture sampling: orientation, filters, and every wrap case including non-finite coordinates.
+
+use rasterm_core::color::unpack_rgb888;
+use rasterm_core::math::{Vec2, Vec3};
+use rasterm_core::texture::{Bilinear, Clamp, Nearest, Repeat, Texture, TextureError};
+
+/// 4x2 texels; texel (x, y) = 0x00_XY_00_00 style values so the index is readable: red = 16 * x + y.
+fn texels() -> Vec<u32> {
+    (0..8).map(|i| (((i % 4) * 16 + i / 4) as u32) << 16).collect()
+}
+
+/// The (column, row) of a texel from its colour.
+fn which(c: Vec3) -> (u32, u32) {
+    let red = (c.x * 255.0).round() as u32;
+    (red / 16, red % 16)
+}
+
+#[test]
+fn v_up_and_row_0_at_the_top() {
+    let t = texels();
+    let tex = Texture::new(&t, 4, 2).unwrap();
+    // (u, v) = (0.1, 0.9): left column, top row.
+    assert_eq!(which(tex.sample::<Nearest, Repeat>(Vec2::new(0.1, 0.9))), (0, 0));
+    assert_eq!(which(tex.sample::<Nearest, Repeat>(Vec2::new(0.9, 0.1))), (3, 1));
+    assert_eq!(which(tex.sample::<Nearest, Clamp>(Vec2::new(0.6, 0.6))), (2, 0));
+}
+
+#[test]
+fn bilinear_is_exact_at_texel_centres_and_averages_between() {
+    let t = [0x000000, 0xFF00FF, 0x00FF00, 0xFFFFFF];
+    let tex = Texture::new(&t, 2, 2).unwrap();
+    // Texel centres are at u = 0.25 and 0.75.
+    assert_eq!(tex.sample::<Bilinear, Clamp>(Vec2::new(0.75, 0.75)), unpack_rgb888(0xFF00FF));
+    assert_eq!(tex.sample::<Bilinear, Clamp>(Vec2::new(0.25, 0.25)), unpack_rgb888(0x00FF00));
+    let mid = tex.sample::<Bilinear, Clamp>(Vec2::new(0.5, 0.5));
+    assert!((mid - Vec3::splat(0.5)).length() < 1e-6, "{mid:?}");
+    // With repeat, the left edge blends with the right column; with clamp it does not.
+    let edge_repeat = tex.sample::<Bilinear, Repeat>(Vec2::new(0.0, 0.75));
+    let edge_clamp = tex.sample::<Bilinear, Clamp>(Vec2::new(0.0, 0.75));
+    assert!((edge_repeat - Vec3::new(0.5, 0.0, 0.5)).length() < 1e-6, "{edge_repeat:?}");
+    assert_eq!(edge_clamp, Vec3::ZERO);
+}
+
+/// The documented texel for each awkward coordinate, as (repeat, clamp) column indices of a 4-wide texture.
+#[test]
+fn wrap_modes_give_the_documented_texel() {
+    let t = texels();
+    let tex = Texture::new(&t, 4, 2).unwrap();
+    let cases: [(f32, u32, u32); 8] = [
+        (-0.25, 3, 0),         // repeat: 0.75 -> column 3; clamp: 0 -> column 0
+        (-1e-7, 3, 0),         // repeat: just below 1 -> last column
+        (1000.3, 1, 3),        // repeat: fraction 0.3 -> column 1; clamp: 1 -> last column
+        (1e6, 0, 3),           // repeat: an integer -> column 0
+        (f32::NAN, 0, 0),      // NaN -> 0 under both
+        (f32::INFINITY, 0, 3), // repeat: inf - inf is NaN -> 0; clamp: 1
+        (f32::NEG_INFINITY, 0, 0),
+        (1.0, 0, 3), // repeat: wraps to 0; clamp: the right edge
+    ];
+    for (u, repeat, clamp) in cases {
+        let uv = Vec2::new(u, 0.75);
+        assert_eq!(which(tex.sample::<Nearest, Repeat>(uv)).0, repeat, "repeat u = {u}");
+        assert_eq!(which(tex.sample::<Nearest, Clamp>(uv)).0, clamp, "clamp u = {u}");
+        for c in [tex.sample::<Bilinear, Repeat>(uv), tex.sample::<Bilinear, Clamp>(uv)] {
+            assert!(
+                c.is_finite() && c.min(Vec3::ZERO) == Vec3::ZERO && c.max(Vec3::ONE) == Vec3::ONE,
+                "u = {u}: {c:?}"
+            );
+        }
+    }
+    // NaN in v selects a defined row too: v = 0 is the bottom edge; repeat wraps it to the top row.
+    assert_eq!(which(tex.sample::<Nearest, Repeat>(Vec2::new(0.1, f32::NAN))), (0, 0));
+    assert_eq!(which(tex.sample::<Nearest, Clamp>(Vec2::new(0.1, f32::NAN))), (0, 1));
+}
+
+#[test]
+fn texture_size_errors() {
+    let t = [0u32; 6];
+    assert_eq!(Texture::new(&t, 0, 6).unwrap_err(), TextureError::Empty);
+    assert_eq!(Texture::new(&t, 4, 2).unwrap_err(), TextureError::Length { expected: 8, actual: 6 });
+    assert!(Texture::new(&t, 3, 2).is_ok());
+}
