@@ -11,12 +11,6 @@
 
 use crate::math::{Vec3, float};
 
-/// Converts a channel in `[0, 1]` to `0..=max`, rounding to nearest; values outside saturate and NaN gives 0.
-#[inline(always)]
-fn quantize(c: f32, max: f32) -> u32 {
-    (float::clamp(c, 0.0, 1.0) * max + 0.5) as u32
-}
-
 /// Packs a colour as `0x00RRGGBB`.
 ///
 /// # Examples
@@ -26,7 +20,7 @@ fn quantize(c: f32, max: f32) -> u32 {
 /// ```
 #[inline(always)]
 pub fn pack_rgb888(c: Vec3) -> u32 {
-    (quantize(c.x, 255.0) << 16) | (quantize(c.y, 255.0) << 8) | quantize(c.z, 255.0)
+    (float::quantize_unit(c.x, 255.0) << 16) | (float::quantize_unit(c.y, 255.0) << 8) | float::quantize_unit(c.z, 255.0)
 }
 
 /// Unpacks `0x00RRGGBB` to channels in `[0, 1]`; the top byte is ignored.
@@ -45,7 +39,7 @@ pub fn unpack_rgb888(p: u32) -> Vec3 {
 /// ```
 #[inline(always)]
 pub fn pack_rgb565(c: Vec3) -> u16 {
-    ((quantize(c.x, 31.0) << 11) | (quantize(c.y, 63.0) << 5) | quantize(c.z, 31.0)) as u16
+    ((float::quantize_unit(c.x, 31.0) << 11) | (float::quantize_unit(c.y, 63.0) << 5) | float::quantize_unit(c.z, 31.0)) as u16
 }
 
 /// Unpacks RGB565 to channels in `[0, 1]`.

@@ -1,6 +1,6 @@
 //! Texture sampling: orientation, filters, and every wrap case including non-finite coordinates.
 
-use rasterm_core::color::unpack_rgb888;
+use rasterm_core::color::{pack_rgb888, unpack_rgb888};
 use rasterm_core::math::{Vec2, Vec3};
 use rasterm_core::texture::{Bilinear, Clamp, Nearest, Repeat, Texture, TextureError};
 
@@ -32,13 +32,13 @@ fn bilinear_is_exact_at_texel_centres_and_averages_between() {
     // Texel centres are at u = 0.25 and 0.75.
     assert_eq!(tex.sample::<Bilinear, Clamp>(Vec2::new(0.75, 0.75)), unpack_rgb888(0xFF00FF));
     assert_eq!(tex.sample::<Bilinear, Clamp>(Vec2::new(0.25, 0.25)), unpack_rgb888(0x00FF00));
-    let mid = tex.sample::<Bilinear, Clamp>(Vec2::new(0.5, 0.5));
-    assert!((mid - Vec3::splat(0.5)).length() < 1e-6, "{mid:?}");
+    // Half-way between 0 and 255 is 127.5, rounded to 128 by the 8-bit blend.
+    assert_eq!(pack_rgb888(tex.sample::<Bilinear, Clamp>(Vec2::new(0.5, 0.5))), 0x808080);
+    // A quarter of the way along the top row (black to magenta): 255 / 4 = 63.75 -> 64.
+    assert_eq!(pack_rgb888(tex.sample::<Bilinear, Clamp>(Vec2::new(0.375, 0.75))), 0x400040);
     // With repeat, the left edge blends with the right column; with clamp it does not.
-    let edge_repeat = tex.sample::<Bilinear, Repeat>(Vec2::new(0.0, 0.75));
-    let edge_clamp = tex.sample::<Bilinear, Clamp>(Vec2::new(0.0, 0.75));
-    assert!((edge_repeat - Vec3::new(0.5, 0.0, 0.5)).length() < 1e-6, "{edge_repeat:?}");
-    assert_eq!(edge_clamp, Vec3::ZERO);
+    assert_eq!(pack_rgb888(tex.sample::<Bilinear, Repeat>(Vec2::new(0.0, 0.75))), 0x800080);
+    assert_eq!(tex.sample::<Bilinear, Clamp>(Vec2::new(0.0, 0.75)), Vec3::ZERO);
 }
 
 /// The documented texel for each awkward coordinate, as (repeat, clamp) column indices of a 4-wide texture.

@@ -1,9 +1,10 @@
 //! The one place where `f32` maths beyond `+ - * /` happens.
 //!
-//! Every function here calls [`libm`] (or is exact integer/IEEE arithmetic), never the platform's own maths
-//! library, so a desktop build and a `thumbv7em-none-eabihf` firmware compute bit-identical values and therefore
-//! bit-identical pixels. Basic arithmetic needs no wrapper: IEEE 754 fixes its result, and Rust does not contract
-//! `a * b + c` into a fused multiply-add on its own.
+//! Every function here either calls [`libm`], never the platform's own maths library, or is made of operations
+//! whose result IEEE 754 fixes exactly (comparisons, conversions), so a desktop build and a
+//! `thumbv7em-none-eabihf` firmware compute bit-identical values and therefore bit-identical pixels. Basic
+//! arithmetic needs no wrapper: IEEE 754 fixes its result too, and Rust does not contract `a * b + c` into a fused
+//! multiply-add on its own.
 
 /// Square root (correctly rounded on every target).
 #[inline(always)]
@@ -35,28 +36,44 @@ pub fn pow(x: f32, y: f32) -> f32 {
     libm::powf(x, y)
 }
 
-/// Largest integer value not greater than `x`.
+/// 2^23: from here up every `f32` is an integer, and adding it to a smaller non-negative value rounds that value
+/// to an integer (ties to even) in one exact IEEE operation.
+const TWO_POW_23: f32 = 8_388_608.0;
+
+/// Largest integer value not greater than `x`; NaN and infinities are returned unchanged. (The sign of a zero
+/// result is not specified.)
+///
+/// Exact: `x` rounded to an integer by adding and subtracting 2^23 (with `x`'s sign), then corrected by one where
+/// that rounded up. Branch-light and much cheaper than a software `floorf` on targets without a rounding
+/// instruction.
 #[inline(always)]
 pub fn floor(x: f32) -> f32 {
-    libm::floorf(x)
+    if abs(x) < TWO_POW_23 {
+        let c = f32::from_bits(TWO_POW_23.to_bits() | (x.to_bits() & 0x8000_0000));
+        let r = (x + c) - c;
+        // Subtract 1 where rounding went up; written without a branch (the comparison is data-dependent).
+        r - f32::from(u8::from(r > x))
+    } else {
+        x
+    }
 }
 
-/// Absolute value.
+/// Absolute value (clears the sign bit).
 #[inline(always)]
 pub fn abs(x: f32) -> f32 {
-    libm::fabsf(x)
+    f32::from_bits(x.to_bits() & 0x7FFF_FFFF)
 }
 
-/// Smaller of two values; a NaN argument loses to a number (IEEE 754 `minNum`).
+/// Smaller of two values; if `a` is NaN, `b`. A comparison, not a `libm` call: exact, and compiled inline.
 #[inline(always)]
 pub fn min(a: f32, b: f32) -> f32 {
-    libm::fminf(a, b)
+    if a < b { a } else { b }
 }
 
-/// Larger of two values; a NaN argument loses to a number (IEEE 754 `maxNum`).
+/// Larger of two values; if `a` is NaN, `b`. A comparison, not a `libm` call: exact, and compiled inline.
 #[inline(always)]
 pub fn max(a: f32, b: f32) -> f32 {
-    libm::fmaxf(a, b)
+    if a > b { a } else { b }
 }
 
 /// `x` limited to `[lo, hi]`; NaN becomes `lo`.
@@ -73,4 +90,21 @@ pub fn clamp(x: f32, lo: f32, hi: f32) -> f32 {
 pub fn floor_to_i32(x: f32) -> i32 {
     let t = x as i32;
     t.saturating_sub(i32::from((t as f32) > x))
+}
+
+/// `x` in `[0, 2^23)` rounded to the nearest integer (ties to even). Outside that range the result is
+/// meaningless but defined (never a panic), so callers bound `x` first.
+///
+/// Adding 2^23 leaves the rounded value in the low mantissa bits: an exact IEEE operation, and cheaper than a
+/// saturating float-to-integer cast.
+#[inline(always)]
+pub fn round_small_to_u32(x: f32) -> u32 {
+    (x + TWO_POW_23).to_bits() & 0x7F_FFFF
+}
+
+/// Maps `x` in `[0, 1]` to an integer in `0..=max` (`max < 2^23`), rounding to nearest with ties to even; values
+/// outside saturate and NaN gives 0.
+#[inline(always)]
+pub fn quantize_unit(x: f32, max: f32) -> u32 {
+    round_small_to_u32(clamp(x, 0.0, 1.0) * max)
 }

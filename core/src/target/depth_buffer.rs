@@ -37,7 +37,7 @@ impl DepthBuffer for &mut [f32] {
 /// Quantizes NDC depth in `[0, 1]` to 16 bits, rounding to nearest (values outside saturate, NaN gives 0).
 #[inline(always)]
 pub fn depth_to_u16(z: f32) -> u16 {
-    (crate::math::float::clamp(z, 0.0, 1.0) * 65535.0 + 0.5) as u16
+    crate::math::float::quantize_unit(z, 65535.0) as u16
 }
 
 /// `u16` depth: NDC depth quantized to 65536 levels (see [`depth_to_u16`]); half the memory of `f32`.

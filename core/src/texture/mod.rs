@@ -8,15 +8,18 @@ mod sampler;
 
 pub use sampler::{Bilinear, Clamp, Filter, FilterMode, Nearest, Repeat, Wrap, WrapMode};
 
-use crate::color::unpack_rgb888;
 use crate::math::{Vec2, Vec3};
+
+/// Largest texture width or height, in texels: sample positions are computed in fixed point with 8 fractional
+/// bits inside a float's 23-bit mantissa.
+pub const MAX_TEXTURE_SIZE: u32 = 16384;
 
 /// Why a texture could not be built.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum TextureError {
     /// Zero width or height.
     Empty,
-    /// Wider or higher than `i32::MAX` texels.
+    /// Wider or higher than [`MAX_TEXTURE_SIZE`] texels.
     TooLarge,
     /// The texel slice does not hold `width * height` texels.
     Length {
@@ -56,10 +59,11 @@ impl<'a> Texture<'a> {
         if width == 0 || height == 0 {
             return Err(TextureError::Empty);
         }
-        let (Ok(w), Ok(h)) = (i32::try_from(width), i32::try_from(height)) else {
+        if width > MAX_TEXTURE_SIZE || height > MAX_TEXTURE_SIZE {
             return Err(TextureError::TooLarge);
-        };
-        let expected = (width as usize).checked_mul(height as usize).ok_or(TextureError::TooLarge)?;
+        }
+        let (w, h) = (width as i32, height as i32);
+        let expected = width as usize * height as usize;
         if texels.len() != expected {
             return Err(TextureError::Length { expected, actual: texels.len() });
         }
@@ -76,11 +80,11 @@ impl<'a> Texture<'a> {
         self.height as u32
     }
 
-    /// The texel at column `x`, row `y` (row 0 at the top); the caller keeps them in range.
+    /// The packed texel at column `x`, row `y` (row 0 at the top); the caller keeps them in range.
     #[inline(always)]
-    fn texel(&self, x: i32, y: i32) -> Vec3 {
+    fn packed(&self, x: i32, y: i32) -> u32 {
         let i = y as usize * self.width as usize + x as usize;
-        unpack_rgb888(self.texels.get(i).copied().unwrap_or(0))
+        self.texels.get(i).copied().unwrap_or(0)
     }
 
     /// Samples the texture at `uv` with filter `F` and wrap mode `W`, chosen at compile time.

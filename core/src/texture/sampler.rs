@@ -2,6 +2,7 @@
 //! enums for run-time selection.
 
 use super::Texture;
+use crate::color::unpack_rgb888;
 use crate::math::{Vec2, Vec3, float};
 
 /// How coordinates outside `[0, 1]` map onto the texture.
@@ -11,7 +12,8 @@ use crate::math::{Vec2, Vec3, float};
 pub trait Wrap {
     /// A coordinate in texture units (`[0, 1]` spans the image once) reduced to `[0, 1]`.
     fn reduce(t: f32) -> f32;
-    /// An integer texel index, possibly one outside `0..size`, brought back into range.
+    /// A texel index in `-1..=size` (one step outside at most, as filters produce from a reduced coordinate)
+    /// brought into `0..size`.
     fn index(i: i32, size: i32) -> i32;
 }
 
@@ -22,12 +24,19 @@ pub struct Repeat;
 impl Wrap for Repeat {
     #[inline(always)]
     fn reduce(t: f32) -> f32 {
-        // The fractional part; `clamp` maps NaN (from NaN or infinite t) to 0 and a rounded-up 1.0 stays in range.
+        // The fractional part: exact for every finite t (from 2^23 up, floor(t) = t and the fraction is 0). NaN and
+        // infinities give NaN here, which `clamp` turns into 0; it also keeps a rounded-up 1.0 in range.
         float::clamp(t - float::floor(t), 0.0, 1.0)
     }
     #[inline(always)]
     fn index(i: i32, size: i32) -> i32 {
-        i.rem_euclid(size)
+        if i < 0 {
+            i + size
+        } else if i >= size {
+            i - size
+        } else {
+            i
+        }
     }
 }
 
@@ -60,13 +69,18 @@ impl Filter for Nearest {
     #[inline(always)]
     fn sample<W: Wrap>(t: &Texture<'_>, uv: Vec2) -> Vec3 {
         let (w, h) = (t.width, t.height);
-        let x = float::floor_to_i32(W::reduce(uv.x) * w as f32);
-        let y = float::floor_to_i32((1.0 - W::reduce(uv.y)) * h as f32);
-        t.texel(W::index(x, w), W::index(y, h))
+        // In [0, size]: floor is exact, and the integer conversion needs no saturation.
+        let x = float::round_small_to_u32(float::floor(W::reduce(uv.x) * w as f32)) as i32;
+        let y = float::round_small_to_u32(float::floor((1.0 - W::reduce(uv.y)) * h as f32)) as i32;
+        unpack_rgb888(t.packed(W::index(x, w), W::index(y, h)))
     }
 }
 
 /// The four texels around the sample point, weighted by distance (texel centres at half-integers).
+///
+/// The sample point is snapped to 1/256 of a texel and the texels blended in integer arithmetic on the packed
+/// channels, as texture units do (8 bits of sub-texel precision is what Direct3D 11 requires, functional
+/// specification 7.18.16.1).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Bilinear;
 
@@ -74,16 +88,31 @@ impl Filter for Bilinear {
     #[inline(always)]
     fn sample<W: Wrap>(t: &Texture<'_>, uv: Vec2) -> Vec3 {
         let (w, h) = (t.width, t.height);
-        let fx = W::reduce(uv.x) * w as f32 - 0.5;
-        let fy = (1.0 - W::reduce(uv.y)) * h as f32 - 0.5;
-        let (x0, y0) = (float::floor_to_i32(fx), float::floor_to_i32(fy));
-        let (ax, ay) = (fx - x0 as f32, fy - y0 as f32);
+        // Fixed point with 8 fractional bits, offset by one texel (+256 - 128 for the half-texel centre shift) so
+        // that it is never negative: the integer part is the left/top texel + 1, the fraction its neighbour's
+        // weight.
+        let fixed = |r: f32, size: i32| float::round_small_to_u32(r * (size * 256) as f32 + 128.0);
+        let (fx, fy) = (fixed(W::reduce(uv.x), w), fixed(1.0 - W::reduce(uv.y), h));
+        let (x0, y0) = ((fx >> 8) as i32 - 1, (fy >> 8) as i32 - 1);
+        let (ax, ay) = (fx & 0xFF, fy & 0xFF);
         let (xa, xb) = (W::index(x0, w), W::index(x0 + 1, w));
         let (ya, yb) = (W::index(y0, h), W::index(y0 + 1, h));
-        let top = t.texel(xa, ya).lerp(t.texel(xb, ya), ax);
-        let bottom = t.texel(xa, yb).lerp(t.texel(xb, yb), ax);
-        top.lerp(bottom, ay)
+        let top = blend(t.packed(xa, ya), t.packed(xb, ya), ax);
+        let bottom = blend(t.packed(xa, yb), t.packed(xb, yb), ax);
+        unpack_rgb888(blend(top, bottom, ay))
     }
+}
+
+/// `p + (q - p) * w / 256` on each channel of two `0x00RRGGBB` texels, rounded, for `w` in `0..256`.
+///
+/// Red and blue are blended together in one multiply (16 bits apart, they cannot carry into each other), then
+/// green.
+#[inline(always)]
+fn blend(p: u32, q: u32, w: u32) -> u32 {
+    let v = 256 - w;
+    let rb = (((p & 0xFF00FF) * v + (q & 0xFF00FF) * w + 0x80_0080) >> 8) & 0xFF00FF;
+    let g = (((p & 0x00FF00) * v + (q & 0x00FF00) * w + 0x00_8000) >> 8) & 0x00FF00;
+    rb | g
 }
 
 /// A filter chosen at run time.

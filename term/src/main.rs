@@ -1,0 +1,3 @@
+//! The `rasterm` command: a terminal viewer and a headless renderer.
+
+fn main() {}

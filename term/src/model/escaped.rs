@@ -1,0 +1,45 @@
+//! Control-character escaping for the text of errors and warnings.
+//!
+//! File names, tokens and material names come from files and can hold any character. Messages built from them must
+//! stay on one line and must not carry terminal escape sequences, so every control character is written as a Rust
+//! escape (`\n`, `\u{1b}`). The data itself (part and material names) is kept raw.
+
+use std::fmt;
+
+/// Displays a string with its control characters escaped.
+pub(crate) struct Escaped<'a>(pub(crate) &'a str);
+
+impl fmt::Display for Escaped<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for c in self.0.chars() {
+            if c.is_control() {
+                write!(f, "{}", c.escape_default())?;
+            } else {
+                fmt::Write::write_char(f, c)?;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// `path` as text for a message: lossy UTF-8, control characters escaped.
+pub(crate) fn path_text(path: &std::path::Path) -> String {
+    Escaped(&path.to_string_lossy()).to_string()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn control_characters_are_escaped_and_the_rest_kept() {
+        assert_eq!(Escaped("a\nb\x1b[31mc\u{9b}é").to_string(), "a\\nb\\u{1b}[31mc\\u{9b}é");
+        assert_eq!(Escaped("plain name.obj").to_string(), "plain name.obj");
+    }
+
+    #[test]
+    fn paths_become_one_line() {
+        let text = path_text(std::path::Path::new("dir/evil\r\nname.obj"));
+        assert_eq!(text, "dir/evil\\r\\nname.obj");
+    }
+}

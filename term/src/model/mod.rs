@@ -1,0 +1,48 @@
+//! Loading models (OBJ + MTL) and their textures into renderable form.
+//!
+//! [`load_obj`] reads a file; [`load_obj_bytes`] reads OBJ text held in memory (a built-in model embedded with
+//! `include_bytes!`), with a [`Resolver`] such as [`Embedded`] for its MTL and texture files. Both give a
+//! [`Model`]: one vertex array (positions, normals, optional texture coordinates), one `u32` index buffer cut into
+//! [`Part`]s by object, group and material, the [`Material`]s with their decoded [`TextureImage`]s, and the
+//! warnings met on the way. [`Model::part_mesh`] hands a part to the core as a [`rasterm_core::mesh::Mesh`], and
+//! [`Model::fit`] gives the transform that frames any model the same way.
+//!
+//! A bad OBJ file is a [`LoadError`] naming the file and the line; a missing or bad MTL library or texture is only
+//! a warning. Names and warnings are kept as the files give them or with control characters escaped; nothing here
+//! prints.
+//!
+//! # Example
+//! ```
+//! use rasterm::model::{Embedded, load_obj_bytes};
+//!
+//! let obj = b"mtllib cube.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nusemtl red\nf 1 2 3 4\n";
+//! let files: &[(&str, &[u8])] = &[("cube.mtl", b"newmtl red\nKd 1 0 0\n")];
+//! let model = load_obj_bytes("built-in square", obj, &Embedded::new(files)).unwrap();
+//! assert_eq!(model.triangle_count(), 2);
+//! assert_eq!(model.part_material(0).unwrap().diffuse.x, 1.0);
+//! assert!(model.warnings.is_empty());
+//! let mesh = model.part_mesh(0).unwrap();
+//! assert_eq!(mesh.triangle_count(), 2);
+//! ```
+
+mod bounds;
+mod error;
+mod escaped;
+mod loaded_model;
+mod map_path;
+mod material;
+mod mtl_check;
+mod obj_check;
+mod obj_loader;
+mod resolver;
+mod smooth_normals;
+mod texture_image;
+
+pub use bounds::Bounds;
+pub use error::{COORDINATE_LIMIT, Element, LoadError, LoadErrorKind};
+pub use loaded_model::{Model, Part};
+pub use material::{DEFAULT_DIFFUSE, Material};
+pub use obj_loader::{load_obj, load_obj_bytes};
+pub use resolver::{Directory, Embedded, NoFiles, Resolver};
+pub use smooth_normals::{FALLBACK_NORMAL, smooth_normals};
+pub use texture_image::{MAX_TEXTURE_SIDE, TextureImage};

@@ -1,0 +1,69 @@
+//! One terminal cell: a character and its foreground and background colours.
+
+use super::color::Color;
+
+/// The character the encoder sends in place of a cell character that is not [`Cell::is_safe_char`].
+pub const REPLACEMENT_CHAR: char = '?';
+
+/// One character cell of the terminal.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct Cell {
+    /// The character shown; see [`Cell::is_safe_char`] for the ones that are sent as they are.
+    pub ch: char,
+    /// Foreground (glyph) colour.
+    pub fg: Color,
+    /// Background colour.
+    pub bg: Color,
+}
+
+impl Cell {
+    /// A space in the terminal's default colours: what a cleared terminal shows.
+    pub const BLANK: Cell = Cell { ch: ' ', fg: Color::Default, bg: Color::Default };
+
+    /// A cell from its parts.
+    pub const fn new(ch: char, fg: Color, bg: Color) -> Self {
+        Cell { ch, fg, bg }
+    }
+
+    /// Whether `ch` is sent to the terminal as it is: printable ASCII (space to `~`), box drawing and block
+    /// elements (U+2500..=U+259F, which hold `▀`), and Braille patterns (U+2800..=U+28FF).
+    ///
+    /// All of these are one column wide, so the encoder can track the cursor. Control characters, which
+    /// could inject escape sequences, and zero-width or double-width characters, which would desynchronise
+    /// the cursor, are not.
+    #[inline]
+    pub const fn is_safe_char(ch: char) -> bool {
+        matches!(ch, ' '..='~' | '\u{2500}'..='\u{259F}' | '\u{2800}'..='\u{28FF}')
+    }
+
+    /// The character actually sent for this cell: `ch` when [`Cell::is_safe_char`], else [`REPLACEMENT_CHAR`].
+    #[inline]
+    pub const fn safe_ch(&self) -> char {
+        if Self::is_safe_char(self.ch) { self.ch } else { REPLACEMENT_CHAR }
+    }
+}
+
+impl Default for Cell {
+    fn default() -> Self {
+        Cell::BLANK
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn control_and_wide_characters_are_replaced() {
+        for ch in ['\x1b', '\n', '\r', '\x07', '\x7f', '\u{9b}', '\u{0301}', '中', '\u{1F600}', '\u{200B}'] {
+            assert_eq!(Cell::new(ch, Color::Default, Color::Default).safe_ch(), REPLACEMENT_CHAR, "{ch:?}");
+        }
+    }
+
+    #[test]
+    fn drawing_characters_pass() {
+        for ch in [' ', '@', '~', '▀', '▄', '█', '─', '⣿'] {
+            assert_eq!(Cell::new(ch, Color::Default, Color::Default).safe_ch(), ch);
+        }
+    }
+}

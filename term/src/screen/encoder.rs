@@ -1,0 +1,265 @@
+//! The frame encoder: the bytes that turn what the terminal shows into the next cell grid, sending only
+//! the cells that changed.
+
+use super::cell::Cell;
+use super::cell_grid::CellGrid;
+use super::cursor_move::CursorMove;
+use super::sgr::{MAX_SGR_LEN, Pen, SGR_RESET, sgr_change_len, write_sgr_change};
+
+/// Begin synchronized output (DEC private mode 2026): the terminal holds the screen until [`SYNC_END`].
+pub const SYNC_BEGIN: &[u8] = b"\x1b[?2026h";
+/// End synchronized output.
+pub const SYNC_END: &[u8] = b"\x1b[?2026l";
+/// Erase the whole screen (ED 2), in the current background colour, hence sent after an attribute reset.
+pub const CLEAR_SCREEN: &[u8] = b"\x1b[2J";
+
+/// Turns a sequence of cell grids into terminal output, each frame as a delta against the one before.
+///
+/// The encoder remembers the grid it last sent. [`Encoder::encode`] then compares the next grid cell by
+/// cell and writes only the changed cells, moving the cursor across unchanged stretches by the cheapest
+/// of absolute CUP, column CHA, cursor-forward CUF, or re-sending the skipped cells. Colours go out as one
+/// SGR per change that names only the colours that differ from the last SGR sent.
+///
+/// Assumptions about the terminal between frames: the encoder leaves SGR attributes reset after every
+/// frame and expects them still reset at the start of the next; it never assumes where the cursor is at
+/// the start of a frame. Output that breaks the first assumption, or that scrolls or overwrites the
+/// screen, must be followed by [`Encoder::invalidate`].
+#[derive(Clone, Debug, Default)]
+pub struct Encoder {
+    /// What the terminal shows, when `valid`.
+    shown: CellGrid,
+    valid: bool,
+}
+
+impl Encoder {
+    /// An encoder whose first frame is a full redraw.
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Forgets what the terminal shows, so the next frame is a full redraw (clear + every cell).
+    pub fn invalidate(&mut self) {
+        self.valid = false;
+    }
+
+    /// The grid the terminal shows as far as the encoder knows, or `None` before the first frame and after
+    /// [`Encoder::invalidate`].
+    pub fn shown(&self) -> Option<&CellGrid> {
+        self.valid.then_some(&self.shown)
+    }
+
+    /// Appends to `out` the bytes that change the terminal from the last encoded frame to `next`.
+    ///
+    /// The first frame, a frame whose size differs from the last one, and the first frame after
+    /// [`Encoder::invalidate`] are full redraws: reset attributes, clear the screen, draw every cell that is
+    /// not [`Cell::BLANK`]. Any non-empty output is bracketed by [`SYNC_BEGIN`] / [`SYNC_END`] and leaves the
+    /// attributes reset. When nothing changed, nothing at all is appended. Never writes `\n` or `\r`; a cell
+    /// character that is not [`Cell::is_safe_char`] is sent as [`super::cell::REPLACEMENT_CHAR`].
+    ///
+    /// # Panics
+    /// If `next.cells.len() != next.width * next.height`.
+    pub fn encode(&mut self, next: &CellGrid, out: &mut Vec<u8>) {
+        assert_eq!(next.cells.len(), next.width * next.height, "malformed {}x{} grid", next.width, next.height);
+        let mut frame = FrameWriter { out, pen: Pen::DEFAULT, cursor: None, started: false, width: next.width };
+        if !self.valid || !self.shown.same_size(next) {
+            frame.begin();
+            frame.out.extend_from_slice(SGR_RESET);
+            frame.out.extend_from_slice(CLEAR_SCREEN);
+            self.shown.reset(next.width, next.height, Cell::BLANK);
+        }
+        if next.width > 0 {
+            let rows = self.shown.cells.chunks_exact_mut(next.width).zip(next.rows());
+            for (row, (shown, wanted)) in rows.enumerate() {
+                if shown != wanted {
+                    frame.draw_row_changes(row, shown, wanted);
+                }
+            }
+        }
+        frame.finish();
+        self.valid = true;
+    }
+}
+
+/// The state of one frame being written: what the terminal's pen and cursor are after the bytes so far.
+struct FrameWriter<'a> {
+    out: &'a mut Vec<u8>,
+    pen: Pen,
+    /// `None` when unknown, including after the last column (where terminals differ about pending wraps).
+    cursor: Option<(usize, usize)>,
+    started: bool,
+    width: usize,
+}
+
+impl FrameWriter<'_> {
+    fn begin(&mut self) {
+        if !self.started {
+            self.out.extend_from_slice(SYNC_BEGIN);
+            self.started = true;
+        }
+    }
+
+    fn finish(&mut self) {
+        if self.started {
+            write_sgr_change(self.out, self.pen, Pen::DEFAULT);
+            self.out.extend_from_slice(SYNC_END);
+        }
+    }
+
+    /// Draws the cells of `wanted` that differ from `shown` (one row), updating `shown` to match.
+    fn draw_row_changes(&mut self, row: usize, shown: &mut [Cell], wanted: &[Cell]) {
+        self.begin();
+        for (col, (old, new)) in shown.iter_mut().zip(wanted).enumerate() {
+            if old != new {
+                self.go_to(row, col, wanted);
+                self.put(new);
+                *old = *new;
+            }
+        }
+    }
+
+    /// Puts the cursor on `(row, col)` by the cheapest means, given that `cells` (the wanted row) is what the
+    /// row shows left of `col` wherever nothing was drawn yet.
+    #[inline]
+    fn go_to(&mut self, row: usize, col: usize, cells: &[Cell]) {
+        let Some((at_row, at_col)) = self.cursor else {
+            CursorMove::Position { row, col }.write(self.out);
+            self.cursor = Some((row, col));
+            return;
+        };
+        if (at_row, at_col) == (row, col) {
+            return;
+        }
+        let jump = CursorMove::cheapest(self.cursor, row, col);
+        if at_row == row && at_col < col {
+            let target = Pen::of(&cells[col]);
+            let budget = jump.len() + sgr_change_len(self.pen, target);
+            if resend_cost(&cells[at_col..col], self.pen, target, budget).is_some() {
+                for cell in &cells[at_col..col] {
+                    self.put(cell);
+                }
+                return;
+            }
+        }
+        jump.write(self.out);
+        self.cursor = Some((row, col));
+    }
+
+    /// Writes one cell at the cursor and advances it.
+    #[inline]
+    fn put(&mut self, cell: &Cell) {
+        // One reservation per cell keeps the pushes below free of reallocation.
+        self.out.reserve(MAX_SGR_LEN + 4);
+        let pen = Pen::of(cell);
+        write_sgr_change(self.out, self.pen, pen);
+        self.pen = pen;
+        let ch = cell.safe_ch();
+        if ch.is_ascii() {
+            self.out.push(ch as u8);
+        } else {
+            let mut utf8 = [0u8; 4];
+            for &b in ch.encode_utf8(&mut utf8).as_bytes() {
+                self.out.push(b);
+            }
+        }
+        self.cursor = match self.cursor {
+            Some((row, col)) if col + 1 < self.width => Some((row, col + 1)),
+            _ => None,
+        };
+    }
+}
+
+/// What re-sending `cells` from pen `pen` and then switching to `target` costs, if less than `budget`.
+#[inline]
+fn resend_cost(cells: &[Cell], mut pen: Pen, target: Pen, budget: usize) -> Option<usize> {
+    let mut cost = 0;
+    for cell in cells {
+        let next = Pen::of(cell);
+        cost += sgr_change_len(pen, next) + cell.safe_ch().len_utf8();
+        pen = next;
+        if cost >= budget {
+            return None;
+        }
+    }
+    cost += sgr_change_len(pen, target);
+    (cost < budget).then_some(cost)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::screen::color::Color;
+
+    fn encode(encoder: &mut Encoder, grid: &CellGrid) -> String {
+        let mut out = Vec::new();
+        encoder.encode(grid, &mut out);
+        String::from_utf8(out).unwrap()
+    }
+
+    const RED: Color = Color::Rgb(255, 0, 0);
+    const BLUE: Color = Color::Indexed(21);
+
+    #[test]
+    fn first_frame_clears_and_skips_blank_cells() {
+        let mut grid = CellGrid::blank(3, 2);
+        *grid.get_mut(1, 2) = Cell::new('▀', RED, BLUE);
+        let bytes = encode(&mut Encoder::new(), &grid);
+        assert_eq!(bytes, "\x1b[?2026h\x1b[0m\x1b[2J\x1b[2;3H\x1b[38;2;255;0;0;48;5;21m▀\x1b[0m\x1b[?2026l");
+    }
+
+    #[test]
+    fn unchanged_frame_is_empty() {
+        let mut encoder = Encoder::new();
+        let grid = CellGrid::filled(4, 3, Cell::new('▀', RED, BLUE));
+        assert!(!encode(&mut encoder, &grid).is_empty());
+        assert_eq!(encode(&mut encoder, &grid), "");
+        encoder.invalidate();
+        assert!(encode(&mut encoder, &grid).contains("\x1b[2J"));
+    }
+
+    #[test]
+    fn single_skipped_cell_is_resent_when_cheaper() {
+        let base = CellGrid::filled(8, 1, Cell::new('#', RED, Color::Default));
+        let mut encoder = Encoder::new();
+        encode(&mut encoder, &base);
+        let mut next = base.clone();
+        next.get_mut(0, 2).ch = '@';
+        next.get_mut(0, 4).ch = '@';
+        // Re-sending the '#' between (1 byte) beats ESC[C (3 bytes).
+        assert_eq!(encode(&mut encoder, &next), "\x1b[?2026h\x1b[1;3H\x1b[38;2;255;0;0m@#@\x1b[0m\x1b[?2026l");
+    }
+
+    #[test]
+    fn longer_gaps_use_cursor_forward_and_rows_use_cup() {
+        let base = CellGrid::filled(30, 2, Cell::new('▀', RED, BLUE));
+        let mut encoder = Encoder::new();
+        encode(&mut encoder, &base);
+        let mut next = base.clone();
+        next.get_mut(0, 1).ch = ' ';
+        next.get_mut(0, 5).ch = ' ';
+        next.get_mut(1, 0).ch = ' ';
+        let expected = "\x1b[?2026h\x1b[1;2H\x1b[38;2;255;0;0;48;5;21m \x1b[3C \x1b[2H \x1b[0m\x1b[?2026l";
+        assert_eq!(encode(&mut encoder, &next), expected);
+    }
+
+    #[test]
+    fn resend_is_priced_with_its_colour_changes() {
+        // The skipped cell has another colour, so re-sending it costs an SGR each way: CUF wins.
+        let mut base = CellGrid::filled(6, 1, Cell::new('#', RED, Color::Default));
+        base.get_mut(0, 2).fg = BLUE;
+        let mut encoder = Encoder::new();
+        encode(&mut encoder, &base);
+        let mut next = base.clone();
+        next.get_mut(0, 1).ch = '@';
+        next.get_mut(0, 3).ch = '@';
+        assert_eq!(encode(&mut encoder, &next), "\x1b[?2026h\x1b[1;2H\x1b[38;2;255;0;0m@\x1b[C@\x1b[0m\x1b[?2026l");
+    }
+
+    #[test]
+    fn control_characters_never_reach_the_terminal() {
+        let mut grid = CellGrid::blank(3, 1);
+        grid.get_mut(0, 0).ch = '\x1b';
+        grid.get_mut(0, 1).ch = '\n';
+        let bytes = encode(&mut Encoder::new(), &grid);
+        assert!(bytes.ends_with("\x1b[H??\x1b[?2026l"), "{bytes:?}");
+    }
+}

@@ -1,0 +1,33 @@
+//! Terminal cells: pixels to half-block or ASCII cells, colour modes, and the frame-diff encoder.
+//!
+//! The pipeline for one frame: the renderer's pixels ([`PixelFrame`]) become a [`CellGrid`] through a
+//! [`CellMode`] (half-block `▀` cells or an ASCII lightness ramp), with colours reduced to what the terminal
+//! shows ([`ColorMode`], detected from the environment by [`ColorMode::detect`]). The [`Encoder`] then
+//! writes only the cells that differ from the previous frame. [`naive_full_frame`] is the baseline it is
+//! measured against.
+
+pub mod ascii_ramp;
+pub mod cell;
+pub mod cell_grid;
+pub mod cell_mode;
+pub mod color;
+pub mod color_mode;
+mod cursor_move;
+mod decimal;
+pub mod encoder;
+pub mod half_block;
+pub mod naive_frame;
+pub mod oklab;
+pub mod palette;
+pub mod palette_lut;
+pub mod pixel_frame;
+mod sgr;
+
+pub use cell::Cell;
+pub use cell_grid::CellGrid;
+pub use cell_mode::CellMode;
+pub use color::Color;
+pub use color_mode::{ColorMode, TermEnv};
+pub use encoder::Encoder;
+pub use naive_frame::naive_full_frame;
+pub use pixel_frame::PixelFrame;

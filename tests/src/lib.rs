@@ -1,0 +1,1 @@
+//! Integration tests of the rasterm workspace live in `tests/tests/`.
