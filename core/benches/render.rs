@@ -101,7 +101,8 @@ fn render(bencher: Bencher, sphere: &Sphere, width: u32, height: u32, distance: 
     let e = effects(shading, None);
     let mesh = sphere.mesh();
     bencher.bench_local(|| {
-        let mut target = Target::new(Rgb888(&mut frame.color), &mut frame.depth[..], frame.width, frame.height).unwrap();
+        let mut target =
+            Target::new(Rgb888(&mut frame.color), &mut frame.depth[..], frame.width, frame.height).unwrap();
         target.clear(Vec3::ZERO);
         black_box(draw_mesh(&mut target, &mesh, &t, &e, &DrawState::default()).unwrap());
     });
@@ -148,8 +149,18 @@ mod fill_rate {
 
     /// A quad covering the whole frame, facing the camera, with normals and texture coordinates.
     fn quad() -> (Vec<Vec3>, Vec<Vec3>, Vec<Vec2>, Vec<u32>) {
-        let p = vec![Vec3::new(-1.0, -1.0, 0.0), Vec3::new(1.0, -1.0, 0.0), Vec3::new(1.0, 1.0, 0.0), Vec3::new(-1.0, 1.0, 0.0)];
-        let n = vec![Vec3::new(-0.3, -0.3, 0.9), Vec3::new(0.3, -0.3, 0.9), Vec3::new(0.3, 0.3, 0.9), Vec3::new(-0.3, 0.3, 0.9)];
+        let p = vec![
+            Vec3::new(-1.0, -1.0, 0.0),
+            Vec3::new(1.0, -1.0, 0.0),
+            Vec3::new(1.0, 1.0, 0.0),
+            Vec3::new(-1.0, 1.0, 0.0),
+        ];
+        let n = vec![
+            Vec3::new(-0.3, -0.3, 0.9),
+            Vec3::new(0.3, -0.3, 0.9),
+            Vec3::new(0.3, 0.3, 0.9),
+            Vec3::new(-0.3, 0.3, 0.9),
+        ];
         let uv = vec![Vec2::new(0.0, 0.0), Vec2::new(4.0, 0.0), Vec2::new(4.0, 4.0), Vec2::new(0.0, 4.0)];
         (p, n, uv, vec![0, 1, 2, 0, 2, 3])
     }

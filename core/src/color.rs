@@ -20,7 +20,9 @@ use crate::math::{Vec3, float};
 /// ```
 #[inline(always)]
 pub fn pack_rgb888(c: Vec3) -> u32 {
-    (float::quantize_unit(c.x, 255.0) << 16) | (float::quantize_unit(c.y, 255.0) << 8) | float::quantize_unit(c.z, 255.0)
+    (float::quantize_unit(c.x, 255.0) << 16)
+        | (float::quantize_unit(c.y, 255.0) << 8)
+        | float::quantize_unit(c.z, 255.0)
 }
 
 /// Unpacks `0x00RRGGBB` to channels in `[0, 1]`; the top byte is ignored.
@@ -39,7 +41,8 @@ pub fn unpack_rgb888(p: u32) -> Vec3 {
 /// ```
 #[inline(always)]
 pub fn pack_rgb565(c: Vec3) -> u16 {
-    ((float::quantize_unit(c.x, 31.0) << 11) | (float::quantize_unit(c.y, 63.0) << 5) | float::quantize_unit(c.z, 31.0)) as u16
+    ((float::quantize_unit(c.x, 31.0) << 11) | (float::quantize_unit(c.y, 63.0) << 5) | float::quantize_unit(c.z, 31.0))
+        as u16
 }
 
 /// Unpacks RGB565 to channels in `[0, 1]`.

@@ -72,7 +72,8 @@ impl Shader for GeneralShader<'_> {
                 out.normal = s.normal(mesh, i);
                 out.diffuse = s.lighting.diffuse(out.normal);
                 if v.specular {
-                    out.specular = s.lighting.specular(out.normal, s.eye_direction(s.world(mesh, i)), s.material.shininess);
+                    out.specular =
+                        s.lighting.specular(out.normal, s.eye_direction(s.world(mesh, i)), s.material.shininess);
                 }
             }
             ShadingModel::Phong => {
