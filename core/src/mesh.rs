@@ -182,6 +182,23 @@ impl<'a> Mesh<'a> {
         (tri[0] < n && tri[1] < n && tri[2] < n).then_some(tri)
     }
 
+    /// Calls `f` with each triangle's vertex indices in order, or `None` for a triangle with an index that is not
+    /// a vertex. Faster than calling [`Mesh::triangle`] for each.
+    #[inline(always)]
+    pub fn for_each_triangle(&self, mut f: impl FnMut(Option<[usize; 3]>)) {
+        let n = self.positions.len();
+        let check = |t: [usize; 3]| (t[0] < n && t[1] < n && t[2] < n).then_some(t);
+        match self.indices {
+            Indices::Sequential => (0..n / 3).for_each(|t| f(Some([3 * t, 3 * t + 1, 3 * t + 2]))),
+            Indices::U16(ix) => {
+                ix.chunks_exact(3).for_each(|c| f(check([usize::from(c[0]), usize::from(c[1]), usize::from(c[2])])))
+            }
+            Indices::U32(ix) => {
+                ix.chunks_exact(3).for_each(|c| f(check([c[0] as usize, c[1] as usize, c[2] as usize])))
+            }
+        }
+    }
+
     /// All positions.
     pub fn positions(&self) -> &'a [Vec3] {
         self.positions

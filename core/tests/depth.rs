@@ -15,9 +15,10 @@ impl Shader for ByTriangle {
     type Varyings = ();
     type Face = Vec3;
     const ATTRIBUTES: Attributes = Attributes::NONE;
-    fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, ()) {
-        self.0.vertex(mesh, i)
+    fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+        self.0.position(mesh, i)
     }
+    fn varyings(&self, _: &Mesh<'_>, _: usize) {}
     fn face(&self, _: &Mesh<'_>, t: [usize; 3]) -> Vec3 {
         Vec3::new(t[0] as f32 / 255.0, 0.0, 0.0)
     }

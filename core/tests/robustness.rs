@@ -53,20 +53,19 @@ fn a_non_finite_position_skips_only_its_triangle() {
     }
 }
 
-/// A NaN normal or UV skips a triangle only in draws that read it.
+/// A NaN normal or UV skips its triangles only in draws that read it: the picture is exactly the one drawn
+/// without those triangles, and they are counted as invalid (when they would have covered a pixel).
 #[test]
 fn non_finite_attributes_skip_triangles_only_where_used() {
     let torus = Torus::new(1.0, 0.4, 12, 8);
+    let (bad_normal, bad_uv) = (5u16, 40u16);
     let mut normals = torus.normals.clone();
     let mut uvs = torus.uvs.clone();
-    normals[5] = Vec3::new(f32::NAN, 0.0, 1.0);
-    uvs[40] = Vec2::new(f32::INFINITY, 0.0);
-    let mesh = Mesh::new(&torus.positions, Indices::U16(&torus.indices))
-        .unwrap()
-        .with_normals(&normals)
-        .unwrap()
-        .with_uvs(&uvs)
-        .unwrap();
+    normals[bad_normal as usize] = Vec3::new(f32::NAN, 0.0, 1.0);
+    uvs[bad_uv as usize] = Vec2::new(f32::INFINITY, 0.0);
+    let without = |bad: &[u16]| -> Vec<u16> {
+        torus.indices.chunks(3).filter(|t| !t.iter().any(|i| bad.contains(i))).flatten().copied().collect()
+    };
     let texels = common::checker_texels();
     let texture = TextureBinding {
         texture: Texture::new(&texels, 8, 8).unwrap(),
@@ -75,24 +74,37 @@ fn non_finite_attributes_skip_triangles_only_where_used() {
     };
     let view = look_at(Vec3::new(0.0, 0.0, 4.0), Vec3::ZERO, Vec3::Y).unwrap();
     let transforms = Transforms::new(Mat4::IDENTITY, view, perspective(1.0, 1.0, 0.1, 10.0).unwrap());
-    let uses = |b: u32| torus.indices.chunks(3).filter(|t| t.contains(&(b as u16))).count() as u64;
-    let stats = |shading, texture| {
-        let effects = Effects {
-            shading,
-            material: Material::default(),
-            lighting: Lighting { ambient: Vec3::ONE, lights: &[] },
-            texture,
-        };
-        let mut color = vec![0u32; 32 * 32];
-        let mut target = Target::new(Rgb888(&mut color), NoDepth, 32, 32).unwrap();
+    let render = |indices: &[u16], shading, texture| {
+        let mesh = Mesh::new(&torus.positions, Indices::U16(indices))
+            .unwrap()
+            .with_normals(&normals)
+            .unwrap()
+            .with_uvs(&uvs)
+            .unwrap();
+        let lighting = Lighting { ambient: Vec3::splat(0.3), lights: &[] };
+        let effects = Effects { shading, material: Material::default(), lighting, texture };
+        let mut color = vec![0u32; 48 * 48];
+        let mut depth = vec![0f32; 48 * 48];
+        let mut target = Target::new(Rgb888(&mut color), &mut depth[..], 48, 48).unwrap();
+        target.clear(Vec3::ZERO);
         let state = DrawState { cull: rasterm_core::pipeline::Cull::None, ..DrawState::default() };
-        draw_mesh(&mut target, &mesh, &transforms, &effects, &state).unwrap()
+        let stats = draw_mesh(&mut target, &mesh, &transforms, &effects, &state).unwrap();
+        (color, stats.invalid)
     };
-    assert_eq!(stats(ShadingModel::Unlit, None).invalid, 0);
-    assert_eq!(stats(ShadingModel::Flat, None).invalid, 0, "flat shading reads no vertex normals");
-    assert_eq!(stats(ShadingModel::Phong, None).invalid, uses(5));
-    assert_eq!(stats(ShadingModel::Unlit, Some(texture)).invalid, uses(40));
-    assert_eq!(stats(ShadingModel::Phong, Some(texture)).invalid, uses(5) + uses(40));
+    for (shading, texture, reads) in [
+        (ShadingModel::Unlit, None, vec![]),
+        (ShadingModel::Flat, None, vec![]), // flat shading reads no vertex normals
+        (ShadingModel::Phong, None, vec![bad_normal]),
+        (ShadingModel::Unlit, Some(texture), vec![bad_uv]),
+        (ShadingModel::Phong, Some(texture), vec![bad_normal, bad_uv]),
+    ] {
+        let (image, invalid) = render(&torus.indices, shading, texture);
+        let (expected, _) = render(&without(&reads), shading, texture);
+        assert!(image == expected, "{shading:?}: the picture differs from the one without the bad triangles");
+        let uses = (torus.indices.len() - without(&reads).len()) as u64 / 3;
+        assert!(invalid <= uses, "{shading:?}: {invalid} invalid of {uses}");
+        assert_eq!(invalid > 0, !reads.is_empty(), "{shading:?}: counted as invalid only where read");
+    }
 }
 
 #[test]
@@ -157,9 +169,10 @@ fn malformed_meshes_and_states_are_refused() {
         type Varyings = ();
         type Face = ();
         const ATTRIBUTES: Attributes = Attributes { normals: false, uvs: true, colors: false };
-        fn vertex(&self, m: &Mesh<'_>, i: usize) -> (rasterm_core::math::Vec4, ()) {
-            (m.position(i).extend(1.0), ())
+        fn position(&self, m: &Mesh<'_>, i: usize) -> rasterm_core::math::Vec4 {
+            m.position(i).extend(1.0)
         }
+        fn varyings(&self, _: &Mesh<'_>, _: usize) {}
         fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
         fn fragment(&self, _: &rasterm_core::pipeline::Fragment, _: &(), _: &()) -> Vec3 {
             Vec3::ONE

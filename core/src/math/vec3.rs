@@ -61,7 +61,7 @@ impl Vec3 {
     #[inline]
     pub fn try_normalize(self) -> Option<Self> {
         let len = self.length();
-        if len > 0.0 && len.is_finite() { Some(self / len) } else { None }
+        if len > 0.0 && len.is_finite() { Some(self * (1.0 / len)) } else { None }
     }
 
     /// Unit vector in the same direction, or zero when that does not exist (zero or non-finite length).

@@ -31,12 +31,6 @@ pub(crate) struct ClipVertex<V> {
 struct Plane([f32; 4]);
 
 impl Plane {
-    #[inline(always)]
-    fn distance(&self, p: Vec4) -> f32 {
-        let a = self.0;
-        a[0] * p.x + a[1] * p.y + a[2] * p.z + a[3] * p.w
-    }
-
     /// The distance in `f64`; every product of two `f32`s is exact there.
     fn distance_f64(&self, p: Vec4) -> f64 {
         let a = self.0;
@@ -47,10 +41,8 @@ impl Plane {
     }
 }
 
-/// Planes that clipping cuts against, in the order it cuts.
+/// Planes that clipping cuts against, in the order it cuts: near, far, and the guard band's four sides.
 const CLIP_PLANES: usize = 6;
-/// Planes that only reject: the frame's columns and the target's rows, with one pixel of margin.
-const REJECT_PLANES: usize = 4;
 
 /// Outcode bits of the clipping planes (bits `0..CLIP_PLANES`).
 pub(crate) const CLIP_MASK: u16 = (1 << CLIP_PLANES) - 1;
@@ -59,9 +51,14 @@ pub(crate) const CLIP_MASK: u16 = (1 << CLIP_PLANES) - 1;
 pub(crate) const MAX_CLIPPED: usize = 3 + CLIP_PLANES;
 
 /// The clipping and rejection planes of one draw into one target.
+///
+/// Outcode bits 0..6 are the clipping planes (near, far, guard left, right, bottom, top); bits 6..10 only reject:
+/// the frame's left and right edges and the target's bottom and top rows, each with one pixel of margin.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct ClipVolume {
-    planes: [Plane; CLIP_PLANES + REJECT_PLANES],
+    /// NDC limits: guard x, guard y, frame x, band y (each low, high).
+    limits: [f32; 8],
+    planes: [Plane; CLIP_PLANES],
 }
 
 impl ClipVolume {
@@ -76,6 +73,7 @@ impl ClipVolume {
         let (vx0, vx1) = (ndc_x(-1.0), ndc_x(w + 1.0));
         let (vy0, vy1) = (ndc_y(row1 as f32 + 1.0), ndc_y(row0 as f32 - 1.0));
         Self {
+            limits: [gx0, gx1, gy0, gy1, vx0, vx1, vy0, vy1],
             planes: [
                 Plane([0.0, 0.0, 1.0, 0.0]),  // near: z >= 0
                 Plane([0.0, 0.0, -1.0, 1.0]), // far: z <= w
@@ -83,22 +81,28 @@ impl ClipVolume {
                 Plane([-1.0, 0.0, 0.0, gx1]), // guard right: x <= gx1 w
                 Plane([0.0, 1.0, 0.0, -gy0]), // guard bottom: y >= gy0 w
                 Plane([0.0, -1.0, 0.0, gy1]), // guard top: y <= gy1 w
-                Plane([1.0, 0.0, 0.0, -vx0]), // frame left
-                Plane([-1.0, 0.0, 0.0, vx1]), // frame right
-                Plane([0.0, 1.0, 0.0, -vy0]), // band bottom
-                Plane([0.0, -1.0, 0.0, vy1]), // band top
             ],
         }
     }
 
-    /// One bit per plane the point is outside of.
+    /// One bit per plane the point is outside of (see [`ClipVolume`] for the order).
+    ///
+    /// Each test has the sign of the plane's distance: `x < k w` exactly when `x - k w < 0`, because IEEE
+    /// subtraction of two different floats is never zero.
     #[inline(always)]
     pub fn outcode(&self, p: Vec4) -> u16 {
-        let mut code = 0;
-        for (i, plane) in self.planes.iter().enumerate() {
-            code |= u16::from(plane.distance(p) < 0.0) << i;
-        }
-        code
+        let [gx0, gx1, gy0, gy1, vx0, vx1, vy0, vy1] = self.limits;
+        let Vec4 { x, y, z, w } = p;
+        u16::from(z < 0.0)
+            | u16::from(z > w) << 1
+            | u16::from(x < gx0 * w) << 2
+            | u16::from(x > gx1 * w) << 3
+            | u16::from(y < gy0 * w) << 4
+            | u16::from(y > gy1 * w) << 5
+            | u16::from(x < vx0 * w) << 6
+            | u16::from(x > vx1 * w) << 7
+            | u16::from(y < vy0 * w) << 8
+            | u16::from(y > vy1 * w) << 9
     }
 
     /// Clips a triangle against the clipping planes named in `mask` into a convex polygon (empty if nothing is
@@ -108,7 +112,7 @@ impl ClipVolume {
         poly.verts[1] = tri[1];
         poly.verts[2] = tri[2];
         let mut scratch = poly;
-        for (i, plane) in self.planes[..CLIP_PLANES].iter().enumerate() {
+        for (i, plane) in self.planes.iter().enumerate() {
             if mask & (1 << i) == 0 {
                 continue;
             }
@@ -128,7 +132,7 @@ impl ClipVolume {
     /// ("A new concept and method for line clipping", ACM TOG 1984), in `f64`.
     pub fn clip_segment(&self, a: Vec4, b: Vec4) -> Option<(Vec4, Vec4)> {
         let (mut t0, mut t1) = (0.0f64, 1.0f64);
-        for plane in &self.planes[..CLIP_PLANES] {
+        for plane in &self.planes {
             let (da, db) = (plane.distance_f64(a), plane.distance_f64(b));
             if da < 0.0 && db < 0.0 {
                 return None;

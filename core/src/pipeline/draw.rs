@@ -1,9 +1,10 @@
 //! A draw call: mesh → vertex stage → clip → raster → fragment → target.
 
-use super::clip::{CLIP_MASK, ClipVertex, ClipVolume};
+use super::clip::{CLIP_MASK, ClipVertex, ClipVolume, MAX_CLIPPED};
 use super::depth_stage::{DepthLess, DepthOff, DepthStage, DynamicDepth};
 use super::interpolator::{Affine, DynamicInterpolator, Interpolator, PerspectiveCorrect};
-use super::raster::{Rasterizer, ScreenVertex, Setup, Stages};
+use super::raster::{Rasterizer, Setup, Stages};
+use super::vertex_cache::VertexCache;
 use super::{DepthTest, DrawState, DrawStats, Interpolation, MAX_SUBPIXEL_BITS, Shader, Varyings};
 use crate::mesh::{Attributes, Mesh};
 use crate::target::{ColorBuffer, DepthBuffer, Target};
@@ -52,9 +53,10 @@ impl core::fmt::Display for DrawError {
 ///     type Varyings = ();
 ///     type Face = ();
 ///     const ATTRIBUTES: Attributes = Attributes::NONE;
-///     fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, ()) {
-///         (mesh.position(i).extend(1.0), ())
+///     fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+///         mesh.position(i).extend(1.0)
 ///     }
+///     fn varyings(&self, _: &Mesh<'_>, _: usize) {}
 ///     fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
 ///     fn fragment(&self, _: &Fragment, _: &(), _: &()) -> Vec3 {
 ///         Vec3::new(1.0, 0.0, 0.0)
@@ -136,7 +138,15 @@ struct Outcome {
 }
 
 impl Outcome {
-    fn record(self, stats: &mut DrawStats) {
+    fn record(&mut self, setup: &Setup) {
+        match setup {
+            Setup::Degenerate => self.degenerate = true,
+            Setup::Culled => self.culled = true,
+            Setup::Empty | Setup::Ready(_) => self.rasterized = true,
+        }
+    }
+
+    fn count(self, stats: &mut DrawStats) {
         if self.rasterized {
             stats.rasterized += 1;
         } else if self.culled {
@@ -169,66 +179,76 @@ where
     let volume = ClipVolume::new(target.width(), target.height(), rows.start, rows.end);
     let raster = Rasterizer::new(target, state.subpixel_bits, state.cull, state.front_face);
     let stages = Stages { shader, interpolator, depth };
+    let mut cache = VertexCache::new();
     let mut stats = DrawStats::default();
 
-    for t in 0..mesh.triangle_count() {
+    mesh.for_each_triangle(|indices| {
         stats.triangles_in += 1;
-        let Some(indices) = mesh.triangle(t) else {
+        let Some(indices) = indices else {
             stats.invalid += 1;
-            continue;
+            return;
         };
-        let verts = indices.map(|i| {
-            let (pos, var) = shader.vertex(mesh, i);
-            ClipVertex { pos, var }
-        });
-        if !verts.iter().all(|v| v.pos.is_finite() && v.var.is_finite()) {
+        let [a, b, c] = indices.map(|i| cache.position(shader, mesh, i, &volume, &raster));
+        if !(a.finite && b.finite && c.finite) {
             stats.invalid += 1;
-            continue;
+            return;
         }
-        let codes = verts.map(|v| volume.outcode(v.pos));
-        if codes[0] & codes[1] & codes[2] != 0 {
+        if a.code & b.code & c.code != 0 {
             stats.outside += 1;
-            continue;
+            return;
         }
-
-        let mut face = None;
         let mut outcome = Outcome::default();
-        let mut fragments = 0;
-        let mut piece = |tri: [&ScreenVertex<S::Varyings>; 3], target: &mut Target<C, D>| match raster.setup(tri) {
-            Setup::Degenerate => outcome.degenerate = true,
-            Setup::Culled => outcome.culled = true,
-            Setup::Empty => outcome.rasterized = true,
-            Setup::Ready(triangle) => {
-                outcome.rasterized = true;
-                let face = face.get_or_insert_with(|| shader.face(mesh, indices));
-                fragments += triangle.fill(&stages, face, target);
-            }
-        };
-
-        let clip_mask = (codes[0] | codes[1] | codes[2]) & CLIP_MASK;
+        let clip_mask = (a.code | b.code | c.code) & CLIP_MASK;
         if clip_mask == 0 {
-            if let [Some(a), Some(b), Some(c)] = verts.each_ref().map(|v| raster.snap(v)) {
-                piece([&a, &b, &c], target);
+            // The common case: varyings only once coverage is known.
+            let (Some(sa), Some(sb), Some(sc)) = (a.screen, b.screen, c.screen) else {
+                stats.outside += 1;
+                return;
+            };
+            let setup = raster.setup([sa, sb, sc]);
+            outcome.record(&setup);
+            if let Setup::Ready(coverage) = setup {
+                let vars = indices.map(|i| cache.varyings(shader, mesh, i));
+                if !vars.iter().all(Varyings::is_finite) {
+                    stats.invalid += 1;
+                    return;
+                }
+                let face = shader.face(mesh, indices);
+                stats.fragments += coverage.fill(&stages, &face, vars.each_ref(), target);
             }
         } else {
+            // Clipping cuts varyings too, so they are needed first.
             stats.clipped += 1;
-            let polygon = volume.clip(&verts, clip_mask);
-            let mut snapped = [None; super::clip::MAX_CLIPPED];
-            for (s, v) in snapped.iter_mut().zip(polygon.vertices()) {
-                *s = raster.snap(v);
+            let vars = indices.map(|i| cache.varyings(shader, mesh, i));
+            if !vars.iter().all(Varyings::is_finite) {
+                stats.invalid += 1;
+                return;
             }
-            let n = polygon.vertices().len();
-            if let Some(Some(first)) = snapped.first() {
-                // A convex polygon is a fan around its first vertex.
-                for i in 1..n.saturating_sub(1) {
-                    if let (Some(b), Some(c)) = (&snapped[i], &snapped[i + 1]) {
-                        piece([first, b, c], target);
-                    }
+            let tri = [
+                ClipVertex { pos: a.pos, var: vars[0] },
+                ClipVertex { pos: b.pos, var: vars[1] },
+                ClipVertex { pos: c.pos, var: vars[2] },
+            ];
+            let polygon = volume.clip(&tri, clip_mask);
+            let verts = polygon.vertices();
+            let mut snapped = [None; MAX_CLIPPED];
+            for (s, v) in snapped.iter_mut().zip(verts) {
+                *s = raster.snap(v.pos);
+            }
+            let mut face = None;
+            // A convex polygon is a fan around its first vertex.
+            for i in 1..verts.len().saturating_sub(1) {
+                let (Some(p), Some(q), Some(r)) = (snapped[0], snapped[i], snapped[i + 1]) else { continue };
+                let setup = raster.setup([p, q, r]);
+                outcome.record(&setup);
+                if let Setup::Ready(coverage) = setup {
+                    let face = face.get_or_insert_with(|| shader.face(mesh, indices));
+                    let pieces = [&verts[0].var, &verts[i].var, &verts[i + 1].var];
+                    stats.fragments += coverage.fill(&stages, face, pieces, target);
                 }
             }
         }
-        stats.fragments += fragments;
-        outcome.record(&mut stats);
-    }
+        outcome.count(&mut stats);
+    });
     stats
 }

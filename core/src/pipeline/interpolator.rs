@@ -27,8 +27,8 @@ impl Interpolator for PerspectiveCorrect {
     #[inline(always)]
     fn setup(&self, inv_w: [f32; 3], _: f32) -> [f32; 3] {
         // Only the ratios matter: scale so the largest is 1, which keeps the per-pixel sum away from underflow.
-        let m = crate::math::float::max(inv_w[0], crate::math::float::max(inv_w[1], inv_w[2]));
-        [inv_w[0] / m, inv_w[1] / m, inv_w[2] / m]
+        let r = 1.0 / crate::math::float::max(inv_w[0], crate::math::float::max(inv_w[1], inv_w[2]));
+        [inv_w[0] * r, inv_w[1] * r, inv_w[2] * r]
     }
 
     #[inline(always)]

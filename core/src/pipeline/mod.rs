@@ -29,6 +29,7 @@ mod shader;
 mod state;
 mod stats;
 mod varyings;
+mod vertex_cache;
 
 pub use clip::GUARD_BAND;
 pub use draw::{DrawError, draw, draw_unspecialised};

@@ -10,42 +10,42 @@
 //! (Direct3D 11.3 functional specification, 3.4.2.1; Pineda, "A Parallel Algorithm for Polygon Rasterization",
 //! SIGGRAPH 1988). Two triangles sharing an edge therefore cover each pixel on it exactly once.
 
-use super::clip::ClipVertex;
 use super::depth_stage::DepthStage;
 use super::interpolator::Interpolator;
 use super::{Cull, Fragment, Shader, Varyings, Winding};
 use crate::camera::Viewport;
-use crate::math::float;
+use crate::math::{Vec4, float};
 use crate::target::{ColorBuffer, DepthBuffer, Target};
 
-/// A vertex in screen space, snapped to the sub-pixel grid.
+/// A vertex position in screen space, snapped to the sub-pixel grid.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct ScreenVertex<V> {
+pub(crate) struct Snapped {
     /// Fixed-point x, in units of `2^-(S+1)` pixel.
-    x: i64,
+    x: i32,
     /// Fixed-point y (down), same units.
-    y: i64,
+    y: i32,
     /// NDC depth.
     z: f32,
     /// `1 / w`.
     inv_w: f32,
-    var: V,
 }
 
 /// Largest magnitude, in pixels, that a snapped coordinate is clamped to: twice the guard band, so clamping never
-/// happens to a clipped triangle and merely bounds the integers if rounding ever pushed a vertex out.
+/// happens to a clipped triangle and merely bounds the integers if rounding ever pushed a vertex out. Times
+/// 2^[`super::MAX_SUBPIXEL_BITS`] it stays below 2^23, where `f32` still holds every integer.
 const SNAP_LIMIT_PX: f32 = 2.0 * super::clip::GUARD_BAND;
+const _: () = assert!(SNAP_LIMIT_PX * (1u32 << super::MAX_SUBPIXEL_BITS) as f32 <= 8_388_608.0);
 
 /// What became of one triangle (or clipped piece) at set-up.
-pub(crate) enum Setup<V: Copy> {
+pub(crate) enum Setup {
     /// Zero area on the sub-pixel grid.
     Degenerate,
     /// Removed by face culling.
     Culled,
     /// Facing is fine but its bounding box holds no pixel centre of the target.
     Empty,
-    /// Ready for the pixel loop.
-    Ready(Triangle<V>),
+    /// Covers pixel centres: ready for the pixel loop.
+    Ready(Coverage),
 }
 
 /// Per-draw rasterizer settings.
@@ -86,25 +86,25 @@ impl Rasterizer {
     /// Divides by `w`, maps to the screen and snaps. `None` when `w <= 0` (only possible for the degenerate
     /// all-zero clip-space point once clipping is done).
     #[inline(always)]
-    pub fn snap<V: Copy>(&self, v: &ClipVertex<V>) -> Option<ScreenVertex<V>> {
-        let w_positive = v.pos.w > 0.0; // false for NaN too
+    pub fn snap(&self, pos: Vec4) -> Option<Snapped> {
+        let w_positive = pos.w > 0.0; // false for NaN too
         if !w_positive {
             return None;
         }
-        let s = self.viewport.clip_to_screen(v.pos);
-        let fixed = |p: f32| {
-            let p = float::clamp(p, -SNAP_LIMIT_PX, SNAP_LIMIT_PX) * self.scale;
-            i64::from(float::floor_to_i32(p + 0.5)) << 1
-        };
-        Some(ScreenVertex { x: fixed(s.x), y: fixed(s.y), z: s.z, inv_w: 1.0 / v.pos.w, var: v.var })
+        let inv_w = 1.0 / pos.w;
+        let s = self.viewport.to_screen(pos.truncate() * inv_w);
+        // Round to the nearest grid point; within the clamp, |p| < 2^23 and `floor` and the cast are exact.
+        let fixed =
+            |p: f32| (float::floor(float::clamp(p, -SNAP_LIMIT_PX, SNAP_LIMIT_PX) * self.scale + 0.5) as i32) << 1;
+        Some(Snapped { x: fixed(s.x), y: fixed(s.y), z: s.z, inv_w })
     }
 
-    /// Area, facing and bounding box of a triangle, and if it has any pixels, everything the pixel loop needs.
+    /// Area, facing and bounding box of a triangle, and if it covers any pixel centre, its edge functions.
     #[inline(always)]
-    pub fn setup<V: Varyings>(&self, v: [&ScreenVertex<V>; 3]) -> Setup<V> {
-        let [mut a, mut b, c] = v;
+    pub fn setup(&self, v: [Snapped; 3]) -> Setup {
+        let [a, b, c] = v.map(|p| (i64::from(p.x), i64::from(p.y)));
         // Twice the signed area in fixed-point units. Positive means clockwise on the y-up NDC plane.
-        let area = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+        let area = (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0);
         if area == 0 {
             return Setup::Degenerate;
         }
@@ -115,16 +115,12 @@ impl Rasterizer {
             Cull::Front if front_facing => return Setup::Culled,
             _ => {}
         }
-        if ccw {
-            core::mem::swap(&mut a, &mut b);
-        }
-        let area = area.abs();
 
         let shift = self.shift;
         let half = 1i64 << (shift - 1);
         // Pixel centres inside the bounding box: i with (i << shift) + half in [min, max].
-        let (min_x, max_x) = (a.x.min(b.x).min(c.x), a.x.max(b.x).max(c.x));
-        let (min_y, max_y) = (a.y.min(b.y).min(c.y), a.y.max(b.y).max(c.y));
+        let (min_x, max_x) = (a.0.min(b.0).min(c.0), a.0.max(b.0).max(c.0));
+        let (min_y, max_y) = (a.1.min(b.1).min(c.1), a.1.max(b.1).max(c.1));
         let first_centre = |lo: i64| ((lo - half + (1 << shift) - 1) >> shift) as i32;
         let last_centre = |hi: i64| ((hi - half) >> shift) as i32;
         let x0 = first_centre(min_x).max(0);
@@ -135,8 +131,10 @@ impl Rasterizer {
             return Setup::Empty;
         }
 
+        // Orient clockwise on screen (positive area) so that every edge function is positive inside.
+        let order = if ccw { [1, 0, 2] } else { [0, 1, 2] };
+        let verts = order.map(|i| [a, b, c][i]);
         // Edge k is the one opposite vertex k; its function is k's barycentric coordinate times `area`.
-        let verts = [a, b, c];
         let start_x = (i64::from(x0) << shift) + half;
         let start_y = (i64::from(y0) << shift) + half;
         let mut edge = [0i64; 3];
@@ -145,18 +143,19 @@ impl Rasterizer {
         let mut bias = [0i64; 3];
         for k in 0..3 {
             let (p, q) = (verts[(k + 1) % 3], verts[(k + 2) % 3]);
-            let (dx, dy) = (q.x - p.x, q.y - p.y);
+            let (dx, dy) = (q.0 - p.0, q.1 - p.1);
             // Inside is to the right of p->q in y-down screen space; the edge is "left" when y decreases along
             // it and "top" when it is horizontal running to +x.
             let top_left = dy < 0 || (dy == 0 && dx > 0);
             bias[k] = if top_left { 0 } else { -1 };
-            edge[k] = dx * (start_y - p.y) - dy * (start_x - p.x) + bias[k];
+            edge[k] = dx * (start_y - p.1) - dy * (start_x - p.0) + bias[k];
             step_x[k] = -dy << shift;
             step_y[k] = dx << shift;
         }
 
-        let inv_area = 1.0 / area as f32;
-        Setup::Ready(Triangle {
+        let inv_area = 1.0 / area.abs() as f32;
+        let [za, zb, zc] = order.map(|i| v[i].z);
+        Setup::Ready(Coverage {
             edge,
             step_x,
             step_y,
@@ -166,20 +165,18 @@ impl Rasterizer {
             y0,
             y1,
             front_facing,
-            z0: a.z,
-            dz1: (b.z - a.z) * inv_area,
-            dz2: (c.z - a.z) * inv_area,
-            inv_w: [a.inv_w, b.inv_w, c.inv_w],
+            order,
+            z0: za,
+            dz1: (zb - za) * inv_area,
+            dz2: (zc - za) * inv_area,
+            inv_w: order.map(|i| v[i].inv_w),
             inv_area,
-            var0: a.var,
-            var_d1: b.var.sub(&a.var),
-            var_d2: c.var.sub(&a.var),
         })
     }
 }
 
-/// A triangle ready for the pixel loop.
-pub(crate) struct Triangle<V> {
+/// The coverage of a triangle that reaches the pixel loop, with its geometric interpolants (depth and `1/w`).
+pub(crate) struct Coverage {
     /// Biased edge functions at the first pixel centre of the bounding box: a centre is covered when all three
     /// are `>= 0`.
     edge: [i64; 3],
@@ -192,15 +189,14 @@ pub(crate) struct Triangle<V> {
     y0: i32,
     y1: i32,
     front_facing: bool,
+    /// Which input vertex each of the oriented vertices is.
+    order: [usize; 3],
     z0: f32,
     /// Depth change per unit of edge function 1 and 2.
     dz1: f32,
     dz2: f32,
     inv_w: [f32; 3],
     inv_area: f32,
-    var0: V,
-    var_d1: V,
-    var_d2: V,
 }
 
 /// The per-draw stages the pixel loop is specialised on.
@@ -210,19 +206,27 @@ pub(crate) struct Stages<'s, S, I, Z> {
     pub depth: Z,
 }
 
-impl<V: Varyings> Triangle<V> {
-    /// Visits every covered pixel centre in the target's rows: depth test, interpolation, fragment stage, write.
-    /// Returns the number of fragments shaded.
+impl Coverage {
+    /// Visits every covered pixel centre in the target's rows: depth test, interpolation of `varyings` (given for
+    /// the input vertices, in input order), fragment stage, write. Returns the number of fragments shaded.
     #[inline(always)]
-    pub fn fill<S, I, Z, C, D>(&self, stages: &Stages<'_, S, I, Z>, face: &S::Face, target: &mut Target<C, D>) -> u64
+    pub fn fill<S, I, Z, C, D>(
+        &self,
+        stages: &Stages<'_, S, I, Z>,
+        face: &S::Face,
+        varyings: [&S::Varyings; 3],
+        target: &mut Target<C, D>,
+    ) -> u64
     where
-        S: Shader<Varyings = V>,
+        S: Shader,
         I: Interpolator,
         Z: DepthStage,
         C: ColorBuffer,
         D: DepthBuffer,
     {
         let setup = stages.interpolator.setup(self.inv_w, self.inv_area);
+        let [v0, v1, v2] = self.order.map(|i| varyings[i]);
+        let (var_d1, var_d2) = (v1.sub(v0), v2.sub(v0));
         let width = target.width() as usize;
         let row0 = target.rows().start as i32;
         let mut shaded = 0u64;
@@ -243,7 +247,7 @@ impl<V: Varyings> Triangle<V> {
                 let index = base + x as usize;
                 if stages.depth.test(&mut target.depth, index, z) {
                     let (w1, w2) = stages.interpolator.weights(&setup, ef);
-                    let var = self.var0.interpolate(&self.var_d1, w1, &self.var_d2, w2);
+                    let var = v0.interpolate(&var_d1, w1, &var_d2, w2);
                     let fragment = Fragment { x: x as u32, y: y as u32, depth: z, front_facing: self.front_facing };
                     let color = stages.shader.fragment(&fragment, face, &var);
                     target.color.write(index, color);

@@ -19,7 +19,8 @@ pub struct Fragment {
 
 /// A shader: the vertex, per-triangle and fragment stages of a draw.
 ///
-/// The associated [`Shader::Varyings`] type is exactly what gets interpolated. A shader without texture
+/// The vertex stage comes in two parts, [`Shader::position`] and [`Shader::varyings`], so that the pipeline can
+/// clip and cull with positions alone and compute varyings only where they are used. The associated [`Shader::Varyings`] type is exactly what gets interpolated. A shader without texture
 /// coordinates in its varyings cannot interpolate them, so "an untextured draw never touches UVs" holds by
 /// construction, and each shader type compiles to its own specialised pixel loop.
 pub trait Shader {
@@ -30,8 +31,17 @@ pub trait Shader {
     /// Mesh attributes the vertex stage reads; a draw with a mesh that lacks one is refused.
     const ATTRIBUTES: Attributes;
 
-    /// Vertex stage: the clip-space position of vertex `index` of `mesh` and its varyings.
-    fn vertex(&self, mesh: &Mesh<'_>, index: usize) -> (Vec4, Self::Varyings);
+    /// Vertex stage, position: the clip-space position of vertex `index` of `mesh`.
+    ///
+    /// Like [`Shader::varyings`] it must depend on `mesh` and `index` alone: the pipeline reuses one result for
+    /// all the triangles that share the vertex.
+    fn position(&self, mesh: &Mesh<'_>, index: usize) -> Vec4;
+
+    /// Vertex stage, varyings: what vertex `index` passes to the fragment stage.
+    ///
+    /// Called only for vertices of triangles that survive clipping, culling and the bounding-box test, so a
+    /// vertex seen only by hidden triangles is never lit or textured.
+    fn varyings(&self, mesh: &Mesh<'_>, index: usize) -> Self::Varyings;
 
     /// Triangle stage: computed once for each triangle that reaches the rasterizer.
     fn face(&self, mesh: &Mesh<'_>, triangle: [usize; 3]) -> Self::Face;

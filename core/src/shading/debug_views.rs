@@ -30,9 +30,12 @@ impl Shader for DepthShader {
     const ATTRIBUTES: Attributes = Attributes::NONE;
 
     #[inline(always)]
-    fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, ()) {
-        (self.clip_from_object.project_point(mesh.position(i)), ())
+    fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+        self.clip_from_object.project_point(mesh.position(i))
     }
+
+    #[inline(always)]
+    fn varyings(&self, _: &Mesh<'_>, _: usize) {}
 
     #[inline(always)]
     fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
@@ -63,9 +66,13 @@ impl Shader for NormalShader {
     const ATTRIBUTES: Attributes = Attributes { normals: true, uvs: false, colors: false };
 
     #[inline(always)]
-    fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, Vec3) {
-        let clip = self.clip_from_object.project_point(mesh.position(i));
-        (clip, world_normal(&self.normal, mesh.normal(i)))
+    fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+        self.clip_from_object.project_point(mesh.position(i))
+    }
+
+    #[inline(always)]
+    fn varyings(&self, mesh: &Mesh<'_>, i: usize) -> Vec3 {
+        world_normal(&self.normal, mesh.normal(i))
     }
 
     #[inline(always)]

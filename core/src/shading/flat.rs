@@ -42,8 +42,13 @@ impl<T: TextureStage> Shader for FlatShader<'_, T> {
     const ATTRIBUTES: Attributes = T::ATTRIBUTES;
 
     #[inline(always)]
-    fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, T::Varyings) {
-        (self.surface.clip(mesh, i), self.texture.vertex(mesh, i))
+    fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+        self.surface.clip(mesh, i)
+    }
+
+    #[inline(always)]
+    fn varyings(&self, mesh: &Mesh<'_>, i: usize) -> T::Varyings {
+        self.texture.vertex(mesh, i)
     }
 
     #[inline(always)]

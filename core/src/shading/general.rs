@@ -59,7 +59,11 @@ impl Shader for GeneralShader<'_> {
     type Face = LightTerms;
     const ATTRIBUTES: Attributes = Attributes::NONE;
 
-    fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, GeneralVaryings) {
+    fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+        self.surface.clip(mesh, i)
+    }
+
+    fn varyings(&self, mesh: &Mesh<'_>, i: usize) -> GeneralVaryings {
         let s = &self.surface;
         let v = &self.variant;
         let mut out = GeneralVaryings::default();
@@ -85,7 +89,7 @@ impl Shader for GeneralShader<'_> {
             ShadingModel::Normals => out.normal = s.normal(mesh, i),
             _ => {}
         }
-        (s.clip(mesh, i), out)
+        out
     }
 
     fn face(&self, mesh: &Mesh<'_>, triangle: [usize; 3]) -> LightTerms {

@@ -29,12 +29,17 @@ impl<T: TextureStage, H: Highlights> Shader for GouraudShader<'_, T, H> {
     const ATTRIBUTES: Attributes = T::ATTRIBUTES.union(Attributes { normals: true, uvs: false, colors: false });
 
     #[inline(always)]
-    fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, Self::Varyings) {
+    fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+        self.surface.clip(mesh, i)
+    }
+
+    #[inline(always)]
+    fn varyings(&self, mesh: &Mesh<'_>, i: usize) -> Self::Varyings {
         let s = &self.surface;
         let n = s.normal(mesh, i);
         let diffuse = s.lighting.diffuse(n);
         let specular = H::capture(|| s.lighting.specular(n, s.eye_direction(s.world(mesh, i)), s.material.shininess));
-        (s.clip(mesh, i), (diffuse, specular, self.texture.vertex(mesh, i)))
+        (diffuse, specular, self.texture.vertex(mesh, i))
     }
 
     #[inline(always)]

@@ -28,10 +28,14 @@ impl<T: TextureStage, H: Highlights> Shader for PhongShader<'_, T, H> {
     const ATTRIBUTES: Attributes = T::ATTRIBUTES.union(Attributes { normals: true, uvs: false, colors: false });
 
     #[inline(always)]
-    fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, Self::Varyings) {
+    fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+        self.surface.clip(mesh, i)
+    }
+
+    #[inline(always)]
+    fn varyings(&self, mesh: &Mesh<'_>, i: usize) -> Self::Varyings {
         let s = &self.surface;
-        let world = H::capture(|| s.world(mesh, i));
-        (s.clip(mesh, i), (s.normal(mesh, i), world, self.texture.vertex(mesh, i)))
+        (s.normal(mesh, i), H::capture(|| s.world(mesh, i)), self.texture.vertex(mesh, i))
     }
 
     #[inline(always)]

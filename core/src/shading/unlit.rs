@@ -26,8 +26,13 @@ impl<T: TextureStage> Shader for UnlitShader<T> {
     const ATTRIBUTES: Attributes = T::ATTRIBUTES;
 
     #[inline(always)]
-    fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, T::Varyings) {
-        (self.clip_from_object.project_point(mesh.position(i)), self.texture.vertex(mesh, i))
+    fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+        self.clip_from_object.project_point(mesh.position(i))
+    }
+
+    #[inline(always)]
+    fn varyings(&self, mesh: &Mesh<'_>, i: usize) -> T::Varyings {
+        self.texture.vertex(mesh, i)
     }
 
     #[inline(always)]
@@ -59,9 +64,13 @@ impl<T: TextureStage> Shader for VertexColorShader<T> {
     const ATTRIBUTES: Attributes = T::ATTRIBUTES.union(Attributes { normals: false, uvs: false, colors: true });
 
     #[inline(always)]
-    fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, Self::Varyings) {
-        let clip = self.clip_from_object.project_point(mesh.position(i));
-        (clip, (mesh.color(i), self.texture.vertex(mesh, i)))
+    fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+        self.clip_from_object.project_point(mesh.position(i))
+    }
+
+    #[inline(always)]
+    fn varyings(&self, mesh: &Mesh<'_>, i: usize) -> Self::Varyings {
+        (mesh.color(i), self.texture.vertex(mesh, i))
     }
 
     #[inline(always)]

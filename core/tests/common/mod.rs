@@ -31,10 +31,11 @@ impl Shader for ScreenSpace {
     type Varyings = ();
     type Face = ();
     const ATTRIBUTES: Attributes = Attributes::NONE;
-    fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, ()) {
+    fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
         let p = mesh.position(i);
-        (Vec4::new(2.0 * p.x / self.width - 1.0, 1.0 - 2.0 * p.y / self.height, p.z, 1.0), ())
+        Vec4::new(2.0 * p.x / self.width - 1.0, 1.0 - 2.0 * p.y / self.height, p.z, 1.0)
     }
+    fn varyings(&self, _: &Mesh<'_>, _: usize) {}
     fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
     fn fragment(&self, _: &Fragment, _: &(), _: &()) -> Vec3 {
         Vec3::ONE
@@ -105,9 +106,10 @@ impl Shader for Transformed {
     type Varyings = ();
     type Face = ();
     const ATTRIBUTES: Attributes = Attributes::NONE;
-    fn vertex(&self, mesh: &Mesh<'_>, i: usize) -> (Vec4, ()) {
-        (self.clip_from_object.project_point(mesh.position(i)), ())
+    fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+        self.clip_from_object.project_point(mesh.position(i))
     }
+    fn varyings(&self, _: &Mesh<'_>, _: usize) {}
     fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
     fn fragment(&self, _: &Fragment, _: &(), _: &()) -> Vec3 {
         Vec3::ONE
