@@ -1,4 +1,21 @@
 //! rasterm: load models, render them with `rasterm-core`, and show them in a terminal or write PNG files.
+//!
+//! | module | holds |
+//! |---|---|
+//! | [`model`] | OBJ/MTL/texture loading into a [`model::Model`] |
+//! | [`builtin`] | the model compiled into the binary |
+//! | [`escaped`] | text from input files made safe for a terminal |
+//! | [`scene`] | camera, lights and shading choices; drawing a model into a core target |
+//! | [`headless`] | `rasterm render`: a scene to a PNG file |
+//! | [`png_file`] | writing PNG files safely |
+//! | [`screen`] | terminal cells, colour modes and the frame-diff encoder |
+//! | [`viewer`] | the interactive terminal viewer |
 
+pub mod builtin;
+pub mod escaped;
+pub mod headless;
 pub mod model;
+pub mod png_file;
+pub mod scene;
 pub mod screen;
+pub mod viewer;

@@ -31,9 +31,27 @@ pub fn tan(x: f32) -> f32 {
 }
 
 /// `x` raised to the power `y`.
+///
+/// Whole exponents up to 256 (Blinn-Phong shininess nearly always is one) are computed by repeated squaring: a
+/// handful of multiplications instead of a `powf` call, equally deterministic on every target.
 #[inline(always)]
 pub fn pow(x: f32, y: f32) -> f32 {
-    libm::powf(x, y)
+    if (0.0..=256.0).contains(&y) && y == (y as u32) as f32 { powi(x, y as u32) } else { libm::powf(x, y) }
+}
+
+/// `x` raised to the whole power `n`, by binary exponentiation (square-and-multiply, Knuth TAOCP vol. 2,
+/// 4.6.3), in a fixed order of operations.
+#[inline(always)]
+pub fn powi(mut x: f32, mut n: u32) -> f32 {
+    let mut result = 1.0;
+    while n > 0 {
+        if n & 1 == 1 {
+            result *= x;
+        }
+        x *= x;
+        n >>= 1;
+    }
+    result
 }
 
 /// 2^23: from here up every `f32` is an integer, and adding it to a smaller non-negative value rounds that value

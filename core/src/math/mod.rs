@@ -1,9 +1,10 @@
 //! Vectors, matrices and quaternions.
 //!
 //! Conventions used throughout rasterm: column vectors (`m * v`), matrices stored by columns, right-handed
-//! coordinates, angles in radians. All non-trivial float functions go through the crate-internal `math::float` module, which calls `libm`.
+//! coordinates, angles in radians. All non-trivial float functions go through [`float`], which calls `libm`; code
+//! outside the core that computes anything a pixel depends on should use it too.
 
-pub(crate) mod float;
+pub mod float;
 mod mat3;
 mod mat4;
 mod quat;

@@ -4,7 +4,7 @@ use std::fmt;
 use std::io;
 use std::path::{Path, PathBuf};
 
-use super::escaped::{Escaped, path_text};
+use crate::escaped::{Escaped, path_text};
 
 /// The largest magnitude accepted for any number of a `v`, `vt` or `vn` statement.
 ///

@@ -27,7 +27,6 @@
 
 mod bounds;
 mod error;
-mod escaped;
 mod loaded_model;
 mod map_path;
 mod material;

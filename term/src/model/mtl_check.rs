@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use super::escaped::{Escaped, path_text};
+use crate::escaped::{Escaped, path_text};
 
 /// MTL text ready for `tobj::load_mtl_buf`, and the warnings about dropped statements.
 pub(crate) struct CheckedMtl {

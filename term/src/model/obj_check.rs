@@ -22,7 +22,7 @@
 use std::path::Path;
 
 use super::error::{COORDINATE_LIMIT, Element, LoadError, LoadErrorKind};
-use super::escaped::path_text;
+use crate::escaped::path_text;
 
 /// OBJ text that passed the check.
 pub(crate) struct CheckedObj {

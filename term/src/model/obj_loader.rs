@@ -7,7 +7,6 @@ use std::path::{Path, PathBuf};
 use rasterm_core::math::{Vec2, Vec3};
 
 use super::error::{LoadError, LoadErrorKind};
-use super::escaped::{Escaped, path_text};
 use super::loaded_model::{Model, Part};
 use super::map_path::map_file;
 use super::material::{DEFAULT_DIFFUSE, Material, diffuse_from_kd};
@@ -16,6 +15,7 @@ use super::obj_check::check_obj;
 use super::resolver::{Directory, Resolver};
 use super::smooth_normals::smooth_normals;
 use super::texture_image::TextureImage;
+use crate::escaped::{Escaped, path_text};
 
 /// How `tobj` is asked to parse: one index per vertex, polygons fanned into triangles, points and lines dropped.
 const OPTIONS: tobj::LoadOptions =

@@ -1,4 +1,4 @@
-//! Control-character escaping for the text of errors and warnings.
+//! Control-character escaping for any text from input files that may reach a terminal.
 //!
 //! File names, tokens and material names come from files and can hold any character. Messages built from them must
 //! stay on one line and must not carry terminal escape sequences, so every control character is written as a Rust
@@ -7,7 +7,7 @@
 use std::fmt;
 
 /// Displays a string with its control characters escaped.
-pub(crate) struct Escaped<'a>(pub(crate) &'a str);
+pub struct Escaped<'a>(pub &'a str);
 
 impl fmt::Display for Escaped<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -23,7 +23,7 @@ impl fmt::Display for Escaped<'_> {
 }
 
 /// `path` as text for a message: lossy UTF-8, control characters escaped.
-pub(crate) fn path_text(path: &std::path::Path) -> String {
+pub fn path_text(path: &std::path::Path) -> String {
     Escaped(&path.to_string_lossy()).to_string()
 }
 

@@ -1,0 +1,302 @@
+//! The terminal viewer: `rasterm [MODEL]`.
+//!
+//! The main thread waits for input, renders a frame when something changed (input, a resize, the turntable) and
+//! turns it into terminal cells; [`frame_writer`] encodes the newest frame as a delta and writes it. Idle, the
+//! viewer sleeps in `poll`: no frames, no bytes, no CPU.
+
+mod controls;
+mod frame_writer;
+mod overlay;
+mod state;
+mod terminal_session;
+
+pub use controls::{Action, HELP, action_for};
+pub use frame_writer::{FrameWriter, WriterStats};
+pub use state::{Effect, ViewerState};
+pub use terminal_session::{TerminalSession, restore};
+
+use std::fmt;
+use std::io::{self, IsTerminal};
+use std::sync::atomic::Ordering;
+use std::time::{Duration, Instant};
+
+use crossterm::{event, terminal};
+use rasterm_core::pipeline::DrawStats;
+use rasterm_core::target::{Rgb888, Target};
+
+use crate::escaped::Escaped;
+use crate::headless::{ModelSource, TextureChoice, load_scene};
+use crate::model::LoadError;
+use crate::scene::{Appearance, OrbitCamera, RenderError, Scene};
+use crate::screen::{CellGrid, CellMode, ColorMode, PixelFrame};
+
+/// Smallest terminal the viewer draws in; below it shows a notice.
+pub const MIN_COLUMNS: u16 = 16;
+/// Smallest terminal height the viewer draws in.
+pub const MIN_ROWS: u16 = 4;
+/// Frame interval while the turntable runs.
+const TURNTABLE_FRAME: Duration = Duration::from_millis(33);
+/// How long to sleep between checks for a signal when idle.
+const IDLE_POLL: Duration = Duration::from_millis(250);
+
+/// Colours: detected or chosen.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ColorChoice {
+    /// From `COLORTERM`, `TERM` and `NO_COLOR`.
+    Auto,
+    /// This mode.
+    Fixed(ColorMode),
+}
+
+/// Everything the viewer is started with.
+#[derive(Clone, Debug)]
+pub struct ViewerOptions {
+    /// The model.
+    pub model: ModelSource,
+    /// The textures.
+    pub texture: TextureChoice,
+    /// The starting camera.
+    pub camera: OrbitCamera,
+    /// The starting look.
+    pub appearance: Appearance,
+    /// Half-block or ASCII cells.
+    pub cell_mode: CellMode,
+    /// Colours.
+    pub color: ColorChoice,
+    /// Cell height over cell width.
+    pub cell_aspect: f32,
+}
+
+/// Why the viewer stopped with an error.
+#[derive(Debug)]
+pub enum ViewerError {
+    /// Standard output is not a terminal.
+    NotATerminal,
+    /// The model could not be loaded.
+    Load(LoadError),
+    /// The terminal failed.
+    Terminal(String),
+    /// A frame could not be drawn.
+    Render(RenderError),
+}
+
+impl fmt::Display for ViewerError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NotATerminal => {
+                f.write_str("standard output is not a terminal; to render to a file use `rasterm render -o FILE.png`")
+            }
+            Self::Load(e) => e.fmt(f),
+            Self::Terminal(e) => write!(f, "terminal error: {e}"),
+            Self::Render(e) => e.fmt(f),
+        }
+    }
+}
+
+impl std::error::Error for ViewerError {}
+
+fn terminal_error(e: io::Error) -> ViewerError {
+    ViewerError::Terminal(e.to_string())
+}
+
+/// Runs the viewer until the user quits.
+///
+/// # Errors
+/// [`ViewerError`]; the terminal is restored in every case.
+pub fn run(options: &ViewerOptions) -> Result<(), ViewerError> {
+    if !io::stdout().is_terminal() {
+        return Err(ViewerError::NotATerminal);
+    }
+    let loaded = load_scene(&options.model, &options.texture).map_err(ViewerError::Load)?;
+    for warning in &loaded.warnings {
+        eprintln!("rasterm: warning: {}", Escaped(warning));
+    }
+    let colors = match options.color {
+        ColorChoice::Auto => ColorMode::from_process_env(),
+        ColorChoice::Fixed(mode) => mode,
+    };
+    let session = TerminalSession::enter().map_err(terminal_error)?;
+    let writer = FrameWriter::start(io::stdout());
+    let mut viewer = Viewer {
+        scene: loaded.scene,
+        name: loaded.name,
+        state: ViewerState::new(options.camera, options.appearance),
+        canvas: Canvas::default(),
+        cell_mode: options.cell_mode,
+        colors,
+        cell_aspect: options.cell_aspect,
+        size: terminal::size().map_err(terminal_error)?,
+        last_stats: DrawStats::default(),
+        render_time: Duration::ZERO,
+        frame_times: FrameClock::default(),
+    };
+    let result = viewer.run_loop(&session, &writer);
+    let failure = writer.failure();
+    writer.finish();
+    drop(session);
+    match (result, failure) {
+        (Err(e), _) => Err(e),
+        // The terminal went away (an SSH connection that dropped): nothing left to report to.
+        (Ok(()), Some(_)) => Ok(()),
+        (Ok(()), None) => Ok(()),
+    }
+}
+
+/// Pixel and depth buffers, reused from frame to frame.
+#[derive(Default)]
+struct Canvas {
+    pixels: Vec<u32>,
+    depth: Vec<f32>,
+}
+
+/// Frame rate from the intervals between recent frames.
+#[derive(Default)]
+struct FrameClock {
+    last: Option<Instant>,
+    interval: Option<Duration>,
+}
+
+impl FrameClock {
+    fn tick(&mut self) {
+        let now = Instant::now();
+        if let Some(last) = self.last.replace(now) {
+            let dt = now - last;
+            // Intervals longer than a second are pauses, not frame times.
+            if dt < Duration::from_secs(1) {
+                self.interval = Some(self.interval.map_or(dt, |i| (i * 7 + dt) / 8));
+            }
+        }
+    }
+
+    fn fps(&self) -> Option<f64> {
+        self.interval.map(|i| 1.0 / i.as_secs_f64().max(1e-6))
+    }
+}
+
+struct Viewer {
+    scene: Scene,
+    name: String,
+    state: ViewerState,
+    canvas: Canvas,
+    cell_mode: CellMode,
+    colors: ColorMode,
+    cell_aspect: f32,
+    size: (u16, u16),
+    last_stats: DrawStats,
+    render_time: Duration,
+    frame_times: FrameClock,
+}
+
+impl Viewer {
+    fn run_loop(&mut self, session: &TerminalSession, writer: &FrameWriter) -> Result<(), ViewerError> {
+        let mut dirty = true;
+        let mut last_spin = Instant::now();
+        loop {
+            if session.stop.load(Ordering::SeqCst) || writer.failure().is_some() {
+                return Ok(());
+            }
+            if self.state.turntable {
+                let now = Instant::now();
+                self.state.spin((now - last_spin).as_secs_f32().min(0.25));
+                last_spin = now;
+                dirty = true;
+            }
+            if dirty {
+                let grid = self.frame(writer)?;
+                writer.send(grid);
+                dirty = false;
+            }
+            let timeout = if self.state.turntable { TURNTABLE_FRAME } else { IDLE_POLL };
+            if !event::poll(timeout).map_err(terminal_error)? {
+                continue;
+            }
+            // Take everything that is waiting, so a burst of resizes or key repeats makes one frame.
+            loop {
+                let input = event::read().map_err(terminal_error)?;
+                if let Some(action) = action_for(&input) {
+                    if let Action::Resize(cols, rows) = action {
+                        self.size = (cols, rows);
+                        writer.invalidate();
+                    }
+                    match self.state.apply(action) {
+                        Effect::Quit => return Ok(()),
+                        Effect::Redraw => dirty = true,
+                        Effect::None => {}
+                    }
+                    if matches!(action, Action::ToggleTurntable) {
+                        last_spin = Instant::now();
+                    }
+                }
+                if !event::poll(Duration::ZERO).map_err(terminal_error)? {
+                    break;
+                }
+            }
+        }
+    }
+
+    /// Renders the current state into a cell grid the size of the terminal.
+    fn frame(&mut self, writer: &FrameWriter) -> Result<CellGrid, ViewerError> {
+        let (cols, rows) = self.size;
+        if cols < MIN_COLUMNS || rows < MIN_ROWS {
+            return Ok(overlay::notice(usize::from(cols), usize::from(rows), "terminal too small"));
+        }
+        let (width, height) = self.cell_mode.pixel_size(usize::from(cols), usize::from(rows));
+        let n = width * height;
+        self.canvas.pixels.resize(n, 0);
+        self.canvas.depth.resize(n, 0.0);
+        // Physical aspect: a cell is `cell_aspect` times taller than wide.
+        let aspect = f32::from(cols) / (f32::from(rows) * self.cell_aspect);
+        let start = Instant::now();
+        let mut target =
+            Target::new(Rgb888(&mut self.canvas.pixels), &mut self.canvas.depth[..], width as u32, height as u32)
+                .map_err(|e| ViewerError::Terminal(e.to_string()))?;
+        self.last_stats = self
+            .scene
+            .render(&mut target, &self.state.camera, &self.state.appearance, aspect)
+            .map_err(ViewerError::Render)?;
+        self.render_time = start.elapsed();
+        self.frame_times.tick();
+        let background = rasterm_core::color::pack_rgb888(self.state.appearance.background);
+        let mut grid =
+            self.cell_mode.to_cells(PixelFrame::new(&self.canvas.pixels, width, height), self.colors, background);
+        if self.state.hud {
+            overlay::draw_hud(&mut grid, &self.hud_lines(writer.stats()));
+        }
+        if self.state.help {
+            overlay::draw_centered_box(&mut grid, HELP);
+        }
+        Ok(grid)
+    }
+
+    fn hud_lines(&self, written: WriterStats) -> Vec<String> {
+        let s = &self.last_stats;
+        let (cols, rows) = self.size;
+        let a = &self.state.appearance;
+        let lens = if self.state.camera.lens.is_orthographic() { "ortho" } else { "perspective" };
+        vec![
+            format!("{}", Escaped(&self.name)),
+            format!(
+                "{} fps   render {:.2} ms   encode {:.2} ms",
+                self.frame_times.fps().map_or("-".into(), |f| format!("{f:.0}")),
+                self.render_time.as_secs_f64() * 1e3,
+                written.encode_time.as_secs_f64() * 1e3
+            ),
+            format!("{} bytes last frame   {} frames sent, {} dropped", written.bytes, written.frames, written.dropped),
+            format!(
+                "triangles {} in, {} drawn, {} culled, {} clipped",
+                s.triangles_in, s.rasterized, s.culled, s.clipped
+            ),
+            format!(
+                "{} {} texture {} wire {}   {}x{} {} {}",
+                a.shading.name(),
+                lens,
+                if a.textures { "on" } else { "off" },
+                if a.wireframe { "on" } else { "off" },
+                cols,
+                rows,
+                self.cell_mode.name(),
+                self.colors.name()
+            ),
+        ]
+    }
+}
