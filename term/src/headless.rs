@@ -61,7 +61,7 @@ pub fn load_scene(source: &ModelSource, texture: &TextureChoice) -> Result<Loade
             Ok(image) if model.uvs.is_some() => model.set_texture(image),
             Ok(_) => warnings.push(format!("{name} has no texture coordinates; the texture is not used")),
             Err(e) => {
-                warnings.push(format!("{e}; rendering untextured"));
+                warnings.push(format!("{}; rendering untextured", e.to_string().trim_end_matches('.')));
                 model.materials.iter_mut().for_each(|m| m.texture = None);
             }
         },

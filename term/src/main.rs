@@ -1,4 +1,5 @@
-//! The `rasterm` command: a terminal viewer (`rasterm [MODEL]`) and a headless renderer (`rasterm render`).
+//! The `rasterm` command: a terminal viewer (`rasterm [MODEL]`), a headless renderer (`rasterm render`) and
+//! measurement reports (`rasterm report`).
 //!
 //! Argument parsing only; the work is in the `rasterm` library.
 
@@ -8,9 +9,10 @@ use std::process::ExitCode;
 use clap::{Args, Parser, Subcommand};
 use rasterm::escaped::Escaped;
 use rasterm::headless::{ModelSource, RenderRequest, TextureChoice, parse_size, render_to_png};
+use rasterm::report::terminal::{DEFAULT_FRAMES, TerminalReport};
 use rasterm::scene::{Appearance, Lens, OrbitCamera, ShadingMode, parse_hex_color};
 use rasterm::screen::{CellMode, ColorMode};
-use rasterm::viewer::{ColorChoice, ViewerOptions};
+use rasterm::viewer::{ColorChoice, ViewerExit, ViewerOptions};
 use rasterm_core::math::Vec3;
 
 /// Render 3D models in the terminal, or to PNG files.
@@ -27,6 +29,27 @@ struct Cli {
 enum Command {
     /// Render a model to a PNG file.
     Render(RenderArgs),
+    /// Measure and print figures as Markdown.
+    #[command(subcommand)]
+    Report(ReportCommand),
+}
+
+/// The reports of `rasterm report`.
+#[derive(Subcommand, Debug)]
+enum ReportCommand {
+    /// Bytes and times of terminal frames for a turntable of the built-in model.
+    Terminal(TerminalReportArgs),
+}
+
+/// Options of `rasterm report terminal`.
+#[derive(Args, Debug)]
+struct TerminalReportArgs {
+    /// Frames per full turn of the turntable.
+    #[arg(long, default_value_t = DEFAULT_FRAMES as u32, value_parser = clap::value_parser!(u32).range(1..=100_000))]
+    frames: u32,
+    /// A few frames only (for CI): the same as `--frames 12`.
+    #[arg(long, conflicts_with = "frames")]
+    quick: bool,
 }
 
 /// Options of the interactive viewer.
@@ -43,7 +66,7 @@ struct ViewerArgs {
     #[arg(long, default_value = "auto", value_parser = parse_color_choice)]
     color: ColorChoice,
     /// Height of a terminal cell divided by its width.
-    #[arg(long, default_value_t = 2.0, value_parser = parse_cell_aspect)]
+    #[arg(long, default_value_t = 2.0, allow_negative_numbers = true, value_parser = parse_cell_aspect)]
     cell_aspect: f32,
 }
 
@@ -75,19 +98,19 @@ struct SceneArgs {
     #[arg(long, default_value_t = 15.0, allow_negative_numbers = true, value_parser = finite)]
     pitch: f32,
     /// Camera distance from the model's centre, in model radii.
-    #[arg(long, default_value_t = OrbitCamera::DEFAULT_DISTANCE, value_parser = positive)]
+    #[arg(long, default_value_t = OrbitCamera::DEFAULT_DISTANCE, allow_negative_numbers = true, value_parser = positive)]
     distance: f32,
     /// Vertical field of view in degrees.
-    #[arg(long, default_value_t = OrbitCamera::DEFAULT_FOV_DEGREES, value_parser = field_of_view, conflicts_with = "ortho")]
+    #[arg(long, default_value_t = OrbitCamera::DEFAULT_FOV_DEGREES, allow_negative_numbers = true, value_parser = field_of_view, conflicts_with = "ortho")]
     fov: f32,
     /// Orthographic projection instead of perspective.
     #[arg(long)]
     ortho: bool,
     /// Near clipping plane distance (default: just in front of the model).
-    #[arg(long, value_parser = positive)]
+    #[arg(long, allow_negative_numbers = true, value_parser = positive)]
     near: Option<f32>,
     /// Far clipping plane distance (default: just behind the model).
-    #[arg(long, value_parser = positive)]
+    #[arg(long, allow_negative_numbers = true, value_parser = positive)]
     far: Option<f32>,
     /// unlit, flat, gouraud, phong, depth or normals.
     #[arg(long, default_value = "phong", value_parser = parse_shading)]
@@ -181,18 +204,35 @@ fn parse_color_choice(s: &str) -> Result<ColorChoice, String> {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            // Usage errors quote arguments as typed: escape control characters before they reach a terminal. The
+            // arguments first (a raw newline in one must not split the message), then anything left.
+            let mut text = e.render().to_string();
+            for arg in std::env::args_os().map(|a| a.to_string_lossy().into_owned()) {
+                if arg.chars().any(char::is_control) {
+                    text = text.replace(&arg, &Escaped(&arg).to_string());
+                }
+            }
+            let safe = text.lines().map(|line| Escaped(line).to_string()).collect::<Vec<_>>().join("\n");
+            if e.use_stderr() {
+                eprintln!("{safe}");
+            } else {
+                println!("{safe}");
+            }
+            return ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2));
+        }
+    };
     let result = match cli.command {
-        Some(Command::Render(args)) => render(&args),
+        Some(Command::Render(args)) => render(&args).map(|()| ExitCode::SUCCESS),
+        Some(Command::Report(ReportCommand::Terminal(args))) => terminal_report(&args).map(|()| ExitCode::SUCCESS),
         None => view(&cli.viewer),
     };
-    match result {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(message) => {
-            eprintln!("rasterm: error: {}", Escaped(&message));
-            ExitCode::FAILURE
-        }
-    }
+    result.unwrap_or_else(|message| {
+        eprintln!("rasterm: error: {}", Escaped(&message));
+        ExitCode::FAILURE
+    })
 }
 
 fn render(args: &RenderArgs) -> Result<(), String> {
@@ -211,7 +251,8 @@ fn render(args: &RenderArgs) -> Result<(), String> {
     if args.stats {
         let s = &report.image.stats;
         let image = &report.image;
-        println!("model: {} ({} triangles)", Escaped(&report.name), s.triangles_in);
+        let plural = if s.triangles_in == 1 { "" } else { "s" };
+        println!("model: {} ({} triangle{plural})", Escaped(&report.name), s.triangles_in);
         println!(
             "triangles: {} in, {} culled, {} clipped, {} drawn ({} outside, {} degenerate, {} invalid)",
             s.triangles_in, s.culled, s.clipped, s.rasterized, s.outside, s.degenerate, s.invalid
@@ -225,7 +266,12 @@ fn render(args: &RenderArgs) -> Result<(), String> {
     Ok(())
 }
 
-fn view(args: &ViewerArgs) -> Result<(), String> {
+fn terminal_report(args: &TerminalReportArgs) -> Result<(), String> {
+    let report = if args.quick { TerminalReport::quick() } else { TerminalReport::new(args.frames as usize) };
+    rasterm::report::terminal::run(&report, &mut std::io::stdout().lock()).map(|_| ()).map_err(|e| e.to_string())
+}
+
+fn view(args: &ViewerArgs) -> Result<ExitCode, String> {
     let options = ViewerOptions {
         model: model_source(&args.model),
         texture: args.scene.texture(),
@@ -235,5 +281,9 @@ fn view(args: &ViewerArgs) -> Result<(), String> {
         color: args.color,
         cell_aspect: args.cell_aspect,
     };
-    rasterm::viewer::run(&options).map_err(|e| e.to_string())
+    match rasterm::viewer::run(&options).map_err(|e| e.to_string())? {
+        // Killed by a signal: exit as the shell expects, 128 + the signal number.
+        ViewerExit::Signal(signal) => Ok(ExitCode::from(128u8.saturating_add(u8::try_from(signal).unwrap_or(0)))),
+        ViewerExit::Quit | ViewerExit::TerminalGone => Ok(ExitCode::SUCCESS),
+    }
 }

@@ -38,6 +38,9 @@ pub fn write_png(path: &Path, width: u32, height: u32, pixels: &[u32]) -> Result
     if pixels.len() != width as usize * height as usize {
         return Err(fail(format!("{} pixels given for a {width}x{height} image", pixels.len())));
     }
+    if path.is_dir() || path.as_os_str().to_string_lossy().ends_with(std::path::MAIN_SEPARATOR) {
+        return Err(fail("it is a directory, not a file name".into()));
+    }
     let rgb: Vec<u8> = pixels.iter().flat_map(|p| [(p >> 16) as u8, (p >> 8) as u8, *p as u8]).collect();
     let temporary = temporary_path(path);
     let result = (|| -> io::Result<()> {

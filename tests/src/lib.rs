@@ -1,1 +1,3 @@
-//! Integration tests of the rasterm workspace live in `tests/tests/`.
+//! Integration tests of the rasterm workspace live in `tests/tests/`: `snapshots.rs` compares rendered frames of
+//! the built-in model with the golden PNG files in `tests/snapshots/` (re-bless them with
+//! `UPDATE_SNAPSHOTS=1 cargo test -p rasterm-tests`).

@@ -30,6 +30,12 @@ pub fn tan(x: f32) -> f32 {
     libm::tanf(x)
 }
 
+/// Arc-tangent in radians, in `[-pi/2, pi/2]`.
+#[inline(always)]
+pub fn atan(x: f32) -> f32 {
+    libm::atanf(x)
+}
+
 /// `x` raised to the power `y`.
 ///
 /// Whole exponents up to 256 (Blinn-Phong shininess nearly always is one) are computed by repeated squaring: a

@@ -2,13 +2,16 @@
 //!
 //! Data flow of a [`draw`]:
 //!
-//! 1. **Vertex stage** ([`Shader::vertex`]): each triangle's three vertices to clip space, plus [`Varyings`].
-//!    Triangles with an index out of range or a non-finite value are skipped.
+//! 1. **Vertex stage, positions** ([`Shader::position`]): each triangle's three vertices to clip space, once per
+//!    vertex shared by neighbouring triangles. Triangles with an index out of range or a non-finite position are
+//!    skipped.
 //! 2. **Clip** ([`clip`](self#clipping)): rejected when all vertices are outside one plane of the view volume or
 //!    the target's rows; cut when crossing the near or far plane or the guard band.
 //! 3. **Raster** ([`raster`](self#rasterization)): divide by `w`, snap to fixed point, cull by winding, walk the
 //!    covered pixel centres with exact integer edge functions and the top-left rule.
-//! 4. **Fragment**: depth test ([`DepthTest`]), interpolation ([`Interpolation`]), [`Shader::fragment`], write.
+//! 4. **Vertex stage, varyings** ([`Shader::varyings`]): only for the vertices of triangles that reach the pixel
+//!    loop (or must be clipped); a triangle with non-finite varyings is skipped.
+//! 5. **Fragment**: depth test ([`DepthTest`]), interpolation ([`Interpolation`]), [`Shader::fragment`], write.
 //!
 //! # Clipping
 //! Near plane `z >= 0`, far plane `z <= w`, and a guard band of ±[`GUARD_BAND`] pixels in x and y; see the

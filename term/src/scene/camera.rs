@@ -104,6 +104,9 @@ impl OrbitCamera {
     /// View and projection for an image whose width over height (in physical units, so terminal cells count as
     /// their real shape) is `aspect`.
     ///
+    /// The field of view spans the image's shorter side, so a model framed in a landscape image stays framed in
+    /// a portrait one.
+    ///
     /// # Errors
     /// [`CameraError`] for a distance, field of view or plane that does not make a camera.
     pub fn matrices(&self, aspect: f32) -> Result<CameraMatrices, CameraError> {
@@ -113,13 +116,16 @@ impl OrbitCamera {
         let view = look_at(Vec3::new(0.0, 0.0, self.distance), Vec3::ZERO, Vec3::Y)?;
         let (near, far) = self.planes();
         let fov = self.lens.fov_degrees().to_radians();
+        if !(fov > 0.0 && fov < std::f32::consts::PI) {
+            return Err(CameraError::FieldOfView);
+        }
+        // Half the height of the view at unit distance: tan(fov / 2), divided by the aspect in portrait.
+        let half_tan = float::tan(fov * 0.5) / aspect.min(1.0);
+        let fovy = if aspect >= 1.0 { fov } else { 2.0 * float::atan(half_tan) };
         let projection = match self.lens {
-            Lens::Perspective { .. } => perspective(fov, aspect, near, far)?,
+            Lens::Perspective { .. } => perspective(fovy, aspect, near, far)?,
             Lens::Orthographic { .. } => {
-                if !(fov > 0.0 && fov < std::f32::consts::PI) {
-                    return Err(CameraError::FieldOfView);
-                }
-                let half_height = self.distance * float::tan(fov * 0.5);
+                let half_height = self.distance * half_tan;
                 let half_width = half_height * aspect;
                 orthographic(-half_width, half_width, -half_height, half_height, near, far)?
             }

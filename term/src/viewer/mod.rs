@@ -1,8 +1,8 @@
 //! The terminal viewer: `rasterm [MODEL]`.
 //!
 //! The main thread waits for input, renders a frame when something changed (input, a resize, the turntable) and
-//! turns it into terminal cells; [`frame_writer`] encodes the newest frame as a delta and writes it. Idle, the
-//! viewer sleeps in `poll`: no frames, no bytes, no CPU.
+//! turns it into terminal cells; a [`FrameWriter`] thread encodes the newest frame as a delta and writes it.
+//! Idle, the viewer sleeps in `poll`: no frames, no bytes, no CPU.
 
 mod controls;
 mod frame_writer;
@@ -36,8 +36,8 @@ pub const MIN_COLUMNS: u16 = 16;
 pub const MIN_ROWS: u16 = 4;
 /// Frame interval while the turntable runs.
 const TURNTABLE_FRAME: Duration = Duration::from_millis(33);
-/// How long to sleep between checks for a signal when idle.
-const IDLE_POLL: Duration = Duration::from_millis(250);
+/// How long to sleep between checks for a signal when idle (ten wake-ups a second cost no measurable CPU).
+const IDLE_POLL: Duration = Duration::from_millis(100);
 
 /// Colours: detected or chosen.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -95,15 +95,26 @@ impl fmt::Display for ViewerError {
 
 impl std::error::Error for ViewerError {}
 
+/// How the viewer ended.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ViewerExit {
+    /// The user quit.
+    Quit,
+    /// SIGINT, SIGTERM or SIGHUP (the number).
+    Signal(i32),
+    /// The terminal went away (writing to it failed, as when an SSH connection drops).
+    TerminalGone,
+}
+
 fn terminal_error(e: io::Error) -> ViewerError {
     ViewerError::Terminal(e.to_string())
 }
 
-/// Runs the viewer until the user quits.
+/// Runs the viewer until the user quits, a signal arrives or the terminal goes away.
 ///
 /// # Errors
 /// [`ViewerError`]; the terminal is restored in every case.
-pub fn run(options: &ViewerOptions) -> Result<(), ViewerError> {
+pub fn run(options: &ViewerOptions) -> Result<ViewerExit, ViewerError> {
     if !io::stdout().is_terminal() {
         return Err(ViewerError::NotATerminal);
     }
@@ -131,15 +142,9 @@ pub fn run(options: &ViewerOptions) -> Result<(), ViewerError> {
         frame_times: FrameClock::default(),
     };
     let result = viewer.run_loop(&session, &writer);
-    let failure = writer.failure();
     writer.finish();
     drop(session);
-    match (result, failure) {
-        (Err(e), _) => Err(e),
-        // The terminal went away (an SSH connection that dropped): nothing left to report to.
-        (Ok(()), Some(_)) => Ok(()),
-        (Ok(()), None) => Ok(()),
-    }
+    result
 }
 
 /// Pixel and depth buffers, reused from frame to frame.
@@ -188,12 +193,16 @@ struct Viewer {
 }
 
 impl Viewer {
-    fn run_loop(&mut self, session: &TerminalSession, writer: &FrameWriter) -> Result<(), ViewerError> {
+    fn run_loop(&mut self, session: &TerminalSession, writer: &FrameWriter) -> Result<ViewerExit, ViewerError> {
         let mut dirty = true;
         let mut last_spin = Instant::now();
         loop {
-            if session.stop.load(Ordering::SeqCst) || writer.failure().is_some() {
-                return Ok(());
+            let signal = session.stop.load(Ordering::SeqCst);
+            if signal != 0 {
+                return Ok(ViewerExit::Signal(i32::try_from(signal).unwrap_or(0)));
+            }
+            if writer.failure().is_some() {
+                return Ok(ViewerExit::TerminalGone);
             }
             if self.state.turntable {
                 let now = Instant::now();
@@ -219,7 +228,7 @@ impl Viewer {
                         writer.invalidate();
                     }
                     match self.state.apply(action) {
-                        Effect::Quit => return Ok(()),
+                        Effect::Quit => return Ok(ViewerExit::Quit),
                         Effect::Redraw => dirty = true,
                         Effect::None => {}
                     }

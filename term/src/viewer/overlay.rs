@@ -44,13 +44,23 @@ pub fn draw_centered_box(grid: &mut CellGrid, lines: &[&str]) {
     put_text(grid, top + height - 1, left, &" ".repeat(width));
 }
 
-/// The whole grid as a short notice (for a terminal too small to draw in).
+/// The whole grid as a short notice (for a terminal too small to draw in), wrapped at spaces to the width and
+/// centred; words longer than the width are cut.
 pub fn notice(width: usize, height: usize, text: &str) -> CellGrid {
+    let mut lines: Vec<String> = Vec::new();
+    for word in text.split_whitespace() {
+        match lines.last_mut() {
+            Some(line) if line.chars().count() + 1 + word.chars().count() <= width => {
+                line.push(' ');
+                line.push_str(word);
+            }
+            _ => lines.push(word.chars().take(width).collect()),
+        }
+    }
     let mut grid = CellGrid::blank(width, height);
-    let row = height / 2;
-    let chars: Vec<char> = text.chars().collect();
-    let shown: String = chars.iter().take(width).collect();
-    let col = width.saturating_sub(shown.chars().count()) / 2;
-    put_text(&mut grid, row, col, &shown);
+    let top = height.saturating_sub(lines.len()) / 2;
+    for (i, line) in lines.iter().take(height).enumerate() {
+        put_text(&mut grid, top + i, width.saturating_sub(line.chars().count()) / 2, line);
+    }
     grid
 }

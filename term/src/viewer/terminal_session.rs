@@ -3,7 +3,7 @@
 
 use std::io::{self, Write};
 use std::sync::Arc;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 
 use crossterm::{cursor, event, execute, terminal};
 
@@ -13,8 +13,9 @@ static ACTIVE: AtomicBool = AtomicBool::new(false);
 
 /// The terminal in the viewer's state; restored when dropped.
 pub struct TerminalSession {
-    /// Raised by SIGINT, SIGTERM or SIGHUP: the main loop checks it and leaves cleanly.
-    pub stop: Arc<AtomicBool>,
+    /// The number of a SIGINT, SIGTERM or SIGHUP received (0: none); the main loop checks it and leaves
+    /// cleanly.
+    pub stop: Arc<AtomicUsize>,
     signals: Vec<signal_hook::SigId>,
 }
 
@@ -26,10 +27,11 @@ impl TerminalSession {
     /// The terminal refused a mode change (it is restored before returning).
     pub fn enter() -> io::Result<Self> {
         install_panic_hook();
-        let stop = Arc::new(AtomicBool::new(false));
+        let stop = Arc::new(AtomicUsize::new(0));
         let mut signals = Vec::new();
         for signal in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM, signal_hook::consts::SIGHUP] {
-            signals.push(signal_hook::flag::register(signal, Arc::clone(&stop))?);
+            let number = usize::try_from(signal).unwrap_or(0);
+            signals.push(signal_hook::flag::register_usize(signal, Arc::clone(&stop), number)?);
         }
         let session = Self { stop, signals };
         ACTIVE.store(true, Ordering::SeqCst);

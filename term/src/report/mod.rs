@@ -1,0 +1,45 @@
+//! Measurement reports: `rasterm report ...` prints figures as Markdown, with the machine they were measured on.
+//!
+//! | report | measures |
+//! |---|---|
+//! | [`terminal`] | bytes and times of terminal frames for a turntable of the built-in model |
+
+pub mod terminal;
+
+/// A one-line description of this machine: the CPU model from `/proc/cpuinfo` and the number of logical CPUs,
+/// as far as they can be found out.
+pub fn machine_description() -> String {
+    let cpuinfo = std::fs::read_to_string("/proc/cpuinfo").unwrap_or_default();
+    let (model, count) = parse_cpuinfo(&cpuinfo);
+    let count = count.or_else(|| std::thread::available_parallelism().ok().map(usize::from));
+    let model = model.unwrap_or_else(|| format!("unknown CPU ({})", std::env::consts::ARCH));
+    match count {
+        Some(1) => format!("{model}, 1 logical CPU"),
+        Some(n) => format!("{model}, {n} logical CPUs"),
+        None => model,
+    }
+}
+
+/// The first `model name` and the number of `processor` entries of a `/proc/cpuinfo` text.
+fn parse_cpuinfo(text: &str) -> (Option<String>, Option<usize>) {
+    let field = |line: &str, name: &str| {
+        let (key, value) = line.split_once(':')?;
+        (key.trim() == name).then(|| value.trim().to_owned())
+    };
+    let model = text.lines().find_map(|l| field(l, "model name")).filter(|m| !m.is_empty());
+    let count = text.lines().filter(|l| field(l, "processor").is_some()).count();
+    (model, (count > 0).then_some(count))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cpuinfo_model_and_count() {
+        let text = "processor\t: 0\nmodel name\t: Example CPU @ 2.0GHz\n\nprocessor\t: 1\nmodel name\t: Example CPU @ 2.0GHz\n";
+        assert_eq!(parse_cpuinfo(text), (Some("Example CPU @ 2.0GHz".into()), Some(2)));
+        assert_eq!(parse_cpuinfo(""), (None, None));
+        assert!(!machine_description().is_empty());
+    }
+}

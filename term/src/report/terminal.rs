@@ -1,0 +1,435 @@
+//! `rasterm report terminal`: what the viewer's frames cost, for a turntable of the built-in model.
+//!
+//! For each terminal size and colour mode, the built-in model is turned once around (the default camera, turned
+//! with [`OrbitCamera::rotate`] in equal steps about the screen's vertical axis) and every frame goes through the
+//! viewer's pipeline: [`Scene::render`] into a pixel buffer of the terminal's pixel size, half-block cells
+//! ([`CellMode::HalfBlock`]), then the [`Encoder`] (a delta against the frame before) and, for comparison,
+//! [`naive_full_frame`].
+//!
+//! The first frame is the encoder's full redraw (clear, then every cell that is not blank). It is reported in a
+//! column of its own and left out of every mean and median: those are over the `frames` frames after it, which
+//! together make the full turn (the last one shows the model as the first did).
+
+use std::fmt;
+use std::io::{self, Write};
+use std::time::{Duration, Instant};
+
+use rasterm_core::target::{Rgb888, Target};
+
+use crate::builtin::{BUILTIN_NAME, builtin_model};
+use crate::model::LoadError;
+use crate::scene::{Appearance, OrbitCamera, RenderError, Scene};
+use crate::screen::{CellGrid, CellMode, ColorMode, Encoder, PixelFrame, naive_full_frame};
+
+/// Terminal sizes measured, in cells (columns, rows).
+pub const SIZES: [(u16, u16); 3] = [(80, 24), (120, 40), (200, 60)];
+/// Colour modes measured.
+pub const COLOR_MODES: [ColorMode; 2] = [ColorMode::TrueColor, ColorMode::Ansi256];
+/// Frames per turn by default.
+pub const DEFAULT_FRAMES: usize = 120;
+/// Frames per turn with `--quick`.
+pub const QUICK_FRAMES: usize = 12;
+/// Cell height over cell width (the viewer's default).
+pub const CELL_ASPECT: f32 = 2.0;
+/// The goal for bytes: the mean delta frame at most this share of the mean naive frame.
+pub const GOAL_DELTA_SHARE: f64 = 0.35;
+/// The goal for encoding: the median encode time under this...
+pub const GOAL_ENCODE_TIME: Duration = Duration::from_micros(500);
+/// ...at this terminal size.
+pub const GOAL_ENCODE_SIZE: (u16, u16) = (200, 60);
+
+/// What to measure.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TerminalReport {
+    /// Frames per full turn (at least 1); the first, full-redraw frame comes on top.
+    pub frames: usize,
+    /// Terminal sizes in cells.
+    pub sizes: Vec<(u16, u16)>,
+    /// Colour modes.
+    pub colors: Vec<ColorMode>,
+    /// True when `--quick` chose the frame count (only for the command line shown in the report).
+    pub quick: bool,
+}
+
+impl TerminalReport {
+    /// The standard report: [`SIZES`] x [`COLOR_MODES`], `frames` frames per turn.
+    pub fn new(frames: usize) -> Self {
+        Self { frames, sizes: SIZES.to_vec(), colors: COLOR_MODES.to_vec(), quick: false }
+    }
+
+    /// The standard report with [`QUICK_FRAMES`] frames, for CI.
+    pub fn quick() -> Self {
+        Self { quick: true, ..Self::new(QUICK_FRAMES) }
+    }
+
+    /// The command that prints this report.
+    pub fn command_line(&self) -> String {
+        if self.quick {
+            "rasterm report terminal --quick".to_owned()
+        } else {
+            format!("rasterm report terminal --frames {}", self.frames)
+        }
+    }
+}
+
+/// Why a report could not be made.
+#[derive(Debug)]
+pub enum ReportError {
+    /// The built-in model did not load.
+    Load(LoadError),
+    /// A frame could not be drawn.
+    Render(RenderError),
+    /// The frame size is not one the renderer takes, or the frame count is zero.
+    Setup(String),
+    /// The report could not be written.
+    Write(io::Error),
+}
+
+impl fmt::Display for ReportError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Load(e) => e.fmt(f),
+            Self::Render(e) => e.fmt(f),
+            Self::Setup(e) => f.write_str(e),
+            Self::Write(e) => write!(f, "cannot write the report: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for ReportError {}
+
+impl From<io::Error> for ReportError {
+    fn from(e: io::Error) -> Self {
+        Self::Write(e)
+    }
+}
+
+/// The figures of one terminal size and colour mode.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Measurement {
+    /// Terminal columns.
+    pub cols: u16,
+    /// Terminal rows.
+    pub rows: u16,
+    /// Colour mode.
+    pub colors: ColorMode,
+    /// Bytes of the first frame, the encoder's full redraw (not in any mean).
+    pub first_frame_bytes: usize,
+    /// Encoder bytes of each frame after the first (a delta against the frame before).
+    pub delta_bytes: Vec<usize>,
+    /// [`naive_full_frame`] bytes of the same frames.
+    pub naive_bytes: Vec<usize>,
+    /// Render time ([`Scene::render`], clearing included) of the same frames.
+    pub render_times: Vec<Duration>,
+    /// Encode time ([`Encoder::encode`]) of the same frames.
+    pub encode_times: Vec<Duration>,
+}
+
+impl Measurement {
+    /// Frames measured (the first, full-redraw frame not counted).
+    pub fn frames(&self) -> usize {
+        self.delta_bytes.len()
+    }
+
+    /// Mean encoder bytes per frame.
+    pub fn mean_delta_bytes(&self) -> f64 {
+        mean(&self.delta_bytes)
+    }
+
+    /// Mean naive bytes per frame.
+    pub fn mean_naive_bytes(&self) -> f64 {
+        mean(&self.naive_bytes)
+    }
+
+    /// Mean delta bytes over mean naive bytes (0 when there is nothing to compare).
+    pub fn delta_share(&self) -> f64 {
+        let naive = self.mean_naive_bytes();
+        if naive > 0.0 { self.mean_delta_bytes() / naive } else { 0.0 }
+    }
+
+    /// Median render time.
+    pub fn median_render(&self) -> Duration {
+        median(&self.render_times)
+    }
+
+    /// Median encode time.
+    pub fn median_encode(&self) -> Duration {
+        median(&self.encode_times)
+    }
+
+    /// True when the mean delta frame is at most [`GOAL_DELTA_SHARE`] of the naive frame.
+    pub fn meets_byte_goal(&self) -> bool {
+        self.delta_share() <= GOAL_DELTA_SHARE
+    }
+
+    /// Whether the median encode time is under [`GOAL_ENCODE_TIME`]; `None` except at [`GOAL_ENCODE_SIZE`].
+    pub fn meets_encode_goal(&self) -> Option<bool> {
+        ((self.cols, self.rows) == GOAL_ENCODE_SIZE).then(|| self.median_encode() < GOAL_ENCODE_TIME)
+    }
+}
+
+fn mean(values: &[usize]) -> f64 {
+    if values.is_empty() { 0.0 } else { values.iter().sum::<usize>() as f64 / values.len() as f64 }
+}
+
+fn median(values: &[Duration]) -> Duration {
+    let mut sorted = values.to_vec();
+    sorted.sort_unstable();
+    match sorted.len() {
+        0 => Duration::ZERO,
+        n if n % 2 == 1 => sorted[n / 2],
+        n => (sorted[n / 2 - 1] + sorted[n / 2]) / 2,
+    }
+}
+
+/// The turntable frames of one terminal size and colour mode, as the viewer would make them.
+struct Turntable<'a> {
+    scene: &'a Scene,
+    camera: OrbitCamera,
+    appearance: Appearance,
+    /// Radians turned between two frames.
+    step: f32,
+    colors: ColorMode,
+    width: usize,
+    height: usize,
+    aspect: f32,
+    pixels: Vec<u32>,
+    depth: Vec<f32>,
+}
+
+impl<'a> Turntable<'a> {
+    /// `frames` frames per turn at `cols` x `rows` cells.
+    fn new(scene: &'a Scene, (cols, rows): (u16, u16), colors: ColorMode, frames: usize) -> Self {
+        let (width, height) = CellMode::HalfBlock.pixel_size(usize::from(cols), usize::from(rows));
+        Self {
+            scene,
+            camera: OrbitCamera::default(),
+            appearance: Appearance::default(),
+            step: std::f32::consts::TAU / frames.max(1) as f32,
+            colors,
+            width,
+            height,
+            // As in the viewer: the physical aspect, a cell being CELL_ASPECT times taller than wide.
+            aspect: f32::from(cols) / (f32::from(rows) * CELL_ASPECT),
+            pixels: vec![0; width * height],
+            depth: vec![0.0; width * height],
+        }
+    }
+
+    /// Renders the current view into cells, then turns the camera one step; returns the cells and the render time.
+    fn next_frame(&mut self) -> Result<(CellGrid, Duration), ReportError> {
+        let too_big = |e: rasterm_core::target::TargetError| ReportError::Setup(e.to_string());
+        let mut target =
+            Target::new(Rgb888(&mut self.pixels), &mut self.depth[..], self.width as u32, self.height as u32)
+                .map_err(too_big)?;
+        let start = Instant::now();
+        self.scene.render(&mut target, &self.camera, &self.appearance, self.aspect).map_err(ReportError::Render)?;
+        let render_time = start.elapsed();
+        let background = rasterm_core::color::pack_rgb888(self.appearance.background);
+        let frame = PixelFrame::new(&self.pixels, self.width, self.height);
+        let grid = CellMode::HalfBlock.to_cells(frame, self.colors, background);
+        self.camera.rotate(self.step, 0.0);
+        Ok((grid, render_time))
+    }
+}
+
+/// Measures one terminal size and colour mode: a first (full-redraw) frame, then `frames` frames making one turn.
+///
+/// # Errors
+/// [`ReportError::Setup`] for zero frames or a size the renderer does not take; [`ReportError::Render`].
+pub fn measure(scene: &Scene, size: (u16, u16), colors: ColorMode, frames: usize) -> Result<Measurement, ReportError> {
+    if frames == 0 {
+        return Err(ReportError::Setup("the turntable needs at least one frame".into()));
+    }
+    let mut turntable = Turntable::new(scene, size, colors, frames);
+    let mut encoder = Encoder::new();
+    let mut bytes = Vec::new();
+    let (first, _) = turntable.next_frame()?;
+    encoder.encode(&first, &mut bytes);
+    let mut m = Measurement {
+        cols: size.0,
+        rows: size.1,
+        colors,
+        first_frame_bytes: bytes.len(),
+        delta_bytes: Vec::with_capacity(frames),
+        naive_bytes: Vec::with_capacity(frames),
+        render_times: Vec::with_capacity(frames),
+        encode_times: Vec::with_capacity(frames),
+    };
+    for _ in 0..frames {
+        let (grid, render_time) = turntable.next_frame()?;
+        // The buffer keeps the capacity of the full redraw, so encoding never waits for an allocation.
+        bytes.clear();
+        let start = Instant::now();
+        encoder.encode(&grid, &mut bytes);
+        m.encode_times.push(start.elapsed());
+        m.render_times.push(render_time);
+        m.delta_bytes.push(bytes.len());
+        m.naive_bytes.push(naive_full_frame(&grid).len());
+    }
+    Ok(m)
+}
+
+/// The lines above the table: what was measured, where, and how to read it.
+pub fn header(report: &TerminalReport, machine: &str) -> String {
+    let build = if cfg!(debug_assertions) { "debug build: timings are not representative" } else { "release build" };
+    let frames = report.frames;
+    let degrees = 360.0 / frames.max(1) as f64;
+    let encode_goal = GOAL_ENCODE_TIME.as_secs_f64() * 1e3;
+    let (goal_cols, goal_rows) = GOAL_ENCODE_SIZE;
+    [
+        "### Terminal frames: a turntable of the built-in model".to_owned(),
+        String::new(),
+        format!("- command: `{}` ({build})", report.command_line()),
+        format!("- machine: {machine}"),
+        format!(
+            "- scene: {BUILTIN_NAME}, `OrbitCamera::default()` turned {frames} times by {degrees:.3}° about the \
+             screen's vertical axis (one full turn); default look (Phong, textured); half-block cells, cell aspect \
+             {CELL_ASPECT}"
+        ),
+        format!(
+            "- first frame: the encoder's full redraw (clear + every non-blank cell), in its own column and in no \
+             mean or median; means (bytes) and medians (times, one sample per frame) are over the {frames} frames \
+             after it"
+        ),
+        "- naive: `naive_full_frame`, every cell with an SGR naming both colours; delta: `Encoder::encode` against \
+         the frame before"
+            .to_owned(),
+        format!(
+            "- goals: mean delta ≤ {:.0}% of mean naive; median encode < {encode_goal} ms at {goal_cols}x{goal_rows}",
+            GOAL_DELTA_SHARE * 100.0
+        ),
+        String::new(),
+        "| size | colours | frames | first frame B | mean delta B | mean naive B | delta/naive | render ms | \
+         encode ms | bytes goal | encode goal |"
+            .to_owned(),
+        "|---|---|---:|---:|---:|---:|---:|---:|---:|---|---|".to_owned(),
+    ]
+    .join("\n")
+}
+
+/// One table row.
+pub fn table_row(m: &Measurement) -> String {
+    let yes_no = |ok: bool| if ok { "yes" } else { "**no**" };
+    format!(
+        "| {}x{} | {} | {} | {} | {:.0} | {:.0} | {:.1}% | {:.3} | {:.3} | {} | {} |",
+        m.cols,
+        m.rows,
+        m.colors.name(),
+        m.frames(),
+        m.first_frame_bytes,
+        m.mean_delta_bytes(),
+        m.mean_naive_bytes(),
+        m.delta_share() * 100.0,
+        m.median_render().as_secs_f64() * 1e3,
+        m.median_encode().as_secs_f64() * 1e3,
+        yes_no(m.meets_byte_goal()),
+        m.meets_encode_goal().map_or("–", yes_no),
+    )
+}
+
+/// Measures everything `report` asks for and writes the Markdown report to `out`, a row as soon as it is
+/// measured; returns the measurements.
+///
+/// # Errors
+/// [`ReportError`].
+pub fn run(report: &TerminalReport, out: &mut dyn Write) -> Result<Vec<Measurement>, ReportError> {
+    let scene = Scene::new(builtin_model().map_err(ReportError::Load)?);
+    writeln!(out, "{}", header(report, &super::machine_description()))?;
+    out.flush()?;
+    let mut results = Vec::new();
+    for &size in &report.sizes {
+        for &colors in &report.colors {
+            let m = measure(&scene, size, colors, report.frames)?;
+            writeln!(out, "{}", table_row(&m))?;
+            out.flush()?;
+            results.push(m);
+        }
+    }
+    let bytes_met = results.iter().filter(|m| m.meets_byte_goal()).count();
+    let encode: Vec<bool> = results.iter().filter_map(Measurement::meets_encode_goal).collect();
+    writeln!(out)?;
+    writeln!(
+        out,
+        "Bytes goal met in {bytes_met} of {} rows; encode goal met in {} of {} rows.",
+        results.len(),
+        encode.iter().filter(|&&ok| ok).count(),
+        encode.len()
+    )?;
+    Ok(results)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scene() -> Scene {
+        Scene::new(builtin_model().expect("built-in model"))
+    }
+
+    /// The byte figures are the encoder's and `naive_full_frame`'s own lengths for the same frames, and the
+    /// means and shares follow from them; times are only counted, never compared.
+    #[test]
+    fn byte_accounting_is_consistent() {
+        let scene = scene();
+        for colors in COLOR_MODES {
+            let m = measure(&scene, (20, 8), colors, 3).unwrap();
+            assert_eq!((m.cols, m.rows, m.colors, m.frames()), (20, 8, colors, 3));
+            assert_eq!((m.naive_bytes.len(), m.render_times.len(), m.encode_times.len()), (3, 3, 3));
+
+            // The same frames again, encoded independently.
+            let mut turntable = Turntable::new(&scene, (20, 8), colors, 3);
+            let mut encoder = Encoder::new();
+            let (first, _) = turntable.next_frame().unwrap();
+            assert_eq!((first.width, first.height), (20, 8));
+            let mut bytes = Vec::new();
+            encoder.encode(&first, &mut bytes);
+            assert!(bytes.windows(4).any(|w| w == b"\x1b[2J"), "the first frame is a full redraw");
+            assert_eq!(m.first_frame_bytes, bytes.len());
+            let (mut delta_total, mut naive_total) = (0, 0);
+            for i in 0..3 {
+                let (grid, _) = turntable.next_frame().unwrap();
+                let mut delta = Vec::new();
+                encoder.encode(&grid, &mut delta);
+                let naive = naive_full_frame(&grid).len();
+                assert_eq!(m.delta_bytes[i], delta.len(), "frame {i}");
+                assert_eq!(m.naive_bytes[i], naive, "frame {i}");
+                assert!(!delta.is_empty() && delta.len() < naive, "frame {i}: a 120° turn changes the picture");
+                delta_total += delta.len();
+                naive_total += naive;
+            }
+            assert_eq!(m.delta_bytes.iter().sum::<usize>(), delta_total);
+            assert_eq!(m.naive_bytes.iter().sum::<usize>(), naive_total);
+            assert!((m.mean_delta_bytes() - delta_total as f64 / 3.0).abs() < 1e-9);
+            assert!((m.mean_naive_bytes() - naive_total as f64 / 3.0).abs() < 1e-9);
+            assert!((m.delta_share() - delta_total as f64 / naive_total as f64).abs() < 1e-12);
+            assert_eq!(m.meets_byte_goal(), m.delta_share() <= GOAL_DELTA_SHARE);
+            assert_eq!(m.meets_encode_goal(), None, "the encode goal is for 200x60 only");
+
+            let row = table_row(&m);
+            assert!(row.starts_with(&format!("| 20x8 | {} | 3 | {} |", colors.name(), m.first_frame_bytes)), "{row}");
+            assert_eq!(row.matches('|').count(), 12, "{row}");
+        }
+    }
+
+    #[test]
+    fn medians_and_means() {
+        let ms = |v: &[u64]| v.iter().map(|&x| Duration::from_millis(x)).collect::<Vec<_>>();
+        assert_eq!(median(&ms(&[5, 1, 3])), Duration::from_millis(3));
+        assert_eq!(median(&ms(&[4, 1, 3, 2])), Duration::from_micros(2500));
+        assert_eq!(median(&[]), Duration::ZERO);
+        assert_eq!(mean(&[1, 2, 6]), 3.0);
+        assert_eq!(mean(&[]), 0.0);
+        assert!(measure(&scene(), (20, 8), ColorMode::TrueColor, 0).is_err());
+    }
+
+    #[test]
+    fn header_names_the_command_and_the_columns() {
+        let header = header(&TerminalReport::quick(), "Test CPU, 2 logical CPUs");
+        assert!(header.contains("`rasterm report terminal --quick`"), "{header}");
+        assert!(header.contains("Test CPU, 2 logical CPUs"));
+        let columns = header.lines().rev().nth(1).unwrap();
+        assert_eq!(columns.matches('|').count(), 12, "{columns}");
+        assert!(TerminalReport::new(120).command_line().ends_with("--frames 120"));
+    }
+}

@@ -1,0 +1,288 @@
+//! Golden images of the built-in model (Spot the cow: asymmetric and textured, so a flipped axis or a mirrored
+//! image cannot pass) in every shading mode, textured and not, through both lenses, with wireframe, cut by the
+//! near plane, from behind, and at non-square sizes.
+//!
+//! Every scene is rendered twice, as a whole frame (`Target::new`) and as 16-row bands (`Target::band` over one
+//! 16-row buffer, rows assembled), and both must match the golden `tests/snapshots/NAME.png`. A failure writes
+//! `NAME.actual.png` and `NAME.diff.png` (or `NAME.bands.actual.png` and `NAME.bands.diff.png` for the banded
+//! rendering) beside the golden. `UPDATE_SNAPSHOTS=1 cargo test -p rasterm-tests` re-blesses the goldens.
+
+mod snapshot;
+
+use std::path::Path;
+use std::sync::LazyLock;
+
+use rasterm::builtin::builtin_model;
+use rasterm::scene::{Appearance, Lens, OrbitCamera, Scene, ShadingMode};
+use rasterm_core::target::{Rgb888, Target};
+
+use snapshot::{Comparison, Failure, Image, Mode, Passed, Snapshot, compare};
+
+/// Largest difference allowed in any channel of any pixel: none. Rendering is designed to be bit-exact on every
+/// machine: the core does its non-trivial float maths through `libm`, never the platform's maths library, and Rust
+/// never fuses or reorders float operations on its own, so the same scene gives the same pixels on every target
+/// and at every optimisation level (debug and release builds give identical images). Any change of any pixel is
+/// therefore a change of the renderer, to be looked at and blessed.
+const TOLERANCE: u8 = 0;
+
+/// Rows of the band buffer used for the banded rendering.
+const BAND_ROWS: u32 = 16;
+
+/// Where the goldens live.
+fn snapshot_dir() -> &'static Path {
+    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots"))
+}
+
+/// The built-in model, loaded once for all tests.
+static SPOT: LazyLock<Scene> = LazyLock::new(|| Scene::new(builtin_model().expect("the built-in model loads")));
+
+/// One scene of the matrix.
+#[derive(Clone, Copy, Debug)]
+struct Shot {
+    width: u32,
+    height: u32,
+    camera: OrbitCamera,
+    appearance: Appearance,
+}
+
+impl Shot {
+    /// A 200x150 frame of the default view (yaw 30, pitch 15, distance 2.8, 40° perspective) in `shading`.
+    fn new(shading: ShadingMode, textures: bool) -> Self {
+        Self {
+            width: 200,
+            height: 150,
+            camera: OrbitCamera::default(),
+            appearance: Appearance { shading, textures, ..Appearance::default() },
+        }
+    }
+
+    fn aspect(&self) -> f32 {
+        self.width as f32 / self.height as f32
+    }
+
+    /// The whole frame in one target.
+    fn render_full(&self) -> Image {
+        let n = self.width as usize * self.height as usize;
+        let mut pixels = vec![0u32; n];
+        let mut depth = vec![0f32; n];
+        let mut target =
+            Target::new(Rgb888(&mut pixels), &mut depth[..], self.width, self.height).expect("a valid frame");
+        SPOT.render(&mut target, &self.camera, &self.appearance, self.aspect()).expect("the scene renders");
+        Image { width: self.width, height: self.height, pixels }
+    }
+
+    /// The frame as bands of [`BAND_ROWS`] rows (the last one shorter when the height is not a multiple), each
+    /// rendered into the same small buffers, which hold a garbage colour before every band.
+    fn render_bands(&self) -> Image {
+        let width = self.width as usize;
+        let mut color = vec![0u32; width * BAND_ROWS as usize];
+        let mut depth = vec![0f32; width * BAND_ROWS as usize];
+        let mut pixels = Vec::with_capacity(width * self.height as usize);
+        for y0 in (0..self.height).step_by(BAND_ROWS as usize) {
+            let y1 = (y0 + BAND_ROWS).min(self.height);
+            let n = width * (y1 - y0) as usize;
+            color.fill(0x00ff_00ff);
+            let mut band = Target::band(Rgb888(&mut color[..n]), &mut depth[..n], self.width, self.height, y0..y1)
+                .expect("a valid band");
+            SPOT.render(&mut band, &self.camera, &self.appearance, self.aspect()).expect("the band renders");
+            pixels.extend_from_slice(&color[..n]);
+        }
+        Image { width: self.width, height: self.height, pixels }
+    }
+
+    /// Renders whole and banded and checks both against the golden `NAME.png`.
+    fn check(&self, name: &str) {
+        let dir = snapshot_dir();
+        let (full, bands) = (self.render_full(), self.render_bands());
+        let mut failures = Vec::new();
+        match (Snapshot { dir, name, variant: "" }).check(&full, TOLERANCE, Mode::from_env()) {
+            Ok(Passed::Matched | Passed::Blessed) => {}
+            Err(missing @ Failure::Missing { .. }) => panic!("snapshot {name}: {missing}"),
+            Err(failure) => failures.push(format!("whole frame: {failure}")),
+        }
+        // The banded rendering is never blessed: it must match the golden just blessed from the whole frame. When
+        // it gives the whole frame's pixels, checking it again would only repeat the whole frame's report.
+        let banded = Snapshot { dir, name, variant: ".bands" };
+        if bands == full {
+            banded.remove_failure_files();
+            if !failures.is_empty() {
+                failures.push(format!("{BAND_ROWS}-row bands: the same pixels as the whole frame"));
+            }
+        } else if let Err(failure) = banded.check(&bands, TOLERANCE, Mode::Compare) {
+            failures.push(format!("{BAND_ROWS}-row bands (not the whole frame's pixels): {failure}"));
+        }
+        assert!(failures.is_empty(), "snapshot {name} does not match:\n{}", failures.join("\n"));
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Shading modes, textured and untextured (default camera, 200x150)
+
+#[test]
+fn unlit_textured() {
+    Shot::new(ShadingMode::Unlit, true).check("unlit_textured");
+}
+
+#[test]
+fn unlit_untextured() {
+    Shot::new(ShadingMode::Unlit, false).check("unlit_untextured");
+}
+
+#[test]
+fn flat_textured() {
+    Shot::new(ShadingMode::Flat, true).check("flat_textured");
+}
+
+#[test]
+fn flat_untextured() {
+    Shot::new(ShadingMode::Flat, false).check("flat_untextured");
+}
+
+#[test]
+fn gouraud_textured() {
+    Shot::new(ShadingMode::Gouraud, true).check("gouraud_textured");
+}
+
+#[test]
+fn gouraud_untextured() {
+    Shot::new(ShadingMode::Gouraud, false).check("gouraud_untextured");
+}
+
+#[test]
+fn phong_textured() {
+    Shot::new(ShadingMode::Phong, true).check("phong_textured");
+}
+
+#[test]
+fn phong_untextured() {
+    Shot::new(ShadingMode::Phong, false).check("phong_untextured");
+}
+
+#[test]
+fn depth() {
+    Shot::new(ShadingMode::Depth, true).check("depth");
+}
+
+#[test]
+fn normals() {
+    Shot::new(ShadingMode::Normals, true).check("normals");
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Lens, wireframe, near plane, viewpoint, size
+
+/// The default view's framing through a parallel projection.
+fn orthographic() -> OrbitCamera {
+    OrbitCamera { lens: Lens::Orthographic { fov_degrees: OrbitCamera::DEFAULT_FOV_DEGREES }, ..OrbitCamera::default() }
+}
+
+#[test]
+fn orthographic_phong_textured() {
+    Shot { camera: orthographic(), ..Shot::new(ShadingMode::Phong, true) }.check("orthographic_phong_textured");
+}
+
+#[test]
+fn orthographic_depth() {
+    Shot { camera: orthographic(), ..Shot::new(ShadingMode::Depth, true) }.check("orthographic_depth");
+}
+
+#[test]
+fn wireframe() {
+    // Larger and closer than the other scenes, so that Spot's triangles are several pixels wide and the lines
+    // stay apart.
+    let camera = OrbitCamera { distance: 2.0, ..OrbitCamera::default() };
+    let mut shot = Shot { width: 320, height: 240, camera, ..Shot::new(ShadingMode::Flat, false) };
+    shot.appearance.wireframe = true;
+    shot.check("wireframe");
+}
+
+#[test]
+fn near_plane_cut() {
+    // The near plane 0.6 fitted radii in front of the model's centre slices through the face: with back faces
+    // culled, the background shows through the opened head.
+    let camera = OrbitCamera { near: Some(2.2), ..OrbitCamera::default() };
+    Shot { camera, ..Shot::new(ShadingMode::Phong, true) }.check("near_plane_cut");
+}
+
+#[test]
+fn behind() {
+    let camera = OrbitCamera::new(180.0, 15.0, OrbitCamera::DEFAULT_DISTANCE, OrbitCamera::default().lens);
+    Shot { camera, ..Shot::new(ShadingMode::Phong, true) }.check("behind");
+}
+
+#[test]
+fn wide_240x128() {
+    Shot { width: 240, height: 128, ..Shot::new(ShadingMode::Phong, true) }.check("wide_240x128");
+}
+
+#[test]
+fn tall_96x200() {
+    Shot { width: 96, height: 200, ..Shot::new(ShadingMode::Phong, true) }.check("tall_96x200");
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// The harness itself
+
+/// A small frame to exercise the harness with.
+fn small_frame() -> Image {
+    Shot { width: 64, height: 48, ..Shot::new(ShadingMode::Phong, true) }.render_full()
+}
+
+#[test]
+fn harness_reports_exactly_one_perturbed_pixel() {
+    let dir = tempfile::tempdir().expect("a temporary directory");
+    let snapshot = Snapshot { dir: dir.path(), name: "frame", variant: "" };
+    let image = small_frame();
+    assert_eq!(snapshot.check(&image, TOLERANCE, Mode::Bless), Ok(Passed::Blessed));
+    assert_eq!(snapshot.check(&image, TOLERANCE, Mode::Compare), Ok(Passed::Matched));
+
+    let mut perturbed = image.clone();
+    let i = perturbed.width as usize * 20 + 30;
+    perturbed.pixels[i] ^= 0x0000_0300;
+    assert_eq!(compare(&image, &perturbed, TOLERANCE), Some(Comparison { differing: 1, largest: 3 }));
+    assert_eq!(compare(&image, &perturbed, 3), Some(Comparison { differing: 0, largest: 3 }));
+
+    match snapshot.check(&perturbed, TOLERANCE, Mode::Compare) {
+        Err(failure @ Failure::Pixels { comparison: Comparison { differing: 1, largest: 3 }, .. }) => {
+            let message = failure.to_string();
+            assert!(message.contains("1 pixel(s) differ"), "{message}");
+            assert!(message.contains("frame.actual.png") && message.contains("frame.diff.png"), "{message}");
+        }
+        other => panic!("expected one differing pixel, got {other:?}"),
+    }
+    assert_eq!(Image::read_png(&snapshot.actual()), Ok(perturbed));
+    let diff = Image::read_png(&snapshot.diff()).expect("the diff image was written");
+    let red: Vec<usize> = (0..diff.pixels.len()).filter(|&j| diff.pixels[j] == 0x00ff_0000).collect();
+    assert_eq!(red, [i], "the diff image marks exactly the perturbed pixel");
+    assert_eq!(Image::read_png(&snapshot.golden()), Ok(image.clone()), "a failing check leaves the golden alone");
+
+    // Passing again removes the failure files.
+    assert_eq!(snapshot.check(&image, TOLERANCE, Mode::Compare), Ok(Passed::Matched));
+    assert!(!snapshot.actual().exists() && !snapshot.diff().exists());
+}
+
+#[test]
+fn harness_fails_on_missing_golden_and_wrong_size_without_blessing() {
+    let dir = tempfile::tempdir().expect("a temporary directory");
+    let snapshot = Snapshot { dir: dir.path(), name: "frame", variant: ".bands" };
+    let image = small_frame();
+    match snapshot.check(&image, TOLERANCE, Mode::Compare) {
+        Err(failure @ Failure::Missing { .. }) => {
+            assert!(failure.to_string().contains("UPDATE_SNAPSHOTS=1 cargo test -p rasterm-tests"), "{failure}");
+        }
+        other => panic!("expected a missing golden, got {other:?}"),
+    }
+    assert!(!snapshot.golden().exists(), "a normal run must not create the golden");
+    assert!(dir.path().join("frame.bands.actual.png").exists());
+
+    let mut wrong = image.clone();
+    wrong.height -= 1;
+    wrong.pixels.truncate(wrong.width as usize * wrong.height as usize);
+    image.write_png(&snapshot.golden()).expect("the golden is written");
+    match snapshot.check(&wrong, TOLERANCE, Mode::Compare) {
+        Err(Failure::Size { expected: (64, 48), actual: (64, 47), .. }) => {}
+        other => panic!("expected a size mismatch, got {other:?}"),
+    }
+    assert_eq!(snapshot.check(&wrong, TOLERANCE, Mode::Bless), Ok(Passed::Blessed));
+    assert_eq!(Image::read_png(&snapshot.golden()), Ok(wrong));
+}
