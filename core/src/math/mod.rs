@@ -4,6 +4,7 @@
 //! coordinates, angles in radians. All non-trivial float functions go through [`float`], which calls `libm`; code
 //! outside the core that computes anything a pixel depends on should use it too.
 
+pub mod exact;
 pub mod float;
 mod mat3;
 mod mat4;

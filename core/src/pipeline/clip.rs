@@ -6,12 +6,16 @@
 //! only the pixels inside the frame are visited. Anything larger is cut to the guard band, which keeps every
 //! coordinate far inside the fixed-point range.
 //!
-//! Intersections are computed in `f64` from the inside vertex toward the outside one, so the two triangles that
-//! share an edge cut it at bit-identical points and stay watertight (Sutherland and Hodgman, "Reentrant Polygon
-//! Clipping", CACM 1974; Blinn and Newell, "Clipping using homogeneous coordinates", SIGGRAPH 1978).
+//! Plane distances are computed exactly (as floating-point expansions, [`crate::math::exact`]), so which side a
+//! vertex is on is never wrong, and an intersection is rounded only once, relative to itself: a triangle whose
+//! corners are 10^30 units out still crosses the view exactly where it should. Intersections are computed from
+//! the inside vertex toward the outside one, so the two triangles that share an edge cut it at bit-identical points
+//! and stay watertight (Sutherland and Hodgman, "Reentrant Polygon Clipping", CACM 1974; Blinn and Newell,
+//! "Clipping using homogeneous coordinates", SIGGRAPH 1978).
 
 use super::Varyings;
 use crate::math::Vec4;
+use crate::math::exact::Expansion;
 
 /// Half the side of the guard band, in pixels.
 ///
@@ -31,13 +35,21 @@ pub(crate) struct ClipVertex<V> {
 struct Plane([f32; 4]);
 
 impl Plane {
-    /// The distance in `f64`; every product of two `f32`s is exact there.
-    fn distance_f64(&self, p: Vec4) -> f64 {
+    /// The signed distance `a . p`, exactly.
+    fn distance(&self, p: Vec4) -> Expansion {
         let a = self.0;
-        f64::from(a[0]) * f64::from(p.x)
-            + f64::from(a[1]) * f64::from(p.y)
-            + f64::from(a[2]) * f64::from(p.z)
-            + f64::from(a[3]) * f64::from(p.w)
+        Expansion::product(a[0], p.x)
+            .add(&Expansion::product(a[1], p.y))
+            .add(&Expansion::product(a[2], p.z))
+            .add(&Expansion::product(a[3], p.w))
+    }
+
+    /// The point where the segment from `p` (distance `dp`) to `q` (distance `dq`, of the other sign) meets the
+    /// plane: `(dp q - dq p) / (dp - dq)`, with numerator and denominator exact and rounded once each.
+    fn meet(p: Vec4, dp: &Expansion, q: Vec4, dq: &Expansion) -> Vec4 {
+        let den = dp.sub(dq).value();
+        let coord = |a: f32, b: f32| (dp.scale(f64::from(b)).sub(&dq.scale(f64::from(a))).value() / den) as f32;
+        Vec4::new(coord(p.x, q.x), coord(p.y, q.y), coord(p.z, q.z), coord(p.w, q.w))
     }
 }
 
@@ -129,28 +141,37 @@ impl ClipVolume {
 
 impl ClipVolume {
     /// The part of the segment `a`-`b` inside the clipping planes, by the parametric method of Liang and Barsky
-    /// ("A new concept and method for line clipping", ACM TOG 1984), in `f64`.
+    /// ("A new concept and method for line clipping", ACM TOG 1984): the segment enters at the largest entering
+    /// parameter and leaves at the smallest leaving one; each end point is then computed exactly from the plane
+    /// that made it.
     pub fn clip_segment(&self, a: Vec4, b: Vec4) -> Option<(Vec4, Vec4)> {
         let (mut t0, mut t1) = (0.0f64, 1.0f64);
+        let (mut enter, mut leave) = (None, None);
         for plane in &self.planes {
-            let (da, db) = (plane.distance_f64(a), plane.distance_f64(b));
-            if da < 0.0 && db < 0.0 {
-                return None;
-            }
-            if da < 0.0 {
-                t0 = t0.max(da / (da - db));
-            } else if db < 0.0 {
-                t1 = t1.min(da / (da - db));
+            let (da, db) = (plane.distance(a), plane.distance(b));
+            match (da.signum() < 0, db.signum() < 0) {
+                (true, true) => return None,
+                (true, false) => {
+                    let t = da.value() / da.sub(&db).value();
+                    if t > t0 {
+                        (t0, enter) = (t, Some((da, db)));
+                    }
+                }
+                (false, true) => {
+                    let t = da.value() / da.sub(&db).value();
+                    if t < t1 {
+                        (t1, leave) = (t, Some((da, db)));
+                    }
+                }
+                (false, false) => {}
             }
         }
         if t0 > t1 {
             return None;
         }
-        let at = |t: f64| {
-            let lerp = |p: f32, q: f32| (f64::from(p) + (f64::from(q) - f64::from(p)) * t) as f32;
-            Vec4::new(lerp(a.x, b.x), lerp(a.y, b.y), lerp(a.z, b.z), lerp(a.w, b.w))
-        };
-        Some((if t0 > 0.0 { at(t0) } else { a }, if t1 < 1.0 { at(t1) } else { b }))
+        let start = enter.map_or(a, |(da, db)| Plane::meet(a, &da, b, &db));
+        let end = leave.map_or(b, |(da, db)| Plane::meet(a, &da, b, &db));
+        Some((start, end))
     }
 }
 
@@ -182,29 +203,30 @@ fn clip_against<V: Varyings>(plane: &Plane, src: &Polygon<V>, dst: &mut Polygon<
     let verts = src.vertices();
     let Some(&last) = verts.last() else { return };
     let mut prev = last;
-    let mut d_prev = plane.distance_f64(prev.pos);
+    let mut d_prev = plane.distance(prev.pos);
     for &cur in verts {
-        let d_cur = plane.distance_f64(cur.pos);
-        if d_cur >= 0.0 {
-            if d_prev < 0.0 {
-                dst.push(intersect(&cur, d_cur, &prev, d_prev));
+        let d_cur = plane.distance(cur.pos);
+        if d_cur.signum() >= 0 {
+            if d_prev.signum() < 0 {
+                dst.push(intersect(&cur, &d_cur, &prev, &d_prev));
             }
             dst.push(cur);
-        } else if d_prev >= 0.0 {
-            dst.push(intersect(&prev, d_prev, &cur, d_cur));
+        } else if d_prev.signum() >= 0 {
+            dst.push(intersect(&prev, &d_prev, &cur, &d_cur));
         }
         prev = cur;
         d_prev = d_cur;
     }
 }
 
-/// The point where the segment from `inside` (distance `d_in >= 0`) to `outside` (`d_out < 0`) meets the plane.
-fn intersect<V: Varyings>(inside: &ClipVertex<V>, d_in: f64, outside: &ClipVertex<V>, d_out: f64) -> ClipVertex<V> {
-    let t = d_in / (d_in - d_out);
-    let lerp = |a: f32, b: f32| (f64::from(a) + (f64::from(b) - f64::from(a)) * t) as f32;
-    let (a, b) = (inside.pos, outside.pos);
-    ClipVertex {
-        pos: Vec4::new(lerp(a.x, b.x), lerp(a.y, b.y), lerp(a.z, b.z), lerp(a.w, b.w)),
-        var: inside.var.lerp(&outside.var, t as f32),
-    }
+/// The point where the segment from `inside` (distance `d_in >= 0`) to `outside` (`d_out < 0`) meets the plane,
+/// with its varyings interpolated at the same parameter.
+fn intersect<V: Varyings>(
+    inside: &ClipVertex<V>,
+    d_in: &Expansion,
+    outside: &ClipVertex<V>,
+    d_out: &Expansion,
+) -> ClipVertex<V> {
+    let t = d_in.value() / d_in.sub(d_out).value();
+    ClipVertex { pos: Plane::meet(inside.pos, d_in, outside.pos, d_out), var: inside.var.lerp(&outside.var, t as f32) }
 }
