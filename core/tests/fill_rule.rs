@@ -105,3 +105,23 @@ fn pixels_outside_the_frame_are_never_visited() {
     assert_pattern(&c, 4, &["####", "####", "####"]);
     assert_eq!(stats.fragments, 12);
 }
+
+#[test]
+fn float_edges_follow_the_same_fill_rule_on_exact_inputs() {
+    use rasterm_core::pipeline::EdgeArithmetic;
+    // Corners on pixel corners and edges through centres are exact in f32 too: the same pixels as fixed point.
+    let float = DrawState { edges: EdgeArithmetic::Float, ..both_sides() };
+    let rect = [[(0.0, 0.5), (0.0, 2.5), (4.0, 2.5)], [(0.0, 0.5), (4.0, 2.5), (4.0, 0.5)]];
+    assert_pattern(&coverage(4, 4, &rect, &float).0, 4, &["####", "####", "....", "...."]);
+    let square = [[(0.0, 0.0), (0.0, 5.0), (5.0, 5.0)], [(0.0, 0.0), (5.0, 5.0), (5.0, 0.0)]];
+    assert_pattern(&coverage(5, 5, &square, &float).0, 5, &["#####", "#####", "#####", "#####", "#####"]);
+    let (c, stats) = coverage(6, 6, &[[(0.0, 0.0), (0.0, 6.0), (6.0, 6.0)]], &float);
+    assert_pattern(&c, 6, &["......", "#.....", "##....", "###...", "####..", "#####."]);
+    assert_eq!(stats.fragments, 15);
+    // No snapping: an edge 1/1024 px right of a centre includes it, where 8-bit snapping moves the edge onto the
+    // centre itself (a right edge: excluded).
+    let r = 1.5 + 1.0 / 1024.0;
+    let rect = [[(0.0, 0.0), (0.0, 2.0), (r, 2.0)], [(0.0, 0.0), (r, 2.0), (r, 0.0)]];
+    assert_pattern(&coverage(3, 2, &rect, &float).0, 3, &["##.", "##."]);
+    assert_pattern(&coverage(3, 2, &rect, &both_sides()).0, 3, &["#..", "#.."]);
+}

@@ -7,7 +7,7 @@ use common::{ExactColor, Torus, checker_texels};
 use rasterm_core::camera::{look_at, orthographic, perspective};
 use rasterm_core::math::{Mat4, Vec3};
 use rasterm_core::mesh::{Indices, Mesh};
-use rasterm_core::pipeline::{Cull, DepthTest, DrawState, DrawStats, Interpolation};
+use rasterm_core::pipeline::{Cull, DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation};
 use rasterm_core::shading::{
     Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh, draw_mesh_unspecialised,
 };
@@ -85,11 +85,17 @@ fn specialised_pipelines_equal_the_general_one_for_every_combination() {
             for texture_mode in textures {
                 for specular in [Vec3::ZERO, Vec3::splat(0.6)] {
                     for mesh in [&with_colors, &positions_only] {
-                        for (interpolation, depth_test, cull) in [
-                            (Interpolation::PerspectiveCorrect, DepthTest::Less, Cull::Back),
-                            (Interpolation::Affine, DepthTest::Less, Cull::None),
-                            (Interpolation::PerspectiveCorrect, DepthTest::Off, Cull::None),
-                            (Interpolation::Affine, DepthTest::Off, Cull::Front),
+                        for (interpolation, depth_test, cull, edges) in [
+                            (
+                                Interpolation::PerspectiveCorrect,
+                                DepthTest::Less,
+                                Cull::Back,
+                                EdgeArithmetic::FixedPoint,
+                            ),
+                            (Interpolation::Affine, DepthTest::Less, Cull::None, EdgeArithmetic::Float),
+                            (Interpolation::PerspectiveCorrect, DepthTest::Off, Cull::None, EdgeArithmetic::Float),
+                            (Interpolation::Affine, DepthTest::Off, Cull::Front, EdgeArithmetic::FixedPoint),
+                            (Interpolation::PerspectiveCorrect, DepthTest::Less, Cull::Back, EdgeArithmetic::Float),
                         ] {
                             let effects = Effects {
                                 shading,
@@ -97,7 +103,7 @@ fn specialised_pipelines_equal_the_general_one_for_every_combination() {
                                 lighting,
                                 texture: texture_mode.map(|(filter, wrap)| TextureBinding { texture, filter, wrap }),
                             };
-                            let state = DrawState { interpolation, depth_test, cull, ..DrawState::default() };
+                            let state = DrawState { interpolation, depth_test, cull, edges, ..DrawState::default() };
                             let (fast, fast_stats) = render(mesh, &transforms, &effects, &state, true);
                             let (general, general_stats) = render(mesh, &transforms, &effects, &state, false);
                             let variant = effects.resolve(mesh, &transforms, &state).unwrap();
@@ -113,7 +119,7 @@ fn specialised_pipelines_equal_the_general_one_for_every_combination() {
             }
         }
     }
-    assert_eq!(combinations, 2 * 6 * 5 * 2 * 2 * 4);
+    assert_eq!(combinations, 2 * 6 * 5 * 2 * 2 * 5);
     assert!(clipped > 0);
 }
 

@@ -6,7 +6,7 @@ mod common;
 use common::{ExactColor, Torus, checker_texels};
 use rasterm_core::camera::{look_at, perspective};
 use rasterm_core::math::{Mat4, Vec3};
-use rasterm_core::pipeline::{DrawState, DrawStats, LineStyle, draw_wireframe};
+use rasterm_core::pipeline::{DrawState, DrawStats, EdgeArithmetic, LineStyle, draw_wireframe};
 use rasterm_core::shading::{Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh};
 use rasterm_core::target::{ColorBuffer, DepthBuffer, Rgb565, Target};
 use rasterm_core::texture::{FilterMode, Texture, WrapMode};
@@ -18,15 +18,16 @@ struct Scene<'a> {
     torus: &'a Torus,
     transforms: Transforms,
     effects: Effects<'a>,
+    state: DrawState,
 }
 
 impl Scene<'_> {
     fn draw<C: ColorBuffer, D: DepthBuffer>(&self, target: &mut Target<C, D>) -> DrawStats {
         target.clear(Vec3::new(0.05, 0.1, 0.15));
         let mesh = self.torus.mesh();
-        let mut stats = draw_mesh(target, &mesh, &self.transforms, &self.effects, &DrawState::default()).unwrap();
+        let mut stats = draw_mesh(target, &mesh, &self.transforms, &self.effects, &self.state).unwrap();
         let style = LineStyle { color: Vec3::new(1.0, 1.0, 0.0), depth_bias: 1e-3 };
-        stats += draw_wireframe(target, &mesh, &self.transforms.clip_from_object, &style, &DrawState::default());
+        stats += draw_wireframe(target, &mesh, &self.transforms.clip_from_object, &style, &self.state);
         stats
     }
 }
@@ -73,9 +74,13 @@ fn bands_of_1_7_16_rows_equal_the_whole_frame() {
             lighting: Lighting { ambient: Vec3::splat(0.1), lights: &lights },
             texture: filter.map(|filter| TextureBinding { texture, filter, wrap: WrapMode::Repeat }),
         };
-        let scene = Scene { torus: &torus, transforms, effects };
-        for band in [1, 7, 16] {
-            assert_bands_equal_frame(&scene, band);
+        // Float edge functions too: they are evaluated from frame coordinates as well.
+        for edges in [EdgeArithmetic::FixedPoint, EdgeArithmetic::Float] {
+            let scene =
+                Scene { torus: &torus, transforms, effects, state: DrawState { edges, ..DrawState::default() } };
+            for band in [1, 7, 16] {
+                assert_bands_equal_frame(&scene, band);
+            }
         }
     }
 }

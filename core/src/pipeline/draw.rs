@@ -2,10 +2,11 @@
 
 use super::clip::{CLIP_MASK, ClipVertex, ClipVolume, MAX_CLIPPED};
 use super::depth_stage::{DepthLess, DepthOff, DepthStage, DynamicDepth};
+use super::edges::{DynamicEdgeSetup, EdgeSetup, FixedPoint, FloatingPoint};
 use super::interpolator::{Affine, DynamicInterpolator, Interpolator, PerspectiveCorrect};
 use super::raster::{Rasterizer, Setup, Stages};
 use super::vertex_cache::VertexCache;
-use super::{DepthTest, DrawState, DrawStats, Interpolation, MAX_SUBPIXEL_BITS, Shader, Varyings};
+use super::{DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation, MAX_SUBPIXEL_BITS, Shader, Varyings};
 use crate::mesh::{Attributes, Mesh};
 use crate::target::{ColorBuffer, DepthBuffer, Target};
 
@@ -36,8 +37,9 @@ impl core::fmt::Display for DrawError {
 
 /// Draws the triangles of `mesh` with `shader` into `target`.
 ///
-/// The interpolation mode and the depth test of `state` select one of four compiled pixel loops, once for the
-/// whole draw; together with the shader type that makes a loop that does exactly what this draw needs.
+/// The edge arithmetic, interpolation mode and depth test of `state` select one of eight compiled pixel loops,
+/// once for the whole draw; together with the shader type that makes a loop that does exactly what this draw
+/// needs.
 ///
 /// # Errors
 /// [`DrawError`] when the mesh lacks an attribute the shader reads or the state is out of range. Bad triangles
@@ -86,13 +88,33 @@ where
     D: DepthBuffer,
 {
     check(mesh, S::ATTRIBUTES, state)?;
-    use {DepthTest as T, Interpolation as I};
-    Ok(match (state.interpolation, state.depth_test) {
-        (I::PerspectiveCorrect, T::Less) => run(target, mesh, shader, state, PerspectiveCorrect, DepthLess),
-        (I::PerspectiveCorrect, T::Off) => run(target, mesh, shader, state, PerspectiveCorrect, DepthOff),
-        (I::Affine, T::Less) => run(target, mesh, shader, state, Affine, DepthLess),
-        (I::Affine, T::Off) => run(target, mesh, shader, state, Affine, DepthOff),
+    Ok(match state.edges {
+        EdgeArithmetic::FixedPoint => with_interpolation_and_depth(target, mesh, shader, state, FixedPoint),
+        EdgeArithmetic::Float => with_interpolation_and_depth(target, mesh, shader, state, FloatingPoint),
     })
+}
+
+/// The second and third choices of [`draw`]: the interpolator and the depth stage.
+fn with_interpolation_and_depth<S, C, D, E>(
+    target: &mut Target<C, D>,
+    mesh: &Mesh<'_>,
+    shader: &S,
+    state: &DrawState,
+    edges: E,
+) -> DrawStats
+where
+    S: Shader,
+    C: ColorBuffer,
+    D: DepthBuffer,
+    E: EdgeSetup,
+{
+    use {DepthTest as T, Interpolation as I};
+    match (state.interpolation, state.depth_test) {
+        (I::PerspectiveCorrect, T::Less) => run(target, mesh, shader, state, edges, PerspectiveCorrect, DepthLess),
+        (I::PerspectiveCorrect, T::Off) => run(target, mesh, shader, state, edges, PerspectiveCorrect, DepthOff),
+        (I::Affine, T::Less) => run(target, mesh, shader, state, edges, Affine, DepthLess),
+        (I::Affine, T::Off) => run(target, mesh, shader, state, edges, Affine, DepthOff),
+    }
 }
 
 /// Like [`draw`], but through one general pixel loop that decides interpolation and depth test per pixel.
@@ -115,7 +137,7 @@ where
 {
     check(mesh, S::ATTRIBUTES, state)?;
     let (interpolator, depth) = (DynamicInterpolator(state.interpolation), DynamicDepth(state.depth_test));
-    Ok(run(target, mesh, shader, state, interpolator, depth))
+    Ok(run(target, mesh, shader, state, DynamicEdgeSetup(state.edges), interpolator, depth))
 }
 
 fn check(mesh: &Mesh<'_>, needed: Attributes, state: &DrawState) -> Result<(), DrawError> {
@@ -138,7 +160,7 @@ struct Outcome {
 }
 
 impl Outcome {
-    fn record(&mut self, setup: &Setup) {
+    fn record<E>(&mut self, setup: &Setup<E>) {
         match setup {
             Setup::Degenerate => self.degenerate = true,
             Setup::Culled => self.culled = true,
@@ -159,12 +181,13 @@ impl Outcome {
     }
 }
 
-/// The draw loop, monomorphised on the shader, the interpolator and the depth stage.
-fn run<S, C, D, I, Z>(
+/// The draw loop, monomorphised on the shader, the edge arithmetic, the interpolator and the depth stage.
+fn run<S, C, D, E, I, Z>(
     target: &mut Target<C, D>,
     mesh: &Mesh<'_>,
     shader: &S,
     state: &DrawState,
+    edges: E,
     interpolator: I,
     depth: Z,
 ) -> DrawStats
@@ -172,6 +195,7 @@ where
     S: Shader,
     C: ColorBuffer,
     D: DepthBuffer,
+    E: EdgeSetup,
     I: Interpolator,
     Z: DepthStage,
 {
@@ -205,7 +229,7 @@ where
                 stats.outside += 1;
                 return;
             };
-            let setup = raster.setup([sa, sb, sc]);
+            let setup = edges.setup(&raster, [sa, sb, sc]);
             outcome.record(&setup);
             if let Setup::Ready(coverage) = setup {
                 let vars = indices.map(|i| cache.varyings(shader, mesh, i));
@@ -239,7 +263,7 @@ where
             // A convex polygon is a fan around its first vertex.
             for i in 1..verts.len().saturating_sub(1) {
                 let (Some(p), Some(q), Some(r)) = (snapped[0], snapped[i], snapped[i + 1]) else { continue };
-                let setup = raster.setup([p, q, r]);
+                let setup = edges.setup(&raster, [p, q, r]);
                 outcome.record(&setup);
                 if let Setup::Ready(coverage) = setup {
                     let face = face.get_or_insert_with(|| shader.face(mesh, indices));

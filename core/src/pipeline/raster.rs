@@ -11,19 +11,24 @@
 //! SIGGRAPH 1988). Two triangles sharing an edge therefore cover each pixel on it exactly once.
 
 use super::depth_stage::DepthStage;
+use super::edges::{Edges, FixedEdges, FloatEdges};
 use super::interpolator::Interpolator;
 use super::{Cull, Fragment, Shader, Varyings, Winding};
 use crate::camera::Viewport;
 use crate::math::{Vec4, float};
 use crate::target::{ColorBuffer, DepthBuffer, Target};
 
-/// A vertex position in screen space, snapped to the sub-pixel grid.
+/// A vertex position in screen space, snapped to the sub-pixel grid (and kept unsnapped for `f32` edges).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Snapped {
     /// Fixed-point x, in units of `2^-(S+1)` pixel.
     x: i32,
     /// Fixed-point y (down), same units.
     y: i32,
+    /// Unsnapped x in pixels.
+    fx: f32,
+    /// Unsnapped y (down) in pixels.
+    fy: f32,
     /// NDC depth.
     z: f32,
     /// `1 / w`.
@@ -37,7 +42,7 @@ const SNAP_LIMIT_PX: f32 = 2.0 * super::clip::GUARD_BAND;
 const _: () = assert!(SNAP_LIMIT_PX * (1u32 << super::MAX_SUBPIXEL_BITS) as f32 <= 8_388_608.0);
 
 /// What became of one triangle (or clipped piece) at set-up.
-pub(crate) enum Setup {
+pub(crate) enum Setup<E> {
     /// Zero area on the sub-pixel grid.
     Degenerate,
     /// Removed by face culling.
@@ -45,7 +50,20 @@ pub(crate) enum Setup {
     /// Facing is fine but its bounding box holds no pixel centre of the target.
     Empty,
     /// Covers pixel centres: ready for the pixel loop.
-    Ready(Coverage),
+    Ready(Coverage<E>),
+}
+
+impl<E> Setup<E> {
+    /// The same outcome with the edge functions converted.
+    #[inline(always)]
+    pub fn map<F>(self, f: impl FnOnce(E) -> F) -> Setup<F> {
+        match self {
+            Self::Degenerate => Setup::Degenerate,
+            Self::Culled => Setup::Culled,
+            Self::Empty => Setup::Empty,
+            Self::Ready(c) => Setup::Ready(Coverage { edges: f(c.edges), frame: c.frame }),
+        }
+    }
 }
 
 /// Per-draw rasterizer settings.
@@ -93,28 +111,42 @@ impl Rasterizer {
         }
         let inv_w = 1.0 / pos.w;
         let s = self.viewport.to_screen(pos.truncate() * inv_w);
+        let (fx, fy) =
+            (float::clamp(s.x, -SNAP_LIMIT_PX, SNAP_LIMIT_PX), float::clamp(s.y, -SNAP_LIMIT_PX, SNAP_LIMIT_PX));
         // Round to the nearest grid point; within the clamp, |p| < 2^23 and `floor` and the cast are exact.
-        let fixed =
-            |p: f32| (float::floor(float::clamp(p, -SNAP_LIMIT_PX, SNAP_LIMIT_PX) * self.scale + 0.5) as i32) << 1;
-        Some(Snapped { x: fixed(s.x), y: fixed(s.y), z: s.z, inv_w })
+        let fixed = |p: f32| (float::floor(p * self.scale + 0.5) as i32) << 1;
+        Some(Snapped { x: fixed(fx), y: fixed(fy), fx, fy, z: s.z, inv_w })
     }
 
-    /// Area, facing and bounding box of a triangle, and if it covers any pixel centre, its edge functions.
+    /// Facing and culling from the sign of twice the signed area (positive: clockwise on the y-up NDC plane,
+    /// counter-clockwise on the y-down screen).
     #[inline(always)]
-    pub fn setup(&self, v: [Snapped; 3]) -> Setup {
+    fn facing(&self, area_positive: bool) -> Option<bool> {
+        let front_facing = !area_positive == (self.front_face == Winding::CounterClockwise);
+        match self.cull {
+            Cull::Back if !front_facing => None,
+            Cull::Front if front_facing => None,
+            _ => Some(front_facing),
+        }
+    }
+
+    /// The target's pixels whose centres lie in `[lo, hi]` (in pixels, inclusive), as an inclusive range clamped to
+    /// the target: columns when `rows` is false, the target's rows otherwise.
+    #[inline(always)]
+    fn centres(&self, first: i32, last: i32, rows: bool) -> (i32, i32) {
+        if rows { (first.max(self.row0), last.min(self.row1 - 1)) } else { (first.max(0), last.min(self.width - 1)) }
+    }
+
+    /// Exact fixed-point set-up: area, facing, bounding box and `i64` edge functions of the snapped triangle.
+    #[inline(always)]
+    pub fn setup_fixed(&self, v: [Snapped; 3]) -> Setup<FixedEdges> {
         let [a, b, c] = v.map(|p| (i64::from(p.x), i64::from(p.y)));
-        // Twice the signed area in fixed-point units. Positive means clockwise on the y-up NDC plane.
+        // Twice the signed area in fixed-point units.
         let area = (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0);
         if area == 0 {
             return Setup::Degenerate;
         }
-        let ccw = area < 0;
-        let front_facing = ccw == (self.front_face == Winding::CounterClockwise);
-        match self.cull {
-            Cull::Back if !front_facing => return Setup::Culled,
-            Cull::Front if front_facing => return Setup::Culled,
-            _ => {}
-        }
+        let Some(front_facing) = self.facing(area > 0) else { return Setup::Culled };
 
         let shift = self.shift;
         let half = 1i64 << (shift - 1);
@@ -123,67 +155,72 @@ impl Rasterizer {
         let (min_y, max_y) = (a.1.min(b.1).min(c.1), a.1.max(b.1).max(c.1));
         let first_centre = |lo: i64| ((lo - half + (1 << shift) - 1) >> shift) as i32;
         let last_centre = |hi: i64| ((hi - half) >> shift) as i32;
-        let x0 = first_centre(min_x).max(0);
-        let x1 = last_centre(max_x).min(self.width - 1);
-        let y0 = first_centre(min_y).max(self.row0);
-        let y1 = last_centre(max_y).min(self.row1 - 1);
+        let (x0, x1) = self.centres(first_centre(min_x), last_centre(max_x), false);
+        let (y0, y1) = self.centres(first_centre(min_y), last_centre(max_y), true);
         if x0 > x1 || y0 > y1 {
             return Setup::Empty;
         }
 
         // Orient clockwise on screen (positive area) so that every edge function is positive inside.
-        let order = if ccw { [1, 0, 2] } else { [0, 1, 2] };
+        let order = if area < 0 { [1, 0, 2] } else { [0, 1, 2] };
         let verts = order.map(|i| [a, b, c][i]);
-        // Edge k is the one opposite vertex k; its function is k's barycentric coordinate times `area`.
-        let start_x = (i64::from(x0) << shift) + half;
-        let start_y = (i64::from(y0) << shift) + half;
-        let mut edge = [0i64; 3];
-        let mut step_x = [0i64; 3];
-        let mut step_y = [0i64; 3];
-        let mut bias = [0i64; 3];
+        // Edge k is the one opposite vertex k; its function is k's barycentric coordinate times `area`, evaluated
+        // at pixel centres (i << shift) + half.
+        let mut edges = FixedEdges { origin: [0; 3], step_x: [0; 3], step_y: [0; 3], bias: [0; 3] };
         for k in 0..3 {
             let (p, q) = (verts[(k + 1) % 3], verts[(k + 2) % 3]);
             let (dx, dy) = (q.0 - p.0, q.1 - p.1);
             // Inside is to the right of p->q in y-down screen space; the edge is "left" when y decreases along
             // it and "top" when it is horizontal running to +x.
             let top_left = dy < 0 || (dy == 0 && dx > 0);
-            bias[k] = if top_left { 0 } else { -1 };
-            edge[k] = dx * (start_y - p.1) - dy * (start_x - p.0) + bias[k];
-            step_x[k] = -dy << shift;
-            step_y[k] = dx << shift;
+            edges.bias[k] = if top_left { 0 } else { -1 };
+            edges.origin[k] = dx * (half - p.1) - dy * (half - p.0) + edges.bias[k];
+            edges.step_x[k] = -dy << shift;
+            edges.step_y[k] = dx << shift;
         }
+        let frame = Frame::new([x0, x1, y0, y1], front_facing, order, v, area.unsigned_abs() as f32);
+        Setup::Ready(Coverage { edges, frame })
+    }
 
-        let inv_area = 1.0 / area.abs() as f32;
-        let [za, zb, zc] = order.map(|i| v[i].z);
-        Setup::Ready(Coverage {
-            edge,
-            step_x,
-            step_y,
-            bias,
-            x0,
-            x1,
-            y0,
-            y1,
-            front_facing,
-            order,
-            z0: za,
-            dz1: (zb - za) * inv_area,
-            dz2: (zc - za) * inv_area,
-            inv_w: order.map(|i| v[i].inv_w),
-            inv_area,
-        })
+    /// Plain `f32` set-up from the unsnapped positions: area, facing, bounding box and edge functions.
+    #[inline(always)]
+    pub fn setup_float(&self, v: [Snapped; 3]) -> Setup<FloatEdges> {
+        let [a, b, c] = v.map(|p| (p.fx, p.fy));
+        let area = (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0);
+        // Zero, or NaN from an overflow: nothing to draw.
+        if !(area != 0.0 && area.is_finite()) {
+            return Setup::Degenerate;
+        }
+        let Some(front_facing) = self.facing(area > 0.0) else { return Setup::Culled };
+        let (min_x, max_x) = (float::min(a.0, float::min(b.0, c.0)), float::max(a.0, float::max(b.0, c.0)));
+        let (min_y, max_y) = (float::min(a.1, float::min(b.1, c.1)), float::max(a.1, float::max(b.1, c.1)));
+        // Centres i + 0.5 in [lo, hi]: i from ceil(lo - 0.5) to floor(hi - 0.5).
+        let first_centre = |lo: f32| -(float::floor(0.5 - lo) as i32);
+        let last_centre = |hi: f32| float::floor(hi - 0.5) as i32;
+        let (x0, x1) = self.centres(first_centre(min_x), last_centre(max_x), false);
+        let (y0, y1) = self.centres(first_centre(min_y), last_centre(max_y), true);
+        if x0 > x1 || y0 > y1 {
+            return Setup::Empty;
+        }
+        let order = if area < 0.0 { [1, 0, 2] } else { [0, 1, 2] };
+        let verts = order.map(|i| [a, b, c][i]);
+        let mut edges = FloatEdges { a: [0.0; 3], b: [0.0; 3], c: [0.0; 3], top_left: [false; 3] };
+        for k in 0..3 {
+            let (p, q) = (verts[(k + 1) % 3], verts[(k + 2) % 3]);
+            let (dx, dy) = (q.0 - p.0, q.1 - p.1);
+            edges.top_left[k] = dy < 0.0 || (dy == 0.0 && dx > 0.0);
+            // E(x, y) = dx (y - p.y) - dy (x - p.x) = -dy x + dx y + (dy p.x - dx p.y).
+            edges.a[k] = -dy;
+            edges.b[k] = dx;
+            edges.c[k] = dy * p.0 - dx * p.1;
+        }
+        let frame = Frame::new([x0, x1, y0, y1], front_facing, order, v, float::abs(area));
+        Setup::Ready(Coverage { edges, frame })
     }
 }
 
-/// The coverage of a triangle that reaches the pixel loop, with its geometric interpolants (depth and `1/w`).
-pub(crate) struct Coverage {
-    /// Biased edge functions at the first pixel centre of the bounding box: a centre is covered when all three
-    /// are `>= 0`.
-    edge: [i64; 3],
-    step_x: [i64; 3],
-    step_y: [i64; 3],
-    /// The fill-rule bias folded into `edge` (0 for top-left edges, -1 otherwise).
-    bias: [i64; 3],
+/// Everything about a triangle in the pixel loop that does not depend on how its edges are evaluated.
+pub(crate) struct Frame {
     x0: i32,
     x1: i32,
     y0: i32,
@@ -199,6 +236,33 @@ pub(crate) struct Coverage {
     inv_area: f32,
 }
 
+impl Frame {
+    #[inline(always)]
+    fn new([x0, x1, y0, y1]: [i32; 4], front_facing: bool, order: [usize; 3], v: [Snapped; 3], area: f32) -> Self {
+        let inv_area = 1.0 / area;
+        let [za, zb, zc] = order.map(|i| v[i].z);
+        Self {
+            x0,
+            x1,
+            y0,
+            y1,
+            front_facing,
+            order,
+            z0: za,
+            dz1: (zb - za) * inv_area,
+            dz2: (zc - za) * inv_area,
+            inv_w: order.map(|i| v[i].inv_w),
+            inv_area,
+        }
+    }
+}
+
+/// A triangle that reaches the pixel loop: its edge functions and its geometric interpolants (depth, `1/w`).
+pub(crate) struct Coverage<E> {
+    edges: E,
+    frame: Frame,
+}
+
 /// The per-draw stages the pixel loop is specialised on.
 pub(crate) struct Stages<'s, S, I, Z> {
     pub shader: &'s S,
@@ -206,7 +270,7 @@ pub(crate) struct Stages<'s, S, I, Z> {
     pub depth: Z,
 }
 
-impl Coverage {
+impl<E: Edges> Coverage<E> {
     /// Visits every covered pixel centre in the target's rows: depth test, interpolation of `varyings` (given for
     /// the input vertices, in input order), fragment stage, write. Returns the number of fragments shaded.
     #[inline(always)]
@@ -224,45 +288,39 @@ impl Coverage {
         C: ColorBuffer,
         D: DepthBuffer,
     {
-        let setup = stages.interpolator.setup(self.inv_w, self.inv_area);
-        let [v0, v1, v2] = self.order.map(|i| varyings[i]);
+        let f = &self.frame;
+        let edges = &self.edges;
+        let setup = stages.interpolator.setup(f.inv_w, f.inv_area);
+        let [v0, v1, v2] = f.order.map(|i| varyings[i]);
         let (var_d1, var_d2) = (v1.sub(v0), v2.sub(v0));
         let width = target.width() as usize;
         let row0 = target.rows().start as i32;
         let mut shaded = 0u64;
-        let mut row = self.edge;
-        for y in self.y0..=self.y1 {
-            let mut e = row;
-            let mut x = self.x0;
+        for y in f.y0..=f.y1 {
+            let mut e = edges.at(f.x0, y);
+            let mut x = f.x0;
             // The covered centres of a row are contiguous (a triangle is convex): skip to them, run, stop.
-            while x <= self.x1 && (e[0] | e[1] | e[2]) < 0 {
-                e = add3(e, self.step_x);
+            while x <= f.x1 && !edges.covered(&e) {
+                e = edges.step(e);
                 x += 1;
             }
             let base = (y - row0) as usize * width;
-            while x <= self.x1 && (e[0] | e[1] | e[2]) >= 0 {
-                // Unbiased edge values: >= 0 and summing to the area, so weights are a convex combination.
-                let ef = [(e[0] - self.bias[0]) as f32, (e[1] - self.bias[1]) as f32, (e[2] - self.bias[2]) as f32];
-                let z = self.z0 + ef[1] * self.dz1 + ef[2] * self.dz2;
+            while x <= f.x1 && edges.covered(&e) {
+                let ef = edges.weights(&e);
+                let z = f.z0 + ef[1] * f.dz1 + ef[2] * f.dz2;
                 let index = base + x as usize;
                 if stages.depth.test(&mut target.depth, index, z) {
                     let (w1, w2) = stages.interpolator.weights(&setup, ef);
                     let var = v0.interpolate(&var_d1, w1, &var_d2, w2);
-                    let fragment = Fragment { x: x as u32, y: y as u32, depth: z, front_facing: self.front_facing };
+                    let fragment = Fragment { x: x as u32, y: y as u32, depth: z, front_facing: f.front_facing };
                     let color = stages.shader.fragment(&fragment, face, &var);
                     target.color.write(index, color);
                     shaded += 1;
                 }
-                e = add3(e, self.step_x);
+                e = edges.step(e);
                 x += 1;
             }
-            row = add3(row, self.step_y);
         }
         shaded
     }
-}
-
-#[inline(always)]
-fn add3(a: [i64; 3], b: [i64; 3]) -> [i64; 3] {
-    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
 }

@@ -53,6 +53,19 @@ pub enum Interpolation {
     Affine,
 }
 
+/// How edge functions are computed.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum EdgeArithmetic {
+    /// Vertices snapped to the sub-pixel grid, edge functions exact in integers: watertight, with the top-left rule
+    /// applied exactly.
+    #[default]
+    FixedPoint,
+    /// Edge functions in `f32` from unsnapped positions, as simple rasterizers compute them: no snapping
+    /// (`subpixel_bits` does not apply), but rounding can leave a crack or a doubled pixel on shared edges. For
+    /// measuring what exactness is worth.
+    Float,
+}
+
 /// Largest supported number of sub-pixel bits.
 pub const MAX_SUBPIXEL_BITS: u8 = 8;
 
@@ -77,6 +90,8 @@ pub struct DrawState {
     /// Fractional bits of the fixed-point screen coordinates that vertices snap to, `0..=8` (D3D uses 8, Vulkan
     /// requires at least 4). More bits place edges more precisely; fewer make slivers pop.
     pub subpixel_bits: u8,
+    /// Integer or `f32` edge functions.
+    pub edges: EdgeArithmetic,
 }
 
 impl Default for DrawState {
@@ -87,6 +102,7 @@ impl Default for DrawState {
             depth_test: DepthTest::Less,
             interpolation: Interpolation::PerspectiveCorrect,
             subpixel_bits: MAX_SUBPIXEL_BITS,
+            edges: EdgeArithmetic::FixedPoint,
         }
     }
 }

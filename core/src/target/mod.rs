@@ -4,6 +4,9 @@
 //! Rendering a frame as several bands, each into the same small buffers, gives exactly the pixels of rendering it
 //! whole: every pixel is computed from frame coordinates only, never from where its band starts.
 //!
+//!
+//! For anti-aliasing, render `k` times larger and average with [`downsample_rgb888`].
+//!
 //! ```
 //! use rasterm_core::target::{Rgb565, Target};
 //! // A 320x240 display drawn 16 rows at a time: 10 KiB of colour and 10 KiB of depth, not 300 KiB.
@@ -18,11 +21,13 @@
 
 mod color_buffer;
 mod depth_buffer;
+mod supersample;
 
 use core::ops::Range;
 
 pub use color_buffer::{ColorBuffer, NoColor, Rgb565, Rgb888};
 pub use depth_buffer::{DepthBuffer, NoDepth, depth_to_u16};
+pub use supersample::downsample_rgb888;
 
 use crate::math::Vec3;
 

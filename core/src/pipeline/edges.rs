@@ -1,0 +1,201 @@
+//! Edge functions over pixel centres: exact fixed-point integers (the default) or plain `f32`.
+//!
+//! A triangle covers a pixel centre when its three edge functions are all positive there, or zero on a top or left
+//! edge (the fill rule). [`FixedEdges`] snaps vertices to the sub-pixel grid and evaluates the functions exactly in
+//! `i64`, stepping by integer additions; [`FloatEdges`] evaluates them in `f32` from unsnapped positions, as
+//! simple rasterizers do: no snapping, but no exactness either (shared edges may crack or overlap, slivers flicker),
+//! which is what the accuracy report measures. Both evaluate each row from frame coordinates alone, so bands give
+//! the frame's pixels.
+
+use super::EdgeArithmetic;
+use super::raster::{Rasterizer, Setup, Snapped};
+use crate::math::float;
+
+/// Edge functions of an oriented triangle (positive inside), walked over pixel centres.
+pub(crate) trait Edges: Copy {
+    /// The three values at one pixel centre.
+    type At: Copy;
+    /// The values at the centre of pixel `(x, y)`.
+    fn at(&self, x: i32, y: i32) -> Self::At;
+    /// The values one pixel to the right.
+    fn step(&self, at: Self::At) -> Self::At;
+    /// Whether the centre is covered, fill rule included.
+    fn covered(&self, at: &Self::At) -> bool;
+    /// The three values as non-negative weights: barycentric coordinates times twice the area.
+    fn weights(&self, at: &Self::At) -> [f32; 3];
+}
+
+/// Exact edge functions in units of `2^-(S+1)` pixel, stepped incrementally.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FixedEdges {
+    /// Biased edge values at the centre of pixel (0, 0) (possibly far outside the frame: the values fit `i64`).
+    pub origin: [i64; 3],
+    pub step_x: [i64; 3],
+    pub step_y: [i64; 3],
+    /// The fill-rule bias folded into the values (0 for top-left edges, -1 otherwise).
+    pub bias: [i64; 3],
+}
+
+impl Edges for FixedEdges {
+    type At = [i64; 3];
+
+    #[inline(always)]
+    fn at(&self, x: i32, y: i32) -> [i64; 3] {
+        let (x, y) = (i64::from(x), i64::from(y));
+        [0, 1, 2].map(|k| self.origin[k] + self.step_x[k] * x + self.step_y[k] * y)
+    }
+
+    #[inline(always)]
+    fn step(&self, e: [i64; 3]) -> [i64; 3] {
+        [e[0] + self.step_x[0], e[1] + self.step_x[1], e[2] + self.step_x[2]]
+    }
+
+    #[inline(always)]
+    fn covered(&self, e: &[i64; 3]) -> bool {
+        (e[0] | e[1] | e[2]) >= 0
+    }
+
+    #[inline(always)]
+    fn weights(&self, e: &[i64; 3]) -> [f32; 3] {
+        // Unbiased: >= 0 and summing to the doubled area, so the weights are a convex combination.
+        [(e[0] - self.bias[0]) as f32, (e[1] - self.bias[1]) as f32, (e[2] - self.bias[2]) as f32]
+    }
+}
+
+/// `f32` edge functions `a x + b y + c` in pixels, each row evaluated from its own coordinates and stepped along
+/// the row.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FloatEdges {
+    pub a: [f32; 3],
+    pub b: [f32; 3],
+    /// The value at the screen origin.
+    pub c: [f32; 3],
+    /// Whether each edge is a top or left edge (owns centres exactly on it).
+    pub top_left: [bool; 3],
+}
+
+impl Edges for FloatEdges {
+    type At = [f32; 3];
+
+    #[inline(always)]
+    fn at(&self, x: i32, y: i32) -> [f32; 3] {
+        let (x, y) = (x as f32 + 0.5, y as f32 + 0.5);
+        [0, 1, 2].map(|k| self.a[k] * x + self.b[k] * y + self.c[k])
+    }
+
+    #[inline(always)]
+    fn step(&self, e: [f32; 3]) -> [f32; 3] {
+        [e[0] + self.a[0], e[1] + self.a[1], e[2] + self.a[2]]
+    }
+
+    #[inline(always)]
+    fn covered(&self, e: &[f32; 3]) -> bool {
+        (0..3).all(|k| e[k] > 0.0 || (e[k] == 0.0 && self.top_left[k]))
+    }
+
+    #[inline(always)]
+    fn weights(&self, e: &[f32; 3]) -> [f32; 3] {
+        e.map(|v| float::max(v, 0.0))
+    }
+}
+
+/// Either kind, chosen per pixel: the general path.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum DynamicEdges {
+    Fixed(FixedEdges),
+    Float(FloatEdges),
+}
+
+/// Values of [`DynamicEdges`].
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum DynamicAt {
+    Fixed([i64; 3]),
+    Float([f32; 3]),
+}
+
+impl Edges for DynamicEdges {
+    type At = DynamicAt;
+
+    #[inline(always)]
+    fn at(&self, x: i32, y: i32) -> DynamicAt {
+        match self {
+            Self::Fixed(e) => DynamicAt::Fixed(e.at(x, y)),
+            Self::Float(e) => DynamicAt::Float(e.at(x, y)),
+        }
+    }
+
+    #[inline(always)]
+    fn step(&self, at: DynamicAt) -> DynamicAt {
+        match (self, at) {
+            (Self::Fixed(e), DynamicAt::Fixed(v)) => DynamicAt::Fixed(e.step(v)),
+            (Self::Float(e), DynamicAt::Float(v)) => DynamicAt::Float(e.step(v)),
+            (_, at) => at,
+        }
+    }
+
+    #[inline(always)]
+    fn covered(&self, at: &DynamicAt) -> bool {
+        match (self, at) {
+            (Self::Fixed(e), DynamicAt::Fixed(v)) => e.covered(v),
+            (Self::Float(e), DynamicAt::Float(v)) => e.covered(v),
+            _ => false,
+        }
+    }
+
+    #[inline(always)]
+    fn weights(&self, at: &DynamicAt) -> [f32; 3] {
+        match (self, at) {
+            (Self::Fixed(e), DynamicAt::Fixed(v)) => e.weights(v),
+            (Self::Float(e), DynamicAt::Float(v)) => e.weights(v),
+            _ => [0.0; 3],
+        }
+    }
+}
+
+/// How a draw sets up edge functions: a type chosen once per draw, or the state's choice made per triangle (the
+/// general path).
+pub(crate) trait EdgeSetup: Copy {
+    /// The edge functions it produces.
+    type Edges: Edges;
+    /// Area, facing, bounding box and edge functions of a triangle.
+    fn setup(&self, raster: &Rasterizer, v: [Snapped; 3]) -> Setup<Self::Edges>;
+}
+
+/// Exact fixed point ([`EdgeArithmetic::FixedPoint`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FixedPoint;
+
+impl EdgeSetup for FixedPoint {
+    type Edges = FixedEdges;
+    #[inline(always)]
+    fn setup(&self, raster: &Rasterizer, v: [Snapped; 3]) -> Setup<FixedEdges> {
+        raster.setup_fixed(v)
+    }
+}
+
+/// Plain `f32` ([`EdgeArithmetic::Float`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FloatingPoint;
+
+impl EdgeSetup for FloatingPoint {
+    type Edges = FloatEdges;
+    #[inline(always)]
+    fn setup(&self, raster: &Rasterizer, v: [Snapped; 3]) -> Setup<FloatEdges> {
+        raster.setup_float(v)
+    }
+}
+
+/// The state's choice, wrapped so one loop handles both.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct DynamicEdgeSetup(pub EdgeArithmetic);
+
+impl EdgeSetup for DynamicEdgeSetup {
+    type Edges = DynamicEdges;
+    #[inline(always)]
+    fn setup(&self, raster: &Rasterizer, v: [Snapped; 3]) -> Setup<DynamicEdges> {
+        match self.0 {
+            EdgeArithmetic::FixedPoint => raster.setup_fixed(v).map(DynamicEdges::Fixed),
+            EdgeArithmetic::Float => raster.setup_float(v).map(DynamicEdges::Float),
+        }
+    }
+}

@@ -1,0 +1,55 @@
+//! Supersampling: a frame rendered at `k` times the resolution, averaged down to pixels.
+//!
+//! Render into a target `k` times wider and higher (or into the matching band: rows `y0 * k .. y1 * k` of the
+//! large frame for rows `y0 .. y1` of the small one), then [`downsample_rgb888`] averages each `k x k` block: a box
+//! filter over `k^2` ordered samples per pixel.
+
+use super::TargetError;
+
+/// Averages `factor x factor` blocks of `0x00RRGGBB` samples (`sample_width` per row) into `out`, one pixel per
+/// block, each channel rounded to nearest.
+///
+/// # Errors
+/// [`TargetError::ColorLength`] unless the samples form whole blocks and `out` holds exactly one pixel per block;
+/// [`TargetError::Empty`] for a factor or width of zero.
+///
+/// # Examples
+/// ```
+/// use rasterm_core::target::downsample_rgb888;
+/// // Two 2x2 blocks: all red, and half red half black.
+/// let samples = [0xFF0000, 0xFF0000, 0xFF0000, 0x000000, 0xFF0000, 0xFF0000, 0xFF0000, 0x000000];
+/// let mut pixels = [0u32; 2];
+/// downsample_rgb888(&samples, 4, 2, &mut pixels).unwrap();
+/// assert_eq!(pixels, [0xFF0000, 0x800000]);
+/// ```
+pub fn downsample_rgb888(samples: &[u32], sample_width: u32, factor: u32, out: &mut [u32]) -> Result<(), TargetError> {
+    if factor == 0 || sample_width == 0 {
+        return Err(TargetError::Empty);
+    }
+    let (f, sw) = (factor as usize, sample_width as usize);
+    let sample_height = samples.len() / sw;
+    let (w, h) = (sw / f, sample_height / f);
+    if sw % f != 0 || samples.len() != sw * sample_height || sample_height % f != 0 {
+        return Err(TargetError::ColorLength { expected: w * f * h * f, actual: samples.len() });
+    }
+    if out.len() != w * h {
+        return Err(TargetError::ColorLength { expected: w * h, actual: out.len() });
+    }
+    let n = (f * f) as u32;
+    for (y, row) in out.chunks_exact_mut(w).enumerate() {
+        for (x, pixel) in row.iter_mut().enumerate() {
+            let mut sum = [0u32; 3];
+            for sy in 0..f {
+                let start = (y * f + sy) * sw + x * f;
+                for &s in &samples[start..start + f] {
+                    sum[0] += (s >> 16) & 0xFF;
+                    sum[1] += (s >> 8) & 0xFF;
+                    sum[2] += s & 0xFF;
+                }
+            }
+            let [r, g, b] = sum.map(|c| (c + n / 2) / n);
+            *pixel = (r << 16) | (g << 8) | b;
+        }
+    }
+    Ok(())
+}

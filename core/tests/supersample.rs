@@ -1,0 +1,55 @@
+//! Supersampling: render k times larger, average k x k blocks.
+
+mod common;
+
+use common::ScreenSpace;
+use rasterm_core::math::Vec3;
+use rasterm_core::mesh::{Indices, Mesh};
+use rasterm_core::pipeline::{Cull, DrawState, draw};
+use rasterm_core::target::{NoDepth, Rgb888, Target, TargetError, downsample_rgb888};
+
+/// A white rectangle from x = 0 to x = 1.5 (pixels of the final 2x1 image) on black, rendered at `k` times the
+/// resolution and averaged: pixel 0 is white, pixel 1 is exactly half covered.
+fn half_covered(k: u32) -> [u32; 2] {
+    let (w, h) = (2 * k, k);
+    let x = 1.5 * k as f32;
+    let positions = [(0.0, 0.0), (0.0, h as f32), (x, h as f32), (0.0, 0.0), (x, h as f32), (x, 0.0)]
+        .map(|(x, y)| Vec3::new(x, y, 0.5));
+    let mesh = Mesh::new(&positions, Indices::Sequential).unwrap();
+    let mut samples = vec![0u32; (w * h) as usize];
+    let mut target = Target::new(Rgb888(&mut samples), NoDepth, w, h).unwrap();
+    target.clear(Vec3::ZERO);
+    let state = DrawState { cull: Cull::None, ..DrawState::default() };
+    draw(&mut target, &mesh, &ScreenSpace { width: w as f32, height: h as f32 }, &state).unwrap();
+    let mut pixels = [0u32; 2];
+    downsample_rgb888(&samples, w, k, &mut pixels).unwrap();
+    pixels
+}
+
+#[test]
+fn a_half_covered_pixel_is_half_its_colour() {
+    // 1 sample: the centre decides. 2x2, 4x4: half the samples, 127.5 rounded to 128.
+    assert_eq!(half_covered(1), [0xFFFFFF, 0x000000]);
+    assert_eq!(half_covered(2), [0xFFFFFF, 0x808080]);
+    assert_eq!(half_covered(4), [0xFFFFFF, 0x808080]);
+}
+
+#[test]
+fn sizes_must_form_whole_blocks() {
+    let samples = [0u32; 12];
+    // 6 wide, 2 high: three 2x2 blocks.
+    assert!(downsample_rgb888(&samples, 6, 2, &mut [0u32; 3]).is_ok());
+    // The output must hold one pixel per block.
+    assert_eq!(
+        downsample_rgb888(&samples, 6, 2, &mut [0u32; 2]).unwrap_err(),
+        TargetError::ColorLength { expected: 3, actual: 2 }
+    );
+    // 4 wide makes 3 rows: not whole 2x2 blocks.
+    assert_eq!(
+        downsample_rgb888(&samples, 4, 2, &mut [0u32; 2]).unwrap_err(),
+        TargetError::ColorLength { expected: 8, actual: 12 }
+    );
+    // 5 wide: not whole blocks either.
+    assert!(matches!(downsample_rgb888(&samples, 5, 2, &mut [0u32; 2]), Err(TargetError::ColorLength { .. })));
+    assert_eq!(downsample_rgb888(&samples, 6, 0, &mut [0u32; 3]).unwrap_err(), TargetError::Empty);
+}
