@@ -122,7 +122,8 @@ impl Rasterizer {
     /// counter-clockwise on the y-down screen).
     #[inline(always)]
     fn facing(&self, area_positive: bool) -> Option<bool> {
-        let front_facing = !area_positive == (self.front_face == Winding::CounterClockwise);
+        // Counter-clockwise on the y-up NDC plane is a negative area here.
+        let front_facing = area_positive != (self.front_face == Winding::CounterClockwise);
         match self.cull {
             Cull::Back if !front_facing => None,
             Cull::Front if front_facing => None,
