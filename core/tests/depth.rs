@@ -85,3 +85,31 @@ fn u16_depth_quantisation() {
     assert_eq!(depth_to_u16(2.0), u16::MAX);
     assert_eq!(depth_to_u16(f32::NAN), 0);
 }
+
+/// Depth is interpolated from plane equations in `f32`, which can round a hair past the vertices' range: with
+/// vertices on pixel centres at depths 0, 0 and about 1e-30, pixels came out at -9.4e-38 before the depth stage
+/// clamped them. Stored depth never leaves `[0, 1]`.
+#[test]
+fn stored_depth_never_goes_below_zero() {
+    let mut rng = 0x2545_F491_4F6C_DD1Du64;
+    let mut next = || {
+        rng ^= rng << 13;
+        rng ^= rng >> 7;
+        rng ^= rng << 17;
+        (rng >> 40) as f32 / (1u64 << 24) as f32
+    };
+    for _ in 0..2000 {
+        let tiny = 1e-30 * (1.0 + next());
+        let corner = |z: f32, next: &mut dyn FnMut() -> f32| {
+            Vec3::new((16.0 * next()).floor() + 0.5, (16.0 * next()).floor() + 0.5, z)
+        };
+        let positions = [corner(tiny, &mut next), corner(0.0, &mut next), corner(0.0, &mut next)];
+        let mesh = Mesh::new(&positions, Indices::Sequential).unwrap();
+        let mut color = vec![0u32; 16 * 16];
+        let mut depth = vec![1f32; 16 * 16];
+        let mut target = Target::new(Rgb888(&mut color), &mut depth[..], 16, 16).unwrap();
+        let state = DrawState { cull: rasterm_core::pipeline::Cull::None, ..DrawState::default() };
+        draw(&mut target, &mesh, &ScreenSpace { width: 16.0, height: 16.0 }, &state).unwrap();
+        assert!(depth.iter().all(|&z| (0.0..=1.0).contains(&z)), "{positions:?}: {depth:?}");
+    }
+}

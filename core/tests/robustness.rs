@@ -8,7 +8,9 @@ use rasterm_core::camera::{look_at, perspective};
 use rasterm_core::math::{Mat4, Vec2, Vec3};
 use rasterm_core::mesh::{Attributes, Indices, Mesh, MeshError};
 use rasterm_core::pipeline::{DrawError, DrawState, DrawStats, draw};
-use rasterm_core::shading::{Effects, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh};
+use rasterm_core::shading::{
+    Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh, draw_mesh_unspecialised,
+};
 use rasterm_core::target::{MAX_DIMENSION, NoColor, NoDepth, Rgb888, Target, TargetError};
 use rasterm_core::texture::{FilterMode, Texture, WrapMode};
 
@@ -81,20 +83,30 @@ fn non_finite_attributes_skip_triangles_only_where_used() {
             .unwrap()
             .with_uvs(&uvs)
             .unwrap();
-        let lighting = Lighting { ambient: Vec3::splat(0.3), lights: &[] };
+        let lights = [Light::directional(Vec3::new(1.0, 1.0, 1.0), Vec3::splat(0.7))];
+        let lighting = Lighting { ambient: Vec3::splat(0.3), lights: &lights };
         let effects = Effects { shading, material: Material::default(), lighting, texture };
-        let mut color = vec![0u32; 48 * 48];
-        let mut depth = vec![0f32; 48 * 48];
-        let mut target = Target::new(Rgb888(&mut color), &mut depth[..], 48, 48).unwrap();
-        target.clear(Vec3::ZERO);
         let state = DrawState { cull: rasterm_core::pipeline::Cull::None, ..DrawState::default() };
-        let stats = draw_mesh(&mut target, &mesh, &transforms, &effects, &state).unwrap();
+        let [(color, stats), (general_color, general_stats)] = [false, true].map(|general| {
+            let mut color = vec![0u32; 48 * 48];
+            let mut depth = vec![0f32; 48 * 48];
+            let mut target = Target::new(Rgb888(&mut color), &mut depth[..], 48, 48).unwrap();
+            target.clear(Vec3::ZERO);
+            let draw = if general { draw_mesh_unspecialised } else { draw_mesh };
+            let stats = draw(&mut target, &mesh, &transforms, &effects, &state).unwrap();
+            (color, stats)
+        });
+        assert!(color == general_color, "{shading:?}: the specialised and general draws differ");
+        assert_eq!(stats, general_stats, "{shading:?}");
         (color, stats.invalid)
     };
     for (shading, texture, reads) in [
         (ShadingModel::Unlit, None, vec![]),
         (ShadingModel::Flat, None, vec![]), // flat shading reads no vertex normals
+        (ShadingModel::Gouraud, None, vec![bad_normal]),
         (ShadingModel::Phong, None, vec![bad_normal]),
+        (ShadingModel::Normals, None, vec![bad_normal]),
+        (ShadingModel::Depth { near: 3.0, far: 5.0 }, None, vec![]),
         (ShadingModel::Unlit, Some(texture), vec![bad_uv]),
         (ShadingModel::Phong, Some(texture), vec![bad_normal, bad_uv]),
     ] {

@@ -72,3 +72,12 @@ fn culled_triangles_draw_no_edges() {
     assert_eq!(wire(8, 8, &cw, &screen(8.0, 8.0), &back).1, 0);
     assert!(wire(8, 8, &cw, &screen(8.0, 8.0), &no_cull()).1 > 0);
 }
+
+/// A nearly horizontal edge crosses the target's first and last rows billions of columns away: the column range
+/// derived from those crossings saturates instead of overflowing, and the edge along row 0 is drawn in full.
+#[test]
+fn nearly_horizontal_edges_with_far_row_crossings_are_drawn() {
+    let tri = [Vec3::new(-2000.0, 1.0, 0.5), Vec3::new(2000.0, 0.99999994, 0.5), Vec3::new(0.0, -0.5, 0.5)];
+    let (c, _) = wire(8, 8, &tri, &Mat4::IDENTITY, &no_cull());
+    assert!(c[..8].iter().all(|&n| n > 0), "row 0 is lit:\n{}", ascii(&c, 8).join("\n"));
+}

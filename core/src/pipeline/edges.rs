@@ -70,8 +70,10 @@ pub(crate) struct FloatEdges {
     pub b: [f32; 3],
     /// The value at the screen origin.
     pub c: [f32; 3],
-    /// Whether each edge is a top or left edge (owns centres exactly on it).
-    pub top_left: [bool; 3],
+    /// A centre is inside edge `k` when its value exceeds `threshold[k]`: 0 for an edge that does not own the
+    /// centres exactly on it, and minus the smallest subnormal (no `f32` lies between it and 0, so the test
+    /// becomes `>= 0`) for a top or left edge, which does. One comparison per edge, no branch.
+    pub threshold: [f32; 3],
 }
 
 impl Edges for FloatEdges {
@@ -90,7 +92,8 @@ impl Edges for FloatEdges {
 
     #[inline(always)]
     fn covered(&self, e: &[f32; 3]) -> bool {
-        (0..3).all(|k| e[k] > 0.0 || (e[k] == 0.0 && self.top_left[k]))
+        // `&`, not `&&`: three comparisons, no branches.
+        (e[0] > self.threshold[0]) & (e[1] > self.threshold[1]) & (e[2] > self.threshold[2])
     }
 
     #[inline(always)]

@@ -135,8 +135,9 @@ impl Pen {
             } else {
                 let c0 = a.x + (self.row0 as f32 - a.y) / slope;
                 let c1 = a.x + (self.row1 as f32 - a.y) / slope;
+                // A nearly horizontal line crosses the rows far outside `i32`: the conversions saturate.
                 let (c0, c1) = (float::min(c0, c1), float::max(c0, c1));
-                (lo.max(float::floor_to_i32(c0) - 1), hi.min(float::floor_to_i32(c1) + 2))
+                (lo.max(float::floor_to_i32(c0).saturating_sub(1)), hi.min(float::floor_to_i32(c1).saturating_add(2)))
             };
             self.plot_span(target, lo, hi, &a, &b, slope, |major, minor| (major, minor))
         } else {

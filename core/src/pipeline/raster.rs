@@ -205,11 +205,12 @@ impl Rasterizer {
         }
         let order = if area < 0.0 { [1, 0, 2] } else { [0, 1, 2] };
         let verts = order.map(|i| [a, b, c][i]);
-        let mut edges = FloatEdges { a: [0.0; 3], b: [0.0; 3], c: [0.0; 3], top_left: [false; 3] };
+        let mut edges = FloatEdges { a: [0.0; 3], b: [0.0; 3], c: [0.0; 3], threshold: [0.0; 3] };
         for k in 0..3 {
             let (p, q) = (verts[(k + 1) % 3], verts[(k + 2) % 3]);
             let (dx, dy) = (q.0 - p.0, q.1 - p.1);
-            edges.top_left[k] = dy < 0.0 || (dy == 0.0 && dx > 0.0);
+            let top_left = dy < 0.0 || (dy == 0.0 && dx > 0.0);
+            edges.threshold[k] = if top_left { -f32::from_bits(1) } else { 0.0 };
             // E(x, y) = dx (y - p.y) - dy (x - p.x) = -dy x + dx y + (dy p.x - dx p.y).
             edges.a[k] = -dy;
             edges.b[k] = dx;

@@ -37,7 +37,9 @@ impl<T: TextureStage, H: Highlights> Shader for GouraudShader<'_, T, H> {
     fn varyings(&self, mesh: &Mesh<'_>, i: usize) -> Self::Varyings {
         let s = &self.surface;
         let n = s.normal(mesh, i);
-        let diffuse = s.lighting.diffuse(n);
+        // A non-finite normal must reach the varyings, so that the pipeline skips its triangle: the light alone
+        // would hide it (`max(NaN, 0)` is 0) and draw the triangle unlit.
+        let diffuse = if n.is_finite() { s.lighting.diffuse(n) } else { n };
         let specular = H::capture(|| s.lighting.specular(n, s.eye_direction(s.world(mesh, i)), s.material.shininess));
         (diffuse, specular, self.texture.vertex(mesh, i))
     }

@@ -1,0 +1,205 @@
+//! Writes seed corpora for both fuzz targets: `cargo run --release --example seeds` from `fuzz/` (any toolchain).
+//!
+//! - `corpus/obj_load/`: hand-written OBJ/MTL files (quads, negative and relative indices, `v/vt/vn` forms,
+//!   groups and `usemtl` switches, `mtllib` in a subdirectory, `map_Kd` with options, CRLF, vertex colours, `l`
+//!   lines, a polygon, short faces) in the target's length-prefixed layout, with valid and corrupt textures.
+//! - `corpus/raster/`: scenes found by decoding pseudo-random bytes exactly as the target does and keeping those
+//!   that shade at least one pixel, one per kind (shading model, texture, depth test, band, wireframe, clipping).
+//!   A candidate that breaks an invariant is not a seed: it is saved to `artifacts/raster/seed-panic-*` and
+//!   reported, for `cargo +nightly fuzz run raster artifacts/raster/seed-panic-...` to reproduce.
+//!
+//! Deterministic: the same files every run. Corpora are not committed (see `.gitignore`).
+
+use std::collections::BTreeSet;
+use std::fs;
+use std::path::Path;
+
+use arbitrary::{Arbitrary, Unstructured};
+use rasterm_fuzz::obj_load::encode;
+use rasterm_fuzz::raster::{Input, run};
+
+const MTL: &str = "\
+# two materials, one textured
+newmtl red
+Kd 1 0 0
+Ks 0.5 0.5 0.5
+Ns 20
+newmtl wood
+Kd 0.8 0.6 0.4
+map_Kd ok.png
+";
+
+const CUBE_QUADS: &str = "\
+# a unit cube of quads with texture coordinates and normals
+mtllib m.mtl
+o cube
+v -1 -1 -1
+v 1 -1 -1
+v 1 1 -1
+v -1 1 -1
+v -1 -1 1
+v 1 -1 1
+v 1 1 1
+v -1 1 1
+vt 0 0
+vt 1 0
+vt 1 1
+vt 0 1
+vn 0 0 1
+vn 0 0 -1
+vn 1 0 0
+vn -1 0 0
+vn 0 1 0
+vn 0 -1 0
+usemtl wood
+f 5/1/1 6/2/1 7/3/1 8/4/1
+f 2/1/2 1/2/2 4/3/2 3/4/2
+usemtl red
+f 6/1/3 2/2/3 3/3/3 7/4/3
+f 1/1/4 5/2/4 8/3/4 4/4/4
+g top
+f 8/1/5 7/2/5 3/3/5 4/4/5
+g bottom
+f 1/1/6 2/2/6 6/3/6 5/4/6
+";
+
+const NEGATIVE: &str = "\
+# relative (negative) indices, v//vn and v/vt forms, a pentagon
+mtllib lib/m.mtl
+v 0 0 0
+v 1 0 0
+v 1 1 0
+vn 0 0 1
+f -3//-1 -2//-1 -1//-1
+v 0 0 1
+v 1 0 1
+v 1 1 1
+v 0.5 1.5 1
+v -0.5 0.8 1
+vt 0 0
+vt 1 0
+vt 1 1
+vt 0.5 1
+vt 0 0.5
+usemtl wood
+f -5/-5 -4/-4 -3/-3 -2/-2 -1/-1
+";
+
+const ODD: &str = "v 0 0 0 1\r\nv 1 0 0 2\r\nv 0 1 0 0.5\r\nv 0 0 1 1 0 0\r\n# vertex colours above, CRLF here\r\n\
+l 1 2 3\r\nf 1 2\r\nf 1 2 3\r\n  g  indented\r\nf 2 3 4\r\ns off\r\nusemtl nothing\r\nf 1 3 4\r\n";
+
+const HUGE: &str = "\
+v 1e15 0 0
+v -1e15 1e15 0
+v 0 -1e15 1e-30
+v 1e-38 1e-38 1e-38
+f 1 2 3
+f 2 3 4
+f 4 1 2
+";
+
+const TGA_MTL: &str =
+    "newmtl t\nmap_Kd -s 2 2 1 -o 0.5 0 0 ok.tga\nnewmtl raw\nmap_Kd t.png\nnewmtl rawtga\nmap_Kd t.tga\n";
+
+const TEXTURED_TRIS: &str = "\
+mtllib m.mtl
+v 0 0 0
+v 1 0 0
+v 0 1 0
+v 1 1 0
+vt 0 0
+vt 2 0
+vt 0 2
+vt -1 3
+usemtl t
+f 1/1 2/2 3/3
+usemtl raw
+f 2/2 4/4 3/3
+usemtl rawtga
+f 1/1 4/4 3/3
+";
+
+fn write(dir: &Path, name: &str, bytes: &[u8]) {
+    fs::write(dir.join(name), bytes).unwrap_or_else(|e| panic!("writing {}: {e}", dir.join(name).display()));
+}
+
+fn obj_seeds(dir: &Path) -> usize {
+    // 2x2 texels for the generated ok.png/ok.tga: width byte, height byte, then RGB.
+    let texture: &[u8] = &[1, 1, 255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255];
+    // A valid 1x1 24-bit TGA as the raw texture (t.tga), and a PNG signature with garbage after it (t.png).
+    let raw_tga: &[u8] = &[0, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 1, 0, 24, 0x20, 10, 20, 30];
+    let broken_png: &[u8] = b"\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\0\x02\0\0\0\x02\x08\x02\0\0\0garbage";
+    let seeds: [(&str, u8, &str, &str, &[u8]); 8] = [
+        ("cube_quads_phong_textured", 0x13, CUBE_QUADS, MTL, texture),
+        ("cube_quads_wireframe_ortho", 0x3A, CUBE_QUADS, MTL, texture),
+        ("negative_indices_lib_mtl", 0x10, NEGATIVE, MTL, texture),
+        ("odd_statements_crlf", 0x01, ODD, "", b""),
+        ("huge_coordinates_depth", 0x04, HUGE, "", b""),
+        ("textured_tga_and_raw", 0x10, TEXTURED_TRIS, TGA_MTL, raw_tga),
+        ("textured_broken_png", 0x12, TEXTURED_TRIS, TGA_MTL, broken_png),
+        ("normals_view_no_mtl", 0x05, NEGATIVE, "", b""),
+    ];
+    for (name, config, obj, mtl, tex) in seeds {
+        let data = encode(config, obj.as_bytes(), mtl.as_bytes(), tex);
+        assert!(rasterm_fuzz::obj_load::run(&data), "seed {name} does not load");
+        write(dir, name, &data);
+    }
+    seeds.len()
+}
+
+/// splitmix64.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+}
+
+fn raster_seeds(dir: &Path, panics: &Path) -> usize {
+    let mut rng = Rng(0x5EED_0F7A_57E2);
+    let mut kinds = BTreeSet::new();
+    let mut written = 0;
+    for _ in 0..2_000_000 {
+        let len = 96 + (rng.next() % 320) as usize;
+        let bytes: Vec<u8> = (0..len).map(|_| rng.next() as u8).collect();
+        let Ok(input) = Input::arbitrary_take_rest(Unstructured::new(&bytes)) else { continue };
+        let kind = input.kind();
+        // A candidate that breaks an invariant is a finding for the fuzzer, not a seed: report it and go on.
+        let result = std::panic::catch_unwind(|| run(input));
+        let stats = match result {
+            Ok(Some(stats)) if stats.fragments > 0 => stats,
+            Ok(_) => continue,
+            Err(_) => {
+                let name = format!("seed-panic-{:016x}", rng.next());
+                eprintln!("a random candidate broke an invariant: saved as {}", panics.join(&name).display());
+                fs::create_dir_all(panics).expect("creating artifacts/raster");
+                write(panics, &name, &bytes);
+                continue;
+            }
+        };
+        let kind = kind | u32::from(stats.clipped > 0) << 10;
+        if !kinds.insert(kind) {
+            continue;
+        }
+        write(dir, &format!("scene-{kind:03x}-{}px", stats.fragments), &bytes);
+        written += 1;
+    }
+    written
+}
+
+fn main() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus");
+    let (obj, raster) = (root.join("obj_load"), root.join("raster"));
+    fs::create_dir_all(&obj).expect("creating corpus/obj_load");
+    fs::create_dir_all(&raster).expect("creating corpus/raster");
+    // The checks print panics of candidates they catch; keep the output to the summary.
+    std::panic::set_hook(Box::new(|info| eprintln!("{info}")));
+    let o = obj_seeds(&obj);
+    let r = raster_seeds(&raster, &Path::new(env!("CARGO_MANIFEST_DIR")).join("artifacts").join("raster"));
+    println!("wrote {o} seeds to {} and {r} to {}", obj.display(), raster.display());
+}

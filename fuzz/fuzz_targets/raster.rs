@@ -1,0 +1,9 @@
+//! `cargo +nightly fuzz run raster`: see `src/raster.rs` and docs/fuzzing.md.
+
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+
+fuzz_target!(|input: rasterm_fuzz::raster::Input| {
+    rasterm_fuzz::raster::run(input);
+});

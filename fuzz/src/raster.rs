@@ -1,0 +1,617 @@
+//! The `raster` target: a small arbitrary scene through `rasterm_core::shading::draw_mesh`,
+//! `draw_mesh_unspecialised` and `pipeline::draw_wireframe`, checking the core's documented invariants.
+//!
+//! [`Input`] decodes (with `arbitrary`) into a camera, a model matrix, a frame of 1..=64 x 1..=64 pixels with an
+//! optional band of rows, a `DrawState` (sub-pixel bits mostly 0..=8, sometimes above; fixed-point or `f32` edge
+//! arithmetic), a few vertices with
+//! normals, UVs and colours, `u16`/`u32` indices (some out of range), an optional tiny texture, a shading model,
+//! a material, lights and a wireframe style. Every float may be anything: small values, NaN, infinities, huge,
+//! tiny or raw bit patterns. [`run`] draws it and panics when an invariant fails; docs/fuzzing.md lists them.
+
+use arbitrary::{Arbitrary, Result, Unstructured};
+use rasterm_core::camera::{look_at, orthographic, perspective};
+use rasterm_core::color::pack_rgb888;
+use rasterm_core::math::{Mat4, Vec2, Vec3};
+use rasterm_core::mesh::{Indices, Mesh};
+use rasterm_core::pipeline::{
+    Cull, DepthTest, DrawError, DrawState, DrawStats, EdgeArithmetic, Interpolation, LineStyle, MAX_SUBPIXEL_BITS,
+    Winding, draw_wireframe,
+};
+use rasterm_core::shading::{
+    Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh, draw_mesh_unspecialised,
+};
+use rasterm_core::target::{ColorBuffer, DepthBuffer, Rgb888, Target};
+use rasterm_core::texture::{FilterMode, Texture, WrapMode};
+
+const MAX_VERTICES: usize = 24;
+const MAX_TRIANGLES: usize = 16;
+const MAX_LIGHTS: usize = 3;
+/// The colour targets are cleared to (its packed form is `0x4080BF`).
+const CLEAR: Vec3 = Vec3::new(0.25, 0.5, 0.75);
+/// Most pieces a clipped triangle is cut into: a polygon of at most 3 + 6 vertices, fanned (the core's
+/// `MAX_CLIPPED - 2`, which is private).
+const MAX_PIECES: u64 = 7;
+
+// ---------------------------------------------------------------------------------------------------------------
+// Decoding
+// ---------------------------------------------------------------------------------------------------------------
+
+/// An `f32` that is mostly a small, "reasonable" value, sometimes a special one, sometimes raw bits.
+#[derive(Clone, Copy, Debug)]
+struct F(f32);
+
+const SPECIAL: [f32; 24] = [
+    f32::NAN,
+    f32::INFINITY,
+    f32::NEG_INFINITY,
+    f32::MAX,
+    f32::MIN,
+    f32::MIN_POSITIVE,
+    -f32::MIN_POSITIVE,
+    1e-45, // the smallest subnormal
+    -0.0,
+    0.0,
+    1.0,
+    -1.0,
+    0.5,
+    f32::EPSILON,
+    1e-20,
+    1e20,
+    -1e20,
+    1e38,
+    16384.0, // the guard band
+    -16384.0,
+    16384.5,
+    8_388_608.0, // 2^23
+    core::f32::consts::PI,
+    core::f32::consts::FRAC_PI_2,
+];
+
+impl<'a> Arbitrary<'a> for F {
+    fn arbitrary(u: &mut Unstructured<'a>) -> Result<Self> {
+        let tag: u8 = u.arbitrary()?;
+        Ok(F(match tag % 16 {
+            // Small values in 1/256 steps, |x| < 128: most scenes stay visible.
+            0..=8 => f32::from(u.arbitrary::<i16>()?) / 256.0,
+            // Small integers.
+            9..=11 => f32::from(u.arbitrary::<i8>()?),
+            12..=13 => SPECIAL[usize::from(u.arbitrary::<u8>()?) % SPECIAL.len()],
+            _ => f32::from_bits(u.arbitrary()?),
+        }))
+    }
+}
+
+#[derive(Arbitrary, Clone, Copy, Debug)]
+struct V3(F, F, F);
+
+impl V3 {
+    fn get(self) -> Vec3 {
+        Vec3::new(self.0.0, self.1.0, self.2.0)
+    }
+}
+
+#[derive(Arbitrary, Clone, Copy, Debug)]
+struct V2(F, F);
+
+#[derive(Arbitrary, Debug)]
+enum ProjectionIn {
+    Perspective { fovy: F, aspect: Option<F>, near: F, far: F },
+    Orthographic { left: F, right: F, bottom: F, top: F, near: F, far: F },
+}
+
+#[derive(Arbitrary, Debug)]
+struct CameraIn {
+    eye: V3,
+    target: V3,
+    up: V3,
+    projection: ProjectionIn,
+}
+
+#[derive(Arbitrary, Debug)]
+enum ModelIn {
+    Identity,
+    Scale(V3),
+    Translate(V3),
+    Matrix([[F; 4]; 4]),
+}
+
+#[derive(Arbitrary, Debug)]
+enum CullIn {
+    None,
+    Back,
+    Front,
+}
+
+#[derive(Arbitrary, Debug)]
+struct StateIn {
+    cull: CullIn,
+    clockwise: bool,
+    depth_off: bool,
+    affine: bool,
+    subpixel_bits: u8,
+    float_edges: bool,
+}
+
+impl StateIn {
+    fn get(&self) -> DrawState {
+        DrawState {
+            cull: match self.cull {
+                CullIn::None => Cull::None,
+                CullIn::Back => Cull::Back,
+                CullIn::Front => Cull::Front,
+            },
+            front_face: if self.clockwise { Winding::Clockwise } else { Winding::CounterClockwise },
+            depth_test: if self.depth_off { DepthTest::Off } else { DepthTest::Less },
+            interpolation: if self.affine { Interpolation::Affine } else { Interpolation::PerspectiveCorrect },
+            // Mostly valid (0..=8); 0xF0.. gives 9 and values up to 255, which must be refused.
+            subpixel_bits: match self.subpixel_bits {
+                b @ 0..=0xEF => b % (MAX_SUBPIXEL_BITS + 1),
+                0xF0 => MAX_SUBPIXEL_BITS + 1,
+                b => b,
+            },
+            edges: if self.float_edges { EdgeArithmetic::Float } else { EdgeArithmetic::FixedPoint },
+        }
+    }
+}
+
+#[derive(Arbitrary, Debug)]
+struct VertexIn {
+    position: V3,
+    normal: V3,
+    uv: V2,
+    color: V3,
+}
+
+/// An index: mostly in range or one past the end, sometimes any `u16` (mostly out of range).
+#[derive(Arbitrary, Clone, Copy, Debug)]
+struct IndexIn(u16);
+
+impl IndexIn {
+    fn get(self, vertices: usize) -> u16 {
+        if self.0 & 0x8000 == 0 { (usize::from(self.0) % (vertices + 1)) as u16 } else { self.0 }
+    }
+}
+
+#[derive(Arbitrary, Debug)]
+enum IndicesIn {
+    Sequential,
+    U16(Vec<IndexIn>),
+    U32(Vec<IndexIn>),
+}
+
+#[derive(Arbitrary, Debug)]
+struct TextureIn {
+    width: u8,
+    height: u8,
+    texels: Vec<u32>,
+    bilinear: bool,
+    clamp: bool,
+}
+
+#[derive(Arbitrary, Debug)]
+enum ShadingIn {
+    Unlit,
+    Flat,
+    Gouraud,
+    Phong,
+    Depth { near: F, far: F },
+    Normals,
+}
+
+#[derive(Arbitrary, Debug)]
+enum LightIn {
+    /// Through `Light::directional` (normalised).
+    Directional(V3, V3),
+    /// Built by hand: any vector, even NaN.
+    Raw(V3, V3),
+}
+
+/// One fuzz input: a scene to draw.
+#[derive(Arbitrary, Debug)]
+pub struct Input {
+    camera: CameraIn,
+    model: ModelIn,
+    width: u8,
+    height: u8,
+    band: Option<(u8, u8)>,
+    state: StateIn,
+    vertices: Vec<VertexIn>,
+    indices: IndicesIn,
+    normals: bool,
+    uvs: bool,
+    colors: bool,
+    texture: Option<TextureIn>,
+    shading: ShadingIn,
+    material_color: V3,
+    material_specular: V3,
+    shininess: F,
+    ambient: V3,
+    lights: Vec<LightIn>,
+    wireframe: Option<(V3, F)>,
+}
+
+impl Input {
+    /// A small number naming the kind of scene (shading model, texture, depth test, band, wireframe, projection,
+    /// index type), for picking varied seeds.
+    pub fn kind(&self) -> u32 {
+        let shading = match self.shading {
+            ShadingIn::Unlit => 0,
+            ShadingIn::Flat => 1,
+            ShadingIn::Gouraud => 2,
+            ShadingIn::Phong => 3,
+            ShadingIn::Depth { .. } => 4,
+            ShadingIn::Normals => 5,
+        };
+        let indices = match self.indices {
+            IndicesIn::Sequential => 0,
+            IndicesIn::U16(_) => 1,
+            IndicesIn::U32(_) => 2,
+        };
+        shading
+            | u32::from(self.texture.is_some() && self.uvs) << 3
+            | u32::from(self.state.depth_off) << 4
+            | u32::from(self.band.is_some()) << 5
+            | u32::from(self.wireframe.is_some()) << 6
+            | u32::from(matches!(self.camera.projection, ProjectionIn::Orthographic { .. })) << 7
+            | indices << 8
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Buffers that check the core's index contract
+// ---------------------------------------------------------------------------------------------------------------
+
+/// RGB888 like `Rgb888`, but a write at an index outside the buffer is a panic instead of being ignored: the core
+/// promises to write only below the length the target was checked against.
+struct CheckedColor<'a>(&'a mut [u32]);
+
+impl ColorBuffer for CheckedColor<'_> {
+    fn pixel_count(&self) -> Option<usize> {
+        Some(self.0.len())
+    }
+    fn write(&mut self, index: usize, color: Vec3) {
+        let len = self.0.len();
+        assert!(index < len, "colour write at index {index} outside a buffer of {len} pixels");
+        self.0[index] = pack_rgb888(color);
+    }
+    fn fill(&mut self, color: Vec3) {
+        self.0.fill(pack_rgb888(color));
+    }
+}
+
+/// `f32` depth like `&mut [f32]`, panicking on an index outside the buffer.
+struct CheckedDepth<'a>(&'a mut [f32]);
+
+impl DepthBuffer for CheckedDepth<'_> {
+    fn pixel_count(&self) -> Option<usize> {
+        Some(self.0.len())
+    }
+    fn test_and_set(&mut self, index: usize, z: f32) -> bool {
+        let len = self.0.len();
+        assert!(index < len, "depth test at index {index} outside a buffer of {len} pixels");
+        let d = &mut self.0[index];
+        if z < *d {
+            *d = z;
+            true
+        } else {
+            false
+        }
+    }
+    fn clear(&mut self) {
+        self.0.fill(1.0);
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Invariants
+// ---------------------------------------------------------------------------------------------------------------
+
+/// Every input triangle ends in exactly one bucket.
+fn check_stats(what: &str, s: &DrawStats, triangles: u64) {
+    assert_eq!(s.triangles_in, triangles, "{what}: triangles_in, {s:?}");
+    assert_eq!(
+        s.invalid + s.outside + s.culled + s.degenerate + s.rasterized,
+        s.triangles_in,
+        "{what}: buckets do not add up, {s:?}"
+    );
+    assert!(s.clipped <= s.triangles_in, "{what}: more clipped than submitted, {s:?}");
+}
+
+/// Triangles: each covers a pixel centre at most once, a clipped one is cut into at most `MAX_PIECES` pieces.
+fn check_fill_fragments(what: &str, s: &DrawStats, pixels: u64) {
+    let pieces = s.rasterized + (MAX_PIECES - 1) * s.clipped.min(s.rasterized);
+    assert!(s.fragments <= pixels * pieces, "{what}: {} fragments for {pixels} pixels, {s:?}", s.fragments);
+}
+
+/// Lines: at most one pixel per column or per row of the band, for each of three edges.
+fn check_line_fragments(what: &str, s: &DrawStats, width: u64, rows: u64) {
+    let per_line = width.max(rows);
+    assert!(s.fragments <= 3 * s.rasterized * per_line, "{what}: {} line fragments, {s:?}", s.fragments);
+}
+
+fn check_depth_range(what: &str, depth: &[f32], depth_test: DepthTest) {
+    for (i, &d) in depth.iter().enumerate() {
+        match depth_test {
+            DepthTest::Less => {
+                assert!((0.0..=1.0).contains(&d), "{what}: depth[{i}] = {d:e} ({:#010x}) not in [0, 1]", d.to_bits())
+            }
+            DepthTest::Off => assert!(d.to_bits() == 1f32.to_bits(), "{what}: depth test off but depth[{i}] = {d:e}"),
+        }
+    }
+}
+
+fn bits(depth: &[f32]) -> Vec<u32> {
+    depth.iter().map(|d| d.to_bits()).collect()
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// The target
+// ---------------------------------------------------------------------------------------------------------------
+
+/// The frame drawn by `draw_mesh_unspecialised` (into checked buffers) must equal `draw_mesh`'s: pixels, depth
+/// bits and statistics.
+fn compare_unspecialised(
+    mesh: &Mesh<'_>,
+    transforms: &Transforms,
+    effects: &Effects<'_>,
+    state: &DrawState,
+    (width, height): (u32, u32),
+    (color, depth): (&[u32], &[f32]),
+    full_stats: &DrawStats,
+) {
+    let (w, h) = (width as usize, height as usize);
+    let mut color_u = vec![0u32; w * h];
+    let mut depth_u = vec![0f32; w * h];
+    {
+        let mut target =
+            Target::new(CheckedColor(&mut color_u), CheckedDepth(&mut depth_u), width, height).expect("a valid frame");
+        target.clear(CLEAR);
+        let stats = draw_mesh_unspecialised(&mut target, mesh, transforms, effects, state)
+            .expect("draw_mesh accepted the draw, draw_mesh_unspecialised must too");
+        assert_eq!(&stats, full_stats, "draw_mesh_unspecialised stats differ from draw_mesh");
+    }
+    if let Some(i) = (0..w * h).find(|&i| color[i] != color_u[i]) {
+        panic!(
+            "draw_mesh_unspecialised pixel ({}, {}) = {:#08x}, draw_mesh gave {:#08x}",
+            i % w,
+            i / w,
+            color_u[i],
+            color[i]
+        );
+    }
+    assert_eq!(bits(depth), bits(&depth_u), "draw_mesh_unspecialised depth differs from draw_mesh");
+}
+
+/// Draws `input` every way the target compares and checks the invariants (a failure is a panic).
+///
+/// Returns the whole frame's `draw_mesh` statistics, or `None` when the camera was refused or the draw was
+/// (rightly) refused.
+pub fn run(input: Input) -> Option<DrawStats> {
+    let width = 1 + u32::from(input.width) % 64;
+    let height = 1 + u32::from(input.height) % 64;
+    let (w, h) = (width as usize, height as usize);
+
+    // Camera: a refusal is the constructors' contract, not a finding.
+    let c = &input.camera;
+    let Ok(view) = look_at(c.eye.get(), c.target.get(), c.up.get()) else { return None };
+    let projection = match c.projection {
+        ProjectionIn::Perspective { fovy, aspect, near, far } => {
+            let aspect = aspect.map_or(width as f32 / height as f32, |a| a.0);
+            perspective(fovy.0, aspect, near.0, far.0)
+        }
+        ProjectionIn::Orthographic { left, right, bottom, top, near, far } => {
+            orthographic(left.0, right.0, bottom.0, top.0, near.0, far.0)
+        }
+    };
+    let Ok(projection) = projection else { return None };
+    let model = match &input.model {
+        ModelIn::Identity => Mat4::IDENTITY,
+        ModelIn::Scale(s) => Mat4::from_scale(s.get()),
+        ModelIn::Translate(t) => Mat4::from_translation(t.get()),
+        ModelIn::Matrix(r) => {
+            Mat4::from_rows(r[0].map(|f| f.0), r[1].map(|f| f.0), r[2].map(|f| f.0), r[3].map(|f| f.0))
+        }
+    };
+    let transforms = Transforms::new(model, view, projection);
+
+    // Mesh.
+    let vertices = &input.vertices[..input.vertices.len().min(MAX_VERTICES)];
+    let positions: Vec<Vec3> = vertices.iter().map(|v| v.position.get()).collect();
+    let normals: Vec<Vec3> = vertices.iter().map(|v| v.normal.get()).collect();
+    let uvs: Vec<Vec2> = vertices.iter().map(|v| Vec2::new(v.uv.0.0, v.uv.1.0)).collect();
+    let colors: Vec<Vec3> = vertices.iter().map(|v| v.color.get()).collect();
+    let n = positions.len();
+    let whole = |len: usize| len.min(3 * MAX_TRIANGLES) / 3 * 3;
+    let (u16s, u32s): (Vec<u16>, Vec<u32>) = match &input.indices {
+        IndicesIn::Sequential => (Vec::new(), Vec::new()),
+        IndicesIn::U16(ix) => (ix[..whole(ix.len())].iter().map(|i| i.get(n)).collect(), Vec::new()),
+        IndicesIn::U32(ix) => (Vec::new(), ix[..whole(ix.len())].iter().map(|i| u32::from(i.get(n))).collect()),
+    };
+    let (indices, positions) = match &input.indices {
+        IndicesIn::Sequential => (Indices::Sequential, &positions[..n / 3 * 3]),
+        IndicesIn::U16(_) => (Indices::U16(&u16s), &positions[..]),
+        IndicesIn::U32(_) => (Indices::U32(&u32s), &positions[..]),
+    };
+    let m = positions.len();
+    let mut mesh = Mesh::new(positions, indices).expect("whole triangles");
+    if input.normals {
+        mesh = mesh.with_normals(&normals[..m]).expect("one normal per position");
+    }
+    if input.uvs {
+        mesh = mesh.with_uvs(&uvs[..m]).expect("one uv per position");
+    }
+    if input.colors {
+        mesh = mesh.with_colors(&colors[..m]).expect("one colour per position");
+    }
+    let triangles = mesh.triangle_count() as u64;
+
+    // Effects.
+    let texels: Vec<u32>;
+    let texture = match &input.texture {
+        None => None,
+        Some(t) => {
+            let (tw, th) = (1 + u32::from(t.width) % 4, 1 + u32::from(t.height) % 4);
+            let count = (tw * th) as usize;
+            texels = (0..count).map(|i| if t.texels.is_empty() { 0 } else { t.texels[i % t.texels.len()] }).collect();
+            Some(TextureBinding {
+                texture: Texture::new(&texels, tw, th).expect("a valid tiny texture"),
+                filter: if t.bilinear { FilterMode::Bilinear } else { FilterMode::Nearest },
+                wrap: if t.clamp { WrapMode::Clamp } else { WrapMode::Repeat },
+            })
+        }
+    };
+    let lights: Vec<Light> = input
+        .lights
+        .iter()
+        .take(MAX_LIGHTS)
+        .map(|l| match l {
+            LightIn::Directional(d, c) => Light::directional(d.get(), c.get()),
+            LightIn::Raw(d, c) => Light { to_light: d.get(), color: c.get() },
+        })
+        .collect();
+    let shading = match input.shading {
+        ShadingIn::Unlit => ShadingModel::Unlit,
+        ShadingIn::Flat => ShadingModel::Flat,
+        ShadingIn::Gouraud => ShadingModel::Gouraud,
+        ShadingIn::Phong => ShadingModel::Phong,
+        ShadingIn::Depth { near, far } => ShadingModel::Depth { near: near.0, far: far.0 },
+        ShadingIn::Normals => ShadingModel::Normals,
+    };
+    let effects = Effects {
+        shading,
+        material: Material {
+            color: input.material_color.get(),
+            specular: input.material_specular.get(),
+            shininess: input.shininess.0,
+        },
+        lighting: Lighting { ambient: input.ambient.get(), lights: &lights },
+        texture,
+    };
+    let state = input.state.get();
+    let style = input.wireframe.map(|(c, bias)| LineStyle { color: c.get(), depth_bias: bias.0 });
+
+    // What the draw must answer.
+    let needs_normals = matches!(shading, ShadingModel::Gouraud | ShadingModel::Phong | ShadingModel::Normals);
+    let expected_error = if needs_normals && !input.normals {
+        Some("missing")
+    } else if state.subpixel_bits > MAX_SUBPIXEL_BITS {
+        Some("bits")
+    } else {
+        None
+    };
+    let check_error = |what: &str, e: DrawError| match (expected_error, e) {
+        (Some("missing"), DrawError::MissingAttributes { needed, present }) => {
+            assert!(needed.normals && !present.normals, "{what}: {e:?}")
+        }
+        (Some("bits"), DrawError::SubpixelBits(b)) => assert_eq!(b, state.subpixel_bits, "{what}"),
+        _ => panic!("{what}: unexpected {e:?}, expected {expected_error:?} (state {state:?})"),
+    };
+    let clear_color = pack_rgb888(CLEAR);
+
+    // 1. The whole frame through the specialised pipeline, into Rgb888 + f32.
+    let mut color = vec![0u32; w * h];
+    let mut depth = vec![0f32; w * h];
+    let full_stats;
+    {
+        let mut target = Target::new(Rgb888(&mut color), &mut depth[..], width, height).expect("a valid frame");
+        target.clear(CLEAR);
+        match draw_mesh(&mut target, &mesh, &transforms, &effects, &state) {
+            Ok(stats) => {
+                assert!(expected_error.is_none(), "draw_mesh accepted {state:?} / {shading:?}, expected an error");
+                full_stats = stats;
+            }
+            Err(e) => {
+                check_error("draw_mesh", e);
+                assert!(color.iter().all(|&p| p == clear_color), "a refused draw wrote pixels");
+                assert!(depth.iter().all(|&d| d == 1.0), "a refused draw wrote depth");
+                // Same refusal through the general path; nothing else to check.
+                let (mut c2, mut d2) = (vec![0u32; w * h], vec![0f32; w * h]);
+                let mut t2 = Target::new(Rgb888(&mut c2), &mut d2[..], width, height).expect("a valid frame");
+                t2.clear(CLEAR);
+                match draw_mesh_unspecialised(&mut t2, &mesh, &transforms, &effects, &state) {
+                    Ok(s) => panic!("draw_mesh refused with {e:?} but draw_mesh_unspecialised drew {s:?}"),
+                    Err(e2) => assert_eq!(e, e2, "the two paths refuse differently"),
+                }
+                return None;
+            }
+        }
+    }
+    let pixels = (w * h) as u64;
+    check_stats("draw_mesh", &full_stats, triangles);
+    check_fill_fragments("draw_mesh", &full_stats, pixels);
+    check_depth_range("draw_mesh", &depth, state.depth_test);
+
+    // 2. The same frame through the general pixel loop and GeneralShader: identical pixels, depth and stats.
+    compare_unspecialised(&mesh, &transforms, &effects, &state, (width, height), (&color, &depth), &full_stats);
+
+    // 3. The wireframe over it.
+    let mut line_stats = DrawStats::default();
+    if let Some(style) = &style {
+        let mut target = Target::new(Rgb888(&mut color), &mut depth[..], width, height).expect("a valid frame");
+        let stats = draw_wireframe(&mut target, &mesh, &transforms.clip_from_object, style, &state);
+        check_stats("draw_wireframe", &stats, triangles);
+        check_line_fragments("draw_wireframe", &stats, width.into(), height.into());
+        line_stats = stats;
+        if state.depth_test == DepthTest::Off {
+            check_depth_range("draw_wireframe", &depth, DepthTest::Off);
+        }
+    }
+
+    // 4. Bands: the chosen band and the rows above and below it partition the frame. Each band's pixels and depth
+    //    equal the frame's rows bit for bit, writes stay inside the band, and the fragments add up to the frame's.
+    let (start, end) = match input.band {
+        None => (0, height),
+        Some((s, l)) => {
+            let s = u32::from(s) % height;
+            (s, s + 1 + u32::from(l) % (height - s))
+        }
+    };
+    let bands = [(0, start), (start, end), (end, height)];
+    let (mut fill_fragments, mut line_fragments) = (0, 0);
+    for (y0, y1) in bands {
+        if y0 >= y1 {
+            continue;
+        }
+        let rows = (y1 - y0) as usize;
+        let mut band_color = vec![0u32; w * rows];
+        let mut band_depth = vec![0f32; w * rows];
+        let mut target =
+            Target::band(CheckedColor(&mut band_color), CheckedDepth(&mut band_depth), width, height, y0..y1)
+                .expect("a valid band");
+        target.clear(CLEAR);
+        let what = format!("band {y0}..{y1}");
+        let stats =
+            draw_mesh(&mut target, &mesh, &transforms, &effects, &state).expect("the frame's draw was accepted");
+        check_stats(&what, &stats, triangles);
+        check_fill_fragments(&what, &stats, (w * rows) as u64);
+        fill_fragments += stats.fragments;
+        if let Some(style) = &style {
+            let stats = draw_wireframe(&mut target, &mesh, &transforms.clip_from_object, style, &state);
+            check_stats(&what, &stats, triangles);
+            check_line_fragments(&what, &stats, width.into(), rows as u64);
+            line_fragments += stats.fragments;
+        }
+        let frame_rows = y0 as usize * w..y1 as usize * w;
+        if let Some(i) = (0..w * rows).find(|&i| band_color[i] != color[frame_rows.start + i]) {
+            panic!(
+                "{what}: pixel ({}, {}) = {:#08x}, the whole frame has {:#08x}",
+                i % w,
+                y0 as usize + i / w,
+                band_color[i],
+                color[frame_rows.start + i]
+            );
+        }
+        if let Some(i) = (0..w * rows).find(|&i| band_depth[i].to_bits() != depth[frame_rows.start + i].to_bits()) {
+            panic!(
+                "{what}: depth ({}, {}) = {:e}, the whole frame has {:e}",
+                i % w,
+                y0 as usize + i / w,
+                band_depth[i],
+                depth[frame_rows.start + i]
+            );
+        }
+    }
+    assert_eq!(fill_fragments, full_stats.fragments, "band fragments do not add up to the frame's");
+    assert_eq!(line_fragments, line_stats.fragments, "band line fragments do not add up to the frame's");
+    Some(full_stats)
+}
