@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# Measures the firmware for docs/firmware.md:
+# - flash (.text + .rodata) and RAM (.data + .bss), from the ELF file (arm-none-eabi-size -A);
+# - which crate each byte of .text comes from (arm-none-eabi-addr2line) and what .rodata holds (arm-none-eabi-nm);
+# - from a run under QEMU with -icount shift=0 (1 ns of virtual time per instruction): instructions per frame and
+#   per pixel, the peak stack, and the frame rate they imply at 168 MHz, an estimate at 1 instruction per cycle.
+# Needs arm-none-eabi-size, -nm and -addr2line (Debian: binutils-arm-none-eabi) and qemu-system-arm; check.sh,
+# which CI runs, needs none of the binutils.
+# Usage: core/firmware/measure.sh [--no-build]
+set -euo pipefail
+cd "$(dirname "$0")"
+elf=target/thumbv7em-none-eabihf/release/rasterm-firmware
+if [ "${1:-}" != --no-build ]; then
+    cargo build --release --locked
+fi
+out=$(mktemp)
+trap 'rm -f "$out"' EXIT
+
+echo "== arm-none-eabi-size -A $elf"
+arm-none-eabi-size -A "$elf" | awk '$1 ~ /^\.(vector_table|text|rodata|data|bss|uninit)$/'
+arm-none-eabi-size -A "$elf" | awk '
+    { size[$1] = $2 }
+    END {
+        flash = size[".text"] + size[".rodata"]
+        printf "flash: .text + .rodata = %d bytes; with .vector_table, %d bytes\n", flash, flash + size[".vector_table"]
+        printf "RAM: .data + .bss = %d bytes (.uninit: %d)\n", size[".data"] + size[".bss"], size[".uninit"]
+    }'
+
+# With LTO most of the core is inlined into the scene's render loop, so symbol names undercount it. The line
+# table says which source file each half-word of .text came from: code from Rust's core library is charged to
+# the innermost caller outside it (addr2line -i), so `f32::is_finite` inlined into the rasterizer counts as the
+# rasterizer's.
+echo "== arm-none-eabi-addr2line -a -i -e $elf, every half-word of .text: bytes of code by source crate"
+read -r text_start text_size < <(arm-none-eabi-size -A "$elf" | awk '$1 == ".text" { print $3, $2 }')
+seq "$text_start" 2 $((text_start + text_size - 2)) | awk '{ printf "%x\n", $1 }' |
+    arm-none-eabi-addr2line -a -i -e "$elf" | awk -F: '
+    function crate(f) {
+        if (f ~ /\/library\/core\//) return "Rust core library (formatting...)"
+        if (f ~ /\/core\/src\//) return "rasterm-core"
+        if (f ~ /\/firmware\/scene\//) return "rasterm-firmware-scene"
+        if (f ~ /\/firmware\/src\//) return "rasterm-firmware"
+        if (f ~ /\/libm-/) return "libm"
+        if (f ~ /compiler.builtins/) return "compiler-builtins (f64 soft-float, memcpy, u64 division)"
+        if (f ~ /\/cortex-m/) return "cortex-m, cortex-m-rt, cortex-m-semihosting"
+        return "no line information (assembly)"
+    }
+    function flush() { if (have) bytes[owner != "" ? owner : first] += 2 }
+    /^0x/ { flush(); have = 1; first = ""; owner = ""; next }
+    {
+        c = crate($1)
+        if (first == "") first = c
+        if (owner == "" && c !~ /^Rust core library/) owner = c
+    }
+    END { flush(); for (c in bytes) printf "%8d  %s\n", bytes[c], c }' | sort -rn
+
+echo "== arm-none-eabi-nm -S -t d -C $elf: bytes of .rodata by symbol"
+read -r rodata_start rodata_size < <(arm-none-eabi-size -A "$elf" | awk '$1 == ".rodata" { print $3, $2 }')
+arm-none-eabi-nm -S -t d -C "$elf" | awk -v start="$rodata_start" -v size="$rodata_size" '
+    NF >= 4 && $1 + 0 >= start && $1 + 0 < start + size {
+        if ($4 ~ /^rasterm_firmware_scene::spot::/) model += $2
+        else if ($4 ~ /^libm::/) libm += $2
+    }
+    END {
+        printf "%8d  the model arrays (rasterm_firmware_scene::spot)\n", model
+        printf "%8d  libm tables\n", libm
+        printf "%8d  the rest: unnamed constants (strings, panic locations, lookup tables) of every crate, padding\n",
+            size - model - libm
+    }'
+
+echo "== qemu-system-arm -cpu cortex-m4 -machine mps2-an386 -nographic -semihosting-config enable=on,target=native" \
+    "-icount shift=0 -kernel $elf"
+timeout 300 qemu-system-arm -cpu cortex-m4 -machine mps2-an386 -nographic \
+    -semihosting-config enable=on,target=native -icount shift=0 -kernel "$elf" | tee "$out"
+
+echo "== estimate: the frame rate at 168 MHz, assuming 1 instruction per cycle (a Cortex-M4 often needs more)"
+awk '
+    match($0, /[0-9]+x[0-9]+ RGB565/) { split(substr($0, RSTART, RLENGTH - 7), wh, "x"); pixels = wh[1] * wh[2] }
+    /^frame [0-9]+: [0-9]+ instructions/ {
+        printf "%s %s %d instructions, %.1f per pixel: %.2f frames per second, %.1f ms per frame\n",
+            $1, $2, $3, $3 / pixels, 168e6 / $3, $3 / 168e3
+    }' "$out"

@@ -1,0 +1,36 @@
+//! Why a frame could not be rendered.
+
+use core::fmt;
+
+use rasterm_core::camera::CameraError;
+use rasterm_core::mesh::MeshError;
+use rasterm_core::pipeline::DrawError;
+use rasterm_core::target::TargetError;
+
+/// Why the scene could not be rendered (never, with these constants; returned rather than unwrapped so that the
+/// firmware reports it).
+#[derive(Clone, Debug, PartialEq)]
+pub enum SceneError {
+    /// The camera constants do not make a camera.
+    Camera(CameraError),
+    /// The model arrays do not make a mesh.
+    Mesh(MeshError),
+    /// A band's buffers do not fit its rows.
+    Target(TargetError),
+    /// A draw failed.
+    Draw(DrawError),
+    /// The effects resolved to another shader variant than the one [`Scene::draw`](crate::Scene::draw) runs.
+    Variant,
+}
+
+impl fmt::Display for SceneError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Camera(e) => write!(f, "camera: {e}"),
+            Self::Mesh(e) => write!(f, "mesh: {e}"),
+            Self::Target(e) => write!(f, "target: {e}"),
+            Self::Draw(e) => write!(f, "draw: {e}"),
+            Self::Variant => f.write_str("the effects resolve to another shader variant than the scene draws"),
+        }
+    }
+}

@@ -1,0 +1,107 @@
+//! The firmware's scene (`core/firmware/scene`) rendered on the host: the lines it prints are the ones the firmware
+//! must print under QEMU. `core/firmware/check.sh` runs both and compares the `frame N: checksum ...` lines; this
+//! test checks what the host alone can: the two frames differ from each other and from a blank frame, the strips
+//! cover the frame top to bottom, the band buffers fit 16 KiB, and the strips add up to the frame rendered whole,
+//! both by the scene's specialised draw and by `draw_mesh`.
+//!
+//! Run `cargo test -p rasterm-tests --test firmware_checksum -- --nocapture` to see the lines.
+
+use rasterm_core::pipeline::DrawStats;
+use rasterm_core::target::{Rgb565, Target};
+use rasterm_firmware_scene::{
+    BACKGROUND, BAND_BUFFER_BYTES, BAND_ROWS, BandBuffers, FRAMES, Fnv1a, FrameReport, HEIGHT, STRIPS, Scene, WIDTH,
+    checksum_frame, render_frame, spot,
+};
+
+/// Every frame's report, rendered in strips as the firmware renders them.
+fn reports() -> Vec<FrameReport> {
+    let mut buffers = Box::new(BandBuffers::new());
+    (0..FRAMES).map(|frame| checksum_frame(frame, &mut buffers).expect("the frame renders")).collect()
+}
+
+/// FNV-1a of a whole frame rendered at once by `draw`, and what `draw` returns.
+fn whole_frame(draw: impl FnOnce(&mut Target<Rgb565<'_>, &mut [u16]>) -> DrawStats) -> (u32, DrawStats) {
+    let n = (WIDTH * HEIGHT) as usize;
+    let (mut color, mut depth) = (vec![0u16; n], vec![0u16; n]);
+    let stats = draw(&mut Target::new(Rgb565(&mut color), &mut depth[..], WIDTH, HEIGHT).unwrap());
+    let mut checksum = Fnv1a::new();
+    checksum.write_rgb565(&color);
+    (checksum.finish(), stats)
+}
+
+#[test]
+fn the_firmware_scene_gives_two_distinct_checksums() {
+    let reports = reports();
+    for report in &reports {
+        // The line check.sh compares with the firmware's.
+        println!("{report}");
+    }
+    let (blank, _) = whole_frame(|target| {
+        target.clear(BACKGROUND);
+        DrawStats::default()
+    });
+    println!("blank frame: checksum 0x{blank:08x}");
+
+    assert_eq!(reports.len(), 2);
+    assert_ne!(reports[0].checksum, reports[1].checksum, "the checksum depends on the rotation");
+    for report in &reports {
+        assert_ne!(report.checksum, blank, "frame {} is not blank", report.frame);
+        assert_eq!(report.strips, 20);
+        assert_eq!(report.stats.triangles_in, (STRIPS as usize * spot::TRIANGLE_COUNT) as u64);
+        assert!(report.stats.fragments > 10_000, "frame {}: Spot covers a good part of the frame", report.frame);
+    }
+}
+
+#[test]
+fn the_strips_cover_the_frame_top_to_bottom_in_16_kib() {
+    assert_eq!(BAND_BUFFER_BYTES, 2 * 2 * 320 * 12);
+    const { assert!(BAND_BUFFER_BYTES <= 16 * 1024) };
+    let mut buffers = Box::new(BandBuffers::new());
+    let mut next_row = 0;
+    let (strips, _) = render_frame(0, &mut buffers, |strip| {
+        assert_eq!(strip.rows.start, next_row, "strips arrive top to bottom, none missing");
+        assert!(strip.rows.end - strip.rows.start <= BAND_ROWS);
+        assert_eq!(strip.pixels.len(), (WIDTH * (strip.rows.end - strip.rows.start)) as usize);
+        next_row = strip.rows.end;
+    })
+    .unwrap();
+    assert_eq!(next_row, HEIGHT);
+    assert_eq!(strips, STRIPS);
+}
+
+#[test]
+fn the_strips_add_up_to_the_whole_frame_and_draw_mesh_agrees() {
+    for report in reports() {
+        let scene = Scene::new(report.frame).unwrap();
+        let direct = whole_frame(|target| scene.draw(target).unwrap());
+        let through_draw_mesh = whole_frame(|target| scene.draw_through_draw_mesh(target).unwrap());
+        for (checksum, stats) in [direct, through_draw_mesh] {
+            assert_eq!(checksum, report.checksum, "frame {}: strips and whole frame agree", report.frame);
+            assert_eq!(stats.fragments, report.stats.fragments, "frame {}: the same fragments", report.frame);
+        }
+    }
+}
+
+#[test]
+fn the_checksum_is_fnv1a_over_little_endian_words() {
+    // FNV-1a 32 test vectors: "" and "a"; then the word 0x6261 is the bytes "ab".
+    assert_eq!(Fnv1a::new().finish(), 0x811c_9dc5);
+    let mut a = Fnv1a::new();
+    a.write_u8(b'a');
+    assert_eq!(a.finish(), 0xe40c_292c);
+    let mut ab = Fnv1a::new();
+    ab.write_rgb565(&[0x6261]);
+    assert_eq!(ab.finish(), 0x4d25_05ca);
+}
+
+#[test]
+fn the_model_arrays_are_spot() {
+    assert_eq!(spot::VERTEX_COUNT, 2930);
+    assert_eq!(spot::TRIANGLE_COUNT, 5856);
+    assert_eq!(spot::POSITIONS.len(), spot::NORMALS.len());
+    assert_eq!(spot::INDICES.len(), 3 * spot::TRIANGLE_COUNT);
+    assert!(spot::INDICES.iter().all(|&i| usize::from(i) < spot::VERTEX_COUNT));
+    for n in &spot::NORMALS {
+        assert!((n.length() - 1.0).abs() < 1e-5, "unit normals");
+    }
+}
