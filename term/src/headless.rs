@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use rasterm_core::pipeline::DrawStats;
-use rasterm_core::target::{MAX_DIMENSION, Rgb888, Target};
+use rasterm_core::target::{MAX_DIMENSION, Rgb888, Target, downsample_rgb888};
 
 use crate::builtin::{BUILTIN_NAME, builtin_model};
 use crate::model::{LoadError, TextureImage, load_obj};
@@ -98,25 +98,43 @@ pub struct RenderedImage {
     pub render_time: Duration,
 }
 
-/// Renders a scene to pixels with square pixels.
+/// Renders a scene to pixels with square pixels, anti-aliased with `supersample x supersample` samples per pixel
+/// when `supersample > 1` (rendered that much larger and averaged with
+/// [`rasterm_core::target::downsample_rgb888`]).
 ///
 /// # Errors
-/// [`RenderError`] for a degenerate camera; a size outside `1..=MAX_DIMENSION` is refused the same way.
+/// [`HeadlessError::Render`] for a degenerate camera; [`HeadlessError::Size`] when the (supersampled) size is
+/// outside `1..=MAX_DIMENSION`.
 pub fn render_image(
     scene: &Scene,
     (width, height): (u32, u32),
+    supersample: u32,
     camera: &OrbitCamera,
     appearance: &Appearance,
 ) -> Result<RenderedImage, HeadlessError> {
-    let n = width as usize * height as usize;
-    let mut pixels = vec![0u32; n];
+    let k = supersample.max(1);
+    let (sw, sh) = (width.checked_mul(k), height.checked_mul(k));
+    let (Some(sw), Some(sh)) = (sw, sh) else {
+        return Err(HeadlessError::Size(format!("{width}x{height} with {k}x{k} samples per pixel is too large")));
+    };
+    let n = sw as usize * sh as usize;
+    let mut samples = vec![0u32; n];
     let mut depth = vec![0f32; n];
-    let mut target = Target::new(Rgb888(&mut pixels), &mut depth[..], width, height)
-        .map_err(|e| HeadlessError::Size(e.to_string()))?;
+    let mut target = Target::new(Rgb888(&mut samples), &mut depth[..], sw, sh).map_err(|e| {
+        let what = if k > 1 { format!(" ({k}x{k} samples per pixel make {sw}x{sh})") } else { String::new() };
+        HeadlessError::Size(format!("{e}{what}"))
+    })?;
     // Touch the fresh buffers first, so the time measured is rendering rather than the OS mapping pages.
     target.clear(appearance.background);
     let start = Instant::now();
     let stats = scene.render(&mut target, camera, appearance, width as f32 / height as f32)?;
+    let pixels = if k > 1 {
+        let mut pixels = vec![0u32; width as usize * height as usize];
+        downsample_rgb888(&samples, sw, k, &mut pixels).map_err(|e| HeadlessError::Size(e.to_string()))?;
+        pixels
+    } else {
+        samples
+    };
     let render_time = start.elapsed();
     Ok(RenderedImage { width, height, pixels, stats, render_time })
 }
@@ -130,6 +148,8 @@ pub struct RenderRequest {
     pub texture: TextureChoice,
     /// Image size in pixels.
     pub size: (u32, u32),
+    /// Samples per pixel along each axis (1: no anti-aliasing).
+    pub supersample: u32,
     /// The camera.
     pub camera: OrbitCamera,
     /// The look.
@@ -191,7 +211,7 @@ pub fn render_to_png(request: &RenderRequest) -> Result<RenderReport, HeadlessEr
     let loaded = load_scene(&request.model, &request.texture).map_err(HeadlessError::Load)?;
     let aspect = request.size.0 as f32 / request.size.1 as f32;
     let variants = loaded.scene.explain(&request.camera, &request.appearance, aspect)?;
-    let image = render_image(&loaded.scene, request.size, &request.camera, &request.appearance)?;
+    let image = render_image(&loaded.scene, request.size, request.supersample, &request.camera, &request.appearance)?;
     write_png(&request.output, image.width, image.height, &image.pixels).map_err(HeadlessError::Write)?;
     Ok(RenderReport { name: loaded.name, warnings: loaded.warnings, image, variants })
 }

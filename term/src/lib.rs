@@ -8,6 +8,7 @@
 //! | [`scene`] | camera, lights and shading choices; drawing a model into a core target |
 //! | [`headless`] | `rasterm render`: a scene to a PNG file |
 //! | [`png_file`] | writing PNG files safely |
+//! | [`reference`](mod@reference) | a slow `f64` reference renderer (16x16 supersampling, exact coverage): the truth to measure against |
 //! | [`report`] | `rasterm report`: measured figures (terminal frame bytes and times) as Markdown |
 //! | [`screen`] | terminal cells, colour modes and the frame-diff encoder |
 //! | [`viewer`] | the interactive terminal viewer |
@@ -17,6 +18,7 @@ pub mod escaped;
 pub mod headless;
 pub mod model;
 pub mod png_file;
+pub mod reference;
 pub mod report;
 pub mod scene;
 pub mod screen;

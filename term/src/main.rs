@@ -39,6 +39,20 @@ enum Command {
 enum ReportCommand {
     /// Bytes and times of terminal frames for a turntable of the built-in model.
     Terminal(TerminalReportArgs),
+    /// Time and error of every quality knob against a high-precision reference; writes accuracy.md and
+    /// accuracy.png.
+    Accuracy(AccuracyReportArgs),
+}
+
+/// Options of `rasterm report accuracy`.
+#[derive(Args, Debug)]
+struct AccuracyReportArgs {
+    /// Directory to write accuracy.md and accuracy.png into.
+    #[arg(long, value_name = "DIR", default_value = "docs")]
+    output: PathBuf,
+    /// Small images and few repeats (for CI): proves the command works; the figures mean little.
+    #[arg(long)]
+    quick: bool,
 }
 
 /// Options of `rasterm report terminal`.
@@ -83,6 +97,9 @@ struct RenderArgs {
     size: (u32, u32),
     #[command(flatten)]
     scene: SceneArgs,
+    /// Anti-aliasing: render N times larger in each direction and average (1, 2, 3 or 4).
+    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=4))]
+    supersample: u32,
     /// Print triangle counts, the compiled pipeline and the render time.
     #[arg(long)]
     stats: bool,
@@ -227,6 +244,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Some(Command::Render(args)) => render(&args).map(|()| ExitCode::SUCCESS),
         Some(Command::Report(ReportCommand::Terminal(args))) => terminal_report(&args).map(|()| ExitCode::SUCCESS),
+        Some(Command::Report(ReportCommand::Accuracy(args))) => accuracy_report(&args).map(|()| ExitCode::SUCCESS),
         None => view(&cli.viewer),
     };
     result.unwrap_or_else(|message| {
@@ -240,6 +258,7 @@ fn render(args: &RenderArgs) -> Result<(), String> {
         model: model_source(&args.model),
         texture: args.scene.texture(),
         size: args.size,
+        supersample: args.supersample,
         camera: args.scene.camera(),
         appearance: args.scene.appearance(),
         output: args.output.clone(),
@@ -263,6 +282,20 @@ fn render(args: &RenderArgs) -> Result<(), String> {
         }
         println!("render: {:.2} ms at {}x{}", image.render_time.as_secs_f64() * 1e3, image.width, image.height);
     }
+    Ok(())
+}
+
+fn accuracy_report(args: &AccuracyReportArgs) -> Result<(), String> {
+    use rasterm::report::accuracy::{AccuracyOptions, measure};
+    let options = if args.quick {
+        AccuracyOptions::quick(args.output.clone())
+    } else {
+        AccuracyOptions::full(args.output.clone())
+    };
+    let report = measure(&options)?;
+    let (md, png) = report.write()?;
+    print!("{}", report.markdown());
+    eprintln!("rasterm: wrote {} and {}", Escaped(&md.display().to_string()), Escaped(&png.display().to_string()));
     Ok(())
 }
 

@@ -2,8 +2,10 @@
 //!
 //! | report | measures |
 //! |---|---|
+//! | [`accuracy`] | time and error of every quality knob against a high-precision reference |
 //! | [`terminal`] | bytes and times of terminal frames for a turntable of the built-in model |
 
+pub mod accuracy;
 pub mod terminal;
 
 /// A one-line description of this machine: the CPU model from `/proc/cpuinfo` and the number of logical CPUs,

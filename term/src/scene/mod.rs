@@ -22,14 +22,16 @@ use crate::model::Model;
 
 /// The scene's lights, fixed relative to the camera: a warm key light from the upper left, a cool fill light from
 /// the right, and a little ambient light.
-const LIGHTS: [Light; 2] = [
+pub const LIGHTS: [Light; 2] = [
     Light { to_light: Vec3::new(-0.445_435, 0.668_153, 0.596_559), color: Vec3::new(0.9, 0.87, 0.8) },
     Light { to_light: Vec3::new(0.882_353, 0.0, 0.470_588), color: Vec3::new(0.18, 0.2, 0.26) },
 ];
-const AMBIENT: Vec3 = Vec3::new(0.14, 0.14, 0.16);
-/// Specular colour and exponent of lit surfaces.
-const SPECULAR: Vec3 = Vec3::new(0.22, 0.22, 0.22);
-const SHININESS: f32 = 28.0;
+/// The ambient light.
+pub const AMBIENT: Vec3 = Vec3::new(0.14, 0.14, 0.16);
+/// Specular colour of lit surfaces.
+pub const SPECULAR: Vec3 = Vec3::new(0.22, 0.22, 0.22);
+/// Blinn-Phong exponent of lit surfaces.
+pub const SHININESS: f32 = 28.0;
 /// Wireframe lines: a pale cyan drawn just in front of the surface.
 const WIREFRAME: LineStyle = LineStyle { color: Vec3::new(0.55, 0.9, 1.0), depth_bias: 2e-4 };
 

@@ -1,0 +1,295 @@
+//! A slow, high-precision reference renderer: the "truth" that rasterm's pictures are measured against.
+//!
+//! Everything is `f64`: transforms, projection, visibility, interpolation, shading and texture sampling. Each
+//! pixel is sampled on a regular [`SAMPLES_PER_AXIS`]² grid (sample `(k, l)` of pixel `(i, j)` at
+//! `(i + (k + 0.5) / 16, j + (l + 0.5) / 16)` in screen space); every sample is shaded, clamped to `[0, 1]`, and
+//! the samples are averaged with equal weights (a box filter). Samples that hit nothing take the background colour.
+//!
+//! # How a sample is decided
+//!
+//! A sample is a ray from the eye (perspective) or along the view direction (orthographic) through the sample
+//! point, cast against every triangle that might cover it (triangles are binned into 8x8-pixel tiles first):
+//!
+//! - **Coverage**: the three edge functions of the triangle's view-space vertices, evaluated for the ray: for a
+//!   perspective ray `d`, `E_i = d . (v_j x v_k)`, the 2D homogeneous edge functions of Olano and Greer ("Triangle
+//!   scan conversion using 2D homogeneous coordinates", Graphics Hardware 1997), which need no clipping; the hit's
+//!   barycentric coordinates are `E_i / sum E`. A triangle is closed: a sample exactly on an edge is covered. Two
+//!   triangles sharing an edge get exactly opposite edge functions (same operations, negated operands), so no
+//!   sample falls through a shared edge. The decision is made in `f64` arithmetic on the `f64`-transformed
+//!   vertices: exact up to rounding of the order of 1e-16 relative, not in exact rational arithmetic.
+//! - **Depth**: the ray-plane intersection; the sample is visible on the triangle only when the hit's view depth
+//!   (distance along the view axis) is within `[near, far]`. A triangle crossing the near plane (or passing
+//!   behind the eye) is therefore cut exactly at the plane, with no clipping polygon involved.
+//! - **Order**: the nearest hit wins; on an exact depth tie the triangle drawn first (the earlier object, then the
+//!   earlier triangle) wins, as rasterm's `less` depth test does.
+//! - **Facing**: counter-clockwise on screen is the front, flipped for a mirroring model matrix, and
+//!   [`Object::cull`] discards faces as rasterm's [`Cull`] does. Edge-on triangles cover nothing.
+//! - **Attributes**: the barycentric coordinates of the 3D hit point, which makes interpolation
+//!   perspective-correct by construction.
+//!
+//! # Shading
+//!
+//! The albedo is [`Material::color`] times the bilinearly sampled texture ([`sample_bilinear`]) when the object
+//! has one and has texture coordinates. [`Shading::Unlit`] draws the albedo; [`Shading::Lit`] is rasterm's
+//! per-pixel Blinn-Phong ([`rasterm_core::shading::PhongShader`]) in `f64`, with the interpolated vertex normal
+//! renormalised:
+//! `albedo * (ambient + sum c max(0, n.l)) + specular * sum over lights with n.l > 0 of c max(0, n.h)^shininess`,
+//! `h = normalize(l + v)`, `v = normalize(eye - p)`.
+//!
+//! # Use
+//!
+//! Build a [`Scene`] by hand, or from a rasterm model and camera with [`Scene::from_model`] (the same picture as
+//! [`crate::scene::Scene::draw`] draws), then call [`render`] for a [`ReferenceImage`], or make a [`Renderer`] to
+//! render and also [`Renderer::probe`] single points.
+//!
+//! ```
+//! use rasterm::reference::{Camera, Object, Projection, Scene, Shading, render};
+//!
+//! // An orthographic camera whose view box is the 4x4 image itself (view y = -screen y), and a triangle whose
+//! // right edge is the line x = 2.
+//! let camera = Camera {
+//!     eye: [0.0, 0.0, 1.0],
+//!     target: [0.0, 0.0, 0.0],
+//!     up: [0.0, 1.0, 0.0],
+//!     projection: Projection::Orthographic { left: 0.0, right: 4.0, bottom: -4.0, top: 0.0, near: 0.0, far: 2.0 },
+//! };
+//! let mut triangle = Object::new(vec![[2.0, -20.0, 0.0], [2.0, 10.0, 0.0], [-20.0, -2.0, 0.0]], vec![0, 1, 2]);
+//! triangle.material.color = [1.0, 0.0, 0.0];
+//! triangle.shading = Shading::Unlit;
+//! let scene = Scene { objects: vec![triangle], ..Scene::new(4, 4, camera) };
+//! let image = render(&scene).unwrap();
+//! assert_eq!(image.rgb[1], [1.0, 0.0, 0.0]); // pixel (1, 0): inside
+//! assert_eq!(image.coverage[1], 1.0);
+//! assert_eq!(image.rgb[3], [0.0, 0.0, 0.0]); // pixel (3, 0): outside, the background
+//! assert_eq!(image.coverage[3], 0.0);
+//! ```
+
+mod from_model;
+mod image;
+pub mod math;
+mod render;
+mod texture;
+
+use std::fmt;
+
+use rasterm_core::camera::CameraError;
+use rasterm_core::pipeline::Cull;
+use rasterm_core::texture::WrapMode;
+
+pub use image::ReferenceImage;
+pub use render::{Probe, Renderer, SAMPLES_PER_AXIS, render};
+pub use texture::sample_bilinear;
+
+use crate::model::TextureImage;
+use math::Mat4;
+
+/// Everything the reference renderer draws: image size, camera, lights, background and objects.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scene {
+    /// Image width in pixels.
+    pub width: u32,
+    /// Image height in pixels.
+    pub height: u32,
+    /// The camera.
+    pub camera: Camera,
+    /// The lights (used by [`Shading::Lit`] objects).
+    pub lighting: Lighting,
+    /// The colour of samples that hit nothing, channels in `[0, 1]`.
+    pub background: [f64; 3],
+    /// The objects, in drawing order (which only matters for exact depth ties).
+    pub objects: Vec<Object>,
+}
+
+impl Scene {
+    /// An empty `width x height` scene seen by `camera`: black background, no lights, no objects.
+    pub fn new(width: u32, height: u32, camera: Camera) -> Self {
+        Self { width, height, camera, lighting: Lighting::default(), background: [0.0; 3], objects: Vec::new() }
+    }
+}
+
+/// A camera: where it is, where it looks, and how it projects.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Camera {
+    /// The camera position in world space (also the eye of specular highlights, for either projection).
+    pub eye: [f64; 3],
+    /// The point looked at.
+    pub target: [f64; 3],
+    /// Roughly up on screen; replaced as [`rasterm_core::camera::look_at`] does when parallel to the view.
+    pub up: [f64; 3],
+    /// The projection.
+    pub projection: Projection,
+}
+
+/// How the camera projects (the same parameters as [`rasterm_core::camera::Projection`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Projection {
+    /// Perspective.
+    Perspective {
+        /// Vertical field of view in radians, in `(0, pi)`.
+        fovy: f64,
+        /// Width over height of the view (the image's physical aspect).
+        aspect: f64,
+        /// View depth of the near plane, `> 0`.
+        near: f64,
+        /// View depth of the far plane, `> near`.
+        far: f64,
+    },
+    /// Orthographic: the view-space box `[left, right] x [bottom, top]` fills the image.
+    Orthographic {
+        /// Left edge of the box in view space.
+        left: f64,
+        /// Right edge.
+        right: f64,
+        /// Bottom edge.
+        bottom: f64,
+        /// Top edge.
+        top: f64,
+        /// View depth of the near plane.
+        near: f64,
+        /// View depth of the far plane, `> near`.
+        far: f64,
+    },
+}
+
+impl Projection {
+    /// The near and far view depths.
+    pub fn depth_range(&self) -> (f64, f64) {
+        match *self {
+            Self::Perspective { near, far, .. } | Self::Orthographic { near, far, .. } => (near, far),
+        }
+    }
+}
+
+/// The lights of a scene.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Lighting {
+    /// Light reaching every surface from every direction.
+    pub ambient: [f64; 3],
+    /// Directional lights.
+    pub lights: Vec<Light>,
+}
+
+/// A directional light.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Light {
+    /// Unit vector from the surface toward the light, in world space (used as given).
+    pub to_light: [f64; 3],
+    /// Colour and intensity.
+    pub color: [f64; 3],
+}
+
+impl Light {
+    /// A light shining from `to_light`, normalised here (a zero vector gives a light that adds nothing).
+    pub fn directional(to_light: [f64; 3], color: [f64; 3]) -> Self {
+        Self { to_light: math::V3::from_array(to_light).normalize_or_zero().to_array(), color }
+    }
+}
+
+/// How a surface reflects light.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Material {
+    /// Base (diffuse) colour; multiplied by the texture when there is one.
+    pub color: [f64; 3],
+    /// Specular colour; zero for no highlights.
+    pub specular: [f64; 3],
+    /// Blinn-Phong exponent.
+    pub shininess: f64,
+}
+
+impl Default for Material {
+    /// The core's default material: grey 0.8, no highlights, shininess 32.
+    fn default() -> Self {
+        Self { color: [0.8; 3], specular: [0.0; 3], shininess: 32.0 }
+    }
+}
+
+/// What the truth of an object's colour is.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Shading {
+    /// The albedo (material colour times texture), no lighting.
+    Unlit,
+    /// Per-pixel Blinn-Phong with the interpolated, renormalised vertex normal (the geometric face normal when
+    /// the object has no normals).
+    #[default]
+    Lit,
+}
+
+/// A triangle mesh with its transform, material and texture.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Object {
+    /// Vertex positions in object space.
+    pub positions: Vec<[f64; 3]>,
+    /// Vertex normals in object space, one per position (need not be unit length), or `None`.
+    pub normals: Option<Vec<[f64; 3]>>,
+    /// Texture coordinates (`v` up), one per position, or `None`.
+    pub uvs: Option<Vec<[f64; 2]>>,
+    /// Three vertex indices per triangle.
+    pub indices: Vec<u32>,
+    /// Object space to world space: column-major (`model[c][r]`), acting on column vectors; must be affine.
+    pub model: Mat4,
+    /// The material.
+    pub material: Material,
+    /// The diffuse texture (used only with [`Self::uvs`]): `0x00RRGGBB` texels, row 0 at the top.
+    pub texture: Option<TextureImage>,
+    /// How texture coordinates outside `[0, 1]` wrap.
+    pub wrap: WrapMode,
+    /// How the object is shaded.
+    pub shading: Shading,
+    /// Which faces are discarded (front faces are counter-clockwise on screen).
+    pub cull: Cull,
+}
+
+impl Object {
+    /// An object of the given triangles: identity transform, default material, no normals, texture coordinates
+    /// or texture, repeat wrap, lit, back faces culled (rasterm's defaults).
+    pub fn new(positions: Vec<[f64; 3]>, indices: Vec<u32>) -> Self {
+        Self {
+            positions,
+            normals: None,
+            uvs: None,
+            indices,
+            model: math::IDENTITY,
+            material: Material::default(),
+            texture: None,
+            wrap: WrapMode::Repeat,
+            shading: Shading::Lit,
+            cull: Cull::Back,
+        }
+    }
+}
+
+/// Why a scene cannot be rendered.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ReferenceError {
+    /// The image is empty or larger than [`rasterm_core::target::MAX_DIMENSION`] on a side.
+    Size {
+        /// Width asked for.
+        width: u32,
+        /// Height asked for.
+        height: u32,
+    },
+    /// The camera does not make a camera.
+    Camera(CameraError),
+    /// An object is inconsistent.
+    Object {
+        /// Index into [`Scene::objects`].
+        object: usize,
+        /// What is wrong.
+        reason: String,
+    },
+    /// [`Scene::from_model`] was asked for something the reference does not draw.
+    Unsupported(&'static str),
+}
+
+impl fmt::Display for ReferenceError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Size { width, height } => write!(f, "cannot render a {width}x{height} reference image"),
+            Self::Camera(e) => write!(f, "bad camera: {e}"),
+            Self::Object { object, reason } => write!(f, "object {object}: {reason}"),
+            Self::Unsupported(what) => write!(f, "the reference renderer does not draw {what}"),
+        }
+    }
+}
+
+impl std::error::Error for ReferenceError {}

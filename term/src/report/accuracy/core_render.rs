@@ -1,0 +1,285 @@
+//! rasterm's picture of a reference scene: the same description, converted to `f32` and drawn through the core with
+//! one setting of the knobs.
+
+use std::time::{Duration, Instant};
+
+use rasterm_core::camera::{CameraError, look_at, orthographic, perspective};
+use rasterm_core::math::{Mat4, Vec2, Vec3, Vec4};
+use rasterm_core::mesh::{Indices, Mesh, MeshError};
+use rasterm_core::pipeline::{DrawError, DrawState};
+use rasterm_core::shading::{Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh};
+use rasterm_core::target::{ColorBuffer, DepthBuffer, Rgb888, Target, TargetError, downsample_rgb888};
+
+use super::settings::{DepthFormat, LitShading, Setting};
+use crate::reference::{self, Projection, Scene, Shading};
+
+/// Why a scene could not be drawn.
+#[derive(Debug)]
+pub enum CoreRenderError {
+    /// The camera is degenerate.
+    Camera(CameraError),
+    /// A mesh is malformed.
+    Mesh(MeshError),
+    /// The core refused a draw.
+    Draw(DrawError),
+    /// The image size is not usable.
+    Target(TargetError),
+}
+
+impl std::fmt::Display for CoreRenderError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::Camera(e) => write!(f, "camera: {e}"),
+            Self::Mesh(e) => write!(f, "mesh: {e}"),
+            Self::Draw(e) => write!(f, "draw: {e}"),
+            Self::Target(e) => write!(f, "target: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for CoreRenderError {}
+
+/// One object in the core's terms.
+struct CoreObject<'a> {
+    positions: Vec<Vec3>,
+    normals: Option<Vec<Vec3>>,
+    uvs: Option<Vec<Vec2>>,
+    source: &'a reference::Object,
+}
+
+/// A reference scene converted once: meshes in `f32`, matrices from the core's own camera functions.
+pub struct CoreScene<'a> {
+    scene: &'a Scene,
+    objects: Vec<CoreObject<'a>>,
+    view: Mat4,
+    projection: Mat4,
+    lights: Vec<Light>,
+}
+
+fn narrow(v: [f64; 3]) -> Vec3 {
+    Vec3::new(v[0] as f32, v[1] as f32, v[2] as f32)
+}
+
+fn matrix(m: &reference::math::Mat4) -> Mat4 {
+    let col = |c: [f64; 4]| Vec4::new(c[0] as f32, c[1] as f32, c[2] as f32, c[3] as f32);
+    Mat4::from_cols(col(m[0]), col(m[1]), col(m[2]), col(m[3]))
+}
+
+impl<'a> CoreScene<'a> {
+    /// Converts `scene`.
+    ///
+    /// # Errors
+    /// [`CoreRenderError::Camera`] for a camera the core refuses.
+    pub fn new(scene: &'a Scene) -> Result<Self, CoreRenderError> {
+        let c = &scene.camera;
+        let view = look_at(narrow(c.eye), narrow(c.target), narrow(c.up)).map_err(CoreRenderError::Camera)?;
+        let projection = match c.projection {
+            Projection::Perspective { fovy, aspect, near, far } => {
+                perspective(fovy as f32, aspect as f32, near as f32, far as f32)
+            }
+            Projection::Orthographic { left, right, bottom, top, near, far } => {
+                orthographic(left as f32, right as f32, bottom as f32, top as f32, near as f32, far as f32)
+            }
+        }
+        .map_err(CoreRenderError::Camera)?;
+        let objects = scene
+            .objects
+            .iter()
+            .map(|o| CoreObject {
+                positions: o.positions.iter().map(|&p| narrow(p)).collect(),
+                normals: o.normals.as_ref().map(|n| n.iter().map(|&v| narrow(v)).collect()),
+                uvs: o.uvs.as_ref().map(|u| u.iter().map(|uv| Vec2::new(uv[0] as f32, uv[1] as f32)).collect()),
+                source: o,
+            })
+            .collect();
+        let lights = scene
+            .lighting
+            .lights
+            .iter()
+            .map(|l| Light { to_light: narrow(l.to_light), color: narrow(l.color) })
+            .collect();
+        Ok(Self { scene, objects, view, projection, lights })
+    }
+
+    /// Clears `target` and draws the scene with `setting` (its supersampling is the caller's business).
+    ///
+    /// # Errors
+    /// [`CoreRenderError`] when a mesh or a draw is refused.
+    pub fn draw<C: ColorBuffer, D: DepthBuffer>(
+        &self,
+        target: &mut Target<C, D>,
+        setting: &Setting,
+    ) -> Result<(), CoreRenderError> {
+        target.clear(narrow(self.scene.background));
+        let lighting = Lighting { ambient: narrow(self.scene.lighting.ambient), lights: &self.lights };
+        for o in &self.objects {
+            let src = o.source;
+            let mut mesh = Mesh::new(&o.positions, Indices::U32(&src.indices)).map_err(CoreRenderError::Mesh)?;
+            if let Some(n) = &o.normals {
+                mesh = mesh.with_normals(n).map_err(CoreRenderError::Mesh)?;
+            }
+            if let Some(uv) = &o.uvs {
+                mesh = mesh.with_uvs(uv).map_err(CoreRenderError::Mesh)?;
+            }
+            let shading = match (src.shading, setting.shading) {
+                (Shading::Unlit, _) => ShadingModel::Unlit,
+                (Shading::Lit, LitShading::Flat) => ShadingModel::Flat,
+                // Without normals the reference lights with the face normal, which is what flat shading does.
+                (Shading::Lit, _) if o.normals.is_none() => ShadingModel::Flat,
+                (Shading::Lit, LitShading::Gouraud) => ShadingModel::Gouraud,
+                (Shading::Lit, LitShading::Phong) => ShadingModel::Phong,
+            };
+            let texture = src.texture.as_ref().and_then(|t| t.texture().ok()).map(|texture| TextureBinding {
+                texture,
+                filter: setting.filter,
+                wrap: src.wrap,
+            });
+            let m = &src.material;
+            let effects = Effects {
+                shading,
+                material: Material {
+                    color: narrow(m.color),
+                    specular: narrow(m.specular),
+                    shininess: m.shininess as f32,
+                },
+                lighting,
+                texture,
+            };
+            let transforms = Transforms::new(matrix(&src.model), self.view, self.projection);
+            let state = DrawState { cull: src.cull, ..setting.draw_state() };
+            draw_mesh(target, &mesh, &transforms, &effects, &state).map_err(CoreRenderError::Draw)?;
+        }
+        Ok(())
+    }
+}
+
+/// A picture rendered with one setting, and what measuring it gave.
+pub struct Rendered {
+    /// `0x00RRGGBB` pixels.
+    pub pixels: Vec<u32>,
+    /// Fraction of each pixel's samples that some triangle covered.
+    pub coverage: Vec<f64>,
+    /// Median time of a frame (clear, draw, and the resolve of supersampling).
+    pub median: Duration,
+}
+
+/// Counts which samples are written.
+struct Written<'b>(&'b mut [u8]);
+
+impl ColorBuffer for Written<'_> {
+    fn pixel_count(&self) -> Option<usize> {
+        Some(self.0.len())
+    }
+    fn write(&mut self, index: usize, _: Vec3) {
+        if let Some(w) = self.0.get_mut(index) {
+            *w = 1;
+        }
+    }
+    fn fill(&mut self, _: Vec3) {
+        self.0.fill(0);
+    }
+}
+
+/// Frames of one setting: its buffers, reused from frame to frame, and the times measured so far.
+///
+/// The report times every setting of a scene in turns, one frame each per round, so that a burst of load on a
+/// shared machine slows all settings alike instead of one.
+pub struct Frames<'s> {
+    setting: &'s Setting,
+    samples: Vec<u32>,
+    pixels: Vec<u32>,
+    depth32: Vec<f32>,
+    depth16: Vec<u16>,
+    times: Vec<Duration>,
+}
+
+impl<'s> Frames<'s> {
+    /// Buffers for `setting` on `scene`'s frame (supersampled when the setting says so).
+    pub fn new(scene: &CoreScene<'_>, setting: &'s Setting) -> Self {
+        let (w, h) = (scene.scene.width as usize, scene.scene.height as usize);
+        let k = setting.supersample.max(1) as usize;
+        let n = w * k * h * k;
+        Self {
+            setting,
+            samples: vec![0; n],
+            pixels: vec![0; w * h],
+            depth32: vec![0.0; n],
+            depth16: vec![0; n],
+            times: Vec::new(),
+        }
+    }
+
+    /// Renders one frame (clear, draw, and the resolve of supersampling) and records its time.
+    ///
+    /// # Errors
+    /// As [`CoreScene::draw`].
+    pub fn time_one(&mut self, scene: &CoreScene<'_>) -> Result<(), CoreRenderError> {
+        let (w, h) = (scene.scene.width, scene.scene.height);
+        let k = self.setting.supersample.max(1);
+        let (sw, sh) = (w * k, h * k);
+        let start = Instant::now();
+        match self.setting.depth {
+            DepthFormat::F32 => {
+                let mut target = Target::new(Rgb888(&mut self.samples), &mut self.depth32[..], sw, sh)
+                    .map_err(CoreRenderError::Target)?;
+                scene.draw(&mut target, self.setting)?;
+            }
+            DepthFormat::U16 => {
+                let mut target = Target::new(Rgb888(&mut self.samples), &mut self.depth16[..], sw, sh)
+                    .map_err(CoreRenderError::Target)?;
+                scene.draw(&mut target, self.setting)?;
+            }
+        }
+        if k > 1 {
+            downsample_rgb888(&self.samples, sw, k, &mut self.pixels).map_err(CoreRenderError::Target)?;
+        } else {
+            self.pixels.copy_from_slice(&self.samples);
+        }
+        self.times.push(start.elapsed());
+        Ok(())
+    }
+
+    /// The last frame's pixels, the median time (of one frame rendered now, if none was timed), and the coverage
+    /// of one more draw.
+    ///
+    /// # Errors
+    /// As [`CoreScene::draw`].
+    pub fn finish(mut self, scene: &CoreScene<'_>) -> Result<Rendered, CoreRenderError> {
+        if self.times.is_empty() {
+            self.time_one(scene)?;
+        }
+        self.times.sort();
+        let median = self.times[self.times.len() / 2];
+        let (w, h) = (scene.scene.width, scene.scene.height);
+        let k = self.setting.supersample.max(1);
+        let (sw, sh) = (w * k, h * k);
+        let n = sw as usize * sh as usize;
+        let (setting, mut depth32, mut depth16, pixels) = (self.setting, self.depth32, self.depth16, self.pixels);
+        let mut written = vec![0u8; n];
+        match setting.depth {
+            DepthFormat::F32 => {
+                let mut target =
+                    Target::new(Written(&mut written), &mut depth32[..], sw, sh).map_err(CoreRenderError::Target)?;
+                scene.draw(&mut target, setting)?;
+            }
+            DepthFormat::U16 => {
+                let mut target =
+                    Target::new(Written(&mut written), &mut depth16[..], sw, sh).map_err(CoreRenderError::Target)?;
+                scene.draw(&mut target, setting)?;
+            }
+        }
+        let (kk, swu) = ((k * k) as f64, sw as usize);
+        let coverage = (0..(w * h) as usize)
+            .map(|i| {
+                let (x, y) = (i % w as usize, i / w as usize);
+                let mut hits = 0u32;
+                for sy in 0..k as usize {
+                    let row = (y * k as usize + sy) * swu + x * k as usize;
+                    hits += written[row..row + k as usize].iter().map(|&b| u32::from(b)).sum::<u32>();
+                }
+                f64::from(hits) / kk
+            })
+            .collect();
+        Ok(Rendered { pixels, coverage, median })
+    }
+}

@@ -1,0 +1,302 @@
+//! `rasterm report accuracy`: what each quality knob costs in time and buys in accuracy.
+//!
+//! Four scenes ([`scenes`]) are rendered by the reference renderer ([`crate::reference`]: `f64`, exact coverage,
+//! 16x16 samples per pixel) and by rasterm with the default settings and with each knob turned alone
+//! ([`settings`]). For every scene and setting the report gives the median frame time, the time relative to the
+//! default, the PSNR against the reference, the largest error in 8-bit steps, and the pixels with wrong coverage;
+//! then which settings lie on the speed/quality frontier. It writes `accuracy.md` and the chart `accuracy.png`.
+
+mod chart;
+mod core_render;
+mod metrics;
+pub mod scenes;
+pub mod settings;
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+use std::time::Duration;
+
+pub use core_render::{CoreRenderError, CoreScene, Frames, Rendered};
+pub use metrics::{Score, score};
+
+use crate::png_file::write_png;
+use crate::reference;
+
+/// What to measure and where to write.
+#[derive(Clone, Debug)]
+pub struct AccuracyOptions {
+    /// Image size.
+    pub size: (u32, u32),
+    /// Frames timed per setting (the median is reported).
+    pub repeats: usize,
+    /// Directory for `accuracy.md` and `accuracy.png`.
+    pub output: PathBuf,
+    /// A few repeats at a small size: proves the command works, in CI.
+    pub quick: bool,
+}
+
+impl AccuracyOptions {
+    /// The full report: 320x240, 51 repeats.
+    pub fn full(output: PathBuf) -> Self {
+        Self { size: (320, 240), repeats: 51, output, quick: false }
+    }
+
+    /// The quick report: 96x72, 2 repeats.
+    pub fn quick(output: PathBuf) -> Self {
+        Self { size: (96, 72), repeats: 2, output, quick: true }
+    }
+}
+
+/// One measured setting.
+pub struct Row {
+    /// The setting.
+    pub setting: settings::Setting,
+    /// Median frame time.
+    pub time: Duration,
+    /// Time relative to the default.
+    pub relative: f64,
+    /// The score against the reference.
+    pub score: Score,
+    /// The setting gives exactly the default's pixels here (its knob has nothing to act on in this scene).
+    pub same_as_default: bool,
+}
+
+/// Differences smaller than these are noise, not one setting beating another: 5% of frame time (this machine is
+/// shared and timings vary by that much), 0.05 dB of PSNR.
+const TIME_NOISE: f64 = 0.05;
+const PSNR_NOISE: f64 = 0.05;
+
+/// One scene's results.
+pub struct SceneResult {
+    /// The scene's name.
+    pub name: &'static str,
+    /// What it stresses.
+    pub purpose: &'static str,
+    /// One row per setting, the default first.
+    pub rows: Vec<Row>,
+    /// Time the reference took.
+    pub reference_time: Duration,
+}
+
+impl SceneResult {
+    /// The settings on the frontier: no other setting is at least as fast and at least as accurate (PSNR) and
+    /// clearly better in one of the two (beyond the noise margins). Settings that give the default's very pixels
+    /// are left out: they are the default under another name.
+    pub fn frontier(&self) -> Vec<&Row> {
+        let candidates: Vec<&Row> = self.rows.iter().filter(|r| !r.same_as_default).collect();
+        let beats = |o: &Row, r: &Row| {
+            let (to, tr) = (o.time.as_secs_f64(), r.time.as_secs_f64());
+            let (po, pr) = (o.score.psnr, r.score.psnr);
+            let no_worse = to <= tr * (1.0 + TIME_NOISE) && po >= pr - PSNR_NOISE;
+            let better = to < tr * (1.0 - TIME_NOISE) || po > pr + PSNR_NOISE;
+            no_worse && better
+        };
+        candidates.iter().copied().filter(|r| !candidates.iter().any(|o| beats(o, r))).collect()
+    }
+}
+
+/// Everything the report measured.
+pub struct AccuracyReport {
+    /// The options it ran with.
+    pub options: AccuracyOptions,
+    /// Per scene.
+    pub scenes: Vec<SceneResult>,
+}
+
+/// Measures every scene with every setting.
+///
+/// # Errors
+/// A message when a scene cannot be built or rendered.
+pub fn measure(options: &AccuracyOptions) -> Result<AccuracyReport, String> {
+    let (w, h) = options.size;
+    let mut results = Vec::new();
+    for scene in scenes::all(w, h).map_err(|e| e.to_string())? {
+        let start = std::time::Instant::now();
+        let truth = reference::render(&scene.scene).map_err(|e| format!("{}: reference: {e}", scene.name))?;
+        let reference_time = start.elapsed();
+        let core = CoreScene::new(&scene.scene).map_err(|e| format!("{}: {e}", scene.name))?;
+        let failed = |e: CoreRenderError| format!("{}: {e}", scene.name);
+        // Settings take turns, a frame each per round: load on the machine then slows them alike.
+        let mut frames: Vec<Frames<'_>> = settings::ALL.iter().map(|setting| Frames::new(&core, setting)).collect();
+        for _ in 0..options.repeats {
+            for f in &mut frames {
+                f.time_one(&core).map_err(failed)?;
+            }
+        }
+        let mut rows = Vec::new();
+        let mut default_pixels = Vec::new();
+        for (setting, f) in settings::ALL.into_iter().zip(frames) {
+            let rendered = f.finish(&core).map_err(failed)?;
+            let score = score(&truth, &rendered, setting.supersample);
+            let same_as_default = if setting.is_default() {
+                default_pixels.clone_from(&rendered.pixels);
+                false
+            } else {
+                rendered.pixels == default_pixels
+            };
+            rows.push(Row { setting, time: rendered.median, relative: 0.0, score, same_as_default });
+        }
+        let base = rows[0].time.as_secs_f64().max(1e-9);
+        for row in &mut rows {
+            row.relative = row.time.as_secs_f64() / base;
+        }
+        results.push(SceneResult { name: scene.name, purpose: scene.purpose, rows, reference_time });
+    }
+    Ok(AccuracyReport { options: options.clone(), scenes: results })
+}
+
+/// The marker after which `accuracy.md` holds hand-written analysis, kept when the report is regenerated.
+pub const ANALYSIS_MARKER: &str =
+    "<!-- Hand-written analysis below this line is kept when the report is regenerated. -->";
+
+impl AccuracyReport {
+    /// The command line that reproduces the report.
+    pub fn command_line(&self) -> String {
+        if self.options.quick { "rasterm report accuracy --quick".into() } else { "rasterm report accuracy".into() }
+    }
+
+    /// The Markdown report (without any hand-written analysis).
+    pub fn markdown(&self) -> String {
+        let (w, h) = self.options.size;
+        let mut md = String::new();
+        let _ = writeln!(md, "# What accuracy costs: every quality knob, timed and scored\n");
+        let _ = writeln!(
+            md,
+            "Generated by `{}` (release build) on {}, single thread: {w}x{h} pixels, the median of {} frames per \
+             setting. Each scene is also rendered by the reference renderer (`f64` throughout, exact coverage, \
+             perspective-correct, bilinear, per-pixel lighting, 16x16 samples per pixel); PSNR and errors are \
+             against it. Every setting changes one knob from rasterm's default (8 sub-pixel bits, fixed-point \
+             edges, perspective-correct, bilinear, per-pixel lighting, one sample per pixel, `f32` depth). There is \
+             no maths knob: the core has no fast approximations (such as a fast inverse square root); every \
+             function goes through `libm`, so that host and microcontroller compute the same pixels.\n",
+            self.command_line(),
+            super::machine_description(),
+            self.options.repeats
+        );
+        let _ = writeln!(
+            md,
+            "Columns: median frame time; time relative to the default; PSNR against the reference (higher is \
+             better); the largest error of any channel in 8-bit steps; pixels whose coverage differs from the \
+             reference's (one sample per pixel: the pixel centre against the exact centre test; supersampling: \
+             the majority of samples against the reference's coverage of at least half). The chart is \
+             [accuracy.png](accuracy.png).\n"
+        );
+        for scene in &self.scenes {
+            let _ = writeln!(
+                md,
+                "## {}\n\n{}. Reference: {:.2} s.\n",
+                scene.name,
+                capitalise(scene.purpose),
+                scene.reference_time.as_secs_f64()
+            );
+            let _ =
+                writeln!(md, "| setting | knob | time (ms) | x default | PSNR (dB) | max error | coverage errors |");
+            let _ = writeln!(md, "|---|---|---:|---:|---:|---:|---:|");
+            for row in &scene.rows {
+                let name = if row.setting.is_default() {
+                    format!("**{}**", row.setting.name)
+                } else {
+                    row.setting.name.to_string()
+                };
+                let psnr = match (row.same_as_default, row.score.psnr.is_finite()) {
+                    (true, _) => "same pixels as default".into(),
+                    (false, true) => format!("{:.2}", row.score.psnr),
+                    (false, false) => "exact".into(),
+                };
+                let _ = writeln!(
+                    md,
+                    "| {name} | {} | {:.3} | {:.2} | {psnr} | {} | {} |",
+                    row.setting.knob,
+                    row.time.as_secs_f64() * 1e3,
+                    row.relative,
+                    row.score.max_error,
+                    row.score.coverage_errors
+                );
+            }
+            md.push('\n');
+        }
+        let _ = writeln!(md, "## The speed/quality frontier\n");
+        let _ = writeln!(
+            md,
+            "Settings that no other setting beats on both time and PSNR, computed from the tables above (time \
+             differences under 5% and PSNR differences under 0.05 dB count as ties; settings that give the default's \
+             very pixels are left out):\n"
+        );
+        for scene in &self.scenes {
+            let frontier = scene.frontier();
+            let names: Vec<String> = frontier.iter().map(|r| r.setting.name.to_string()).collect();
+            let default_on = frontier.iter().any(|r| r.setting.is_default());
+            let _ = writeln!(
+                md,
+                "- {}: {} (the default is {}on it)",
+                scene.name,
+                names.join(", "),
+                if default_on { "" } else { "not " }
+            );
+        }
+        md.push('\n');
+        md
+    }
+
+    /// The chart as `0x00RRGGBB` pixels.
+    ///
+    /// # Errors
+    /// A message when the font cannot be registered or plotters fails.
+    pub fn chart(&self, width: u32, height: u32) -> Result<Vec<u32>, String> {
+        let panels: Vec<(&str, Vec<chart::Mark<'_>>)> = self
+            .scenes
+            .iter()
+            .map(|s| {
+                let marks = s
+                    .rows
+                    .iter()
+                    .filter(|r| !r.same_as_default)
+                    .map(|r| chart::Mark {
+                        label: r.setting.name,
+                        relative_time: r.relative,
+                        psnr: r.score.psnr,
+                        highlighted: r.setting.is_default(),
+                    })
+                    .collect();
+                (s.name, marks)
+            })
+            .collect();
+        chart::draw(&panels, width, height)
+    }
+
+    /// Writes `accuracy.md` (keeping any hand-written analysis after [`ANALYSIS_MARKER`]) and `accuracy.png` into
+    /// the output directory; returns their paths.
+    ///
+    /// # Errors
+    /// A message naming the file that could not be written.
+    pub fn write(&self) -> Result<(PathBuf, PathBuf), String> {
+        let dir = &self.options.output;
+        std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+        let md_path = dir.join("accuracy.md");
+        let kept = std::fs::read_to_string(&md_path)
+            .ok()
+            .and_then(|old| old.find(ANALYSIS_MARKER).map(|i| old[i..].to_string()))
+            .unwrap_or_else(|| format!("{ANALYSIS_MARKER}\n"));
+        let text = format!("{}{kept}", self.markdown());
+        write_text(&md_path, &text)?;
+        let png_path = dir.join("accuracy.png");
+        let (cw, ch) = (1400, 1000);
+        let pixels = self.chart(cw, ch)?;
+        write_png(&png_path, cw, ch, &pixels).map_err(|e| e.to_string())?;
+        Ok((md_path, png_path))
+    }
+}
+
+fn capitalise(s: &str) -> String {
+    let mut c = s.chars();
+    c.next().map_or_else(String::new, |f| f.to_uppercase().collect::<String>() + c.as_str())
+}
+
+/// Writes a text file through a temporary file and a rename, like [`write_png`].
+fn write_text(path: &Path, text: &str) -> Result<(), String> {
+    let temporary = path.with_extension("md.tmp");
+    std::fs::write(&temporary, text).and_then(|()| std::fs::rename(&temporary, path)).map_err(|e| {
+        let _ = std::fs::remove_file(&temporary);
+        format!("cannot write {}: {e}", path.display())
+    })
+}

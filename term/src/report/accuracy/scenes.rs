@@ -1,0 +1,148 @@
+//! The four scenes, each chosen so that some quality knob shows its effect. They are described once, as reference
+//! scenes; rasterm renders the same description through the core.
+
+use rasterm_core::pipeline::Cull;
+use rasterm_core::texture::WrapMode;
+
+use crate::builtin::builtin_model;
+use crate::model::{LoadError, TextureImage};
+use crate::reference::{Camera, Light, Lighting, Object, Projection, Scene, Shading, math};
+use crate::scene::{Appearance, Lens, OrbitCamera};
+
+/// A named scene and what it is for.
+pub struct AccuracyScene {
+    /// Short name, for tables and the chart.
+    pub name: &'static str,
+    /// What the scene stresses.
+    pub purpose: &'static str,
+    /// The scene.
+    pub scene: Scene,
+}
+
+/// All scenes at `width x height`.
+///
+/// # Errors
+/// Only if the built-in model cannot be loaded.
+pub fn all(width: u32, height: u32) -> Result<Vec<AccuracyScene>, LoadError> {
+    Ok(vec![floor(width, height), model(width, height)?, slivers(width, height), far_surfaces(width, height)])
+}
+
+fn perspective(eye: [f64; 3], target: [f64; 3], fovy_degrees: f64, (w, h): (u32, u32), near: f64, far: f64) -> Camera {
+    Camera {
+        eye,
+        target,
+        up: [0.0, 1.0, 0.0],
+        projection: Projection::Perspective {
+            fovy: fovy_degrees.to_radians(),
+            aspect: f64::from(w) / f64::from(h),
+            near,
+            far,
+        },
+    }
+}
+
+/// An unlit quad of two triangles.
+fn quad(corners: [[f64; 3]; 4], color: [f64; 3]) -> Object {
+    let mut o = Object::new(corners.to_vec(), vec![0, 1, 2, 0, 2, 3]);
+    o.material.color = color;
+    o.shading = Shading::Unlit;
+    o.cull = Cull::None;
+    o
+}
+
+/// A 64x64 checkerboard of 8x8-texel squares: black and white, the hardest texture to shrink.
+fn checkerboard() -> TextureImage {
+    let texels =
+        (0..64 * 64).map(|i| if ((i % 64) / 8 + (i / 64) / 8) % 2 == 0 { 0xF2F2F2 } else { 0x1A1A1A }).collect();
+    TextureImage { width: 64, height: 64, texels }
+}
+
+/// A checkerboard floor receding to the horizon, two triangles 150 units deep: affine interpolation bends its
+/// lines, nearest sampling and a single sample per pixel alias near the horizon.
+fn floor(w: u32, h: u32) -> AccuracyScene {
+    let (x, near, far) = (40.0, 2.0, -150.0);
+    let mut floor = quad([[-x, 0.0, near], [x, 0.0, near], [x, 0.0, far], [-x, 0.0, far]], [1.0; 3]);
+    // One texture repeat every 4 units: squares of half a unit.
+    floor.uvs = Some(vec![[-x / 4.0, near / 4.0], [x / 4.0, near / 4.0], [x / 4.0, far / 4.0], [-x / 4.0, far / 4.0]]);
+    floor.texture = Some(checkerboard());
+    floor.wrap = WrapMode::Repeat;
+    let mut scene = Scene::new(w, h, perspective([0.0, 1.2, 0.0], [0.0, 0.75, -10.0], 60.0, (w, h), 0.1, 200.0));
+    scene.background = [0.55, 0.7, 0.9];
+    scene.objects = vec![floor];
+    AccuracyScene {
+        name: "floor",
+        purpose: "a textured checkerboard floor to the horizon: interpolation, sampling, aliasing",
+        scene,
+    }
+}
+
+/// The built-in model, textured and lit, at an oblique angle: shading frequency and texture filtering.
+fn model(w: u32, h: u32) -> Result<AccuracyScene, LoadError> {
+    let camera = OrbitCamera::new(65.0, 35.0, 2.4, Lens::Perspective { fov_degrees: 40.0 });
+    let scene =
+        Scene::from_model(&builtin_model()?, &camera, &Appearance::default(), (w, h), f64::from(w) / f64::from(h))
+            .map_err(|e| LoadError::new("built-in Spot", crate::model::LoadErrorKind::Parser(e.to_string())))?;
+    Ok(AccuracyScene {
+        name: "model",
+        purpose: "the built-in model, textured and lit, seen obliquely: shading and texture filtering",
+        scene,
+    })
+}
+
+/// 360 triangles in a fan, each a third of a degree wide at its tip and under a pixel wide for most of its length,
+/// in two colours: sub-pixel precision and edge arithmetic decide which pixels they get.
+fn slivers(w: u32, h: u32) -> AccuracyScene {
+    let (cx, cy) = (0.123, -0.077);
+    let r = 3.0;
+    let mut objects = Vec::new();
+    for (parity, color) in [(0, [0.95, 0.35, 0.2]), (1, [0.2, 0.45, 0.95])] {
+        let mut positions = Vec::new();
+        let mut indices = Vec::new();
+        for k in (parity..360).step_by(2) {
+            let a0 = (f64::from(k as u32) + 0.17).to_radians();
+            let a1 = a0 + (1.0f64 / 3.0).to_radians();
+            let base = positions.len() as u32;
+            positions.push([cx, cy, 0.0]);
+            positions.push([cx + r * a0.cos(), cy + r * a0.sin(), 0.0]);
+            positions.push([cx + r * a1.cos(), cy + r * a1.sin(), 0.0]);
+            indices.extend([base, base + 1, base + 2]);
+        }
+        let mut o = Object::new(positions, indices);
+        o.material.color = color;
+        o.shading = Shading::Unlit;
+        o.cull = Cull::None;
+        objects.push(o);
+    }
+    let aspect = f64::from(w) / f64::from(h);
+    let camera = Camera {
+        eye: [0.0, 0.0, 1.0],
+        target: [0.0, 0.0, 0.0],
+        up: [0.0, 1.0, 0.0],
+        projection: Projection::Orthographic {
+            left: -aspect,
+            right: aspect,
+            bottom: -1.0,
+            top: 1.0,
+            near: 0.5,
+            far: 1.5,
+        },
+    };
+    let mut scene = Scene::new(w, h, camera);
+    scene.background = [0.08, 0.08, 0.1];
+    scene.objects = objects;
+    AccuracyScene { name: "slivers", purpose: "a fan of 360 thin triangles: coverage of sub-pixel geometry", scene }
+}
+
+/// Two overlapping surfaces 500 units away and half a unit apart, with near 0.1 and far 1000: depth precision.
+fn far_surfaces(w: u32, h: u32) -> AccuracyScene {
+    let square = |d: f64, s: f64, color| quad([[-s, -s, -d], [s, -s, -d], [s, s, -d], [-s, s, -d]], color);
+    // The farther, larger one is drawn first; the nearer one must hide it wherever they overlap.
+    let back = square(500.5, 180.0, [0.2, 0.35, 0.9]);
+    let mut front = square(500.0, 120.0, [0.95, 0.6, 0.15]);
+    front.model = math::translation([20.0, -15.0, 0.0]);
+    let mut scene = Scene::new(w, h, perspective([0.0, 0.0, 0.0], [0.0, 0.0, -1.0], 50.0, (w, h), 0.1, 1000.0));
+    scene.background = [0.1, 0.1, 0.1];
+    scene.lighting = Lighting { ambient: [1.0; 3], lights: vec![Light::directional([0.0, 0.0, 1.0], [0.0; 3])] };
+    scene.objects = vec![back, front];
+    AccuracyScene { name: "far surfaces", purpose: "two surfaces 500 units away and 0.5 apart: depth precision", scene }
+}

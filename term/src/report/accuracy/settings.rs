@@ -1,0 +1,93 @@
+//! The quality knobs: each setting changes one of them from the default.
+
+use rasterm_core::pipeline::{DrawState, EdgeArithmetic, Interpolation};
+use rasterm_core::texture::FilterMode;
+
+/// How lit surfaces are shaded (unlit ones ignore it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LitShading {
+    /// Once per triangle.
+    Flat,
+    /// Per vertex.
+    Gouraud,
+    /// Per pixel.
+    Phong,
+}
+
+/// Depth buffer format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DepthFormat {
+    /// 32-bit float.
+    F32,
+    /// 16-bit fixed point.
+    U16,
+}
+
+/// One point in the space of knobs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Setting {
+    /// Its name in tables and charts.
+    pub name: &'static str,
+    /// Which knob it turns, and to what.
+    pub knob: &'static str,
+    /// Sub-pixel bits of vertex snapping.
+    pub subpixel_bits: u8,
+    /// Edge-function arithmetic.
+    pub edges: EdgeArithmetic,
+    /// Varying interpolation.
+    pub interpolation: Interpolation,
+    /// Texture filter.
+    pub filter: FilterMode,
+    /// Shading of lit surfaces.
+    pub shading: LitShading,
+    /// Samples per pixel along each axis.
+    pub supersample: u32,
+    /// Depth format.
+    pub depth: DepthFormat,
+}
+
+/// rasterm's defaults: 8 sub-pixel bits, fixed-point edges, perspective-correct, bilinear, per-pixel lighting, one
+/// sample per pixel, `f32` depth.
+pub const DEFAULT: Setting = Setting {
+    name: "default",
+    knob: "-",
+    subpixel_bits: 8,
+    edges: EdgeArithmetic::FixedPoint,
+    interpolation: Interpolation::PerspectiveCorrect,
+    filter: FilterMode::Bilinear,
+    shading: LitShading::Phong,
+    supersample: 1,
+    depth: DepthFormat::F32,
+};
+
+/// Every setting measured: the default, then one knob at a time.
+pub const ALL: [Setting; 11] = [
+    DEFAULT,
+    Setting { name: "0 sub-pixel bits", knob: "sub-pixel bits", subpixel_bits: 0, ..DEFAULT },
+    Setting { name: "4 sub-pixel bits", knob: "sub-pixel bits", subpixel_bits: 4, ..DEFAULT },
+    Setting { name: "f32 edges", knob: "edge arithmetic", edges: EdgeArithmetic::Float, ..DEFAULT },
+    Setting { name: "affine", knob: "interpolation", interpolation: Interpolation::Affine, ..DEFAULT },
+    Setting { name: "nearest", knob: "texture filter", filter: FilterMode::Nearest, ..DEFAULT },
+    Setting { name: "flat", knob: "shading", shading: LitShading::Flat, ..DEFAULT },
+    Setting { name: "Gouraud", knob: "shading", shading: LitShading::Gouraud, ..DEFAULT },
+    Setting { name: "2x2 SSAA", knob: "anti-aliasing", supersample: 2, ..DEFAULT },
+    Setting { name: "4x4 SSAA", knob: "anti-aliasing", supersample: 4, ..DEFAULT },
+    Setting { name: "u16 depth", knob: "depth buffer", depth: DepthFormat::U16, ..DEFAULT },
+];
+
+impl Setting {
+    /// The core draw state of this setting.
+    pub fn draw_state(&self) -> DrawState {
+        DrawState {
+            subpixel_bits: self.subpixel_bits,
+            edges: self.edges,
+            interpolation: self.interpolation,
+            ..DrawState::default()
+        }
+    }
+
+    /// True for the default setting.
+    pub fn is_default(&self) -> bool {
+        *self == DEFAULT
+    }
+}
