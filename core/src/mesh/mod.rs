@@ -1,4 +1,8 @@
-//! Triangle meshes over borrowed slices.
+//! Triangle meshes over borrowed slices, and tangent frames computed from them.
+
+mod tangents;
+
+pub use tangents::{TangentError, compute_tangents};
 
 use crate::math::{Vec2, Vec3};
 
