@@ -6,6 +6,7 @@
 //! | [`builtin`] | the model compiled into the binary |
 //! | [`escaped`] | text from input files made safe for a terminal |
 //! | [`scene`] | camera, lights and shading choices; drawing a model into a core target |
+//! | [`scene_file`] | TOML scene files: camera, lights, placed and textured meshes; parsed, checked and loaded |
 //! | [`headless`] | `rasterm render`: a scene to a PNG file |
 //! | [`png_file`] | writing PNG files safely |
 //! | [`reference`](mod@reference) | a slow `f64` reference renderer (16x16 supersampling, exact coverage): the truth to measure against |
@@ -21,5 +22,6 @@ pub mod png_file;
 pub mod reference;
 pub mod report;
 pub mod scene;
+pub mod scene_file;
 pub mod screen;
 pub mod viewer;

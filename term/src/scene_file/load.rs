@@ -1,0 +1,197 @@
+//! Loading a checked scene file: paths resolved against the scene file's directory, meshes loaded with
+//! [`crate::model::load_obj`], images with [`TextureImage::load`], each file once.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use rasterm_core::math::Vec3;
+use rasterm_core::texture::{FilterMode, WrapMode};
+use toml::Spanned;
+
+use super::SceneFile;
+use super::error::{SceneFileError, SceneFileErrorKind};
+use super::loaded::{
+    LightKind, LoadedScene, NormalMap, ObjectMaterial, Projection, SceneCamera, SceneLight, SceneObject,
+};
+use super::schema::{CameraSpec, Filter, LightSpec, LightType, MaterialSpec, ObjectSpec, Triple, Wrap};
+use super::transform::object_transform;
+use super::validate::{BUILTIN_PREFIX, Checker, unit};
+use crate::builtin::builtin_model;
+use crate::escaped::{Escaped, path_text};
+use crate::model::{Model, TextureImage, load_obj};
+use crate::scene::{AMBIENT, Appearance, parse_hex_color};
+
+fn vec3(t: Triple) -> Vec3 {
+    Vec3::new(t[0], t[1], t[2])
+}
+
+fn vec3_or(value: &Option<Spanned<Triple>>, default: Vec3) -> Vec3 {
+    value.as_ref().map_or(default, |v| vec3(*v.get_ref()))
+}
+
+/// Loads what `file` refers to. `file` has been validated by [`super::parse`].
+pub(crate) fn load_scene_file(file: &SceneFile) -> Result<LoadedScene, SceneFileError> {
+    let base = file.origin.parent().unwrap_or(Path::new(""));
+    let mut loader = Loader {
+        checker: Checker { file: &file.origin, text: &file.text },
+        base,
+        meshes: HashMap::new(),
+        image_ids: HashMap::new(),
+        images: Vec::new(),
+        warnings: Vec::new(),
+    };
+    let spec = &file.spec;
+    let mut objects = Vec::with_capacity(spec.objects.get_ref().len());
+    for (i, object) in spec.objects.get_ref().iter().enumerate() {
+        objects.push(loader.object(object.get_ref(), &format!("objects[{i}]"))?);
+    }
+    let background = spec
+        .background
+        .as_ref()
+        .and_then(|b| parse_hex_color(b.get_ref()).ok())
+        .unwrap_or(Appearance::DEFAULT_BACKGROUND);
+    let Loader { images, warnings, .. } = loader;
+    Ok(LoadedScene {
+        camera: camera(spec.camera.get_ref()),
+        lights: spec.lights.iter().map(|l| light(l.get_ref())).collect(),
+        objects,
+        background,
+        ambient: vec3_or(&spec.ambient, AMBIENT),
+        ambient_occlusion: spec.ambient_occlusion,
+        images,
+        warnings,
+    })
+}
+
+fn camera(c: &CameraSpec) -> SceneCamera {
+    let projection = match (&c.fov, &c.orthographic) {
+        (Some(fov), _) => Projection::Perspective { fov_degrees: *fov.get_ref() },
+        (None, Some(height)) => Projection::Orthographic { height: *height.get_ref() },
+        // Refused by validation; a default lens keeps this total.
+        (None, None) => Projection::Perspective { fov_degrees: crate::scene::OrbitCamera::DEFAULT_FOV_DEGREES },
+    };
+    SceneCamera {
+        position: vec3(*c.position.get_ref()),
+        target: vec3(*c.target.get_ref()),
+        up: c.up.as_ref().and_then(|u| unit(*u.get_ref())).unwrap_or(Vec3::Y),
+        projection,
+        near: c.near.as_ref().map(|v| *v.get_ref()),
+        far: c.far.as_ref().map(|v| *v.get_ref()),
+    }
+}
+
+fn light(l: &LightSpec) -> SceneLight {
+    let kind = match l.kind.get_ref() {
+        LightType::Directional => LightKind::Directional {
+            direction: l.direction.as_ref().and_then(|d| unit(*d.get_ref())).unwrap_or(-Vec3::Y),
+        },
+        LightType::Point => LightKind::Point { position: vec3_or(&l.position, Vec3::ZERO) },
+    };
+    SceneLight {
+        kind,
+        color: vec3_or(&l.color, Vec3::ONE),
+        intensity: l.intensity.as_ref().map_or(1.0, |v| *v.get_ref()),
+        shadows: l.shadows,
+    }
+}
+
+/// The identity of a file for sharing: its canonical path when it has one, else the path as given.
+fn identity(path: &Path) -> PathBuf {
+    std::fs::canonicalize(path).unwrap_or_else(|_| path.to_path_buf())
+}
+
+struct Loader<'a> {
+    checker: Checker<'a>,
+    /// The scene file's directory (empty for a file in the current directory).
+    base: &'a Path,
+    /// Meshes loaded so far, by identity (or the built-in name).
+    meshes: HashMap<PathBuf, Arc<Model>>,
+    /// Images loaded so far: identity to index in `images`.
+    image_ids: HashMap<PathBuf, usize>,
+    images: Vec<(PathBuf, Arc<TextureImage>)>,
+    warnings: Vec<String>,
+}
+
+impl Loader<'_> {
+    fn object(&mut self, o: &ObjectSpec, key: &str) -> Result<SceneObject, SceneFileError> {
+        let (mesh_path, model) = self.mesh(&o.mesh, &format!("{key}.mesh"))?;
+        let scale = o.scale.as_ref().map_or(Vec3::ONE, |s| vec3(s.get_ref().triple()));
+        let transform = object_transform(vec3_or(&o.translate, Vec3::ZERO), vec3_or(&o.rotate, Vec3::ZERO), scale);
+        let material = self.material(&o.material, &format!("{key}.material"), model.uvs.is_some())?;
+        Ok(SceneObject { mesh_path, model, transform, material })
+    }
+
+    fn mesh(&mut self, spec: &Spanned<String>, key: &str) -> Result<(PathBuf, Arc<Model>), SceneFileError> {
+        let text = spec.get_ref();
+        let (path, id) = if text.starts_with(BUILTIN_PREFIX) {
+            // Validation admits only the built-in names there are.
+            (PathBuf::from(text), PathBuf::from(text))
+        } else {
+            let path = self.base.join(text);
+            let id = identity(&path);
+            (path, id)
+        };
+        if let Some(model) = self.meshes.get(&id) {
+            return Ok((path, Arc::clone(model)));
+        }
+        let loaded = if text.starts_with(BUILTIN_PREFIX) { builtin_model() } else { load_obj(&path) };
+        let model = Arc::new(loaded.map_err(|error| {
+            let kind = SceneFileErrorKind::Mesh { path: path.clone(), error: Box::new(error) };
+            SceneFileError::new(self.checker.file, Some(self.checker.locate(&spec.span())), Some(key.into()), kind)
+        })?);
+        self.meshes.insert(id, Arc::clone(&model));
+        Ok((path, model))
+    }
+
+    fn material(&mut self, m: &MaterialSpec, key: &str, has_uvs: bool) -> Result<ObjectMaterial, SceneFileError> {
+        let mut image = |spec: &Option<Spanned<String>>, name: &str| -> Result<_, SceneFileError> {
+            spec.as_ref().map(|s| self.image(s, &format!("{key}.{name}"), has_uvs)).transpose()
+        };
+        let diffuse = image(&m.diffuse, "diffuse")?;
+        let normal_map = image(&m.normal_map, "normal_map")?;
+        let specular_map = image(&m.specular_map, "specular_map")?;
+        let glow_map = image(&m.glow_map, "glow_map")?;
+        let space = m.normal_space.as_ref().map(|s| *s.get_ref()).unwrap_or_default();
+        Ok(ObjectMaterial {
+            color: m.color.as_ref().map(|c| vec3(*c.get_ref())),
+            diffuse,
+            normal_map: normal_map.map(|image| NormalMap { image, space }),
+            specular: m.specular.as_ref().map(|s| vec3(s.get_ref().triple())),
+            shininess: m.shininess.as_ref().map(|s| *s.get_ref()),
+            specular_map,
+            glow_map,
+            filter: match m.filter {
+                Filter::Nearest => FilterMode::Nearest,
+                Filter::Bilinear => FilterMode::Bilinear,
+            },
+            wrap: match m.wrap {
+                Wrap::Repeat => WrapMode::Repeat,
+                Wrap::Clamp => WrapMode::Clamp,
+            },
+        })
+    }
+
+    fn image(&mut self, spec: &Spanned<String>, key: &str, has_uvs: bool) -> Result<Arc<TextureImage>, SceneFileError> {
+        let location = self.checker.locate(&spec.span());
+        if !has_uvs {
+            self.warnings.push(format!(
+                "{}:{location}: {}: the mesh has no texture coordinates, so this image does not show",
+                path_text(self.checker.file),
+                Escaped(key)
+            ));
+        }
+        let path = self.base.join(spec.get_ref());
+        let id = identity(&path);
+        if let Some(&index) = self.image_ids.get(&id) {
+            return Ok(Arc::clone(&self.images[index].1));
+        }
+        let image = Arc::new(TextureImage::load(&path).map_err(|error| {
+            let kind = SceneFileErrorKind::Image { path: path.clone(), error: Box::new(error) };
+            SceneFileError::new(self.checker.file, Some(location), Some(key.into()), kind)
+        })?);
+        self.image_ids.insert(id, self.images.len());
+        self.images.push((path, Arc::clone(&image)));
+        Ok(image)
+    }
+}

@@ -1,0 +1,172 @@
+//! A loaded scene: owned camera, lights and objects, with meshes and images loaded and shared.
+
+use std::path::PathBuf;
+use std::sync::Arc;
+
+use rasterm_core::camera::{CameraError, look_at};
+use rasterm_core::math::{Mat4, Vec3};
+use rasterm_core::texture::{FilterMode, WrapMode};
+
+use super::schema::NormalSpace;
+use crate::model::{self, Model, TextureImage};
+
+/// Everything a scene file describes, loaded and checked, ready for a renderer.
+#[derive(Clone, Debug)]
+pub struct LoadedScene {
+    /// The camera.
+    pub camera: SceneCamera,
+    /// The lights, in file order (possibly none).
+    pub lights: Vec<SceneLight>,
+    /// The objects, in file order (at least one).
+    pub objects: Vec<SceneObject>,
+    /// The background colour (the file's, or [`crate::scene::Appearance::DEFAULT_BACKGROUND`]).
+    pub background: Vec3,
+    /// The ambient light (the file's, or [`crate::scene::AMBIENT`]).
+    pub ambient: Vec3,
+    /// Whether ambient occlusion is wanted.
+    pub ambient_occlusion: bool,
+    /// Every image file loaded, each once, in the order first referenced, with its path as resolved at that first
+    /// reference. Objects hold the same [`Arc`]s.
+    pub images: Vec<(PathBuf, Arc<TextureImage>)>,
+    /// Non-fatal problems of the scene (an image on a mesh without texture coordinates), one line each, in the
+    /// form of [`super::SceneFileError`]'s and with control characters escaped. The meshes' own warnings stay in
+    /// each [`Model::warnings`].
+    pub warnings: Vec<String>,
+}
+
+/// The camera of a scene file.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SceneCamera {
+    /// The eye.
+    pub position: Vec3,
+    /// The point looked at (differs from `position`).
+    pub target: Vec3,
+    /// Which way is up in the image, unit length.
+    pub up: Vec3,
+    /// The lens.
+    pub projection: Projection,
+    /// The near plane's distance, when the file gives one (positive).
+    pub near: Option<f32>,
+    /// The far plane's distance, when the file gives one (positive, beyond `near` when both are given).
+    pub far: Option<f32>,
+}
+
+impl SceneCamera {
+    /// The view matrix (world to view space).
+    ///
+    /// # Errors
+    /// Never for a camera from a scene file, whose values are checked; [`CameraError`] for one changed by hand to
+    /// have the eye at the target or a non-finite value.
+    pub fn view(&self) -> Result<Mat4, CameraError> {
+        look_at(self.position, self.target, self.up)
+    }
+}
+
+/// A camera's lens.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Projection {
+    /// Perspective.
+    Perspective {
+        /// The vertical field of view in degrees, strictly between 0 and 180.
+        fov_degrees: f32,
+    },
+    /// Orthographic (parallel rays).
+    Orthographic {
+        /// How much of the world the view shows vertically, in world units (positive).
+        height: f32,
+    },
+}
+
+/// A light of a scene file.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SceneLight {
+    /// Where the light comes from.
+    pub kind: LightKind,
+    /// Its colour (components not negative), not yet multiplied by `intensity`.
+    pub color: Vec3,
+    /// Multiplies `color` (not negative).
+    pub intensity: f32,
+    /// Whether it casts shadows.
+    pub shadows: bool,
+}
+
+/// The kind of a light and where it is.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LightKind {
+    /// Parallel rays.
+    Directional {
+        /// The unit direction the light travels, from the light toward the scene (the opposite of the core's
+        /// [`rasterm_core::shading::Light::to_light`]).
+        direction: Vec3,
+    },
+    /// Rays from one point.
+    Point {
+        /// Where the light is.
+        position: Vec3,
+    },
+}
+
+/// An object of a scene file: a mesh, where it is, and how it looks.
+#[derive(Clone, Debug)]
+pub struct SceneObject {
+    /// The mesh file as resolved against the scene file's directory, or `builtin:spot`. Raw: sanitise before
+    /// printing.
+    pub mesh_path: PathBuf,
+    /// The mesh in its own coordinates (not fitted), with its MTL materials. Objects naming the same file share
+    /// it.
+    pub model: Arc<Model>,
+    /// Object to world (see [`super::object_transform`]).
+    pub transform: Mat4,
+    /// The material keys of the scene file, over the model's own materials.
+    pub material: ObjectMaterial,
+}
+
+/// The `[objects.material]` keys of an object, with their images loaded. `None` means the key was left out.
+///
+/// `color` and `diffuse` override the mesh's MTL materials for every part; when left out, each part keeps its
+/// MTL `Kd` and `map_Kd` ([`Self::color_over`] and [`Self::diffuse_over`] say which wins). The other keys have no
+/// MTL counterpart: when left out, the renderer's defaults apply.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ObjectMaterial {
+    /// The diffuse colour (components from 0 to 1).
+    pub color: Option<Vec3>,
+    /// The diffuse texture.
+    pub diffuse: Option<Arc<TextureImage>>,
+    /// The normal map and how to read it.
+    pub normal_map: Option<NormalMap>,
+    /// The specular colour (components from 0 to 1).
+    pub specular: Option<Vec3>,
+    /// The Blinn-Phong exponent (positive).
+    pub shininess: Option<f32>,
+    /// The specular map, as decoded (a grey image has its level in all three channels).
+    pub specular_map: Option<Arc<TextureImage>>,
+    /// The glow (emission) map, as decoded.
+    pub glow_map: Option<Arc<TextureImage>>,
+    /// How the images are sampled.
+    pub filter: FilterMode,
+    /// What coordinates outside `[0, 1]` read.
+    pub wrap: WrapMode,
+}
+
+impl ObjectMaterial {
+    /// The diffuse colour of a part whose MTL material is `mtl` (`None` for a part without one): the scene's
+    /// `color` if given, else the MTL's `Kd`, else [`model::DEFAULT_DIFFUSE`].
+    pub fn color_over(&self, mtl: Option<&model::Material>) -> Vec3 {
+        self.color.or(mtl.map(|m| m.diffuse)).unwrap_or(model::DEFAULT_DIFFUSE)
+    }
+
+    /// The diffuse texture of a part whose MTL material is `mtl`: the scene's `diffuse` if given, else the MTL's
+    /// `map_Kd` (when it loaded), else none.
+    pub fn diffuse_over<'a>(&'a self, mtl: Option<&'a model::Material>) -> Option<&'a TextureImage> {
+        self.diffuse.as_deref().or(mtl.and_then(|m| m.texture.as_ref()))
+    }
+}
+
+/// A normal map with the space its texels are in.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NormalMap {
+    /// The image, as RGB (`rgb = normal * 0.5 + 0.5`).
+    pub image: Arc<TextureImage>,
+    /// Tangent or object space.
+    pub space: NormalSpace,
+}

@@ -1,0 +1,244 @@
+//! The scene file's schema: the TOML tables and keys, as `serde` types.
+//!
+//! Every table refuses keys it does not know (`deny_unknown_fields`), so a misspelt key is an error, not a silent
+//! default. Values that [`super::parse`] checks beyond their type keep their place in the file ([`Spanned`]), so
+//! its errors name the line too. Vectors are arrays of three numbers; integers are accepted where numbers are
+//! expected (`fov = 40`).
+
+use std::fmt;
+
+use serde::Deserialize;
+use serde::de::{self, Deserializer, SeqAccess, Visitor};
+use toml::Spanned;
+
+/// Three numbers: a point, a vector, an RGB colour (components from 0 to 1 unless a key says otherwise) or
+/// angles.
+pub type Triple = [f32; 3];
+
+/// The whole file: the top-level keys and the `[camera]`, `[[lights]]` and `[[objects]]` tables.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields, expecting = "a scene table")]
+pub struct SceneSpec {
+    /// `background = "RRGGBB"` (a leading `#` is accepted): the colour behind the objects. Optional; the viewer's
+    /// dark blue-grey (`16191f`) when absent.
+    pub background: Option<Spanned<String>>,
+    /// `ambient = [r, g, b]`: light reaching every surface from every direction, each component finite and not
+    /// negative. Optional; the viewer's ambient light ([`crate::scene::AMBIENT`]) when absent.
+    pub ambient: Option<Spanned<Triple>>,
+    /// `ambient_occlusion = true|false`: darken creases and contact areas. Default `false`.
+    #[serde(default)]
+    pub ambient_occlusion: bool,
+    /// `[camera]`: where the scene is seen from. Required.
+    pub camera: Spanned<CameraSpec>,
+    /// `[[lights]]`: any number of lights, in file order. Optional; with none, only the ambient light shows.
+    #[serde(default)]
+    pub lights: Vec<Spanned<LightSpec>>,
+    /// `[[objects]]`: the meshes to draw, at least one, in file order.
+    pub objects: Spanned<Vec<Spanned<ObjectSpec>>>,
+}
+
+/// `[camera]`: a camera at `position` looking at `target`, with either a perspective (`fov`) or an orthographic
+/// (`orthographic`) lens: exactly one of the two must be given.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields, expecting = "a table of camera keys")]
+pub struct CameraSpec {
+    /// `position = [x, y, z]`: the eye, in world coordinates. Required.
+    pub position: Spanned<Triple>,
+    /// `target = [x, y, z]`: the point looked at; must differ from `position`. Required.
+    pub target: Spanned<Triple>,
+    /// `up = [x, y, z]`: which way is up in the image; not zero. Default `[0, 1, 0]`. When it is parallel to the
+    /// view direction, another axis is used (as [`rasterm_core::camera::look_at`] does).
+    pub up: Option<Spanned<Triple>>,
+    /// `fov = DEGREES`: a perspective lens with this vertical field of view, strictly between 0 and 180.
+    pub fov: Option<Spanned<f32>>,
+    /// `orthographic = HEIGHT`: an orthographic (parallel) lens showing this much of the world vertically, in world
+    /// units; positive.
+    pub orthographic: Option<Spanned<f32>>,
+    /// `near = DISTANCE`: the near clipping plane's distance from the eye, positive. Optional; the renderer chooses
+    /// when absent.
+    pub near: Option<Spanned<f32>>,
+    /// `far = DISTANCE`: the far clipping plane's distance from the eye, positive and greater than `near`.
+    /// Optional; the renderer chooses when absent.
+    pub far: Option<Spanned<f32>>,
+}
+
+/// `[[lights]]`: one light. `type = "directional"` needs `direction` (and takes no `position`); `type = "point"`
+/// needs `position` (and takes no `direction`).
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields, expecting = "a table of light keys")]
+pub struct LightSpec {
+    /// `type = "directional" | "point"`. Required.
+    #[serde(rename = "type")]
+    pub kind: Spanned<LightType>,
+    /// `direction = [x, y, z]`, directional lights only: the direction the light **travels**, from the light toward
+    /// the scene (so `[0, -1, 0]` is a sun straight overhead). Not zero; its length does not matter.
+    pub direction: Option<Spanned<Triple>>,
+    /// `position = [x, y, z]`, point lights only: where the light is, in world coordinates.
+    pub position: Option<Spanned<Triple>>,
+    /// `color = [r, g, b]`: the light's colour, components finite and not negative. Default white `[1, 1, 1]`.
+    pub color: Option<Spanned<Triple>>,
+    /// `intensity = NUMBER`: multiplies `color`; finite and not negative. Default 1.
+    pub intensity: Option<Spanned<f32>>,
+    /// `shadows = true|false`: whether this light casts shadows. Default `false`.
+    #[serde(default)]
+    pub shadows: bool,
+}
+
+/// The kinds of light (`type = "..."` of a `[[lights]]` table).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase", expecting = "\"directional\" or \"point\"")]
+pub enum LightType {
+    /// `"directional"`: parallel rays from far away, like the sun.
+    Directional,
+    /// `"point"`: rays in every direction from one point, like a bulb.
+    Point,
+}
+
+/// `[[objects]]`: one mesh, placed in the world by `scale`, then `rotate`, then `translate`.
+///
+/// The mesh is used in its own coordinates (it is not centred or fitted to a size, unlike the viewer's single
+/// model), so the transform gives its place and size in the world.
+#[derive(Clone, Debug, Deserialize)]
+#[serde(deny_unknown_fields, expecting = "a table of object keys")]
+pub struct ObjectSpec {
+    /// `mesh = "PATH"`: an OBJ file, relative to the scene file's directory (an absolute path is used as is), with
+    /// its MTL library and textures; or `"builtin:spot"`, the model built into `rasterm` (Spot, facing `+z`, with
+    /// her texture; see [`crate::builtin`]). Required.
+    pub mesh: Spanned<String>,
+    /// `translate = [x, y, z]`: moves the object, in world units. Default `[0, 0, 0]`.
+    pub translate: Option<Spanned<Triple>>,
+    /// `rotate = [x, y, z]`: rotations in degrees about the X, Y and Z axes, applied in that order (first about X,
+    /// then about Y, then about Z, all about the world's axes through the object's origin), each counter-clockwise
+    /// when looking down its axis toward the origin (the right-hand rule). Default `[0, 0, 0]`.
+    pub rotate: Option<Spanned<Triple>>,
+    /// `scale = NUMBER` or `scale = [x, y, z]`: a uniform or per-axis scale, applied first; every factor positive.
+    /// Default 1.
+    pub scale: Option<Spanned<NumberOrTriple>>,
+    /// `[objects.material]`: how the surface looks. Optional.
+    #[serde(default)]
+    pub material: MaterialSpec,
+}
+
+/// `[objects.material]`: the object's surface. Every key is optional.
+///
+/// Where the OBJ file has its own MTL materials, the keys given here override them for every part of the object,
+/// and keys left out fall back to each part's MTL material: `color` to its `Kd`, `diffuse` to its `map_Kd`. The
+/// other keys have no MTL counterpart that `rasterm` reads, so when left out they take the renderer's defaults.
+/// Image paths are relative to the scene file's directory. Images are sampled with the object's texture
+/// coordinates, so they show only on meshes that have them.
+#[derive(Clone, Debug, Default, Deserialize)]
+#[serde(deny_unknown_fields, expecting = "a table of material keys")]
+pub struct MaterialSpec {
+    /// `color = [r, g, b]`: the diffuse (base) colour, components from 0 to 1; multiplied by `diffuse` when both
+    /// are given.
+    pub color: Option<Spanned<Triple>>,
+    /// `diffuse = "PATH"`: the diffuse texture (PNG, TGA or JPEG).
+    pub diffuse: Option<Spanned<String>>,
+    /// `normal_map = "PATH"`: a normal map, each texel a unit normal encoded as `rgb = normal * 0.5 + 0.5`, in the
+    /// space `normal_space` names.
+    pub normal_map: Option<Spanned<String>>,
+    /// `normal_space = "tangent" | "object"`: how `normal_map` is read: relative to the surface (tangent space:
+    /// `[0.5, 0.5, 1]` is the unperturbed normal), or as normals in the mesh's own coordinates (object space).
+    /// Default `"tangent"`; an error without `normal_map`.
+    pub normal_space: Option<Spanned<NormalSpace>>,
+    /// `specular = [r, g, b]` or `specular = NUMBER` (grey): the colour of highlights, components from 0 to 1;
+    /// 0 turns highlights off.
+    pub specular: Option<Spanned<NumberOrTriple>>,
+    /// `shininess = NUMBER`: the Blinn-Phong exponent, positive: larger is a smaller, sharper highlight.
+    pub shininess: Option<Spanned<f32>>,
+    /// `specular_map = "PATH"`: an image that scales the specular colour per texel (a grey image scales all
+    /// channels alike).
+    pub specular_map: Option<Spanned<String>>,
+    /// `glow_map = "PATH"`: light the surface emits itself, per texel, added after lighting (black emits nothing).
+    pub glow_map: Option<Spanned<String>>,
+    /// `filter = "nearest" | "bilinear"`: how the images are sampled. Default `"bilinear"`.
+    #[serde(default)]
+    pub filter: Filter,
+    /// `wrap = "repeat" | "clamp"`: what texture coordinates outside `[0, 1]` read. Default `"repeat"`.
+    #[serde(default)]
+    pub wrap: Wrap,
+}
+
+/// How a normal map's texels are to be read (`normal_space = "..."`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase", expecting = "\"tangent\" or \"object\"")]
+pub enum NormalSpace {
+    /// `"tangent"`: relative to the surface, along its tangent, bitangent and normal.
+    #[default]
+    Tangent,
+    /// `"object"`: normals in the mesh's own coordinates.
+    Object,
+}
+
+/// How images are sampled (`filter = "..."`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase", expecting = "\"nearest\" or \"bilinear\"")]
+pub enum Filter {
+    /// `"nearest"`: the nearest texel.
+    Nearest,
+    /// `"bilinear"`: a blend of the four nearest texels.
+    #[default]
+    Bilinear,
+}
+
+/// What texture coordinates outside `[0, 1]` read (`wrap = "..."`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase", expecting = "\"repeat\" or \"clamp\"")]
+pub enum Wrap {
+    /// `"repeat"`: the image tiles.
+    #[default]
+    Repeat,
+    /// `"clamp"`: the edge texels extend outward.
+    Clamp,
+}
+
+/// A value written either as one number or as an array of three (`scale = 2` or `scale = [1, 2, 1]`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum NumberOrTriple {
+    /// One number, for all three components.
+    Number(f32),
+    /// Three numbers.
+    Triple(Triple),
+}
+
+impl NumberOrTriple {
+    /// The three components.
+    pub fn triple(self) -> Triple {
+        match self {
+            Self::Number(v) => [v; 3],
+            Self::Triple(t) => t,
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for NumberOrTriple {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct NumberOrTripleVisitor;
+
+        impl<'de> Visitor<'de> for NumberOrTripleVisitor {
+            type Value = NumberOrTriple;
+
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a number or an array of three numbers")
+            }
+
+            fn visit_f64<E: de::Error>(self, v: f64) -> Result<Self::Value, E> {
+                Ok(NumberOrTriple::Number(v as f32))
+            }
+
+            fn visit_i64<E: de::Error>(self, v: i64) -> Result<Self::Value, E> {
+                Ok(NumberOrTriple::Number(v as f32))
+            }
+
+            fn visit_u64<E: de::Error>(self, v: u64) -> Result<Self::Value, E> {
+                Ok(NumberOrTriple::Number(v as f32))
+            }
+
+            fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<Self::Value, A::Error> {
+                Triple::deserialize(de::value::SeqAccessDeserializer::new(seq)).map(NumberOrTriple::Triple)
+            }
+        }
+
+        deserializer.deserialize_any(NumberOrTripleVisitor)
+    }
+}
