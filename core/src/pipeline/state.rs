@@ -94,15 +94,22 @@ pub struct DrawState {
     pub edges: EdgeArithmetic,
 }
 
+impl DrawState {
+    /// The default state, usable in constants: back faces culled (counter-clockwise is front), depth test `less`,
+    /// perspective-correct interpolation, [`MAX_SUBPIXEL_BITS`] of sub-pixel precision, fixed-point edges.
+    pub const DEFAULT: Self = Self {
+        cull: Cull::Back,
+        front_face: Winding::CounterClockwise,
+        depth_test: DepthTest::Less,
+        interpolation: Interpolation::PerspectiveCorrect,
+        subpixel_bits: MAX_SUBPIXEL_BITS,
+        edges: EdgeArithmetic::FixedPoint,
+    };
+}
+
 impl Default for DrawState {
+    /// [`DrawState::DEFAULT`].
     fn default() -> Self {
-        Self {
-            cull: Cull::Back,
-            front_face: Winding::CounterClockwise,
-            depth_test: DepthTest::Less,
-            interpolation: Interpolation::PerspectiveCorrect,
-            subpixel_bits: MAX_SUBPIXEL_BITS,
-            edges: EdgeArithmetic::FixedPoint,
-        }
+        Self::DEFAULT
     }
 }

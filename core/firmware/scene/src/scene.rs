@@ -9,9 +9,7 @@
 use rasterm_core::camera::{look_at, perspective};
 use rasterm_core::math::{Mat4, Quat, Vec3};
 use rasterm_core::mesh::{Indices, Mesh};
-use rasterm_core::pipeline::{
-    Cull, DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation, MAX_SUBPIXEL_BITS, Winding, draw,
-};
+use rasterm_core::pipeline::{DrawState, DrawStats, draw};
 use rasterm_core::shading::{
     Effects, Light, Lighting, Material, PhongShader, ShadingModel, Specular, Surface, Transforms, Untextured, draw_mesh,
 };
@@ -41,15 +39,9 @@ const TO_LIGHT: Vec3 = Vec3::new(0.5, 0.8, 0.6);
 /// The light's colour.
 const LIGHT_COLOR: Vec3 = Vec3::new(1.0, 0.97, 0.9);
 
-/// Fixed-function state: back faces culled, depth test, perspective-correct, fixed-point edges.
-const STATE: DrawState = DrawState {
-    cull: Cull::Back,
-    front_face: Winding::CounterClockwise,
-    depth_test: DepthTest::Less,
-    interpolation: Interpolation::PerspectiveCorrect,
-    subpixel_bits: MAX_SUBPIXEL_BITS,
-    edges: EdgeArithmetic::FixedPoint,
-};
+/// Fixed-function state: the core's default (back faces culled, depth test, perspective-correct, fixed-point
+/// edges with full sub-pixel precision).
+const STATE: DrawState = DrawState::DEFAULT;
 
 /// One frame's scene: the mesh, its transforms and the light, built once and drawn into each strip.
 #[derive(Clone, Copy, Debug)]
