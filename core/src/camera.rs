@@ -65,7 +65,7 @@ pub fn look_at(eye: Vec3, target: Vec3, up: Vec3) -> Result<Mat4, CameraError> {
     let right = match forward.cross(up).try_normalize() {
         // Accept `up` unless it is (nearly) parallel to the view direction.
         Some(r) if float::abs(forward.dot(up.normalize_or_zero())) < 0.999_999 => r,
-        _ => forward.cross(least_aligned_axis(forward)).normalize_or_zero(),
+        _ => forward.cross(Vec3::least_aligned_axis(forward)).normalize_or_zero(),
     };
     let true_up = right.cross(forward);
     // Rows of the rotation are the camera axes; the translation moves the eye to the origin.
@@ -75,18 +75,6 @@ pub fn look_at(eye: Vec3, target: Vec3, up: Vec3) -> Result<Mat4, CameraError> {
         [-forward.x, -forward.y, -forward.z, forward.dot(eye)],
         [0.0, 0.0, 0.0, 1.0],
     ))
-}
-
-/// The world axis with the smallest absolute dot product with `d`.
-fn least_aligned_axis(d: Vec3) -> Vec3 {
-    let (ax, ay, az) = (float::abs(d.x), float::abs(d.y), float::abs(d.z));
-    if ax <= ay && ax <= az {
-        Vec3::X
-    } else if ay <= az {
-        Vec3::Y
-    } else {
-        Vec3::Z
-    }
 }
 
 /// A projection, chosen at run time (the viewer switches between the two with a key).

@@ -13,7 +13,7 @@
 //! | vertex stage | [`pipeline::Shader::position`] | object space to clip space (once per shared vertex) |
 //! | clip | [`pipeline`] (`clip.rs`) | near/far planes and a guard band, in homogeneous coordinates |
 //! | raster | [`pipeline`] (`raster.rs`) | fixed-point snapping, exact edge functions, top-left rule |
-//! | vertex stage | [`pipeline::Shader::varyings`] | per-vertex values, only for triangles that cover pixels |
+//! | vertex stage | [`pipeline::Shader::varyings`] | per-vertex values, only for triangles that reach the pixel loop or need clipping |
 //! | fragment | [`pipeline::Shader::fragment`], [`shading`], [`texture`] | depth test, interpolation, shading, texturing |
 //! | target | [`target`] | RGB888 or RGB565 colour, `f32` or `u16` depth, whole frames or bands |
 //!

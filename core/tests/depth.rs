@@ -86,11 +86,28 @@ fn u16_depth_quantisation() {
     assert_eq!(depth_to_u16(f32::NAN), 0);
 }
 
+/// The depth buffer after drawing one screen-space triangle (no culling) on a 16x16 frame cleared to 1.
+fn depth_of_triangle(positions: &[Vec3; 3]) -> Vec<f32> {
+    let mesh = Mesh::new(positions, Indices::Sequential).unwrap();
+    let mut color = vec![0u32; 16 * 16];
+    let mut depth = vec![1f32; 16 * 16];
+    let mut target = Target::new(Rgb888(&mut color), &mut depth[..], 16, 16).unwrap();
+    let state = DrawState { cull: rasterm_core::pipeline::Cull::None, ..DrawState::default() };
+    draw(&mut target, &mesh, &ScreenSpace { width: 16.0, height: 16.0 }, &state).unwrap();
+    depth
+}
+
 /// Depth is interpolated from plane equations in `f32`, which can round a hair past the vertices' range: with
-/// vertices on pixel centres at depths 0, 0 and about 1e-30, pixels came out at -9.4e-38 before the depth stage
-/// clamped them. Stored depth never leaves `[0, 1]`.
+/// vertices on pixel centres at depths 0, 0 and about 1e-30, pixels came out at -9.4e-38 before the depth buffer
+/// clamped them (fuzzing finding F3). Stored depth never leaves `[0, 1]`.
 #[test]
 fn stored_depth_never_goes_below_zero() {
+    // The case found: the centre of pixel (5, 5) is the vertex at depth 0, and was stored as -9.403955e-38.
+    let found = [Vec3::new(12.5, 11.5, 1.248_072_9e-30), Vec3::new(5.5, 5.5, 0.0), Vec3::new(4.5, 2.5, 0.0)];
+    let depth = depth_of_triangle(&found);
+    assert_eq!(depth[5 * 16 + 5].to_bits(), 0.0f32.to_bits(), "exactly +0 at the vertex");
+    assert!(depth.iter().all(|&z| (0.0..=1.0).contains(&z)), "{depth:?}");
+
     let mut rng = 0x2545_F491_4F6C_DD1Du64;
     let mut next = || {
         rng ^= rng << 13;
@@ -100,16 +117,9 @@ fn stored_depth_never_goes_below_zero() {
     };
     for _ in 0..2000 {
         let tiny = 1e-30 * (1.0 + next());
-        let corner = |z: f32, next: &mut dyn FnMut() -> f32| {
-            Vec3::new((16.0 * next()).floor() + 0.5, (16.0 * next()).floor() + 0.5, z)
-        };
-        let positions = [corner(tiny, &mut next), corner(0.0, &mut next), corner(0.0, &mut next)];
-        let mesh = Mesh::new(&positions, Indices::Sequential).unwrap();
-        let mut color = vec![0u32; 16 * 16];
-        let mut depth = vec![1f32; 16 * 16];
-        let mut target = Target::new(Rgb888(&mut color), &mut depth[..], 16, 16).unwrap();
-        let state = DrawState { cull: rasterm_core::pipeline::Cull::None, ..DrawState::default() };
-        draw(&mut target, &mesh, &ScreenSpace { width: 16.0, height: 16.0 }, &state).unwrap();
+        let mut corner = |z: f32| Vec3::new((16.0 * next()).floor() + 0.5, (16.0 * next()).floor() + 0.5, z);
+        let positions = [corner(tiny), corner(0.0), corner(0.0)];
+        let depth = depth_of_triangle(&positions);
         assert!(depth.iter().all(|&z| (0.0..=1.0).contains(&z)), "{positions:?}: {depth:?}");
     }
 }

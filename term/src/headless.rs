@@ -28,8 +28,6 @@ pub enum TextureChoice {
     FromModel,
     /// This image, for every part of the model (useful for OBJ files without a material library).
     File(PathBuf),
-    /// No textures.
-    None,
 }
 
 /// A loaded scene and the warnings met while loading it.
@@ -56,7 +54,6 @@ pub fn load_scene(source: &ModelSource, texture: &TextureChoice) -> Result<Loade
     let mut warnings = std::mem::take(&mut model.warnings);
     match texture {
         TextureChoice::FromModel => {}
-        TextureChoice::None => model.materials.iter_mut().for_each(|m| m.texture = None),
         TextureChoice::File(path) => match TextureImage::load(path) {
             Ok(image) if model.uvs.is_some() => model.set_texture(image),
             Ok(_) => warnings.push(format!("{name} has no texture coordinates; the texture is not used")),
@@ -94,7 +91,7 @@ pub struct RenderedImage {
     pub pixels: Vec<u32>,
     /// What the core did.
     pub stats: DrawStats,
-    /// Time spent drawing (clearing included, writing the file not).
+    /// Time spent drawing and resolving supersamples (not clearing, not writing the file).
     pub render_time: Duration,
 }
 
@@ -124,10 +121,10 @@ pub fn render_image(
         let what = if k > 1 { format!(" ({k}x{k} samples per pixel make {sw}x{sh})") } else { String::new() };
         HeadlessError::Size(format!("{e}{what}"))
     })?;
-    // Touch the fresh buffers first, so the time measured is rendering rather than the OS mapping pages.
+    // Clearing before the clock starts also maps the fresh buffers' pages, so the time measured is rendering.
     target.clear(appearance.background);
     let start = Instant::now();
-    let stats = scene.render(&mut target, camera, appearance, width as f32 / height as f32)?;
+    let stats = scene.draw(&mut target, camera, appearance, width as f32 / height as f32)?;
     let pixels = if k > 1 {
         let mut pixels = vec![0u32; width as usize * height as usize];
         downsample_rgb888(&samples, sw, k, &mut pixels).map_err(|e| HeadlessError::Size(e.to_string()))?;

@@ -9,8 +9,8 @@
 //! | [`scene_file`] | TOML scene files: camera, lights, placed and textured meshes; parsed, checked and loaded |
 //! | [`headless`] | `rasterm render`: a scene to a PNG file |
 //! | [`png_file`] | writing PNG files safely |
-//! | [`reference`](mod@reference) | a slow `f64` reference renderer (16x16 supersampling, exact coverage): the truth to measure against |
-//! | [`report`] | `rasterm report`: measured figures (terminal frame bytes and times) as Markdown |
+//! | [`reference`](mod@reference) | a slow `f64` reference renderer (16x16 samples per pixel, coverage and shading in `f64`): the truth to measure against |
+//! | [`report`] | `rasterm report`: measured figures as Markdown (terminal frame bytes and times; every quality knob's time and error) |
 //! | [`screen`] | terminal cells, colour modes and the frame-diff encoder |
 //! | [`viewer`] | the interactive terminal viewer |
 

@@ -5,9 +5,10 @@
 
 use std::path::PathBuf;
 use std::process::ExitCode;
+use std::str::FromStr;
 
 use clap::{Args, Parser, Subcommand};
-use rasterm::escaped::Escaped;
+use rasterm::escaped::{Escaped, path_text};
 use rasterm::headless::{ModelSource, RenderRequest, TextureChoice, parse_size, render_to_png};
 use rasterm::report::terminal::{DEFAULT_FRAMES, TerminalReport};
 use rasterm::scene::{Appearance, Lens, OrbitCamera, ShadingMode, parse_hex_color};
@@ -74,7 +75,7 @@ struct ViewerArgs {
     #[command(flatten)]
     scene: SceneArgs,
     /// How cells show pixels: `half` (two pixels per cell with ▀) or `ascii` (a character ramp).
-    #[arg(long, default_value = "half", value_parser = parse_cell_mode)]
+    #[arg(long, default_value = "half", value_parser = CellMode::from_str)]
     mode: CellMode,
     /// Colours: auto (from COLORTERM, TERM and NO_COLOR), truecolor, 256, 16 or none.
     #[arg(long, default_value = "auto", value_parser = parse_color_choice)]
@@ -130,7 +131,7 @@ struct SceneArgs {
     #[arg(long, allow_negative_numbers = true, value_parser = positive)]
     far: Option<f32>,
     /// unlit, flat, gouraud, phong, depth or normals.
-    #[arg(long, default_value = "phong", value_parser = parse_shading)]
+    #[arg(long, default_value = "phong", value_parser = ShadingMode::from_str)]
     shading: ShadingMode,
     /// Use this image as the texture of every part.
     #[arg(long, value_name = "FILE", conflicts_with = "no_texture")]
@@ -168,12 +169,10 @@ impl SceneArgs {
         }
     }
 
+    /// Where textures come from; `--no-texture` is part of the appearance, so the viewer's `t` key can turn
+    /// them back on.
     fn texture(&self) -> TextureChoice {
-        match (&self.texture, self.no_texture) {
-            (Some(path), _) => TextureChoice::File(path.clone()),
-            (None, true) => TextureChoice::None,
-            (None, false) => TextureChoice::FromModel,
-        }
+        self.texture.clone().map_or(TextureChoice::FromModel, TextureChoice::File)
     }
 }
 
@@ -197,18 +196,6 @@ fn field_of_view(s: &str) -> Result<f32, String> {
 
 fn parse_cell_aspect(s: &str) -> Result<f32, String> {
     finite(s).and_then(|v| if (0.25..=8.0).contains(&v) { Ok(v) } else { Err(format!("{s:?} is not within 0.25..8")) })
-}
-
-fn parse_shading(s: &str) -> Result<ShadingMode, String> {
-    s.parse()
-}
-
-fn parse_cell_mode(s: &str) -> Result<CellMode, String> {
-    match s {
-        "half" | "half-block" => Ok(CellMode::HalfBlock),
-        "ascii" => Ok(CellMode::Ascii),
-        _ => Err(format!("{s:?} is not a mode (expected half or ascii)")),
-    }
 }
 
 fn parse_color_choice(s: &str) -> Result<ColorChoice, String> {
@@ -293,9 +280,9 @@ fn accuracy_report(args: &AccuracyReportArgs) -> Result<(), String> {
         AccuracyOptions::full(args.output.clone())
     };
     let report = measure(&options)?;
-    let (md, png) = report.write()?;
-    print!("{}", report.markdown());
-    eprintln!("rasterm: wrote {} and {}", Escaped(&md.display().to_string()), Escaped(&png.display().to_string()));
+    let written = report.write()?;
+    print!("{}", written.markdown);
+    eprintln!("rasterm: wrote {} and {}", path_text(&written.markdown_path), path_text(&written.chart_path));
     Ok(())
 }
 

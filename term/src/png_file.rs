@@ -19,7 +19,7 @@ pub struct PngError {
 
 impl fmt::Display for PngError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "cannot write {}: {}", self.path.display(), self.reason)
+        write!(f, "cannot write {}: {}", crate::escaped::path_text(&self.path), self.reason)
     }
 }
 
@@ -42,20 +42,30 @@ pub fn write_png(path: &Path, width: u32, height: u32, pixels: &[u32]) -> Result
         return Err(fail("it is a directory, not a file name".into()));
     }
     let rgb: Vec<u8> = pixels.iter().flat_map(|p| [(p >> 16) as u8, (p >> 8) as u8, *p as u8]).collect();
+    write_atomically(path, |out| {
+        PngEncoder::new(out).write_image(&rgb, width, height, image::ExtendedColorType::Rgb8).map_err(io::Error::other)
+    })
+    .map_err(|e| fail(e.to_string()))
+}
+
+/// Writes a file through `write` into a temporary file in the same directory, synced and then renamed over
+/// `path`: `path` is either the whole new file or untouched. The temporary file is removed on failure.
+///
+/// # Errors
+/// The first I/O error.
+pub fn write_atomically(path: &Path, write: impl FnOnce(&mut BufWriter<File>) -> io::Result<()>) -> io::Result<()> {
     let temporary = temporary_path(path);
     let result = (|| -> io::Result<()> {
         let mut out = BufWriter::new(File::create(&temporary)?);
-        PngEncoder::new(&mut out)
-            .write_image(&rgb, width, height, image::ExtendedColorType::Rgb8)
-            .map_err(io::Error::other)?;
+        write(&mut out)?;
         out.flush()?;
         out.into_inner().map_err(|e| e.into_error())?.sync_all()?;
         fs::rename(&temporary, path)
     })();
-    result.map_err(|e| {
+    if result.is_err() {
         let _ = fs::remove_file(&temporary);
-        fail(e.to_string())
-    })
+    }
+    result
 }
 
 /// `dir/.name.tmp-PID` beside `path`.

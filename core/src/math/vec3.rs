@@ -64,6 +64,19 @@ impl Vec3 {
         if len > 0.0 && len.is_finite() { Some(self * (1.0 / len)) } else { None }
     }
 
+    /// The coordinate axis with the smallest absolute dot product with `self` (X for the zero vector): crossed
+    /// with `self`, it gives a well-conditioned perpendicular.
+    pub(crate) fn least_aligned_axis(self) -> Self {
+        let (ax, ay, az) = (float::abs(self.x), float::abs(self.y), float::abs(self.z));
+        if ax <= ay && ax <= az {
+            Self::X
+        } else if ay <= az {
+            Self::Y
+        } else {
+            Self::Z
+        }
+    }
+
     /// Unit vector in the same direction, or zero when that does not exist (zero or non-finite length).
     #[inline]
     pub fn normalize_or_zero(self) -> Self {

@@ -1,7 +1,7 @@
 //! Per-vertex tangent frames from texture coordinates, for tangent-space normal maps.
 
 use super::Mesh;
-use crate::math::{Vec3, Vec4, float};
+use crate::math::{Vec3, Vec4};
 
 /// Why tangents could not be computed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -80,20 +80,15 @@ pub fn compute_tangents(mesh: &Mesh<'_>, out: &mut [Vec4]) -> Result<(), Tangent
 /// The accumulated `tangent` made a unit vector perpendicular to `normal`, with handedness from the sum of votes;
 /// any perpendicular unit vector when nothing usable is left.
 fn orthonormal_tangent(normal: Vec3, tangent: Vec3, votes: f32) -> Vec4 {
-    let n = if normal.is_finite() { normal.normalize_or_zero() } else { Vec3::ZERO };
-    let t = (tangent - n * n.dot(tangent)).normalize_or_zero();
+    // `normalize_or_zero` gives zero for a zero or non-finite vector; a subnormal one can still come out
+    // non-finite, hence the check.
+    let n = normal.normalize_or_zero();
     let handedness = if votes < 0.0 { -1.0 } else { 1.0 };
+    let t = (tangent - n * n.dot(tangent)).normalize_or_zero();
     if t != Vec3::ZERO && t.is_finite() {
         return t.extend(handedness);
     }
-    // Any perpendicular: cross the normal with the axis it is least aligned with (the X axis for a zero normal).
-    let axis = if float::abs(n.x) <= float::abs(n.y) && float::abs(n.x) <= float::abs(n.z) {
-        Vec3::X
-    } else if float::abs(n.y) <= float::abs(n.z) {
-        Vec3::Y
-    } else {
-        Vec3::Z
-    };
-    let t = n.cross(axis).normalize_or_zero();
-    if t == Vec3::ZERO { Vec3::X.extend(handedness) } else { t.extend(handedness) }
+    // Any perpendicular; the X axis for a zero normal.
+    let t = n.cross(n.least_aligned_axis()).normalize_or_zero();
+    if t != Vec3::ZERO && t.is_finite() { t.extend(handedness) } else { Vec3::X.extend(handedness) }
 }

@@ -6,8 +6,8 @@
 //! only the pixels inside the frame are visited. Anything larger is cut to the guard band, which keeps every
 //! coordinate far inside the fixed-point range.
 //!
-//! Plane distances are computed exactly (as floating-point expansions, [`crate::math::exact`]), so which side a
-//! vertex is on is never wrong, and an intersection is rounded only once, relative to itself: a triangle whose
+//! Plane distances are computed exactly (as floating-point expansions, [`crate::math::exact`]), so the clipper
+//! never puts a vertex on the wrong side, and an intersection carries only a few roundings relative to itself: a triangle whose
 //! corners are 10^30 units out still crosses the view exactly where it should. Intersections are computed from
 //! the inside vertex toward the outside one, so the two triangles that share an edge cut it at bit-identical points
 //! and stay watertight (Sutherland and Hodgman, "Reentrant Polygon Clipping", CACM 1974; Blinn and Newell,
@@ -99,8 +99,9 @@ impl ClipVolume {
 
     /// One bit per plane the point is outside of (see [`ClipVolume`] for the order).
     ///
-    /// Each test has the sign of the plane's distance: `x < k w` exactly when `x - k w < 0`, because IEEE
-    /// subtraction of two different floats is never zero.
+    /// A fast, not exact, classification: the product `k w` is rounded, so a vertex within a rounding error of
+    /// a plane may get either bit. That is safe: the clipper decides sides with exact distances, the guard band is
+    /// far inside the fixed-point range, and a frame-edge bit only rejects triangles that cover no pixel centre.
     #[inline(always)]
     pub fn outcode(&self, p: Vec4) -> u16 {
         let [gx0, gx1, gy0, gy1, vx0, vx1, vy0, vy1] = self.limits;

@@ -9,18 +9,14 @@ pub(crate) trait DepthStage: Copy {
     fn test<D: DepthBuffer>(&self, depth: &mut D, index: usize, z: f32) -> bool;
 }
 
-/// [`DepthTest::Less`], with depth clamped below at 0.
-///
-/// Interpolated depth can round a hair past its vertices' range (-1e-37 between vertices at 0 and 1e-30); like
-/// Direct3D, which clamps depth to the viewport's depth range before the test, a negative depth is stored as 0.
-/// A depth above 1 needs no clamp: it never passes against a buffer cleared to 1. NaN stays NaN and fails.
+/// [`DepthTest::Less`].
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct DepthLess;
 
 impl DepthStage for DepthLess {
     #[inline(always)]
     fn test<D: DepthBuffer>(&self, depth: &mut D, index: usize, z: f32) -> bool {
-        depth.test_and_set(index, if z < 0.0 { 0.0 } else { z })
+        depth.test_and_set(index, z)
     }
 }
 

@@ -49,7 +49,8 @@ pub(crate) enum Setup<E> {
     Culled,
     /// Facing is fine but its bounding box holds no pixel centre of the target.
     Empty,
-    /// Covers pixel centres: ready for the pixel loop.
+    /// Its bounding box holds pixel centres of the target (a sliver may still cover none): ready for the pixel
+    /// loop.
     Ready(Coverage<E>),
 }
 
@@ -118,8 +119,8 @@ impl Rasterizer {
         Some(Snapped { x: fixed(fx), y: fixed(fy), fx, fy, z: s.z, inv_w })
     }
 
-    /// Facing and culling from the sign of twice the signed area (positive: clockwise on the y-up NDC plane,
-    /// counter-clockwise on the y-down screen).
+    /// Facing and culling from the sign of twice the signed area in screen coordinates (positive: clockwise as
+    /// displayed, which is clockwise on the y-up NDC plane too).
     #[inline(always)]
     fn facing(&self, area_positive: bool) -> Option<bool> {
         // Counter-clockwise on the y-up NDC plane is a negative area here.

@@ -39,8 +39,9 @@ pub trait Shader {
 
     /// Vertex stage, varyings: what vertex `index` passes to the fragment stage.
     ///
-    /// Called only for vertices of triangles that survive clipping, culling and the bounding-box test, so a
-    /// vertex seen only by hidden triangles is never lit or textured.
+    /// Called only for vertices of triangles that reach the pixel loop (not culled, bounding box holding a pixel
+    /// centre), and of triangles that must be clipped (before their culling: clipping cuts varyings too), so a
+    /// vertex seen only by culled or off-screen triangles that need no clipping is never lit or textured.
     fn varyings(&self, mesh: &Mesh<'_>, index: usize) -> Self::Varyings;
 
     /// Triangle stage: computed once for each triangle that reaches the rasterizer.

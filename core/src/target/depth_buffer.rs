@@ -14,7 +14,11 @@ pub trait DepthBuffer {
     fn clear(&mut self);
 }
 
-/// `f32` depth: exact NDC depth as interpolated.
+/// `f32` depth: NDC depth as interpolated, clamped below at 0.
+///
+/// Interpolated depth can round a hair past its vertices' range (-9.4e-38 between vertices at 0 and 1e-30);
+/// like Direct3D, which clamps depth to the viewport's depth range, a negative depth is stored as 0. A depth above
+/// 1 needs no clamp: it never passes against a buffer cleared to 1. NaN fails the test.
 impl DepthBuffer for &mut [f32] {
     fn pixel_count(&self) -> Option<usize> {
         Some(self.len())
@@ -23,7 +27,7 @@ impl DepthBuffer for &mut [f32] {
     fn test_and_set(&mut self, index: usize, z: f32) -> bool {
         match self.get_mut(index) {
             Some(d) if z < *d => {
-                *d = z;
+                *d = if z < 0.0 { 0.0 } else { z };
                 true
             }
             _ => false,

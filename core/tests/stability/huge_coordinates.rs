@@ -62,3 +62,62 @@ fn a_huge_corner_behind_the_camera_clips_exactly() {
         assert_eq!(stats.clipped, 1);
     }
 }
+
+/// Fuzzing finding F2: an orthographic view of a triangle with one corner 3.7e35 units away. Before exact
+/// clipping, cutting the edge from that corner lost the small coordinates (`a + (b - a) t` with `t` rounded to 1),
+/// so the whole frame drew 363 fragments up to row 17 while every vertex lies below row 25, and the band of rows
+/// 0..21, which rejects the triangle by its vertices, differed from the frame. Now, with each culling mode, the band
+/// equals the frame's rows bit for bit and nothing is drawn in rows 0..21, and the part in view (105 fragments
+/// here) is drawn by exactly one of front-face and back-face culling.
+#[test]
+fn a_band_equals_the_frame_when_a_corner_is_1e35_away() {
+    use rasterm_core::camera::{look_at, orthographic};
+    use rasterm_core::math::{Mat4, Vec3};
+    use rasterm_core::mesh::{Indices, Mesh};
+    use rasterm_core::pipeline::{Cull, DepthTest, DrawState};
+    use rasterm_core::shading::{Effects, Lighting, Material, ShadingModel, Transforms, draw_mesh};
+    use rasterm_core::target::{Rgb888, Target};
+
+    let positions = [
+        Vec3::new(-113.679_69, -11.734_375, -60.695_313),
+        Vec3::new(-50.324_22, -16.1875, -3.685_537e35),
+        Vec3::new(27.878_906, -71.648_44, 0.0),
+    ];
+    let view = look_at(
+        Vec3::new(-77.210_94, 1e-45, -55.355_47),
+        Vec3::new(29.0, -33.0, -61.0),
+        Vec3::new(-79.679_69, 1.570_796_4, 5.757_812_5),
+    )
+    .unwrap();
+    let projection = orthographic(-59.121_094, 46.0, 28.0, 80.925_78, 74.363_28, 4.992_137e26).unwrap();
+    let transforms = Transforms::new(Mat4::IDENTITY, view, projection);
+    let mesh = Mesh::new(&positions, Indices::Sequential).unwrap();
+    let effects = Effects {
+        shading: ShadingModel::Unlit,
+        material: Material::default(),
+        lighting: Lighting { ambient: Vec3::ONE, lights: &[] },
+        texture: None,
+    };
+    let (w, h, band) = (40u32, 35u32, 0..21u32);
+    let draw = |cull: Cull, rows: core::ops::Range<u32>| {
+        let state = DrawState { cull, depth_test: DepthTest::Off, subpixel_bits: 0, ..DrawState::DEFAULT };
+        let n = (w * (rows.end - rows.start)) as usize;
+        let (mut color, mut depth) = (vec![0u32; n], vec![0f32; n]);
+        let mut target = Target::band(Rgb888(&mut color), &mut depth[..], w, h, rows).unwrap();
+        target.clear(Vec3::ZERO);
+        let stats = draw_mesh(&mut target, &mesh, &transforms, &effects, &state).unwrap();
+        (color, stats.fragments)
+    };
+    let mut fragments = [0; 3];
+    for (cull, count) in [Cull::None, Cull::Front, Cull::Back].into_iter().zip(&mut fragments) {
+        let (frame, drawn) = draw(cull, 0..h);
+        let (banded, _) = draw(cull, band.clone());
+        assert!(banded == frame[..(w * band.end) as usize], "{cull:?}: the band's rows differ from the frame's");
+        assert!(frame[..(w * band.end) as usize].iter().all(|&c| c == 0), "{cull:?}: something drawn in rows 0..21");
+        *count = drawn;
+    }
+    // The part in view faces one way: culling one side or the other splits the unculled picture.
+    let [all, front_culled, back_culled] = fragments;
+    assert!(all > 0, "part of the triangle is in view");
+    assert_eq!(front_culled + back_culled, all);
+}

@@ -8,6 +8,8 @@
 pub mod accuracy;
 pub mod terminal;
 
+use std::time::Duration;
+
 /// A one-line description of this machine: the CPU model from `/proc/cpuinfo` and the number of logical CPUs,
 /// as far as they can be found out.
 pub fn machine_description() -> String {
@@ -19,6 +21,22 @@ pub fn machine_description() -> String {
         Some(1) => format!("{model}, 1 logical CPU"),
         Some(n) => format!("{model}, {n} logical CPUs"),
         None => model,
+    }
+}
+
+/// Which build measured: `"release build"`, or a warning that a debug build's timings mean little.
+pub fn build_description() -> &'static str {
+    if cfg!(debug_assertions) { "debug build: timings are not representative" } else { "release build" }
+}
+
+/// The median of `values` (the mean of the middle two for an even count; zero for none).
+pub fn median(values: &[Duration]) -> Duration {
+    let mut sorted = values.to_vec();
+    sorted.sort_unstable();
+    match sorted.len() {
+        0 => Duration::ZERO,
+        n if n % 2 == 1 => sorted[n / 2],
+        n => (sorted[n / 2 - 1] + sorted[n / 2]) / 2,
     }
 }
 

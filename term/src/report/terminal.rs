@@ -16,6 +16,7 @@ use std::time::{Duration, Instant};
 
 use rasterm_core::target::{Rgb888, Target};
 
+use super::median;
 use crate::builtin::{BUILTIN_NAME, builtin_model};
 use crate::model::LoadError;
 use crate::scene::{Appearance, OrbitCamera, RenderError, Scene};
@@ -172,16 +173,6 @@ fn mean(values: &[usize]) -> f64 {
     if values.is_empty() { 0.0 } else { values.iter().sum::<usize>() as f64 / values.len() as f64 }
 }
 
-fn median(values: &[Duration]) -> Duration {
-    let mut sorted = values.to_vec();
-    sorted.sort_unstable();
-    match sorted.len() {
-        0 => Duration::ZERO,
-        n if n % 2 == 1 => sorted[n / 2],
-        n => (sorted[n / 2 - 1] + sorted[n / 2]) / 2,
-    }
-}
-
 /// The turntable frames of one terminal size and colour mode, as the viewer would make them.
 struct Turntable<'a> {
     scene: &'a Scene,
@@ -272,7 +263,7 @@ pub fn measure(scene: &Scene, size: (u16, u16), colors: ColorMode, frames: usize
 
 /// The lines above the table: what was measured, where, and how to read it.
 pub fn header(report: &TerminalReport, machine: &str) -> String {
-    let build = if cfg!(debug_assertions) { "debug build: timings are not representative" } else { "release build" };
+    let build = super::build_description();
     let frames = report.frames;
     let degrees = 360.0 / frames.max(1) as f64;
     let encode_goal = GOAL_ENCODE_TIME.as_secs_f64() * 1e3;

@@ -13,7 +13,7 @@ use std::fmt;
 
 use rasterm_core::camera::CameraError;
 use rasterm_core::math::{Mat4, Vec3};
-use rasterm_core::pipeline::{Cull, DrawError, DrawState, DrawStats, LineStyle, draw_wireframe};
+use rasterm_core::pipeline::{DrawError, DrawState, DrawStats, LineStyle, draw_wireframe};
 use rasterm_core::shading::{Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh};
 use rasterm_core::target::{ColorBuffer, DepthBuffer, Target};
 use rasterm_core::texture::{FilterMode, WrapMode};
@@ -69,16 +69,6 @@ impl Scene {
         Self { model, fit }
     }
 
-    /// The model.
-    pub fn model(&self) -> &Model {
-        &self.model
-    }
-
-    /// True when some part has a texture it can show.
-    pub fn has_textures(&self) -> bool {
-        self.model.uvs.is_some() && self.model.materials.iter().any(|m| m.texture.is_some())
-    }
-
     /// The transforms of one frame for an image of physical aspect `aspect` (width over height).
     ///
     /// # Errors
@@ -110,13 +100,10 @@ impl Scene {
             let effects = self.effects(part, shading, appearance);
             stats += draw_mesh(target, &mesh, &transforms, &effects, &state).map_err(RenderError::Draw)?;
             if appearance.wireframe {
-                let lines = DrawState { cull: Cull::Back, ..state };
-                let lines = if transforms.mirrors() {
-                    DrawState { front_face: lines.front_face.flipped(), ..lines }
-                } else {
-                    lines
-                };
-                stats += draw_wireframe(target, &mesh, &transforms.clip_from_object, &WIREFRAME, &lines);
+                // The lines' pixels count as fragments; their triangles are the ones counted above. (The model
+                // matrix never mirrors, so the default winding is right for culling the lines too.)
+                stats.fragments +=
+                    draw_wireframe(target, &mesh, &transforms.clip_from_object, &WIREFRAME, &state).fragments;
             }
         }
         Ok(stats)
@@ -137,7 +124,7 @@ impl Scene {
         self.draw(target, camera, appearance, aspect)
     }
 
-    /// What each part's draw compiles to (the shader variant and state), for `--stats` and the viewer's HUD.
+    /// What each part's draw compiles to (the shader variant and state), for `rasterm render --stats`.
     ///
     /// # Errors
     /// As [`Scene::draw`].

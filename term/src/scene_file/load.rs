@@ -12,7 +12,7 @@ use toml::Spanned;
 use super::SceneFile;
 use super::error::{SceneFileError, SceneFileErrorKind};
 use super::loaded::{
-    LightKind, LoadedScene, NormalMap, ObjectMaterial, Projection, SceneCamera, SceneLight, SceneObject,
+    LightKind, NormalMap, ObjectMaterial, Projection, SceneCamera, SceneData, SceneLight, SceneObject,
 };
 use super::schema::{CameraSpec, Filter, LightSpec, LightType, MaterialSpec, ObjectSpec, Triple, Wrap};
 use super::transform::object_transform;
@@ -31,7 +31,7 @@ fn vec3_or(value: &Option<Spanned<Triple>>, default: Vec3) -> Vec3 {
 }
 
 /// Loads what `file` refers to. `file` has been validated by [`super::parse`].
-pub(crate) fn load_scene_file(file: &SceneFile) -> Result<LoadedScene, SceneFileError> {
+pub(crate) fn load_scene_file(file: &SceneFile) -> Result<SceneData, SceneFileError> {
     let base = file.origin.parent().unwrap_or(Path::new(""));
     let mut loader = Loader {
         checker: Checker { file: &file.origin, text: &file.text },
@@ -52,7 +52,7 @@ pub(crate) fn load_scene_file(file: &SceneFile) -> Result<LoadedScene, SceneFile
         .and_then(|b| parse_hex_color(b.get_ref()).ok())
         .unwrap_or(Appearance::DEFAULT_BACKGROUND);
     let Loader { images, warnings, .. } = loader;
-    Ok(LoadedScene {
+    Ok(SceneData {
         camera: camera(spec.camera.get_ref()),
         lights: spec.lights.iter().map(|l| light(l.get_ref())).collect(),
         objects,

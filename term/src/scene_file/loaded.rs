@@ -12,7 +12,7 @@ use crate::model::{self, Model, TextureImage};
 
 /// Everything a scene file describes, loaded and checked, ready for a renderer.
 #[derive(Clone, Debug)]
-pub struct LoadedScene {
+pub struct SceneData {
     /// The camera.
     pub camera: SceneCamera,
     /// The lights, in file order (possibly none).

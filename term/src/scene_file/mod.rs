@@ -1,6 +1,6 @@
 //! Scene files: a camera, lights and any number of placed, textured meshes, written in TOML.
 //!
-//! [`load`] reads a scene file, checks it, and loads every mesh and image it names, giving a [`LoadedScene`] of
+//! [`load`] reads a scene file, checks it, and loads every mesh and image it names, giving a [`SceneData`] of
 //! owned data. [`parse`] only parses and checks text (no file is touched), giving a [`SceneFile`] whose
 //! [`SceneFile::load`] does the rest. Every problem is one [`SceneFileError`] naming the file, the line and column,
 //! and the key: `scene.toml:7:7: camera.fov: must be between 0 and 180 degrees, got 200`.
@@ -82,9 +82,14 @@
 //!
 //! The types of [`schema`] document every key. Unknown keys are errors. Paths are relative to the scene file's
 //! directory. A mesh is placed by `translate * rotate_z * rotate_y * rotate_x * scale` ([`object_transform`]) in its
-//! own coordinates, without the viewer's fitting. Each mesh file and each image file is loaded once, however many
-//! objects or keys name it (files are told apart by their canonical paths). Normal, specular and glow maps are
-//! loaded as images ([`crate::model::TextureImage`], RGB); what the renderer does with them is its own business.
+//! own coordinates, without the viewer's fitting. Each mesh file and each image file the scene names is loaded once,
+//! however many objects or keys name it (files are told apart by their canonical paths); textures named by a
+//! mesh's own MTL file are decoded by the OBJ loader, separately. Normal, specular and glow maps are loaded as
+//! images ([`crate::model::TextureImage`], RGB).
+//!
+//! **Not rendered yet.** Nothing draws a loaded scene so far: the CLI does not take scene files, and point lights,
+//! shadows, ambient occlusion and the normal, specular and glow maps have no renderer. This module is the format
+//! and the loader, the first step toward them.
 //!
 //! # Example
 //! ```
@@ -126,7 +131,7 @@ mod transform;
 mod validate;
 
 pub use error::{SceneFileError, SceneFileErrorKind};
-pub use loaded::{LightKind, LoadedScene, NormalMap, ObjectMaterial, Projection, SceneCamera, SceneLight, SceneObject};
+pub use loaded::{LightKind, NormalMap, ObjectMaterial, Projection, SceneCamera, SceneData, SceneLight, SceneObject};
 pub use location::Location;
 pub use schema::{NormalSpace, SceneSpec};
 pub use transform::object_transform;
@@ -162,7 +167,7 @@ impl SceneFile {
     /// # Errors
     /// [`SceneFileErrorKind::Mesh`] or [`SceneFileErrorKind::Image`], at the key that names the file, when a file
     /// is missing or cannot be loaded.
-    pub fn load(&self) -> Result<LoadedScene, SceneFileError> {
+    pub fn load(&self) -> Result<SceneData, SceneFileError> {
         load::load_scene_file(self)
     }
 }
@@ -172,7 +177,7 @@ impl SceneFile {
 /// # Errors
 /// [`SceneFileErrorKind::Io`] when the file cannot be read, and everything [`parse`] and [`SceneFile::load`]
 /// report.
-pub fn load(path: impl AsRef<Path>) -> Result<LoadedScene, SceneFileError> {
+pub fn load(path: impl AsRef<Path>) -> Result<SceneData, SceneFileError> {
     let path = path.as_ref();
     let bytes = std::fs::read(path).map_err(|e| SceneFileError::new(path, None, None, SceneFileErrorKind::Io(e)))?;
     let text = String::from_utf8(bytes).map_err(|e| {

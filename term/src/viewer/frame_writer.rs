@@ -4,7 +4,7 @@
 //! that is still waiting is replaced by the newer one, so a slow link never builds a queue of stale frames. The
 //! encoder lives here, so a dropped grid is never encoded and every delta is against what was really sent.
 
-use std::io::{self, Write};
+use std::io::Write;
 use std::sync::{Arc, Condvar, Mutex, PoisonError};
 use std::thread::{self, JoinHandle};
 use std::time::{Duration, Instant};
@@ -30,7 +30,8 @@ struct Mailbox {
     /// Force the next frame to be a full redraw (after anything else wrote to the screen).
     invalidate: bool,
     quit: bool,
-    failed: Option<String>,
+    /// Writing failed (the terminal went away); the thread has stopped.
+    failed: bool,
     stats: WriterStats,
 }
 
@@ -71,9 +72,9 @@ impl FrameWriter {
         self.shared.0.lock().unwrap_or_else(PoisonError::into_inner).stats
     }
 
-    /// The error that stopped the writer (the terminal went away), if any.
-    pub fn failure(&self) -> Option<String> {
-        self.shared.0.lock().unwrap_or_else(PoisonError::into_inner).failed.clone()
+    /// True once a write failed (the terminal went away) and the writer stopped.
+    pub fn failed(&self) -> bool {
+        self.shared.0.lock().unwrap_or_else(PoisonError::into_inner).failed
     }
 
     /// Writes what is pending, stops the thread and waits for it.
@@ -127,14 +128,10 @@ fn write_loop<W: Write>(mut out: W, shared: &(Mutex<Mailbox>, Condvar)) {
                 mailbox.stats.encode_time = encode_time;
                 mailbox.stats.frames += 1;
             }
-            Err(e) => {
-                mailbox.failed = Some(describe(&e));
+            Err(_) => {
+                mailbox.failed = true;
                 return;
             }
         }
     }
-}
-
-fn describe(e: &io::Error) -> String {
-    format!("cannot write to the terminal: {e}")
 }

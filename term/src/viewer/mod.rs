@@ -131,7 +131,7 @@ pub fn run(options: &ViewerOptions) -> Result<ViewerExit, ViewerError> {
     let mut viewer = Viewer {
         scene: loaded.scene,
         name: loaded.name,
-        state: ViewerState::new(options.camera, options.appearance),
+        state: ViewerState::new(options.camera, options.appearance, options.cell_aspect),
         canvas: Canvas::default(),
         cell_mode: options.cell_mode,
         colors,
@@ -201,7 +201,7 @@ impl Viewer {
             if signal != 0 {
                 return Ok(ViewerExit::Signal(i32::try_from(signal).unwrap_or(0)));
             }
-            if writer.failure().is_some() {
+            if writer.failed() {
                 return Ok(ViewerExit::TerminalGone);
             }
             if self.state.turntable {

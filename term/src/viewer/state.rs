@@ -6,7 +6,7 @@ use super::controls::Action;
 
 /// Degrees per rotation key press.
 const KEY_STEP_DEGREES: f32 = 10.0;
-/// Degrees per cell of mouse drag (horizontally; rows are taller, so vertically twice that).
+/// Degrees per cell of mouse drag horizontally; vertically times the cell aspect (rows are taller).
 const DRAG_DEGREES_PER_CELL: f32 = 2.5;
 /// Distance factor per zoom step.
 const ZOOM_FACTOR: f32 = 1.12;
@@ -31,6 +31,8 @@ pub struct ViewerState {
     pub help: bool,
     /// Where a drag last was.
     drag: Option<(u16, u16)>,
+    /// Cell height over width, so a vertical drag turns as far per pixel as a horizontal one.
+    cell_aspect: f32,
     initial: (OrbitCamera, Appearance),
 }
 
@@ -46,9 +48,10 @@ pub enum Effect {
 }
 
 impl ViewerState {
-    /// The state at start-up.
-    pub fn new(camera: OrbitCamera, appearance: Appearance) -> Self {
+    /// The state at start-up, for cells `cell_aspect` times as tall as wide.
+    pub fn new(camera: OrbitCamera, appearance: Appearance, cell_aspect: f32) -> Self {
         Self {
+            cell_aspect,
             camera,
             appearance,
             turntable: false,
@@ -77,7 +80,7 @@ impl ViewerState {
                     return Effect::None;
                 }
                 let step = DRAG_DEGREES_PER_CELL.to_radians();
-                self.camera.rotate(dx * step, dy * 2.0 * step);
+                self.camera.rotate(dx * step, dy * self.cell_aspect * step);
             }
             Action::DragEnd => {
                 self.drag = None;

@@ -4,7 +4,7 @@
 //! [`Scene::draw`] resolves the scene's [`Effects`] and runs the one shader they call for through
 //! [`rasterm_core::pipeline::draw`]. [`draw_mesh`] gives the same pixels (the host test checks it), but it picks
 //! the shader at run time, so a firmware calling it links every variant of the pipeline: 3.1 MB of Cortex-M4 code
-//! (`.text`) at `opt-level = 3`, against 51 KB this way.
+//! (`.text`) at `opt-level = 3`, against 51 KB this way (one build each, 2026-11-21; docs/firmware.md).
 
 use rasterm_core::camera::{look_at, perspective};
 use rasterm_core::math::{Mat4, Quat, Vec3};

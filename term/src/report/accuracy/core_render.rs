@@ -186,25 +186,40 @@ impl ColorBuffer for Written<'_> {
 /// shared machine slows all settings alike instead of one.
 pub struct Frames<'s> {
     setting: &'s Setting,
+    /// Samples per pixel along each axis.
+    k: u32,
+    /// The size rendered: the frame's times `k`.
+    size: (u32, u32),
+    /// The supersampled colour (empty without supersampling: the draw then writes `pixels` directly).
     samples: Vec<u32>,
     pixels: Vec<u32>,
-    depth32: Vec<f32>,
-    depth16: Vec<u16>,
+    depth: DepthBuffers,
     times: Vec<Duration>,
+}
+
+/// The depth buffer of a setting's format.
+enum DepthBuffers {
+    F32(Vec<f32>),
+    U16(Vec<u16>),
 }
 
 impl<'s> Frames<'s> {
     /// Buffers for `setting` on `scene`'s frame (supersampled when the setting says so).
     pub fn new(scene: &CoreScene<'_>, setting: &'s Setting) -> Self {
-        let (w, h) = (scene.scene.width as usize, scene.scene.height as usize);
-        let k = setting.supersample.max(1) as usize;
-        let n = w * k * h * k;
+        let (w, h) = (scene.scene.width, scene.scene.height);
+        let k = setting.supersample.max(1);
+        let n = (w * k) as usize * (h * k) as usize;
+        let depth = match setting.depth {
+            DepthFormat::F32 => DepthBuffers::F32(vec![0.0; n]),
+            DepthFormat::U16 => DepthBuffers::U16(vec![0; n]),
+        };
         Self {
             setting,
-            samples: vec![0; n],
-            pixels: vec![0; w * h],
-            depth32: vec![0.0; n],
-            depth16: vec![0; n],
+            k,
+            size: (w * k, h * k),
+            samples: if k > 1 { vec![0; n] } else { Vec::new() },
+            pixels: vec![0; (w * h) as usize],
+            depth,
             times: Vec::new(),
         }
     }
@@ -214,28 +229,17 @@ impl<'s> Frames<'s> {
     /// # Errors
     /// As [`CoreScene::draw`].
     pub fn time_one(&mut self, scene: &CoreScene<'_>) -> Result<(), CoreRenderError> {
-        let (w, h) = (scene.scene.width, scene.scene.height);
-        let k = self.setting.supersample.max(1);
-        let (sw, sh) = (w * k, h * k);
+        let (sw, sh) = self.size;
+        let color = Rgb888(if self.k > 1 { &mut self.samples } else { &mut self.pixels });
+        let draw_time = match &mut self.depth {
+            DepthBuffers::F32(d) => timed_draw(scene, self.setting, Target::new(color, &mut d[..], sw, sh))?,
+            DepthBuffers::U16(d) => timed_draw(scene, self.setting, Target::new(color, &mut d[..], sw, sh))?,
+        };
         let start = Instant::now();
-        match self.setting.depth {
-            DepthFormat::F32 => {
-                let mut target = Target::new(Rgb888(&mut self.samples), &mut self.depth32[..], sw, sh)
-                    .map_err(CoreRenderError::Target)?;
-                scene.draw(&mut target, self.setting)?;
-            }
-            DepthFormat::U16 => {
-                let mut target = Target::new(Rgb888(&mut self.samples), &mut self.depth16[..], sw, sh)
-                    .map_err(CoreRenderError::Target)?;
-                scene.draw(&mut target, self.setting)?;
-            }
+        if self.k > 1 {
+            downsample_rgb888(&self.samples, sw, self.k, &mut self.pixels).map_err(CoreRenderError::Target)?;
         }
-        if k > 1 {
-            downsample_rgb888(&self.samples, sw, k, &mut self.pixels).map_err(CoreRenderError::Target)?;
-        } else {
-            self.pixels.copy_from_slice(&self.samples);
-        }
-        self.times.push(start.elapsed());
+        self.times.push(draw_time + start.elapsed());
         Ok(())
     }
 
@@ -248,26 +252,16 @@ impl<'s> Frames<'s> {
         if self.times.is_empty() {
             self.time_one(scene)?;
         }
-        self.times.sort();
-        let median = self.times[self.times.len() / 2];
+        let median = super::super::median(&self.times);
         let (w, h) = (scene.scene.width, scene.scene.height);
-        let k = self.setting.supersample.max(1);
-        let (sw, sh) = (w * k, h * k);
-        let n = sw as usize * sh as usize;
-        let (setting, mut depth32, mut depth16, pixels) = (self.setting, self.depth32, self.depth16, self.pixels);
-        let mut written = vec![0u8; n];
-        match setting.depth {
-            DepthFormat::F32 => {
-                let mut target =
-                    Target::new(Written(&mut written), &mut depth32[..], sw, sh).map_err(CoreRenderError::Target)?;
-                scene.draw(&mut target, setting)?;
-            }
-            DepthFormat::U16 => {
-                let mut target =
-                    Target::new(Written(&mut written), &mut depth16[..], sw, sh).map_err(CoreRenderError::Target)?;
-                scene.draw(&mut target, setting)?;
-            }
-        }
+        let (k, (sw, sh)) = (self.k, self.size);
+        let mut written = vec![0u8; sw as usize * sh as usize];
+        let color = Written(&mut written);
+        match &mut self.depth {
+            DepthBuffers::F32(d) => timed_draw(scene, self.setting, Target::new(color, &mut d[..], sw, sh))?,
+            DepthBuffers::U16(d) => timed_draw(scene, self.setting, Target::new(color, &mut d[..], sw, sh))?,
+        };
+        let pixels = self.pixels;
         let (kk, swu) = ((k * k) as f64, sw as usize);
         let coverage = (0..(w * h) as usize)
             .map(|i| {
@@ -282,4 +276,16 @@ impl<'s> Frames<'s> {
             .collect();
         Ok(Rendered { pixels, coverage, median })
     }
+}
+
+/// Draws `scene` into `target` (refused if its buffers do not fit), timing the draw alone.
+fn timed_draw<C: ColorBuffer, D: DepthBuffer>(
+    scene: &CoreScene<'_>,
+    setting: &Setting,
+    target: Result<Target<C, D>, TargetError>,
+) -> Result<Duration, CoreRenderError> {
+    let mut target = target.map_err(CoreRenderError::Target)?;
+    let start = Instant::now();
+    scene.draw(&mut target, setting)?;
+    Ok(start.elapsed())
 }
