@@ -61,6 +61,7 @@
 
 pub mod camera;
 pub mod color;
+pub mod effects;
 pub mod math;
 pub mod mesh;
 pub mod pipeline;

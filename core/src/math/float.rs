@@ -30,6 +30,12 @@ pub fn tan(x: f32) -> f32 {
     libm::tanf(x)
 }
 
+/// Arc-sine in radians, in `[-pi/2, pi/2]`.
+#[inline(always)]
+pub fn asin(x: f32) -> f32 {
+    libm::asinf(x)
+}
+
 /// Arc-tangent in radians, in `[-pi/2, pi/2]`.
 #[inline(always)]
 pub fn atan(x: f32) -> f32 {

@@ -11,7 +11,9 @@
 //!    covered pixel centres with exact integer edge functions and the top-left rule.
 //! 4. **Vertex stage, varyings** ([`Shader::varyings`]): only for the vertices of triangles that reach the pixel
 //!    loop (or must be clipped); a triangle with non-finite varyings is skipped.
-//! 5. **Fragment**: depth test ([`DepthTest`]), interpolation ([`Interpolation`]), [`Shader::fragment`], write.
+//! 5. **Fragment**: depth test ([`DepthTest`]), interpolation ([`Interpolation`]), [`Shader::fragment`], write;
+//!    or, for a [`Shader::BATCHED`] shader, up to [`BATCH_SIZE`] fragments at a time through
+//!    [`Shader::shade_batch`].
 //!
 //! # Clipping
 //! Near plane `z >= 0`, far plane `z <= w`, and a guard band of ±[`GUARD_BAND`] pixels in x and y; see the
@@ -22,6 +24,7 @@
 //! `(x + 0.5, y + 0.5)`; top-left fill rule (Direct3D 11.3 functional specification, 3.4.2.1). Depth is linear in
 //! screen space; varyings are perspective-correct or affine.
 
+mod batch;
 mod clip;
 mod depth_stage;
 mod draw;
@@ -35,6 +38,7 @@ mod stats;
 mod varyings;
 mod vertex_cache;
 
+pub use batch::{BATCH_SIZE, FragmentBatch};
 pub use clip::GUARD_BAND;
 pub use draw::{DrawError, draw, draw_unspecialised};
 pub use line::{LineStyle, draw_wireframe};

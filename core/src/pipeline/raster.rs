@@ -10,12 +10,13 @@
 //! (Direct3D 11.3 functional specification, 3.4.2.1; Pineda, "A Parallel Algorithm for Polygon Rasterization",
 //! SIGGRAPH 1988). Two triangles sharing an edge therefore cover each pixel on it exactly once.
 
+use super::batch::{BATCH_SIZE, FragmentBatch};
 use super::depth_stage::DepthStage;
 use super::edges::{Edges, FixedEdges, FloatEdges};
 use super::interpolator::Interpolator;
 use super::{Cull, Fragment, Shader, Varyings, Winding};
 use crate::camera::Viewport;
-use crate::math::{Vec4, float};
+use crate::math::{Vec3, Vec4, float};
 use crate::target::{ColorBuffer, DepthBuffer, Target};
 
 /// A vertex position in screen space, snapped to the sub-pixel grid (and kept unsnapped for `f32` edges).
@@ -291,6 +292,9 @@ impl<E: Edges> Coverage<E> {
         C: ColorBuffer,
         D: DepthBuffer,
     {
+        if S::BATCHED {
+            return self.fill_batched(stages, face, varyings, target);
+        }
         let f = &self.frame;
         let edges = &self.edges;
         let setup = stages.interpolator.setup(f.inv_w, f.inv_area);
@@ -323,6 +327,71 @@ impl<E: Edges> Coverage<E> {
                 e = edges.step(e);
                 x += 1;
             }
+        }
+        shaded
+    }
+
+    /// [`Coverage::fill`] for a [`Shader::BATCHED`] shader: the same fragments, in the same order, depth-tested
+    /// and interpolated alike, gathered into batches and shaded with [`Shader::shade_batch`].
+    #[inline(always)]
+    fn fill_batched<S, I, Z, C, D>(
+        &self,
+        stages: &Stages<'_, S, I, Z>,
+        face: &S::Face,
+        varyings: [&S::Varyings; 3],
+        target: &mut Target<C, D>,
+    ) -> u64
+    where
+        S: Shader,
+        I: Interpolator,
+        Z: DepthStage,
+        C: ColorBuffer,
+        D: DepthBuffer,
+    {
+        let f = &self.frame;
+        let edges = &self.edges;
+        let setup = stages.interpolator.setup(f.inv_w, f.inv_area);
+        let [v0, v1, v2] = f.order.map(|i| varyings[i]);
+        let (var_d1, var_d2) = (v1.sub(v0), v2.sub(v0));
+        let width = target.width() as usize;
+        let row0 = target.rows().start as i32;
+        let mut batch = FragmentBatch::new(*v0);
+        let mut colors = [Vec3::ZERO; BATCH_SIZE];
+        let mut shaded = 0u64;
+        let mut flush = |batch: &mut FragmentBatch<S::Varyings>, target: &mut Target<C, D>| {
+            stages.shader.shade_batch(face, batch, &mut colors);
+            for (&index, &color) in batch.indices().iter().zip(&colors) {
+                target.color.write(index, color);
+            }
+            batch.clear();
+        };
+        for y in f.y0..=f.y1 {
+            let mut e = edges.at(f.x0, y);
+            let mut x = f.x0;
+            while x <= f.x1 && !edges.covered(&e) {
+                e = edges.step(e);
+                x += 1;
+            }
+            let base = (y - row0) as usize * width;
+            while x <= f.x1 && edges.covered(&e) {
+                let ef = edges.weights(&e);
+                let z = f.z0 + ef[1] * f.dz1 + ef[2] * f.dz2;
+                let index = base + x as usize;
+                if stages.depth.test(&mut target.depth, index, z) {
+                    let (w1, w2) = stages.interpolator.weights(&setup, ef);
+                    let var = v0.interpolate(&var_d1, w1, &var_d2, w2);
+                    let fragment = Fragment { x: x as u32, y: y as u32, depth: z, front_facing: f.front_facing };
+                    shaded += 1;
+                    if batch.push(fragment, var, index) {
+                        flush(&mut batch, target);
+                    }
+                }
+                e = edges.step(e);
+                x += 1;
+            }
+        }
+        if !batch.is_empty() {
+            flush(&mut batch, target);
         }
         shaded
     }

@@ -1,6 +1,7 @@
 //! The programmable stages: what a draw computes per vertex, per triangle and per pixel.
 
 use super::Varyings;
+use super::batch::{BATCH_SIZE, FragmentBatch};
 use crate::math::{Vec3, Vec4};
 use crate::mesh::{Attributes, Mesh};
 
@@ -49,4 +50,17 @@ pub trait Shader {
 
     /// Fragment stage: the colour of one covered pixel that passed the depth test.
     fn fragment(&self, fragment: &Fragment, face: &Self::Face, varyings: &Self::Varyings) -> Vec3;
+
+    /// Whether the pixel loop gathers fragments into a [`FragmentBatch`] and calls [`Shader::shade_batch`] rather
+    /// than [`Shader::fragment`] per pixel. A constant, so the pixel loop is chosen at compile time.
+    const BATCHED: bool = false;
+
+    /// Fragment stage for a batch: the colours of `batch`'s fragments into `colors[..batch.len()]`. Called only
+    /// when [`Shader::BATCHED`] is set; by default it calls [`Shader::fragment`] for each.
+    #[inline(always)]
+    fn shade_batch(&self, face: &Self::Face, batch: &FragmentBatch<Self::Varyings>, colors: &mut [Vec3; BATCH_SIZE]) {
+        for ((c, f), v) in colors.iter_mut().zip(batch.fragments()).zip(batch.varyings()) {
+            *c = self.fragment(f, face, v);
+        }
+    }
 }

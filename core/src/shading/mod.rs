@@ -39,6 +39,7 @@ pub use highlights::{Highlights, NoSpecular, Specular};
 pub use light::{Light, LightTerms, Lighting, Material};
 pub use phong::PhongShader;
 pub use surface::Surface;
+pub(crate) use surface::world_normal;
 pub use texture_stage::{TextureStage, Textured, Untextured};
 pub use transforms::Transforms;
 pub use unlit::{UnlitShader, VertexColorShader};

@@ -105,6 +105,13 @@ impl<'a> Texture<'a> {
         F::sample::<W>(self, uv)
     }
 
+    /// Like [`Texture::sample`], but the texel value packed as `0x00RRGGBB`, before conversion to `[0, 1]`: for
+    /// maps whose 8-bit codes mean something else than a colour (normal maps).
+    #[inline(always)]
+    pub fn sample_packed<F: Filter, W: Wrap>(&self, uv: Vec2) -> u32 {
+        F::sample_packed::<W>(self, uv)
+    }
+
     /// Samples with a filter and wrap mode chosen at run time (a branch per sample; prefer [`Texture::sample`]).
     pub fn sample_with(&self, filter: FilterMode, wrap: WrapMode, uv: Vec2) -> Vec3 {
         match (filter, wrap) {

@@ -57,8 +57,14 @@ impl Wrap for Clamp {
 
 /// How a texel colour is reconstructed from the texels around a sample point.
 pub trait Filter {
-    /// Samples `texture` at `uv` with wrap mode `W`.
-    fn sample<W: Wrap>(texture: &Texture<'_>, uv: Vec2) -> Vec3;
+    /// Samples `texture` at `uv` with wrap mode `W`, as a packed `0x00RRGGBB` value.
+    fn sample_packed<W: Wrap>(texture: &Texture<'_>, uv: Vec2) -> u32;
+
+    /// Samples `texture` at `uv` with wrap mode `W`, channels in `[0, 1]`.
+    #[inline(always)]
+    fn sample<W: Wrap>(texture: &Texture<'_>, uv: Vec2) -> Vec3 {
+        unpack_rgb888(Self::sample_packed::<W>(texture, uv))
+    }
 }
 
 /// The texel containing the sample point.
@@ -67,12 +73,12 @@ pub struct Nearest;
 
 impl Filter for Nearest {
     #[inline(always)]
-    fn sample<W: Wrap>(t: &Texture<'_>, uv: Vec2) -> Vec3 {
+    fn sample_packed<W: Wrap>(t: &Texture<'_>, uv: Vec2) -> u32 {
         let (w, h) = (t.width, t.height);
         // In [0, size]: floor is exact, and the integer conversion needs no saturation.
         let x = float::round_small_to_u32(float::floor(W::reduce(uv.x) * w as f32)) as i32;
         let y = float::round_small_to_u32(float::floor((1.0 - W::reduce(uv.y)) * h as f32)) as i32;
-        unpack_rgb888(t.packed(W::index(x, w), W::index(y, h)))
+        t.packed(W::index(x, w), W::index(y, h))
     }
 }
 
@@ -86,7 +92,7 @@ pub struct Bilinear;
 
 impl Filter for Bilinear {
     #[inline(always)]
-    fn sample<W: Wrap>(t: &Texture<'_>, uv: Vec2) -> Vec3 {
+    fn sample_packed<W: Wrap>(t: &Texture<'_>, uv: Vec2) -> u32 {
         let (w, h) = (t.width, t.height);
         // Fixed point with 8 fractional bits, offset by one texel (+256 - 128 for the half-texel centre shift) so
         // that it is never negative: the integer part is the left/top texel + 1, the fraction its neighbour's
@@ -99,7 +105,7 @@ impl Filter for Bilinear {
         let (ya, yb) = (W::index(y0, h), W::index(y0 + 1, h));
         let top = blend(t.packed(xa, ya), t.packed(xb, ya), ax);
         let bottom = blend(t.packed(xa, yb), t.packed(xb, yb), ax);
-        unpack_rgb888(blend(top, bottom, ay))
+        blend(top, bottom, ay)
     }
 }
 

@@ -1,0 +1,53 @@
+//! The lights of a mapped draw: directional and point lights, each with an optional shadow map.
+
+use super::ShadowMap;
+use crate::math::Vec3;
+
+/// Where a light's rays come from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LightKind {
+    /// Parallel rays, like the sun's.
+    Directional {
+        /// Unit vector from the surface toward the light, in world space.
+        to_light: Vec3,
+    },
+    /// Rays from one point, like a bulb's. There is no fall-off with distance (OpenGL's default attenuation,
+    /// OpenGL 1.5 specification 2.14.1: constant 1, linear and quadratic 0), so `color` is what a lit surface
+    /// receives at any distance.
+    Point {
+        /// The light's position in world space.
+        position: Vec3,
+    },
+}
+
+/// One light of a scene.
+#[derive(Clone, Copy, Debug)]
+pub struct LightSource<'a> {
+    /// Directional or point.
+    pub kind: LightKind,
+    /// Colour times intensity.
+    pub color: Vec3,
+    /// Its shadow map, when it casts shadows.
+    pub shadow: Option<ShadowMap<'a>>,
+}
+
+impl LightSource<'_> {
+    /// A directional light shining from `to_light` (normalised here), without shadows.
+    pub fn directional(to_light: Vec3, color: Vec3) -> Self {
+        Self { kind: LightKind::Directional { to_light: to_light.normalize_or_zero() }, color, shadow: None }
+    }
+
+    /// A point light at `position`, without shadows.
+    pub fn point(position: Vec3, color: Vec3) -> Self {
+        Self { kind: LightKind::Point { position }, color, shadow: None }
+    }
+}
+
+/// The light a scene sheds: an ambient term and any number of lights, borrowed.
+#[derive(Clone, Copy, Debug)]
+pub struct SceneLights<'a> {
+    /// Light reaching every surface from every direction.
+    pub ambient: Vec3,
+    /// The lights.
+    pub lights: &'a [LightSource<'a>],
+}

@@ -1,0 +1,77 @@
+//! A surface material with its maps: what a mapped draw colours its pixels with.
+
+use crate::math::Vec3;
+use crate::texture::{FilterMode, Texture, WrapMode};
+
+/// The space a normal map's normals are given in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum NormalSpace {
+    /// Relative to the surface: `x` along the tangent (increasing `u`), `y` along the bitangent (increasing `v`),
+    /// `z` along the interpolated normal. Needs per-vertex tangents ([`crate::mesh::compute_tangents`]).
+    Tangent,
+    /// In the mesh's own coordinates; transformed to world space with the normal matrix.
+    Object,
+}
+
+/// A normal map: each texel a unit normal, 8 bits per component.
+///
+/// A code `c` decodes to `(c - 128) / 127`, so `128` is exactly 0 and `255` exactly 1: the flat tangent-space
+/// texel `(128, 128, 255)` gives back the interpolated normal bit for bit. (The common `c / 255 * 2 - 1` has no
+/// exact zero.) Code 0 gives `-1.008`; the decoded normal is normalised, so the asymmetry is immaterial.
+#[derive(Clone, Copy, Debug)]
+pub struct NormalMap<'a> {
+    /// The texels.
+    pub texture: Texture<'a>,
+    /// Tangent or object space.
+    pub space: NormalSpace,
+}
+
+/// How a surface looks: colours, Blinn-Phong exponent, and optional maps, all sampled with one filter and wrap
+/// mode.
+#[derive(Clone, Copy, Debug)]
+pub struct SurfaceMaterial<'a> {
+    /// Diffuse colour; multiplied by `diffuse` when there is one.
+    pub color: Vec3,
+    /// Specular colour; zero turns highlights off (and the draw then computes none). Multiplied by
+    /// `specular_map` when there is one.
+    pub specular: Vec3,
+    /// Blinn-Phong exponent.
+    pub shininess: f32,
+    /// The diffuse (albedo) texture.
+    pub diffuse: Option<Texture<'a>>,
+    /// The normal map.
+    pub normal_map: Option<NormalMap<'a>>,
+    /// Scales `specular` per texel.
+    pub specular_map: Option<Texture<'a>>,
+    /// Light the surface emits itself, added after lighting.
+    pub glow_map: Option<Texture<'a>>,
+    /// Filter of every map.
+    pub filter: FilterMode,
+    /// Wrap mode of every map.
+    pub wrap: WrapMode,
+}
+
+impl SurfaceMaterial<'_> {
+    /// A plain material: `color`, no highlights, no maps.
+    pub const fn plain(color: Vec3) -> Self {
+        Self {
+            color,
+            specular: Vec3::ZERO,
+            shininess: 32.0,
+            diffuse: None,
+            normal_map: None,
+            specular_map: None,
+            glow_map: None,
+            filter: FilterMode::Bilinear,
+            wrap: WrapMode::Repeat,
+        }
+    }
+}
+
+/// Decodes a normal-map texel (see [`NormalMap`]); not normalised.
+#[inline(always)]
+pub(crate) fn decode_normal(texel: u32) -> Vec3 {
+    const S: f32 = 1.0 / 127.0;
+    let c = |shift: u32| (((texel >> shift) & 0xFF) as i32 - 128) as f32 * S;
+    Vec3::new(c(16), c(8), c(0))
+}

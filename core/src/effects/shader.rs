@@ -1,0 +1,182 @@
+//! The mapped shader: vertex stage per draw variant, fragment stages over batches.
+
+use core::marker::PhantomData;
+
+use super::maps::{self, with_sampler};
+use super::normals;
+use super::scratch::Scratch;
+use super::varyings::{Slot, SurfaceVaryings};
+use super::{NormalSource, SceneLights, SpecularSource, SurfaceMaterial, SurfaceVariant, lighting};
+use crate::math::{Mat3, Vec2, Vec3, Vec4};
+use crate::mesh::{Attributes, Mesh};
+use crate::pipeline::{BATCH_SIZE, Fragment, FragmentBatch, Shader};
+use crate::shading::Transforms;
+
+/// Shades a mesh with a [`SurfaceMaterial`] under [`SceneLights`], computing what its [`SurfaceVariant`] says.
+///
+/// The varyings it carries are fixed by its type (`W`: world position, `U`: texture coordinates, `T`: tangent;
+/// each the value's type or [`super::Absent`]). Everything else, which maps are sampled and how each light is
+/// applied, is decided once per batch of fragments and runs as a loop compiled for that choice, so the number of
+/// compiled loops is the sum of the choices, not their product.
+#[derive(Clone, Copy, Debug)]
+pub struct SurfaceShader<'a, W, U, T> {
+    transforms: Transforms,
+    /// Object to world for tangents (the model's upper 3x3).
+    tangent_matrix: Mat3,
+    /// -1 when the model matrix mirrors (which flips the bitangent), else 1.
+    handedness: f32,
+    tangents: &'a [Vec4],
+    material: SurfaceMaterial<'a>,
+    lights: SceneLights<'a>,
+    variant: SurfaceVariant,
+    _varyings: PhantomData<(W, U, T)>,
+}
+
+impl<'a, W, U, T> SurfaceShader<'a, W, U, T>
+where
+    W: Slot<Vec3>,
+    U: Slot<Vec2>,
+    T: Slot<Vec4>,
+{
+    /// A shader for a resolved `variant`. `tangents` holds one per vertex when `T` is carried (may be empty
+    /// otherwise).
+    pub fn new(
+        variant: SurfaceVariant,
+        transforms: Transforms,
+        tangents: &'a [Vec4],
+        material: SurfaceMaterial<'a>,
+        lights: SceneLights<'a>,
+    ) -> Self {
+        let handedness = if transforms.mirrors() { -1.0 } else { 1.0 };
+        Self {
+            transforms,
+            tangent_matrix: transforms.model.to_mat3(),
+            handedness,
+            tangents,
+            material,
+            lights,
+            variant,
+            _varyings: PhantomData,
+        }
+    }
+
+    /// Runs the stages of the variant over `s`, whose varyings columns are filled, into `colors`.
+    fn shade(&self, s: &mut Scratch, colors: &mut [Vec3; BATCH_SIZE]) {
+        let v = &self.variant;
+        let m = &self.material;
+        let (filter, wrap) = (v.filter, v.wrap);
+        normals::interpolated(s, v.normals == NormalSource::Interpolated);
+        match (v.normals, m.normal_map) {
+            (NormalSource::TangentMap, Some(map)) => with_sampler!(filter, wrap, tangent_map(s, &map.texture)),
+            (NormalSource::ObjectMap, Some(map)) => {
+                with_sampler!(filter, wrap, object_map(s, &map.texture, &self.transforms.normal));
+            }
+            _ => {}
+        }
+        match m.diffuse {
+            Some(map) if v.albedo_map => with_sampler!(filter, wrap, albedo(s, &map, m.color)),
+            _ => s.albedo[..s.len].fill(m.color),
+        }
+        let specular = v.specular != SpecularSource::None;
+        lighting::light(s, &self.lights, self.transforms.eye, m.shininess, specular);
+        match (v.specular, m.specular_map) {
+            (SpecularSource::Map, Some(map)) => with_sampler!(filter, wrap, specular_color(s, &map, m.specular)),
+            _ => s.specular_color[..s.len].fill(m.specular),
+        }
+        if let (true, Some(map)) = (v.glow_map, m.glow_map) {
+            with_sampler!(filter, wrap, glow(s, &map));
+        }
+        let out = &mut colors[..s.len];
+        match (specular, v.glow_map) {
+            (false, false) => {
+                for (i, c) in out.iter_mut().enumerate() {
+                    *c = s.albedo[i].mul_elem(s.diffuse[i]);
+                }
+            }
+            (true, false) => {
+                for (i, c) in out.iter_mut().enumerate() {
+                    *c = s.albedo[i].mul_elem(s.diffuse[i]) + s.specular_color[i].mul_elem(s.specular[i]);
+                }
+            }
+            (false, true) => {
+                for (i, c) in out.iter_mut().enumerate() {
+                    *c = s.albedo[i].mul_elem(s.diffuse[i]) + s.emission[i];
+                }
+            }
+            (true, true) => {
+                for (i, c) in out.iter_mut().enumerate() {
+                    let lit = s.albedo[i].mul_elem(s.diffuse[i]) + s.specular_color[i].mul_elem(s.specular[i]);
+                    *c = lit + s.emission[i];
+                }
+            }
+        }
+    }
+}
+
+// The stage loops, named so that `with_sampler!` can call them with their sampler types.
+use maps::{albedo, glow, specular_color};
+use normals::{object_map, tangent_map};
+
+impl<W, U, T> Shader for SurfaceShader<'_, W, U, T>
+where
+    W: Slot<Vec3>,
+    U: Slot<Vec2>,
+    T: Slot<Vec4>,
+{
+    type Varyings = SurfaceVaryings<W, U, T>;
+    type Face = ();
+    const ATTRIBUTES: Attributes = Attributes { normals: true, uvs: U::PRESENT, colors: false };
+    const BATCHED: bool = true;
+
+    #[inline(always)]
+    fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+        self.transforms.clip_from_object.project_point(mesh.position(i))
+    }
+
+    #[inline(always)]
+    fn varyings(&self, mesh: &Mesh<'_>, i: usize) -> Self::Varyings {
+        let t = &self.transforms;
+        SurfaceVaryings {
+            normal: crate::shading::world_normal(&t.normal, mesh.normal(i)),
+            world: W::capture(|| t.model.transform_point(mesh.position(i))),
+            uv: U::capture(|| mesh.uv(i)),
+            tangent: T::capture(|| {
+                // A tangent slice shorter than the mesh cannot happen (the variant checks it); NaN would skip the
+                // triangle rather than panic.
+                let tangent = self.tangents.get(i).copied().unwrap_or(Vec4::new(f32::NAN, 0.0, 0.0, 0.0));
+                (self.tangent_matrix * tangent.truncate()).extend(tangent.w * self.handedness)
+            }),
+        }
+    }
+
+    #[inline(always)]
+    fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
+
+    /// One fragment as a batch of one.
+    fn fragment(&self, f: &Fragment, _: &(), v: &Self::Varyings) -> Vec3 {
+        let mut colors = [Vec3::ZERO; BATCH_SIZE];
+        match FragmentBatch::from_fragments(core::slice::from_ref(f), core::slice::from_ref(v)) {
+            Some(batch) => self.shade_batch(&(), &batch, &mut colors),
+            None => {}
+        }
+        colors[0]
+    }
+
+    #[inline(always)]
+    fn shade_batch(&self, _: &(), batch: &FragmentBatch<Self::Varyings>, colors: &mut [Vec3; BATCH_SIZE]) {
+        let mut s = Scratch::new(batch.len());
+        for (i, v) in batch.varyings().iter().enumerate() {
+            s.normal[i] = v.normal;
+            if let Some(w) = v.world.get() {
+                s.world[i] = w;
+            }
+            if let Some(uv) = v.uv.get() {
+                s.uv[i] = uv;
+            }
+            if let Some(t) = v.tangent.get() {
+                s.tangent[i] = t;
+            }
+        }
+        self.shade(&mut s, colors);
+    }
+}

@@ -1,0 +1,277 @@
+//! Shadow maps: a depth pass from a light into a buffer the caller owns, and the lookup that tells how much of a
+//! point the light reaches.
+//!
+//! The lookup offsets the point along its surface normal before projecting it (normal-offset shadows: Holbein,
+//! "Normal Offset Shadows", GDC 2011), by a number of shadow-map texels that grows as the light grazes the surface,
+//! and then compares depths with a small constant bias. The offset removes shadow acne (a surface shadowing
+//! itself because one texel spans a range of depths) without the large depth bias that detaches shadows from
+//! their casters (peter-panning). `core/tests/shadows.rs` holds both limits.
+
+use super::LightKind;
+use crate::camera::{CameraError, look_at, orthographic, perspective};
+use crate::math::{Mat4, Vec3, Vec4, float};
+use crate::mesh::{Attributes, Mesh};
+use crate::pipeline::{Cull, DrawState, DrawStats, Fragment, Shader, draw};
+use crate::target::{MAX_DIMENSION, NoColor, Target};
+
+/// Why a shadow map could not be set up.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ShadowError {
+    /// A point light inside (or on) the bounding sphere of what it lights: one map cannot see every direction
+    /// (that needs a cube of six).
+    LightInsideBounds,
+    /// The bounds are empty (radius not positive) or not finite.
+    Bounds,
+    /// The light's camera could not be built.
+    Camera(CameraError),
+    /// The map's side is 0 or above [`crate::target::MAX_DIMENSION`].
+    Size(u32),
+    /// The depth buffer does not hold `size * size` values.
+    Buffer {
+        /// `size * size`.
+        expected: usize,
+        /// Values given.
+        actual: usize,
+    },
+}
+
+impl core::fmt::Display for ShadowError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Self::LightInsideBounds => {
+                f.write_str("a point light inside the scene's bounds cannot cast shadows (that needs a cube map)")
+            }
+            Self::Bounds => f.write_str("the shadow bounds are empty or not finite"),
+            Self::Camera(e) => write!(f, "the light's camera: {e}"),
+            Self::Size(s) => write!(f, "a shadow map of {s}x{s} texels is not supported"),
+            Self::Buffer { expected, actual } => {
+                write!(f, "the shadow map needs {expected} depth values, {actual} given")
+            }
+        }
+    }
+}
+
+/// How far a shadow lookup moves the point off its surface, and the depth margin it allows.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShadowBias {
+    /// Offset along the surface normal, in shadow-map texels, at normal incidence.
+    pub normal_offset: f32,
+    /// Further offset per unit of `1 - n . l`, in texels: grazing light needs more.
+    pub slope_offset: f32,
+    /// Depth margin, in NDC depth units of the map.
+    pub depth: f32,
+}
+
+impl ShadowBias {
+    /// The defaults, chosen by `core/tests/shadows.rs`: no acne on a plane lit at 85 degrees from its normal, and
+    /// a shadow that starts within one map texel of where its caster touches the ground.
+    pub const DEFAULT: Self = Self { normal_offset: 0.6, slope_offset: 1.5, depth: 2e-5 };
+}
+
+impl Default for ShadowBias {
+    fn default() -> Self {
+        Self::DEFAULT
+    }
+}
+
+/// A sphere that holds everything a shadow map must see.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bounds {
+    /// Its centre, in world space.
+    pub centre: Vec3,
+    /// Its radius (positive).
+    pub radius: f32,
+}
+
+/// World size of one shadow-map texel.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum TexelSize {
+    /// The same everywhere (orthographic).
+    Constant(f32),
+    /// Proportional to the distance from the light (perspective): `per_distance * |p - eye|`.
+    Perspective { eye: Vec3, per_distance: f32 },
+}
+
+/// A light's camera for its shadow map: what it projects, and how large a texel is in the world.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShadowView {
+    /// World space to the light's clip space.
+    pub clip_from_world: Mat4,
+    texel: TexelSize,
+    size: u32,
+}
+
+impl ShadowView {
+    /// The view of a `size x size` map fitted to `bounds` as seen from a light: an orthographic box around the
+    /// sphere for a directional light, and for a point light the narrowest perspective cone that holds it.
+    ///
+    /// # Errors
+    /// [`ShadowError::Bounds`] for empty or non-finite bounds, [`ShadowError::LightInsideBounds`] for a point light
+    /// not outside the sphere, [`ShadowError::Camera`] if the light's direction or position is not usable.
+    pub fn fit(kind: LightKind, bounds: Bounds, size: u32) -> Result<Self, ShadowError> {
+        let Bounds { centre, radius: r } = bounds;
+        if !(r > 0.0 && r.is_finite() && centre.is_finite()) {
+            return Err(ShadowError::Bounds);
+        }
+        if size == 0 || size > MAX_DIMENSION {
+            return Err(ShadowError::Size(size));
+        }
+        let size_f = size as f32;
+        match kind {
+            LightKind::Directional { to_light } => {
+                let eye = centre + to_light * (2.0 * r);
+                let view = look_at(eye, centre, Vec3::Y).map_err(ShadowError::Camera)?;
+                let projection = orthographic(-r, r, -r, r, r, 3.0 * r).map_err(ShadowError::Camera)?;
+                let texel = TexelSize::Constant(2.0 * r / size_f);
+                Ok(Self { clip_from_world: projection * view, texel, size })
+            }
+            LightKind::Point { position } => {
+                let d = (centre - position).length();
+                if !(d > r * 1.001) {
+                    return Err(ShadowError::LightInsideBounds);
+                }
+                let half = float::asin(r / d);
+                let view = look_at(position, centre, Vec3::Y).map_err(ShadowError::Camera)?;
+                let near = float::max(d - r, d * 1e-3);
+                let projection = perspective(2.0 * half, 1.0, near, d + r).map_err(ShadowError::Camera)?;
+                let per_distance = 2.0 * float::tan(half) / size_f;
+                let texel = TexelSize::Perspective { eye: position, per_distance };
+                Ok(Self { clip_from_world: projection * view, texel, size })
+            }
+        }
+    }
+
+    /// Side of the map in texels.
+    pub fn size(&self) -> u32 {
+        self.size
+    }
+
+    /// World size of a map texel at `p`.
+    #[inline(always)]
+    fn texel_at(&self, p: Vec3) -> f32 {
+        match self.texel {
+            TexelSize::Constant(t) => t,
+            TexelSize::Perspective { eye, per_distance } => per_distance * (p - eye).length(),
+        }
+    }
+}
+
+/// The depth-only shader of the shadow pass: positions into the light's clip space, nothing else.
+#[derive(Clone, Copy, Debug)]
+struct CasterShader {
+    clip_from_object: Mat4,
+}
+
+impl Shader for CasterShader {
+    type Varyings = ();
+    type Face = ();
+    const ATTRIBUTES: Attributes = Attributes::NONE;
+
+    #[inline(always)]
+    fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+        self.clip_from_object.project_point(mesh.position(i))
+    }
+    #[inline(always)]
+    fn varyings(&self, _: &Mesh<'_>, _: usize) {}
+    #[inline(always)]
+    fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
+    #[inline(always)]
+    fn fragment(&self, _: &Fragment, _: &(), _: &()) -> Vec3 {
+        Vec3::ZERO
+    }
+}
+
+/// The depth pass of a shadow map: draws `mesh` (placed by `model`) into `depth`, the map's `size x size`
+/// buffer, as the light sees it. Both faces cast shadows. Clear the buffer to 1.0 first
+/// ([`clear_shadow_depth`]).
+///
+/// # Errors
+/// [`ShadowError::Buffer`] when `depth` does not hold `size * size` values.
+pub fn draw_shadow_caster(
+    view: &ShadowView,
+    depth: &mut [f32],
+    mesh: &Mesh<'_>,
+    model: &Mat4,
+) -> Result<DrawStats, ShadowError> {
+    let size = view.size;
+    let expected = size as usize * size as usize;
+    let actual = depth.len();
+    let Ok(mut target) = Target::new(NoColor, depth, size, size) else {
+        return Err(ShadowError::Buffer { expected, actual });
+    };
+    let shader = CasterShader { clip_from_object: view.clip_from_world * *model };
+    let state = DrawState { cull: Cull::None, ..DrawState::DEFAULT };
+    // The caster reads positions only and the state is valid, so the pipeline has nothing to refuse.
+    Ok(draw(&mut target, mesh, &shader, &state).unwrap_or_default())
+}
+
+/// Sets every depth of a shadow map to the far plane (1.0): nothing casts a shadow yet.
+pub fn clear_shadow_depth(depth: &mut [f32]) {
+    depth.fill(1.0);
+}
+
+/// A finished shadow map: the light's view, its depths, and how lookups compare.
+#[derive(Clone, Copy, Debug)]
+pub struct ShadowMap<'a> {
+    view: ShadowView,
+    depth: &'a [f32],
+    bias: ShadowBias,
+    pcf_radius: u32,
+}
+
+impl<'a> ShadowMap<'a> {
+    /// The shadow map of `view` with the depths its casters left in `depth`. `pcf_radius` 0 takes one sample
+    /// (hard edges); `r` averages the `(2r + 1)^2` texels around the point (percentage-closer filtering: Reeves,
+    /// Salesin and Cook, "Rendering Antialiased Shadows with Depth Maps", SIGGRAPH 1987).
+    ///
+    /// # Errors
+    /// [`ShadowError::Buffer`] when `depth` does not hold `size * size` values.
+    pub fn new(view: ShadowView, depth: &'a [f32], bias: ShadowBias, pcf_radius: u32) -> Result<Self, ShadowError> {
+        let expected = view.size as usize * view.size as usize;
+        if depth.len() != expected {
+            return Err(ShadowError::Buffer { expected, actual: depth.len() });
+        }
+        Ok(Self { view, depth, bias, pcf_radius })
+    }
+
+    /// The `r` of `(2r + 1)^2` percentage-closer samples.
+    pub fn pcf_radius(&self) -> u32 {
+        self.pcf_radius
+    }
+
+    /// Side of the map in texels.
+    pub fn size(&self) -> u32 {
+        self.view.size
+    }
+
+    /// The fraction of the light that reaches world point `p` on a surface with unit geometric normal `n`, where
+    /// `n_dot_l` is `n . l` for this light: 1 lit, 0 in shadow. Points outside the map are lit.
+    #[inline(always)]
+    pub fn light_reaching(&self, p: Vec3, n: Vec3, n_dot_l: f32) -> f32 {
+        let b = &self.bias;
+        let offset =
+            self.view.texel_at(p) * (b.normal_offset + b.slope_offset * (1.0 - float::clamp(n_dot_l, 0.0, 1.0)));
+        let clip = self.view.clip_from_world.project_point(p + n * offset);
+        if !(clip.w > 0.0) {
+            return 1.0;
+        }
+        let inv_w = 1.0 / clip.w;
+        let size = self.view.size as i32;
+        let half = self.view.size as f32 * 0.5;
+        // NDC to texels as the pipeline's viewport maps them: x right, y down, pixel centres at +0.5.
+        let tx = float::floor_to_i32((clip.x * inv_w + 1.0) * half);
+        let ty = float::floor_to_i32((1.0 - clip.y * inv_w) * half);
+        let z = clip.z * inv_w - b.depth;
+        let r = self.pcf_radius as i32;
+        let mut lit = 0u32;
+        for y in ty - r..=ty + r {
+            for x in tx - r..=tx + r {
+                let inside = x >= 0 && y >= 0 && x < size && y < size;
+                let stored = if inside { self.depth[(y * size + x) as usize] } else { 1.0 };
+                lit += u32::from(!inside || z <= stored);
+            }
+        }
+        let taps = ((2 * r + 1) * (2 * r + 1)) as u32;
+        if lit == taps { 1.0 } else { lit as f32 / taps as f32 }
+    }
+}
