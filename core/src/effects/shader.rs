@@ -155,9 +155,8 @@ where
     /// One fragment as a batch of one.
     fn fragment(&self, f: &Fragment, _: &(), v: &Self::Varyings) -> Vec3 {
         let mut colors = [Vec3::ZERO; BATCH_SIZE];
-        match FragmentBatch::from_fragments(core::slice::from_ref(f), core::slice::from_ref(v)) {
-            Some(batch) => self.shade_batch(&(), &batch, &mut colors),
-            None => {}
+        if let Some(batch) = FragmentBatch::from_fragments(core::slice::from_ref(f), core::slice::from_ref(v)) {
+            self.shade_batch(&(), &batch, &mut colors);
         }
         colors[0]
     }

@@ -54,7 +54,8 @@ impl core::fmt::Display for ShadowError {
 /// How far a shadow lookup moves the point off its surface, and the depth margin it allows.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ShadowBias {
-    /// Offset along the surface normal, in shadow-map texels, at normal incidence.
+    /// Offset along the surface normal, in shadow-map texels, at normal incidence. Multiplied by `1 + r` for a
+    /// percentage-closer filter of radius `r`.
     pub normal_offset: f32,
     /// Further offset per unit of `1 - n . l`, in texels: grazing light needs more.
     pub slope_offset: f32,
@@ -127,7 +128,8 @@ impl ShadowView {
             }
             LightKind::Point { position } => {
                 let d = (centre - position).length();
-                if !(d > r * 1.001) {
+                let outside = d > r * 1.001; // false for NaN too
+                if !outside {
                     return Err(ShadowError::LightInsideBounds);
                 }
                 let half = float::asin(r / d);
@@ -249,10 +251,14 @@ impl<'a> ShadowMap<'a> {
     #[inline(always)]
     pub fn light_reaching(&self, p: Vec3, n: Vec3, n_dot_l: f32) -> f32 {
         let b = &self.bias;
-        let offset =
-            self.view.texel_at(p) * (b.normal_offset + b.slope_offset * (1.0 - float::clamp(n_dot_l, 0.0, 1.0)));
+        // A PCF tap r texels away meets the receiver's own depth up to r texels' slope nearer the light: the
+        // offset grows with the filter's reach.
+        let reach = (1 + self.pcf_radius) as f32;
+        let slope = 1.0 - float::clamp(n_dot_l, 0.0, 1.0);
+        let offset = self.view.texel_at(p) * (b.normal_offset + b.slope_offset * slope) * reach;
         let clip = self.view.clip_from_world.project_point(p + n * offset);
-        if !(clip.w > 0.0) {
+        let in_front = clip.w > 0.0; // false for NaN too
+        if !in_front {
             return 1.0;
         }
         let inv_w = 1.0 / clip.w;

@@ -1,0 +1,309 @@
+//! "Simulate only what a scene calls for", for the effects: each effect switched off by data (a white map, a flat
+//! normal map, a black glow or specular map, a zero-strength light, an empty shadow map) gives exactly the pixels
+//! of the draw that leaves it out, the leaner draw computes only what it needs, and without maps the mapped shader
+//! equals the classic Phong shader bit for bit.
+
+mod common;
+
+use common::{ExactColor, Torus, checker_texels};
+use rasterm_core::camera::{look_at, perspective};
+use rasterm_core::effects::{
+    Bounds, LightSource, NormalMap, NormalSource, NormalSpace, SceneLights, ShadowBias, ShadowMap, ShadowView,
+    SpecularSource, SurfaceDraw, SurfaceMaterial, SurfaceVariant, clear_shadow_depth, draw_surface,
+    draw_surface_unspecialised,
+};
+use rasterm_core::math::{Mat4, Vec3, Vec4};
+use rasterm_core::mesh::{Mesh, compute_tangents};
+use rasterm_core::pipeline::{DrawState, DrawStats};
+use rasterm_core::shading::{Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh};
+use rasterm_core::target::Target;
+use rasterm_core::texture::{FilterMode, Texture, WrapMode};
+
+const W: u32 = 64;
+const H: u32 = 48;
+
+/// The torus seen at an angle, close enough for the near plane to cut it (so clipped varyings count too).
+fn transforms() -> Transforms {
+    let model = Mat4::from_axis_angle(Vec3::new(1.0, 0.3, 0.0), 1.1);
+    let view = look_at(Vec3::new(0.3, 0.5, 1.6), Vec3::ZERO, Vec3::Y).unwrap();
+    Transforms::new(model, view, perspective(1.2, W as f32 / H as f32, 0.5, 10.0).unwrap())
+}
+
+struct Fixture {
+    torus: Torus,
+    tangents: Vec<Vec4>,
+    checker: Vec<u32>,
+}
+
+impl Fixture {
+    fn new() -> Self {
+        let torus = Torus::new(1.0, 0.4, 24, 12);
+        let mut tangents = vec![Vec4::ZERO; torus.positions.len()];
+        compute_tangents(&torus.mesh(), &mut tangents).unwrap();
+        Self { torus, tangents, checker: checker_texels() }
+    }
+
+    fn checker(&self) -> Texture<'_> {
+        Texture::new(&self.checker, 8, 8).unwrap()
+    }
+}
+
+/// A 1x1 texture of one texel.
+fn solid(texel: &[u32; 1]) -> Texture<'_> {
+    Texture::new(texel, 1, 1).unwrap()
+}
+
+fn base_material(f: &Fixture) -> SurfaceMaterial<'_> {
+    SurfaceMaterial {
+        color: Vec3::new(0.9, 0.8, 0.7),
+        specular: Vec3::splat(0.4),
+        shininess: 24.0,
+        diffuse: Some(f.checker()),
+        ..SurfaceMaterial::plain(Vec3::ONE)
+    }
+}
+
+fn sun() -> LightSource<'static> {
+    LightSource::directional(Vec3::new(0.5, 1.0, 0.8), Vec3::new(0.9, 0.85, 0.8))
+}
+
+fn render(
+    f: &Fixture,
+    material: SurfaceMaterial<'_>,
+    lights: &[LightSource<'_>],
+    general: bool,
+) -> (Vec<[u32; 3]>, SurfaceVariant, DrawStats) {
+    let mut color = vec![[0u32; 3]; (W * H) as usize];
+    let mut depth = vec![0f32; (W * H) as usize];
+    let mut target = Target::new(ExactColor(&mut color), &mut depth[..], W, H).unwrap();
+    target.clear(Vec3::new(0.1, 0.2, 0.3));
+    let object = SurfaceDraw { mesh: f.torus.mesh(), tangents: Some(&f.tangents), transforms: transforms(), material };
+    let lights = SceneLights { ambient: Vec3::splat(0.08), lights };
+    let draw = if general { draw_surface_unspecialised } else { draw_surface };
+    let (variant, stats) = draw(&mut target, &object, &lights, &DrawState::default()).unwrap();
+    (color, variant, stats)
+}
+
+fn assert_same(a: &[[u32; 3]], b: &[[u32; 3]], what: &str) {
+    let differing = a.iter().zip(b).filter(|(p, q)| p != q).count();
+    assert_eq!(differing, 0, "{what}: {differing} pixels differ");
+}
+
+#[test]
+fn without_maps_the_mapped_shader_equals_the_phong_shader() {
+    let f = Fixture::new();
+    let lights = [sun(), LightSource::directional(Vec3::new(-1.0, -0.2, 0.3), Vec3::new(0.2, 0.25, 0.4))];
+    let classic_lights = [
+        Light::directional(Vec3::new(0.5, 1.0, 0.8), Vec3::new(0.9, 0.85, 0.8)),
+        Light::directional(Vec3::new(-1.0, -0.2, 0.3), Vec3::new(0.2, 0.25, 0.4)),
+    ];
+    for (specular, textured) in [(0.0, false), (0.4, false), (0.0, true), (0.4, true)] {
+        let material = SurfaceMaterial {
+            specular: Vec3::splat(specular),
+            diffuse: textured.then(|| f.checker()),
+            ..base_material(&f)
+        };
+        let (mapped, variant, _) = render(&f, material, &lights, false);
+        assert_eq!(variant.world, specular > 0.0, "the world position only for highlights");
+        assert_eq!(variant.uvs, textured, "texture coordinates only for a texture");
+
+        let mut classic = vec![[0u32; 3]; (W * H) as usize];
+        let mut depth = vec![0f32; (W * H) as usize];
+        let mut target = Target::new(ExactColor(&mut classic), &mut depth[..], W, H).unwrap();
+        target.clear(Vec3::new(0.1, 0.2, 0.3));
+        let effects = Effects {
+            shading: ShadingModel::Phong,
+            material: Material { color: material.color, specular: material.specular, shininess: material.shininess },
+            lighting: Lighting { ambient: Vec3::splat(0.08), lights: &classic_lights },
+            texture: material.diffuse.map(|texture| TextureBinding {
+                texture,
+                filter: FilterMode::Bilinear,
+                wrap: WrapMode::Repeat,
+            }),
+        };
+        draw_mesh(&mut target, &f.torus.mesh(), &transforms(), &effects, &DrawState::default()).unwrap();
+        assert_same(&mapped, &classic, &format!("specular {specular}, textured {textured}"));
+    }
+}
+
+#[test]
+fn a_white_diffuse_map_changes_nothing() {
+    let f = Fixture::new();
+    let white = [0xFFFFFF];
+    let (plain, v, _) = render(&f, SurfaceMaterial { diffuse: None, ..base_material(&f) }, &[sun()], false);
+    assert!(!v.albedo_map && !v.uvs);
+    let (mapped, v, _) =
+        render(&f, SurfaceMaterial { diffuse: Some(solid(&white)), ..base_material(&f) }, &[sun()], false);
+    assert!(v.albedo_map && v.uvs);
+    assert_same(&plain, &mapped, "white diffuse map");
+}
+
+#[test]
+fn a_flat_tangent_space_normal_map_changes_nothing() {
+    let f = Fixture::new();
+    let flat = [0x8080FF];
+    let (plain, v, _) = render(&f, base_material(&f), &[sun()], false);
+    assert_eq!(v.normals, NormalSource::Interpolated);
+    assert!(!v.tangents);
+    let normal_map = Some(NormalMap { texture: solid(&flat), space: NormalSpace::Tangent });
+    let (mapped, v, _) = render(&f, SurfaceMaterial { normal_map, ..base_material(&f) }, &[sun()], false);
+    assert_eq!(v.normals, NormalSource::TangentMap);
+    assert!(v.tangents);
+    assert_same(&plain, &mapped, "flat tangent-space normal map");
+}
+
+#[test]
+fn a_normal_map_changes_the_picture() {
+    // The counterpart of the test above: a bumpy map must show, or the equality proves nothing.
+    let f = Fixture::new();
+    let bumps: Vec<u32> = (0..64).map(|i| if (i % 8 + i / 8) % 2 == 0 { 0xC080E0 } else { 0x4080E0 }).collect();
+    let (plain, _, _) = render(&f, base_material(&f), &[sun()], false);
+    for space in [NormalSpace::Tangent, NormalSpace::Object] {
+        let normal_map = Some(NormalMap { texture: Texture::new(&bumps, 8, 8).unwrap(), space });
+        let (mapped, _, _) = render(&f, SurfaceMaterial { normal_map, ..base_material(&f) }, &[sun()], false);
+        let differing = plain.iter().zip(&mapped).filter(|(p, q)| p != q).count();
+        let covered = plain.iter().filter(|p| **p != plain[0]).count();
+        assert!(differing > covered / 2, "{space:?}: only {differing} of {covered} pixels changed");
+    }
+}
+
+#[test]
+fn a_white_specular_map_equals_the_constant_and_a_black_one_no_highlights() {
+    let f = Fixture::new();
+    let (white, black) = ([0xFFFFFF], [0x000000]);
+    let (constant, v, _) = render(&f, base_material(&f), &[sun()], false);
+    assert_eq!(v.specular, SpecularSource::Constant);
+    let (mapped, v, _) =
+        render(&f, SurfaceMaterial { specular_map: Some(solid(&white)), ..base_material(&f) }, &[sun()], false);
+    assert_eq!(v.specular, SpecularSource::Map);
+    assert_same(&constant, &mapped, "white specular map");
+
+    let (none, v, _) = render(&f, SurfaceMaterial { specular: Vec3::ZERO, ..base_material(&f) }, &[sun()], false);
+    assert_eq!(v.specular, SpecularSource::None);
+    assert!(!v.world, "no highlights, no point lights, no shadows: no world position");
+    let (blackened, _, _) =
+        render(&f, SurfaceMaterial { specular_map: Some(solid(&black)), ..base_material(&f) }, &[sun()], false);
+    assert_same(&none, &blackened, "black specular map");
+    assert_ne!(none, constant, "highlights must show");
+}
+
+#[test]
+fn a_black_glow_map_changes_nothing() {
+    let f = Fixture::new();
+    let black = [0x000000];
+    let (plain, v, _) = render(&f, base_material(&f), &[sun()], false);
+    assert!(!v.glow_map);
+    let (glowing, v, _) =
+        render(&f, SurfaceMaterial { glow_map: Some(solid(&black)), ..base_material(&f) }, &[sun()], false);
+    assert!(v.glow_map);
+    assert_same(&plain, &glowing, "black glow map");
+}
+
+#[test]
+fn a_zero_strength_point_light_changes_nothing() {
+    let f = Fixture::new();
+    let (one, v, _) = render(&f, SurfaceMaterial { specular: Vec3::ZERO, ..base_material(&f) }, &[sun()], false);
+    assert_eq!((v.directional_lights, v.point_lights, v.world), (1, 0, false));
+    let dark = LightSource::point(Vec3::new(0.0, 2.0, 1.0), Vec3::ZERO);
+    let (two, v, _) = render(&f, SurfaceMaterial { specular: Vec3::ZERO, ..base_material(&f) }, &[sun(), dark], false);
+    assert_eq!((v.directional_lights, v.point_lights, v.world), (1, 1, true));
+    assert_same(&one, &two, "zero-strength point light");
+}
+
+#[test]
+fn an_empty_shadow_map_changes_nothing() {
+    let f = Fixture::new();
+    let mut sun_with_shadow = sun();
+    let bounds = Bounds { centre: Vec3::ZERO, radius: 1.5 };
+    let view = ShadowView::fit(sun_with_shadow.kind, bounds, 64).unwrap();
+    let mut depth = vec![0.0; 64 * 64];
+    clear_shadow_depth(&mut depth);
+    for pcf in [0, 1, 2] {
+        sun_with_shadow.shadow = Some(ShadowMap::new(view, &depth, ShadowBias::DEFAULT, pcf).unwrap());
+        let (plain, _, _) = render(&f, base_material(&f), &[sun()], false);
+        let (shadowed, v, _) = render(&f, base_material(&f), &[sun_with_shadow], false);
+        assert_eq!((v.shadowed_lights, v.pcf_radius), (1, pcf));
+        assert_same(&plain, &shadowed, "empty shadow map");
+    }
+}
+
+#[test]
+fn every_effect_off_by_data_equals_none_through_the_general_loop_too() {
+    let f = Fixture::new();
+    let (white, flat, black) = ([0xFFFFFF], [0x8080FF], [0x000000]);
+    let mut depth = vec![0.0; 64 * 64];
+    clear_shadow_depth(&mut depth);
+    let mut shadowed_sun = sun();
+    let view = ShadowView::fit(shadowed_sun.kind, Bounds { centre: Vec3::ZERO, radius: 1.5 }, 64).unwrap();
+    shadowed_sun.shadow = Some(ShadowMap::new(view, &depth, ShadowBias::DEFAULT, 1).unwrap());
+    let dark_point = LightSource::point(Vec3::new(0.0, 2.0, 1.0), Vec3::ZERO);
+    let everything = SurfaceMaterial {
+        diffuse: Some(solid(&white)),
+        normal_map: Some(NormalMap { texture: solid(&flat), space: NormalSpace::Tangent }),
+        specular_map: Some(solid(&white)),
+        glow_map: Some(solid(&black)),
+        ..base_material(&f)
+    };
+    let leanest = SurfaceMaterial { diffuse: None, ..base_material(&f) };
+    let (none, lean, lean_stats) = render(&f, leanest, &[sun()], false);
+    for general in [false, true] {
+        let (all, v, stats) = render(&f, everything, &[shadowed_sun, dark_point], general);
+        assert!(v.uvs && v.tangents && v.world && v.glow_map);
+        assert_eq!(stats, lean_stats);
+        assert_same(&none, &all, &format!("every effect off by data (general loop: {general})"));
+    }
+    assert!(!lean.uvs && !lean.tangents);
+}
+
+#[test]
+fn the_explanation_lists_only_what_is_used() {
+    let f = Fixture::new();
+    let (_, lean, _) =
+        render(&f, SurfaceMaterial { diffuse: None, specular: Vec3::ZERO, ..base_material(&f) }, &[sun()], false);
+    assert_eq!(
+        lean.to_string(),
+        "varyings normal; albedo colour; normals interpolated; no specular; lights 1 directional; \
+         perspective-correct, depth less, cull back"
+    );
+    let flat = [0x8080FF];
+    let material = SurfaceMaterial {
+        normal_map: Some(NormalMap { texture: solid(&flat), space: NormalSpace::Tangent }),
+        specular_map: Some(f.checker()),
+        glow_map: Some(f.checker()),
+        filter: FilterMode::Nearest,
+        ..base_material(&f)
+    };
+    let mut depth = vec![1.0; 16 * 16];
+    clear_shadow_depth(&mut depth);
+    let mut shadowed = sun();
+    let view = ShadowView::fit(shadowed.kind, Bounds { centre: Vec3::ZERO, radius: 1.5 }, 16).unwrap();
+    shadowed.shadow = Some(ShadowMap::new(view, &depth, ShadowBias::DEFAULT, 1).unwrap());
+    let lamp = LightSource::point(Vec3::new(0.0, 3.0, 0.0), Vec3::ONE);
+    let (_, full, _) = render(&f, material, &[shadowed, lamp], false);
+    assert_eq!(
+        full.to_string(),
+        "varyings normal+world+uv+tangent; albedo texture; normals tangent-space map; specular map; glow map; \
+         maps nearest/repeat; lights 1 directional + 1 point (1 with shadows, pcf 3x3); perspective-correct, \
+         depth less, cull back"
+    );
+}
+
+#[test]
+fn a_tangent_space_map_without_tangents_is_refused() {
+    let f = Fixture::new();
+    let flat = [0x8080FF];
+    let material = SurfaceMaterial {
+        normal_map: Some(NormalMap { texture: solid(&flat), space: NormalSpace::Tangent }),
+        ..base_material(&f)
+    };
+    let mesh: Mesh<'_> = f.torus.mesh();
+    let lights = SceneLights { ambient: Vec3::ZERO, lights: &[] };
+    for tangents in [None, Some(&f.tangents[1..])] {
+        let result = SurfaceVariant::resolve(&mesh, tangents, &transforms(), &material, &lights, &DrawState::default());
+        let expected = rasterm_core::effects::SurfaceError::Tangents {
+            expected: mesh.vertex_count(),
+            actual: tangents.map_or(0, <[Vec4]>::len),
+        };
+        assert_eq!(result, Err(expected));
+    }
+}

@@ -1,0 +1,223 @@
+//! Shadow maps: the depth bias holds against shadow acne (a lit surface shading itself) at every light angle up
+//! to grazing, and against peter-panning (a shadow detached from its caster), and PCF softens only the edge.
+//!
+//! The scene is a ground square at `y = 0` and a unit cube standing on it, seen from straight above through an
+//! orthographic camera, so that each pixel is a known point of the ground: 32 pixels per world unit.
+
+use rasterm_core::camera::{look_at, orthographic};
+use rasterm_core::effects::{
+    Bounds, LightSource, SceneLights, ShadowBias, ShadowMap, ShadowView, SurfaceDraw, SurfaceMaterial,
+    clear_shadow_depth, draw_shadow_caster, draw_surface,
+};
+use rasterm_core::math::{Mat4, Vec3};
+use rasterm_core::mesh::{Indices, Mesh};
+use rasterm_core::pipeline::DrawState;
+use rasterm_core::shading::Transforms;
+use rasterm_core::target::{Rgb888, Target};
+
+const SIZE: u32 = 128;
+/// Pixels per world unit: the view spans `[-2, 2]` in x and z.
+const SCALE: f32 = 32.0;
+const MAP: u32 = 1024;
+
+/// Axis-aligned quads as two triangles each, counter-clockwise seen from where `normal` points.
+struct Quads {
+    positions: Vec<Vec3>,
+    normals: Vec<Vec3>,
+    indices: Vec<u32>,
+}
+
+impl Quads {
+    fn new() -> Self {
+        Self { positions: vec![], normals: vec![], indices: vec![] }
+    }
+
+    /// A quad with corners `c`, `c + a`, `c + a + b`, `c + b`, facing `a x b`.
+    fn quad(&mut self, c: Vec3, a: Vec3, b: Vec3) {
+        let n = a.cross(b).normalize_or_zero();
+        let base = self.positions.len() as u32;
+        self.positions.extend([c, c + a, c + a + b, c + b]);
+        self.normals.extend([n; 4]);
+        self.indices.extend([base, base + 1, base + 2, base, base + 2, base + 3]);
+    }
+
+    fn mesh(&self) -> Mesh<'_> {
+        Mesh::new(&self.positions, Indices::U32(&self.indices)).unwrap().with_normals(&self.normals).unwrap()
+    }
+}
+
+fn ground() -> Quads {
+    let mut q = Quads::new();
+    q.quad(Vec3::new(-2.0, 0.0, 2.0), Vec3::new(4.0, 0.0, 0.0), Vec3::new(0.0, 0.0, -4.0));
+    q
+}
+
+/// The unit cube `[-0.5, 0.5] x [0, 1] x [-0.5, 0.5]`, every face outward.
+fn cube() -> Quads {
+    let mut q = Quads::new();
+    let (x, y, z) = (Vec3::X, Vec3::Y, Vec3::Z);
+    let o = Vec3::new(-0.5, 0.0, -0.5);
+    q.quad(o + y, z, x); // top
+    q.quad(o, x, z); // bottom
+    q.quad(o, y, x); // -z
+    q.quad(o + z, x, y); // +z
+    q.quad(o, z, y); // -x
+    q.quad(o + x, y, z); // +x
+    q
+}
+
+fn camera() -> (Mat4, Mat4) {
+    let view = look_at(Vec3::new(0.0, 10.0, 0.0), Vec3::ZERO, Vec3::new(0.0, 0.0, -1.0)).unwrap();
+    (view, orthographic(-2.0, 2.0, -2.0, 2.0, 1.0, 20.0).unwrap())
+}
+
+/// Renders the objects lit by one directional light shining from `to_light`, with a shadow map of the given
+/// bias and PCF radius, or without shadows. Returns the pixels (row 0 at `z = -2`, column 0 at `x = -2`).
+fn render(objects: &[&Quads], to_light: Vec3, shadow: Option<(ShadowBias, u32)>) -> Vec<u32> {
+    let light = LightSource::directional(to_light, Vec3::splat(0.8));
+    let mut depth_map = vec![0.0; (MAP * MAP) as usize];
+    let light = match shadow {
+        None => light,
+        Some((bias, pcf)) => {
+            let view =
+                ShadowView::fit(light.kind, Bounds { centre: Vec3::new(0.0, 0.5, 0.0), radius: 3.0 }, MAP).unwrap();
+            clear_shadow_depth(&mut depth_map);
+            for o in objects {
+                draw_shadow_caster(&view, &mut depth_map, &o.mesh(), &Mat4::IDENTITY).unwrap();
+            }
+            LightSource { shadow: Some(ShadowMap::new(view, &depth_map, bias, pcf).unwrap()), ..light }
+        }
+    };
+    let lights = [light];
+    let scene = SceneLights { ambient: Vec3::splat(0.2), lights: &lights };
+    let (view, projection) = camera();
+    let mut color = vec![0u32; (SIZE * SIZE) as usize];
+    let mut depth = vec![0f32; (SIZE * SIZE) as usize];
+    let mut target = Target::new(Rgb888(&mut color), &mut depth[..], SIZE, SIZE).unwrap();
+    target.clear(Vec3::ZERO);
+    for o in objects {
+        let object = SurfaceDraw {
+            mesh: o.mesh(),
+            tangents: None,
+            transforms: Transforms::new(Mat4::IDENTITY, view, projection),
+            material: SurfaceMaterial::plain(Vec3::ONE),
+        };
+        draw_surface(&mut target, &object, &scene, &DrawState::default()).unwrap();
+    }
+    color
+}
+
+/// The world `(x, z)` of a pixel centre.
+fn ground_point(column: u32, row: u32) -> (f32, f32) {
+    ((column as f32 + 0.5) / SCALE - 2.0, (row as f32 + 0.5) / SCALE - 2.0)
+}
+
+#[test]
+fn no_acne_on_a_plane_at_any_angle_up_to_grazing_with_or_without_pcf() {
+    let plane = ground();
+    for degrees in [0.0f32, 30.0, 45.0, 60.0, 75.0, 80.0, 85.0] {
+        for azimuth in [0.0f32, 0.7, 2.0] {
+            let a = degrees.to_radians();
+            let to_light = Vec3::new(a.sin() * azimuth.cos(), a.cos(), a.sin() * azimuth.sin());
+            let lit = render(&[&plane], to_light, None);
+            for pcf in [0, 1, 2] {
+                let shadowed = render(&[&plane], to_light, Some((ShadowBias::DEFAULT, pcf)));
+                let acne = lit.iter().zip(&shadowed).filter(|(a, b)| a != b).count();
+                assert_eq!(acne, 0, "{degrees} degrees from the normal, azimuth {azimuth}, pcf {pcf}: {acne} pixels");
+            }
+        }
+    }
+}
+
+#[test]
+fn without_bias_the_plane_shows_acne() {
+    // The test above must be able to fail: with the bias removed the same plane shades itself.
+    let zero = ShadowBias { normal_offset: 0.0, slope_offset: 0.0, depth: 0.0 };
+    let to_light = Vec3::new(0.6, 0.8, 0.0);
+    let lit = render(&[&ground()], to_light, None);
+    let shadowed = render(&[&ground()], to_light, Some((zero, 0)));
+    let acne = lit.iter().zip(&shadowed).filter(|(a, b)| a != b).count();
+    assert!(acne > 1000, "only {acne} pixels of acne without bias");
+}
+
+/// Light from the -x side at 45 degrees: the cube's shadow on the ground is the square `x in [0.5, 1.5]`,
+/// `z in [-0.5, 0.5]`.
+fn cube_scene(shadow: Option<(ShadowBias, u32)>) -> Vec<u32> {
+    let to_light = Vec3::new(-1.0, 1.0, 0.0);
+    render(&[&ground(), &cube()], to_light, shadow)
+}
+
+#[test]
+fn the_shadow_is_where_geometry_puts_it_and_touches_its_caster() {
+    let lit_ground = render(&[&ground()], Vec3::new(-1.0, 1.0, 0.0), None)[0];
+    let pixels = cube_scene(Some((ShadowBias::DEFAULT, 0)));
+    // Unlit ground: ambient 0.2 on white.
+    let dark = 0x333333;
+    assert_ne!(lit_ground, dark);
+    // Pixels whose centre is at least 1.5 map texels (6 / 1024 world units each, 0.19 pixel) from the shadow's
+    // outline must be exactly lit or exactly dark; the ground right at the cube's foot (x just above 0.5) is
+    // dark: the shadow does not detach (peter-panning).
+    let margin = 1.5 * 6.0 / MAP as f32;
+    let mut checked = 0;
+    for row in 0..SIZE {
+        for column in 0..SIZE {
+            let (x, z) = ground_point(column, row);
+            if x.abs() < 0.5 + margin && z.abs() < 0.5 + margin {
+                continue; // the cube itself, seen from above
+            }
+            let inside = x > 0.5 + margin && x < 1.5 - margin && z.abs() < 0.5 - margin;
+            let outside = x > 1.5 + margin || x < 0.5 - margin || z.abs() > 0.5 + margin;
+            let p = pixels[(row * SIZE + column) as usize];
+            if inside {
+                assert_eq!(p, dark, "shadowed ground lit at x = {x}, z = {z}");
+                checked += 1;
+            } else if outside {
+                assert_eq!(p, lit_ground, "lit ground shadowed at x = {x}, z = {z}");
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 15_000, "{checked}");
+    // The first column of ground past the cube's +x face, centre at x = 0.5 + 1/64: in shadow.
+    let first = (0.5 + 2.0) * SCALE;
+    assert_eq!(first, 80.0);
+    for row in 50..78 {
+        assert_eq!(pixels[(row * SIZE + 80) as usize], dark, "gap at the cube's foot, row {row}");
+    }
+}
+
+#[test]
+fn a_large_bias_detaches_the_shadow() {
+    // The check above must be able to fail: a depth bias of a quarter of the map's depth range lets the light
+    // through below the cube's top, and the foot of the shadow turns lit.
+    let huge = ShadowBias { depth: 0.25, ..ShadowBias::DEFAULT };
+    let pixels = cube_scene(Some((huge, 0)));
+    let lit_at_foot = (50..78).filter(|row| pixels[(row * SIZE + 80) as usize] != 0x333333).count();
+    assert!(lit_at_foot > 20, "{lit_at_foot}");
+}
+
+#[test]
+fn pcf_softens_the_edge_and_nothing_else() {
+    let hard = cube_scene(Some((ShadowBias::DEFAULT, 0)));
+    let soft = cube_scene(Some((ShadowBias::DEFAULT, 2)));
+    // Five texels of filter, 0.2 pixel each: only pixels within a pixel of the outline may change, and some must
+    // show an intermediate level.
+    let mut changed = 0;
+    let mut between = 0;
+    for row in 0..SIZE {
+        for column in 0..SIZE {
+            let i = (row * SIZE + column) as usize;
+            if hard[i] == soft[i] {
+                continue;
+            }
+            changed += 1;
+            let (x, z) = ground_point(column, row);
+            let near_edge =
+                (x - 1.5).abs() < 1.0 / SCALE || (z.abs() - 0.5).abs() < 1.0 / SCALE || (x - 0.5).abs() < 1.0 / SCALE;
+            assert!(near_edge, "PCF changed a pixel away from the shadow's edge at x = {x}, z = {z}");
+            let level = soft[i] & 0xFF;
+            between += usize::from(level > 0x33 && level < (hard.iter().map(|p| p & 0xFF).max().unwrap()));
+        }
+    }
+    assert!(changed > 0 && between > 0, "changed {changed}, intermediate {between}");
+}
