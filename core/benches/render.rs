@@ -240,3 +240,70 @@ mod sampling {
         });
     }
 }
+
+/// What a mapped draw of the 2.5k sphere at 800x800 uses (see [`surface`]).
+#[derive(Clone, Copy)]
+enum Maps {
+    /// No maps, no highlights: the counterpart of `sphere_2_5k_phong_lambert_800x800`.
+    None,
+    /// Diffuse, tangent-space normal and specular maps (1024x1024, bilinear), a shadow-casting light with a
+    /// 2048x2048 map (its depth pass included): the shading of the tinyrenderer comparison.
+    DiffuseNormalSpecularShadow,
+}
+
+fn surface(bencher: Bencher, maps: Maps) {
+    use rasterm_core::effects::{
+        Bounds, LightSource, NormalMap, NormalSpace, SceneLights, ShadowBias, ShadowMap, ShadowView, SurfaceDraw,
+        SurfaceMaterial, clear_shadow_depth, draw_shadow_caster, draw_surface,
+    };
+    use rasterm_core::math::Vec4;
+    let sphere = Sphere::new(35, 36);
+    let mesh = sphere.mesh();
+    let mut tangents = vec![Vec4::ZERO; sphere.positions.len()];
+    rasterm_core::mesh::compute_tangents(&mesh, &mut tangents).unwrap();
+    let texels = checker(1024);
+    let bumps: Vec<u32> = texels.iter().map(|t| if *t == 0xE0C090 { 0xA080F0 } else { 0x8080FF }).collect();
+    let (diffuse, normal) = (Texture::new(&texels, 1024, 1024).unwrap(), Texture::new(&bumps, 1024, 1024).unwrap());
+    let mut frame = Frame::new(800, 800);
+    let t = transforms(800, 800, 2.6);
+    let light = LightSource::directional(Vec3::new(0.408_248_3, 0.816_496_6, 0.408_248_3), Vec3::ONE);
+    let material = match maps {
+        Maps::None => SurfaceMaterial::plain(Vec3::new(0.9, 0.8, 0.7)),
+        Maps::DiffuseNormalSpecularShadow => SurfaceMaterial {
+            specular: Vec3::splat(0.5),
+            diffuse: Some(diffuse),
+            normal_map: Some(NormalMap { texture: normal, space: NormalSpace::Tangent }),
+            specular_map: Some(diffuse),
+            ..SurfaceMaterial::plain(Vec3::new(0.9, 0.8, 0.7))
+        },
+    };
+    let object = SurfaceDraw { mesh, tangents: Some(&tangents), transforms: t, material };
+    let shadowed = matches!(maps, Maps::DiffuseNormalSpecularShadow);
+    let view = ShadowView::fit(light.kind, Bounds { centre: Vec3::ZERO, radius: 1.0 }, 2048).unwrap();
+    let mut shadow_depth = vec![0.0; 2048 * 2048];
+    bencher.bench_local(|| {
+        let mut light = light;
+        if shadowed {
+            clear_shadow_depth(&mut shadow_depth);
+            draw_shadow_caster(&view, &mut shadow_depth, &mesh, &t.model).unwrap();
+            light.shadow = Some(ShadowMap::new(view, &shadow_depth, ShadowBias::DEFAULT, 1).unwrap());
+        }
+        let lights = [light];
+        let scene = SceneLights { ambient: Vec3::splat(0.1), lights: &lights };
+        let mut target = Target::new(Rgb888(&mut frame.color), &mut frame.depth[..], 800, 800).unwrap();
+        target.clear(Vec3::ZERO);
+        black_box(draw_surface(&mut target, &object, &scene, &DrawState::default()).unwrap());
+    });
+}
+
+/// The mapped shader with nothing to map: its batching against the classic Phong loop.
+#[divan::bench]
+fn sphere_2_5k_surface_plain_800x800(bencher: Bencher) {
+    surface(bencher, Maps::None);
+}
+
+/// Diffuse + tangent-space normal + specular maps and a shadow-casting light, shadow pass included.
+#[divan::bench]
+fn sphere_2_5k_surface_maps_shadow_800x800(bencher: Bencher) {
+    surface(bencher, Maps::DiffuseNormalSpecularShadow);
+}
