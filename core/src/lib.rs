@@ -18,7 +18,8 @@
 //! | target | [`target`] | RGB888 or RGB565 colour, `f32` or `u16` depth, whole frames or bands |
 //!
 //! [`pipeline::draw`] runs a [`pipeline::Shader`] of your own; [`shading::draw_mesh`] picks one of the built-in
-//! shaders for the effects a scene calls for, and compiles exactly those.
+//! shaders for the effects a scene calls for, and compiles exactly those. [`effects`] adds material maps, point
+//! lights, shadow maps and ambient occlusion, each computed only by the draws that use it.
 //!
 //! # Example
 //! ```
