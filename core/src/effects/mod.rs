@@ -32,7 +32,7 @@ mod varyings;
 pub use draw::{SurfaceDraw, draw_surface, draw_surface_unspecialised};
 pub use lights::{LightKind, LightSource, SceneLights};
 pub use material::{NormalMap, NormalSpace, SurfaceMaterial};
-pub use occlusion::AmbientOcclusion;
+pub use occlusion::{AmbientOcclusion, OcclusionError};
 pub use shader::SurfaceShader;
 pub use shadow::{Bounds, ShadowBias, ShadowError, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster};
 pub use variant::{NormalSource, SpecularSource, SurfaceError, SurfaceVariant};
