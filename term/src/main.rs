@@ -15,7 +15,7 @@ use rasterm::png_file::write_png;
 use rasterm::report::terminal::{DEFAULT_FRAMES, TerminalReport};
 use rasterm::scene::{Appearance, Lens, OrbitCamera, ShadingMode, parse_hex_color};
 use rasterm::scene_file::SceneData;
-use rasterm::scene_render::{PlanOptions, PreparedScene, ScenePlan, render_scene_image};
+use rasterm::scene_render::{EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, render_scene_image};
 use rasterm::screen::{CellMode, ColorMode};
 use rasterm::viewer::{ColorChoice, ViewerExit, ViewerOptions, ViewerSubject};
 use rasterm_core::math::Vec3;
@@ -152,6 +152,9 @@ struct SceneArgs {
     /// Background colour, RRGGBB.
     #[arg(long, value_name = "RRGGBB", value_parser = parse_hex_color)]
     background: Option<Vec3>,
+    /// Scene files: leave effects out (normal-maps, specular, glow-maps, shadows, ambient-occlusion).
+    #[arg(long, value_name = "EFFECT,...", value_delimiter = ',', value_parser = SceneEffect::from_str)]
+    without: Vec<SceneEffect>,
 }
 
 impl SceneArgs {
@@ -217,9 +220,18 @@ fn refuse_model_options(matches: &ArgMatches) -> Result<(), String> {
     }
     Err(format!(
         "{} cannot be used with a scene file: its [camera], [[lights]] and materials set them (scene files take \
-         --background, --no-texture and --wireframe)",
+         --background, --no-texture, --wireframe and --without)",
         given.join(", ")
     ))
+}
+
+/// Refuses options that only scene files take, given with a model.
+fn refuse_scene_options(args: &SceneArgs) -> Result<(), String> {
+    if args.without.is_empty() {
+        Ok(())
+    } else {
+        Err("--without needs a scene file (.toml): a model has no effects to leave out (see --shading)".into())
+    }
 }
 
 /// Loads a scene file and prints its warnings and its meshes'.
@@ -309,6 +321,7 @@ fn render(args: &RenderArgs, matches: &ArgMatches) -> Result<(), String> {
             "--explain needs a scene file (.toml); for a model, --stats prints what its draws compile to".into()
         );
     }
+    refuse_scene_options(&args.scene)?;
     let Some(output) = args.output.clone() else {
         return Err("no output file: give -o OUT.png".into());
     };
@@ -349,14 +362,17 @@ fn render_scene(args: &RenderArgs, path: &Path, matches: &ArgMatches) -> Result<
     refuse_model_options(matches)?;
     let scene = load_scene_file(path)?;
     let options = PlanOptions {
+        effects: EffectToggles::all_but(&args.scene.without),
         textures: !args.scene.no_texture,
         wireframe: args.scene.wireframe,
         background: args.scene.background,
-        ..PlanOptions::default()
     };
     let camera = scene.data().camera;
     let in_file = |e: rasterm::scene_render::SceneRenderError| format!("{}: {e}", path_text(path));
     let Some(output) = &args.output else {
+        if args.stats {
+            return Err("--stats needs -o OUT.png: --explain alone plans the frame without rendering it".into());
+        }
         // --explain alone: plan the frame at the size asked for, draw nothing.
         let k = args.supersample;
         let size = (args.size.0.saturating_mul(k), args.size.1.saturating_mul(k));
@@ -436,15 +452,19 @@ fn view(args: &ViewerArgs, matches: &ArgMatches) -> Result<ExitCode, String> {
             refuse_model_options(matches)?;
             ViewerSubject::Scene(path.to_path_buf())
         }
-        None => ViewerSubject::Model {
-            model: model_source(&args.model),
-            texture: args.scene.texture(),
-            camera: args.scene.camera(),
-        },
+        None => {
+            refuse_scene_options(&args.scene)?;
+            ViewerSubject::Model {
+                model: model_source(&args.model),
+                texture: args.scene.texture(),
+                camera: args.scene.camera(),
+            }
+        }
     };
     let options = ViewerOptions {
         subject,
         background: args.scene.background,
+        effects: EffectToggles::all_but(&args.scene.without),
         appearance: args.scene.appearance(),
         cell_mode: args.mode,
         color: args.color,

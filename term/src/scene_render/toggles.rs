@@ -34,6 +34,17 @@ impl SceneEffect {
         }
     }
 
+    /// Its name on the command line (`rasterm render --without shadows,normal-maps`).
+    pub fn option_name(self) -> &'static str {
+        match self {
+            Self::NormalMaps => "normal-maps",
+            Self::Specular => "specular",
+            Self::GlowMaps => "glow-maps",
+            Self::Shadows => "shadows",
+            Self::AmbientOcclusion => "ambient-occlusion",
+        }
+    }
+
     /// The viewer's key for it: `'1'` to `'5'`.
     pub fn key(self) -> char {
         match self {
@@ -48,6 +59,18 @@ impl SceneEffect {
     /// The effect of a viewer key, if it is one of `'1'` to `'5'`.
     pub fn from_key(key: char) -> Option<Self> {
         Self::ALL.into_iter().find(|e| e.key() == key)
+    }
+}
+
+impl std::str::FromStr for SceneEffect {
+    type Err = String;
+
+    /// Parses an [`Self::option_name`].
+    fn from_str(s: &str) -> Result<Self, String> {
+        Self::ALL.into_iter().find(|e| e.option_name() == s).ok_or_else(|| {
+            let names: Vec<&str> = Self::ALL.iter().map(|e| e.option_name()).collect();
+            format!("unknown effect {s:?} (expected one of: {})", names.join(", "))
+        })
     }
 }
 
@@ -100,6 +123,15 @@ impl EffectToggles {
     pub fn toggle(&mut self, effect: SceneEffect) {
         self.set(effect, !self.get(effect));
     }
+
+    /// Every effect on but those in `off`.
+    pub fn all_but(off: &[SceneEffect]) -> Self {
+        let mut toggles = Self::ALL_ON;
+        for &effect in off {
+            toggles.set(effect, false);
+        }
+        toggles
+    }
 }
 
 impl Default for EffectToggles {
@@ -141,6 +173,10 @@ mod tests {
             assert_eq!(SceneEffect::from_key(effect.key()), Some(effect));
         }
         assert_eq!(SceneEffect::from_key('6'), None);
+        for effect in SceneEffect::ALL {
+            assert_eq!(effect.option_name().parse(), Ok(effect));
+        }
+        assert!("shadow".parse::<SceneEffect>().unwrap_err().contains("shadows"));
     }
 
     #[test]

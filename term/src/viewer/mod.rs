@@ -37,7 +37,8 @@ use crate::model::LoadError;
 use crate::scene::{Appearance, OrbitCamera, RenderError, Scene};
 use crate::scene_file::SceneFileError;
 use crate::scene_render::{
-    FrameReport, PlanOptions, PreparedScene, SceneEffect, SceneOrbit, ScenePlan, SceneRenderError, SceneRenderer,
+    EffectToggles, FrameReport, PlanOptions, PreparedScene, SceneEffect, SceneOrbit, ScenePlan, SceneRenderError,
+    SceneRenderer,
 };
 use crate::screen::{CellGrid, CellMode, ColorMode, PixelFrame};
 
@@ -85,6 +86,8 @@ pub struct ViewerOptions {
     pub appearance: Appearance,
     /// A background given on the command line, which a scene's own gives way to.
     pub background: Option<Vec3>,
+    /// The effects switched on at the start (scenes only; keys `1` to `5` switch them).
+    pub effects: EffectToggles,
     /// Half-block or ASCII cells.
     pub cell_mode: CellMode,
     /// Colours.
@@ -168,7 +171,7 @@ pub fn run(options: &ViewerOptions) -> Result<ViewerExit, ViewerError> {
     let mut viewer = Viewer {
         content,
         name,
-        state: ViewerState::new(camera, appearance, options.cell_aspect),
+        state: ViewerState::new(camera, appearance, options.cell_aspect).with_effects(options.effects),
         canvas: Canvas::default(),
         cell_mode: options.cell_mode,
         colors,

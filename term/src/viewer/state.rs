@@ -112,6 +112,13 @@ impl ViewerState {
         }
     }
 
+    /// The same state with `effects` switched on at the start (and after a reset).
+    pub fn with_effects(mut self, effects: EffectToggles) -> Self {
+        self.effects = effects;
+        self.initial.2 = effects;
+        self
+    }
+
     /// True when a scene file is shown (not a single model).
     pub fn is_scene(&self) -> bool {
         matches!(self.camera, ViewerCamera::Scene(_))
