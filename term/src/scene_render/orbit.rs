@@ -53,7 +53,7 @@ impl SceneOrbit {
     }
 
     /// Zooms by `factor` (below 1 closer): the eye moves toward the target for a perspective lens, within
-    /// [`ZOOM_RANGE`] of the starting distance; an orthographic lens shows `factor` times the height. Clipping
+    /// 20 times the starting distance either way; an orthographic lens shows `factor` times the height. Clipping
     /// planes the file gives move with the eye: `far` by the distance the eye moved, `near` in proportion.
     pub fn zoom(&mut self, factor: f32) {
         if !(factor.is_finite() && factor > 0.0) {
