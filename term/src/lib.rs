@@ -7,6 +7,7 @@
 //! | [`escaped`] | text from input files made safe for a terminal |
 //! | [`scene`] | camera, lights and shading choices; drawing a model into a core target |
 //! | [`scene_file`] | TOML scene files: camera, lights, placed and textured meshes; parsed, checked and loaded |
+//! | [`scene_render`] | drawing scene files: a plan of passes (shadow maps, forward draws, ambient occlusion), explained and run |
 //! | [`headless`] | `rasterm render`: a scene to a PNG file |
 //! | [`png_file`] | writing PNG files safely |
 //! | [`reference`](mod@reference) | a slow `f64` reference renderer (16x16 samples per pixel, coverage and shading in `f64`): the truth to measure against |
@@ -23,5 +24,6 @@ pub mod reference;
 pub mod report;
 pub mod scene;
 pub mod scene_file;
+pub mod scene_render;
 pub mod screen;
 pub mod viewer;

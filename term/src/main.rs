@@ -1,19 +1,23 @@
-//! The `rasterm` command: a terminal viewer (`rasterm [MODEL]`), a headless renderer (`rasterm render`) and
-//! measurement reports (`rasterm report`).
+//! The `rasterm` command: a terminal viewer (`rasterm [MODEL.obj | SCENE.toml]`), a headless renderer
+//! (`rasterm render`) and measurement reports (`rasterm report`).
 //!
 //! Argument parsing only; the work is in the `rasterm` library.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::str::FromStr;
 
-use clap::{Args, Parser, Subcommand};
+use clap::parser::ValueSource;
+use clap::{ArgMatches, Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 use rasterm::escaped::{Escaped, path_text};
 use rasterm::headless::{ModelSource, RenderRequest, TextureChoice, parse_size, render_to_png};
+use rasterm::png_file::write_png;
 use rasterm::report::terminal::{DEFAULT_FRAMES, TerminalReport};
 use rasterm::scene::{Appearance, Lens, OrbitCamera, ShadingMode, parse_hex_color};
+use rasterm::scene_file::SceneData;
+use rasterm::scene_render::{EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, render_scene_image};
 use rasterm::screen::{CellMode, ColorMode};
-use rasterm::viewer::{ColorChoice, ViewerExit, ViewerOptions};
+use rasterm::viewer::{ColorChoice, ViewerExit, ViewerOptions, ViewerSubject};
 use rasterm_core::math::Vec3;
 
 /// Render 3D models in the terminal, or to PNG files.
@@ -28,7 +32,7 @@ struct Cli {
 
 #[derive(Subcommand, Debug)]
 enum Command {
-    /// Render a model to a PNG file.
+    /// Render a model or a scene file to a PNG file, or explain a scene's passes.
     Render(RenderArgs),
     /// Measure and print figures as Markdown.
     #[command(subcommand)]
@@ -70,7 +74,7 @@ struct TerminalReportArgs {
 /// Options of the interactive viewer.
 #[derive(Args, Debug)]
 struct ViewerArgs {
-    /// OBJ file to show (default: the built-in model, Spot the cow).
+    /// OBJ file or scene file (.toml) to show (default: the built-in model, Spot the cow).
     model: Option<PathBuf>,
     #[command(flatten)]
     scene: SceneArgs,
@@ -88,11 +92,14 @@ struct ViewerArgs {
 /// Options of `rasterm render`.
 #[derive(Args, Debug)]
 struct RenderArgs {
-    /// OBJ file to render (default: the built-in model).
+    /// OBJ file or scene file (.toml) to render (default: the built-in model).
     model: Option<PathBuf>,
-    /// The PNG file to write.
-    #[arg(short, long, value_name = "OUT.png")]
-    output: PathBuf,
+    /// The PNG file to write (may be left out with --explain).
+    #[arg(short, long, value_name = "OUT.png", required_unless_present = "explain")]
+    output: Option<PathBuf>,
+    /// Scene files: print the passes the frame runs and what each draw computes; with -o, render too.
+    #[arg(long)]
+    explain: bool,
     /// Image size.
     #[arg(long, value_name = "WxH", default_value = "800x600", value_parser = parse_size)]
     size: (u32, u32),
@@ -145,6 +152,9 @@ struct SceneArgs {
     /// Background colour, RRGGBB.
     #[arg(long, value_name = "RRGGBB", value_parser = parse_hex_color)]
     background: Option<Vec3>,
+    /// Scene files: leave effects out (normal-maps, specular, glow-maps, shadows, ambient-occlusion).
+    #[arg(long, value_name = "EFFECT,...", value_delimiter = ',', value_parser = SceneEffect::from_str)]
+    without: Vec<SceneEffect>,
 }
 
 impl SceneArgs {
@@ -180,6 +190,64 @@ fn model_source(path: &Option<PathBuf>) -> ModelSource {
     path.clone().map_or(ModelSource::BuiltIn, ModelSource::File)
 }
 
+/// A scene file: a path ending in `.toml` (any case). Everything else is a model.
+fn scene_path(path: &Option<PathBuf>) -> Option<&Path> {
+    path.as_deref().filter(|p| p.extension().is_some_and(|e| e.eq_ignore_ascii_case("toml")))
+}
+
+/// Options of [`SceneArgs`] that place or shade a single model; a scene file sets these itself.
+const MODEL_ONLY: [(&str, &str); 9] = [
+    ("yaw", "--yaw"),
+    ("pitch", "--pitch"),
+    ("distance", "--distance"),
+    ("fov", "--fov"),
+    ("ortho", "--ortho"),
+    ("near", "--near"),
+    ("far", "--far"),
+    ("shading", "--shading"),
+    ("texture", "--texture"),
+];
+
+/// Refuses model-only options given on the command line with a scene file (defaults do not count).
+fn refuse_model_options(matches: &ArgMatches) -> Result<(), String> {
+    let given: Vec<&str> = MODEL_ONLY
+        .iter()
+        .filter(|(id, _)| matches.value_source(id) == Some(ValueSource::CommandLine))
+        .map(|(_, flag)| *flag)
+        .collect();
+    if given.is_empty() {
+        return Ok(());
+    }
+    Err(format!(
+        "{} cannot be used with a scene file: its [camera], [[lights]] and materials set them (scene files take \
+         --background, --no-texture, --wireframe and --without)",
+        given.join(", ")
+    ))
+}
+
+/// Refuses options that only scene files take, given with a model.
+fn refuse_scene_options(args: &SceneArgs) -> Result<(), String> {
+    if args.without.is_empty() {
+        Ok(())
+    } else {
+        Err("--without needs a scene file (.toml): a model has no effects to leave out (see --shading)".into())
+    }
+}
+
+/// Loads a scene file and prints its warnings and its meshes'.
+fn load_scene_file(path: &Path) -> Result<PreparedScene, String> {
+    let data: SceneData = rasterm::scene_file::load(path).map_err(|e| e.to_string())?;
+    for warning in &data.warnings {
+        eprintln!("rasterm: warning: {}", Escaped(warning));
+    }
+    for object in &data.objects {
+        for warning in &object.model.warnings {
+            eprintln!("rasterm: warning: {}", Escaped(warning));
+        }
+    }
+    PreparedScene::new(data).map_err(|e| format!("{}: {e}", path_text(path)))
+}
+
 fn finite(s: &str) -> Result<f32, String> {
     s.parse::<f32>().ok().filter(|v| v.is_finite()).ok_or_else(|| format!("{s:?} is not a finite number"))
 }
@@ -208,8 +276,9 @@ fn parse_color_choice(s: &str) -> Result<ColorChoice, String> {
 }
 
 fn main() -> ExitCode {
-    let cli = match Cli::try_parse() {
-        Ok(cli) => cli,
+    let parsed = Cli::command().try_get_matches().and_then(|m| Cli::from_arg_matches(&m).map(|cli| (cli, m)));
+    let (cli, matches) = match parsed {
+        Ok(parsed) => parsed,
         Err(e) => {
             // Usage errors quote arguments as typed: escape control characters before they reach a terminal. The
             // arguments first (a raw newline in one must not split the message), then anything left.
@@ -229,10 +298,13 @@ fn main() -> ExitCode {
         }
     };
     let result = match cli.command {
-        Some(Command::Render(args)) => render(&args).map(|()| ExitCode::SUCCESS),
+        Some(Command::Render(args)) => {
+            let sub = matches.subcommand_matches("render").unwrap_or(&matches);
+            render(&args, sub).map(|()| ExitCode::SUCCESS)
+        }
         Some(Command::Report(ReportCommand::Terminal(args))) => terminal_report(&args).map(|()| ExitCode::SUCCESS),
         Some(Command::Report(ReportCommand::Accuracy(args))) => accuracy_report(&args).map(|()| ExitCode::SUCCESS),
-        None => view(&cli.viewer),
+        None => view(&cli.viewer, &matches),
     };
     result.unwrap_or_else(|message| {
         eprintln!("rasterm: error: {}", Escaped(&message));
@@ -240,7 +312,19 @@ fn main() -> ExitCode {
     })
 }
 
-fn render(args: &RenderArgs) -> Result<(), String> {
+fn render(args: &RenderArgs, matches: &ArgMatches) -> Result<(), String> {
+    if let Some(path) = scene_path(&args.model) {
+        return render_scene(args, path, matches);
+    }
+    if args.explain {
+        return Err(
+            "--explain needs a scene file (.toml); for a model, --stats prints what its draws compile to".into()
+        );
+    }
+    refuse_scene_options(&args.scene)?;
+    let Some(output) = args.output.clone() else {
+        return Err("no output file: give -o OUT.png".into());
+    };
     let request = RenderRequest {
         model: model_source(&args.model),
         texture: args.scene.texture(),
@@ -248,7 +332,7 @@ fn render(args: &RenderArgs) -> Result<(), String> {
         supersample: args.supersample,
         camera: args.scene.camera(),
         appearance: args.scene.appearance(),
-        output: args.output.clone(),
+        output,
     };
     let report = render_to_png(&request).map_err(|e| e.to_string())?;
     for warning in &report.warnings {
@@ -272,6 +356,77 @@ fn render(args: &RenderArgs) -> Result<(), String> {
     Ok(())
 }
 
+/// `rasterm render SCENE.toml`: `--explain` alone prints the plan without rendering; with `-o` the frame is
+/// rendered (and the plan printed first when `--explain` is given too).
+fn render_scene(args: &RenderArgs, path: &Path, matches: &ArgMatches) -> Result<(), String> {
+    refuse_model_options(matches)?;
+    let scene = load_scene_file(path)?;
+    let options = PlanOptions {
+        effects: EffectToggles::all_but(&args.scene.without),
+        textures: !args.scene.no_texture,
+        wireframe: args.scene.wireframe,
+        background: args.scene.background,
+    };
+    let camera = scene.data().camera;
+    let in_file = |e: rasterm::scene_render::SceneRenderError| format!("{}: {e}", path_text(path));
+    let Some(output) = &args.output else {
+        if args.stats {
+            return Err("--stats needs -o OUT.png: --explain alone plans the frame without rendering it".into());
+        }
+        // --explain alone: plan the frame at the size asked for, draw nothing.
+        let k = args.supersample;
+        let size = (args.size.0.saturating_mul(k), args.size.1.saturating_mul(k));
+        let plan = ScenePlan::new(&scene, &camera, size, &options).map_err(in_file)?;
+        print!("{plan}");
+        return Ok(());
+    };
+    let image = render_scene_image(&scene, &camera, args.size, args.supersample, &options).map_err(in_file)?;
+    if args.explain {
+        print!("{}", image.plan);
+    }
+    write_png(output, image.width, image.height, &image.pixels).map_err(|e| e.to_string())?;
+    if args.stats {
+        let r = &image.report;
+        let ms = |d: std::time::Duration| d.as_secs_f64() * 1e3;
+        for (pass, done) in image.plan.shadow_passes.iter().zip(&r.shadow_passes) {
+            let s = &done.stats;
+            println!(
+                "shadow map of light {}: {}x{} texels, {} triangles in, {} drawn, {} fragments",
+                done.light, pass.map_size, pass.map_size, s.triangles_in, s.rasterized, s.fragments
+            );
+        }
+        let s = &r.forward;
+        println!(
+            "forward: {} draws; triangles {} in, {} culled, {} clipped, {} drawn ({} outside, {} degenerate, {} \
+             invalid); {} fragments",
+            r.variants.len(),
+            s.triangles_in,
+            s.culled,
+            s.clipped,
+            s.rasterized,
+            s.outside,
+            s.degenerate,
+            s.invalid,
+            s.fragments
+        );
+        let samples = if args.supersample > 1 {
+            format!(" ({0}x{0} samples per pixel)", args.supersample)
+        } else {
+            String::new()
+        };
+        println!(
+            "render: {:.2} ms at {}x{}{samples}: shadows {:.2} ms, forward {:.2} ms, ambient occlusion {:.2} ms",
+            ms(image.render_time),
+            image.width,
+            image.height,
+            ms(r.shadow_time),
+            ms(r.forward_time),
+            ms(r.occlusion_time)
+        );
+    }
+    Ok(())
+}
+
 fn accuracy_report(args: &AccuracyReportArgs) -> Result<(), String> {
     use rasterm::report::accuracy::{AccuracyOptions, measure};
     let options = if args.quick {
@@ -291,11 +446,25 @@ fn terminal_report(args: &TerminalReportArgs) -> Result<(), String> {
     rasterm::report::terminal::run(&report, &mut std::io::stdout().lock()).map(|_| ()).map_err(|e| e.to_string())
 }
 
-fn view(args: &ViewerArgs) -> Result<ExitCode, String> {
+fn view(args: &ViewerArgs, matches: &ArgMatches) -> Result<ExitCode, String> {
+    let subject = match scene_path(&args.model) {
+        Some(path) => {
+            refuse_model_options(matches)?;
+            ViewerSubject::Scene(path.to_path_buf())
+        }
+        None => {
+            refuse_scene_options(&args.scene)?;
+            ViewerSubject::Model {
+                model: model_source(&args.model),
+                texture: args.scene.texture(),
+                camera: args.scene.camera(),
+            }
+        }
+    };
     let options = ViewerOptions {
-        model: model_source(&args.model),
-        texture: args.scene.texture(),
-        camera: args.scene.camera(),
+        subject,
+        background: args.scene.background,
+        effects: EffectToggles::all_but(&args.scene.without),
         appearance: args.scene.appearance(),
         cell_mode: args.mode,
         color: args.color,

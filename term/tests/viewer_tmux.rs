@@ -51,11 +51,16 @@ struct Tmux {
 impl Tmux {
     /// Starts a server whose only pane (`cols` x `rows`) runs `rasterm` under the wrapper.
     fn start(test: &str, cols: u16, rows: u16) -> Self {
+        Self::start_with(test, cols, rows, &[])
+    }
+
+    /// As [`Self::start`], running `rasterm ARGS...`.
+    fn start_with(test: &str, cols: u16, rows: u16, args: &[&Path]) -> Self {
         let dir = tempfile::tempdir().expect("temporary directory");
         let socket = format!("rasterm-test-{}-{test}", std::process::id());
         let mut tmux = Self { socket, socket_path: None, dir };
         let script = tmux.dir.path().join("run.sh");
-        std::fs::write(&script, wrapper_script(&tmux.pid_file(), Path::new(env!("CARGO_BIN_EXE_rasterm"))))
+        std::fs::write(&script, wrapper_script(&tmux.pid_file(), Path::new(env!("CARGO_BIN_EXE_rasterm")), args))
             .expect("write the wrapper script");
         let (cols, rows) = (cols.to_string(), rows.to_string());
         let command = format!("sh {}", shell_quote(&script));
@@ -197,13 +202,15 @@ impl Drop for Tmux {
     }
 }
 
-/// The wrapper: record the viewer's pid, run it with a fixed terminal type, report how it ended, keep the pane.
-fn wrapper_script(pid_file: &Path, binary: &Path) -> String {
+/// The wrapper: record the viewer's pid, run it (with `args`) with a fixed terminal type, report how it ended,
+/// keep the pane.
+fn wrapper_script(pid_file: &Path, binary: &Path, args: &[&Path]) -> String {
+    let args: String = args.iter().map(|a| format!(" {}", shell_quote(a))).collect();
     format!(
         "export TERM=xterm-256color COLORTERM=truecolor\n\
          unset NO_COLOR\n\
          before=$(stty -g)\n\
-         sh -c 'echo $$ > \"$1\"; exec \"$2\"' sh {pid} {bin}\n\
+         sh -c 'echo $$ > \"$1\"; shift; exec \"$@\"' sh {pid} {bin}{args}\n\
          status=$?\n\
          after=$(stty -g)\n\
          if [ \"$before\" = \"$after\" ]; then tty=same; else tty=changed; fi\n\
@@ -287,6 +294,52 @@ fn tiny_pane_shows_the_notice_and_still_quits() {
         let screen = tmux.screen();
         (screen.contains("small") && !screen.contains('▀')).then_some(())
     });
+
+    tmux.send_keys("q");
+    let (status, tty_same) = tmux.wait_for_exit();
+    assert_eq!(status, 0, "exit status after q");
+    tmux.assert_restored(tty_same);
+}
+
+#[test]
+fn a_scene_file_shows_and_its_effects_switch_off() {
+    if !tmux_wanted() {
+        return;
+    }
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join("../assets/scenes/spot_sun.toml");
+    let tmux = Tmux::start_with("scene", 100, 32, &[&scene]);
+    let first = tmux.wait_for_picture();
+
+    tmux.send_keys("i");
+    let hud = tmux.wait_for("the scene's HUD", || {
+        let screen = tmux.screen();
+        (screen.contains("spot_sun.toml") && screen.contains("4 shadows on")).then_some(screen)
+    });
+    assert!(hud.contains("scene perspective texture on wire off"), "HUD:\n{hud}");
+    assert!(hud.contains("passes: 1 shadow"), "HUD:\n{hud}");
+
+    // Shadows off: no shadow pass, and the picture changes (the ground under Spot is lit).
+    tmux.send_keys("4");
+    let off = tmux.wait_for("shadows off", || {
+        let screen = tmux.screen();
+        (screen.contains("4 shadows off") && screen.contains("passes: 0 shadow")).then_some(screen)
+    });
+    assert_ne!(off, hud);
+    // m is for models: nothing changes; orbiting does.
+    tmux.send_keys("i");
+    let mut last = String::new();
+    let plain = tmux.wait_for("the HUD to go", || {
+        let screen = tmux.screen_escaped();
+        let steady = !screen.contains("fps") && screen.contains('▀') && screen == last;
+        last = screen;
+        steady.then(|| last.clone())
+    });
+    assert_ne!(plain, first, "switching shadows off changed nothing");
+    tmux.send_keys("m");
+    thread::sleep(Duration::from_millis(300));
+    assert_eq!(tmux.wait_for_picture(), plain, "m changed a scene's picture");
+    tmux.send_keys("Left");
+    tmux.wait_for("the picture to change after Left", || (tmux.screen_escaped() != plain).then_some(()));
 
     tmux.send_keys("q");
     let (status, tty_same) = tmux.wait_for_exit();

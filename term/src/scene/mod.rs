@@ -33,7 +33,7 @@ pub const SPECULAR: Vec3 = Vec3::new(0.22, 0.22, 0.22);
 /// Blinn-Phong exponent of lit surfaces.
 pub const SHININESS: f32 = 28.0;
 /// Wireframe lines: a pale cyan drawn just in front of the surface.
-const WIREFRAME: LineStyle = LineStyle { color: Vec3::new(0.55, 0.9, 1.0), depth_bias: 2e-4 };
+pub const WIREFRAME: LineStyle = LineStyle { color: Vec3::new(0.55, 0.9, 1.0), depth_bias: 2e-4 };
 
 /// Why a frame could not be drawn.
 #[derive(Debug, Clone, PartialEq)]

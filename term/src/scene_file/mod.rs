@@ -87,9 +87,8 @@
 //! mesh's own MTL file are decoded by the OBJ loader, separately. Normal, specular and glow maps are loaded as
 //! images ([`crate::model::TextureImage`], RGB).
 //!
-//! **Not rendered yet.** Nothing draws a loaded scene so far: the CLI does not take scene files, and point lights,
-//! shadows, ambient occlusion and the normal, specular and glow maps have no renderer. This module is the format
-//! and the loader, the first step toward them.
+//! This module is the format and the loader; [`crate::scene_render`] draws a loaded scene
+//! (`rasterm render SCENE.toml -o OUT.png`, `rasterm render SCENE.toml --explain`, `rasterm SCENE.toml`).
 //!
 //! # Example
 //! ```

@@ -2,6 +2,8 @@
 
 use crossterm::event::{Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers, MouseButton, MouseEvent, MouseEventKind};
 
+use crate::scene_render::SceneEffect;
+
 /// Something the user asked for.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Action {
@@ -24,8 +26,10 @@ pub enum Action {
     Reset,
     /// Perspective / orthographic.
     ToggleProjection,
-    /// Next shading mode.
+    /// Next shading mode (models only).
     CycleShading,
+    /// Switch one of a scene's effects on or off (scenes only).
+    ToggleEffect(SceneEffect),
     /// Textures on / off.
     ToggleTexture,
     /// Wireframe on / off.
@@ -49,9 +53,12 @@ pub const HELP: &[&str] = &[
     "drag with the mouse   orbit",
     "r                     reset view",
     "p                     perspective / ortho",
-    "m                     shading mode",
+    "m                     shading mode (models)",
     "t                     texture on / off",
     "x                     wireframe",
+    "1 2 3                 normal maps, specular, glow",
+    "4 5                   shadows, ambient occlusion",
+    "                      (1-5: scene files only)",
     "space                 turntable",
     "i                     info (HUD)",
     "?                     this help",
@@ -84,6 +91,7 @@ fn key_action(key: &KeyEvent) -> Option<Action> {
         KeyCode::Char('r') => Some(Action::Reset),
         KeyCode::Char('p') => Some(Action::ToggleProjection),
         KeyCode::Char('m') => Some(Action::CycleShading),
+        KeyCode::Char(c @ '1'..='5') => SceneEffect::from_key(c).map(Action::ToggleEffect),
         KeyCode::Char('t') => Some(Action::ToggleTexture),
         KeyCode::Char('x') => Some(Action::ToggleWireframe),
         KeyCode::Char(' ') => Some(Action::ToggleTurntable),

@@ -1,8 +1,13 @@
-//! The terminal viewer: `rasterm [MODEL]`.
+//! The terminal viewer: `rasterm [MODEL.obj | SCENE.toml]`.
 //!
 //! The main thread waits for input, renders a frame when something changed (input, a resize, the turntable) and
 //! turns it into terminal cells; a [`FrameWriter`] thread encodes the newest frame as a delta and writes it.
 //! Idle, the viewer sleeps in `poll`: no frames, no bytes, no CPU.
+//!
+//! A model is drawn by [`crate::scene::Scene`] with the orbit camera; a scene file by
+//! [`crate::scene_render`]: each frame is planned from the orbited camera and the effects switched on (keys `1`
+//! to `5`), so a switched-off effect is not computed, and the shadow maps are kept from frame to frame (they do not
+//! depend on the camera).
 
 mod controls;
 mod frame_writer;
@@ -12,22 +17,29 @@ mod terminal_session;
 
 pub use controls::{Action, HELP, action_for};
 pub use frame_writer::{FrameWriter, WriterStats};
-pub use state::{Effect, ViewerState};
+pub use state::{Effect, ViewerCamera, ViewerState};
 pub use terminal_session::{TerminalSession, restore};
 
 use std::fmt;
 use std::io::{self, IsTerminal};
+use std::path::PathBuf;
 use std::sync::atomic::Ordering;
 use std::time::{Duration, Instant};
 
 use crossterm::{event, terminal};
+use rasterm_core::math::Vec3;
 use rasterm_core::pipeline::DrawStats;
 use rasterm_core::target::{Rgb888, Target};
 
-use crate::escaped::Escaped;
+use crate::escaped::{Escaped, path_text};
 use crate::headless::{ModelSource, TextureChoice, load_scene};
 use crate::model::LoadError;
 use crate::scene::{Appearance, OrbitCamera, RenderError, Scene};
+use crate::scene_file::SceneFileError;
+use crate::scene_render::{
+    EffectToggles, FrameReport, PlanOptions, PreparedScene, SceneEffect, SceneOrbit, ScenePlan, SceneRenderError,
+    SceneRenderer,
+};
 use crate::screen::{CellGrid, CellMode, ColorMode, PixelFrame};
 
 /// Smallest terminal the viewer draws in; below it shows a notice.
@@ -48,17 +60,34 @@ pub enum ColorChoice {
     Fixed(ColorMode),
 }
 
+/// What the viewer shows.
+#[derive(Clone, Debug)]
+pub enum ViewerSubject {
+    /// A single model, fitted to the view, with the viewer's lights.
+    Model {
+        /// The model.
+        model: ModelSource,
+        /// The textures.
+        texture: TextureChoice,
+        /// The starting camera.
+        camera: OrbitCamera,
+    },
+    /// A scene file: its camera, lights, objects and effects.
+    Scene(PathBuf),
+}
+
 /// Everything the viewer is started with.
 #[derive(Clone, Debug)]
 pub struct ViewerOptions {
-    /// The model.
-    pub model: ModelSource,
-    /// The textures.
-    pub texture: TextureChoice,
-    /// The starting camera.
-    pub camera: OrbitCamera,
-    /// The starting look.
+    /// What to show.
+    pub subject: ViewerSubject,
+    /// The starting look. For a scene, only textures and wireframe are used; its background is the scene's unless
+    /// [`Self::background`] is given.
     pub appearance: Appearance,
+    /// A background given on the command line, which a scene's own gives way to.
+    pub background: Option<Vec3>,
+    /// The effects switched on at the start (scenes only; keys `1` to `5` switch them).
+    pub effects: EffectToggles,
     /// Half-block or ASCII cells.
     pub cell_mode: CellMode,
     /// Colours.
@@ -74,6 +103,10 @@ pub enum ViewerError {
     NotATerminal,
     /// The model could not be loaded.
     Load(LoadError),
+    /// The scene file could not be loaded.
+    SceneFile(SceneFileError),
+    /// The scene could not be planned or drawn.
+    Scene(PathBuf, SceneRenderError),
     /// The terminal failed.
     Terminal(String),
     /// A frame could not be drawn.
@@ -87,6 +120,8 @@ impl fmt::Display for ViewerError {
                 f.write_str("standard output is not a terminal; to render to a file use `rasterm render -o FILE.png`")
             }
             Self::Load(e) => e.fmt(f),
+            Self::SceneFile(e) => e.fmt(f),
+            Self::Scene(path, e) => write!(f, "{}: {e}", path_text(path)),
             Self::Terminal(e) => write!(f, "terminal error: {e}"),
             Self::Render(e) => e.fmt(f),
         }
@@ -118,9 +153,14 @@ pub fn run(options: &ViewerOptions) -> Result<ViewerExit, ViewerError> {
     if !io::stdout().is_terminal() {
         return Err(ViewerError::NotATerminal);
     }
-    let loaded = load_scene(&options.model, &options.texture).map_err(ViewerError::Load)?;
-    for warning in &loaded.warnings {
-        eprintln!("rasterm: warning: {}", Escaped(warning));
+    let (content, camera, name) = load_content(options)?;
+    let mut appearance = options.appearance;
+    if let Content::Scene { scene, .. } = &content {
+        appearance.background = options.background.unwrap_or(scene.data().background);
+        // The first frame is planned now, so a scene that cannot be drawn (a point light inside its bounds casting
+        // shadows) is reported before the terminal is taken over.
+        ScenePlan::new(scene, &scene.data().camera, (64, 64), &PlanOptions::default())
+            .map_err(|e| ViewerError::Scene(scene_path(options), e))?;
     }
     let colors = match options.color {
         ColorChoice::Auto => ColorMode::from_process_env(),
@@ -129,15 +169,16 @@ pub fn run(options: &ViewerOptions) -> Result<ViewerExit, ViewerError> {
     let session = TerminalSession::enter().map_err(terminal_error)?;
     let writer = FrameWriter::start(io::stdout());
     let mut viewer = Viewer {
-        scene: loaded.scene,
-        name: loaded.name,
-        state: ViewerState::new(options.camera, options.appearance, options.cell_aspect),
+        content,
+        name,
+        state: ViewerState::new(camera, appearance, options.cell_aspect).with_effects(options.effects),
         canvas: Canvas::default(),
         cell_mode: options.cell_mode,
         colors,
         cell_aspect: options.cell_aspect,
         size: terminal::size().map_err(terminal_error)?,
         last_stats: DrawStats::default(),
+        last_report: None,
         render_time: Duration::ZERO,
         frame_times: FrameClock::default(),
     };
@@ -145,6 +186,43 @@ pub fn run(options: &ViewerOptions) -> Result<ViewerExit, ViewerError> {
     writer.finish();
     drop(session);
     result
+}
+
+/// What the viewer draws: a model, or a scene with its renderer (which keeps the shadow maps).
+enum Content {
+    Model(Scene),
+    Scene { scene: PreparedScene, renderer: SceneRenderer },
+}
+
+fn scene_path(options: &ViewerOptions) -> PathBuf {
+    match &options.subject {
+        ViewerSubject::Scene(path) => path.clone(),
+        ViewerSubject::Model { .. } => PathBuf::new(),
+    }
+}
+
+/// Loads what `options` name, printing the warnings (the terminal is not taken over yet).
+fn load_content(options: &ViewerOptions) -> Result<(Content, ViewerCamera, String), ViewerError> {
+    match &options.subject {
+        ViewerSubject::Model { model, texture, camera } => {
+            let loaded = load_scene(model, texture).map_err(ViewerError::Load)?;
+            for warning in &loaded.warnings {
+                eprintln!("rasterm: warning: {}", Escaped(warning));
+            }
+            Ok((Content::Model(loaded.scene), ViewerCamera::Model(*camera), loaded.name))
+        }
+        ViewerSubject::Scene(path) => {
+            let data = crate::scene_file::load(path).map_err(ViewerError::SceneFile)?;
+            let warnings = data.objects.iter().flat_map(|o| o.model.warnings.iter());
+            for warning in data.warnings.iter().chain(warnings) {
+                eprintln!("rasterm: warning: {}", Escaped(warning));
+            }
+            let scene = PreparedScene::new(data).map_err(|e| ViewerError::Scene(path.clone(), e))?;
+            let camera = ViewerCamera::Scene(SceneOrbit::new(scene.data().camera));
+            let content = Content::Scene { scene, renderer: SceneRenderer::new() };
+            Ok((content, camera, path.to_string_lossy().into_owned()))
+        }
+    }
 }
 
 /// Pixel and depth buffers, reused from frame to frame.
@@ -179,7 +257,7 @@ impl FrameClock {
 }
 
 struct Viewer {
-    scene: Scene,
+    content: Content,
     name: String,
     state: ViewerState,
     canvas: Canvas,
@@ -188,6 +266,8 @@ struct Viewer {
     cell_aspect: f32,
     size: (u16, u16),
     last_stats: DrawStats,
+    /// The passes of the last frame of a scene.
+    last_report: Option<FrameReport>,
     render_time: Duration,
     frame_times: FrameClock,
 }
@@ -259,10 +339,29 @@ impl Viewer {
         let mut target =
             Target::new(Rgb888(&mut self.canvas.pixels), &mut self.canvas.depth[..], width as u32, height as u32)
                 .map_err(|e| ViewerError::Terminal(e.to_string()))?;
-        self.last_stats = self
-            .scene
-            .render(&mut target, &self.state.camera, &self.state.appearance, aspect)
-            .map_err(ViewerError::Render)?;
+        match (&mut self.content, &self.state.camera) {
+            (Content::Model(scene), ViewerCamera::Model(camera)) => {
+                self.last_stats =
+                    scene.render(&mut target, camera, &self.state.appearance, aspect).map_err(ViewerError::Render)?;
+            }
+            (Content::Scene { scene, renderer }, ViewerCamera::Scene(orbit)) => {
+                let a = &self.state.appearance;
+                let options = PlanOptions {
+                    effects: self.state.effects,
+                    textures: a.textures,
+                    wireframe: a.wireframe,
+                    background: Some(a.background),
+                };
+                let size = (width as u32, height as u32);
+                let to_error = |e| ViewerError::Scene(self.name.clone().into(), e);
+                let plan = ScenePlan::with_aspect(scene, &orbit.camera, size, aspect, &options).map_err(to_error)?;
+                let report = renderer.render(scene, &plan, &mut target).map_err(to_error)?;
+                self.last_stats = report.forward;
+                self.last_report = Some(report);
+            }
+            // The camera is made with the content (`load_content`): the pairs above are the only ones.
+            _ => return Err(ViewerError::Terminal("the camera does not fit what is shown".into())),
+        }
         self.render_time = start.elapsed();
         self.frame_times.tick();
         let background = rasterm_core::color::pack_rgb888(self.state.appearance.background);
@@ -281,8 +380,9 @@ impl Viewer {
         let s = &self.last_stats;
         let (cols, rows) = self.size;
         let a = &self.state.appearance;
-        let lens = if self.state.camera.lens.is_orthographic() { "ortho" } else { "perspective" };
-        vec![
+        let lens = if self.state.camera.is_orthographic() { "ortho" } else { "perspective" };
+        let mode = if self.state.is_scene() { "scene" } else { a.shading.name() };
+        let mut lines = vec![
             format!("{}", Escaped(&self.name)),
             format!(
                 "{} fps   render {:.2} ms   encode {:.2} ms",
@@ -297,7 +397,7 @@ impl Viewer {
             ),
             format!(
                 "{} {} texture {} wire {}   {}x{} {} {}",
-                a.shading.name(),
+                mode,
                 lens,
                 if a.textures { "on" } else { "off" },
                 if a.wireframe { "on" } else { "off" },
@@ -306,6 +406,25 @@ impl Viewer {
                 self.cell_mode.name(),
                 self.colors.name()
             ),
-        ]
+        ];
+        if let Some(report) = self.last_report.as_ref().filter(|_| self.state.is_scene()) {
+            let ms = |d: Duration| d.as_secs_f64() * 1e3;
+            let kept = report.shadow_passes.iter().filter(|p| p.reused).count();
+            lines.push(format!(
+                "passes: {} shadow ({} kept) {:.2} ms   forward {:.2} ms   ao {:.2} ms",
+                report.shadow_passes.len(),
+                kept,
+                ms(report.shadow_time),
+                ms(report.forward_time),
+                ms(report.occlusion_time)
+            ));
+            let effects: Vec<String> = SceneEffect::ALL
+                .iter()
+                .map(|&e| format!("{} {} {}", e.key(), e.name(), if self.state.effects.get(e) { "on" } else { "off" }))
+                .collect();
+            lines.push(effects[..3].join("  "));
+            lines.push(effects[3..].join("  "));
+        }
+        lines
     }
 }

@@ -1,0 +1,92 @@
+//! Why a scene could not be planned or drawn.
+
+use std::fmt;
+
+use rasterm_core::camera::CameraError;
+use rasterm_core::effects::{Bounds, ShadowError, SurfaceError};
+use rasterm_core::mesh::TangentError;
+use rasterm_core::target::TargetError;
+use rasterm_core::texture::TextureError;
+
+use super::lights::{Number, Triple};
+use crate::escaped::Escaped;
+
+/// A scene that could not be planned or drawn. Its [`Display`](fmt::Display) is one line, with the text that
+/// came from files (object and part names) escaped.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SceneRenderError {
+    /// No object has a finite vertex, so the scene has no extent to frame.
+    Empty,
+    /// The camera settings do not make a camera.
+    Camera(CameraError),
+    /// A light's shadow map could not be set up (a point light inside the scene's bounds).
+    Shadow {
+        /// The light, as [`super::LightName`] gives it.
+        light: String,
+        /// The scene's bounding sphere.
+        bounds: Bounds,
+        /// What the core said.
+        error: ShadowError,
+    },
+    /// Tangents for a tangent-space normal map could not be computed.
+    Tangents {
+        /// The object (raw).
+        object: String,
+        /// What the core said.
+        error: TangentError,
+    },
+    /// An image could not be handed to the core.
+    Texture {
+        /// The object and part (raw).
+        draw: String,
+        /// What the core said.
+        error: TextureError,
+    },
+    /// The core refused a draw.
+    Draw {
+        /// The object and part (raw).
+        draw: String,
+        /// What the core said.
+        error: SurfaceError,
+    },
+    /// The frame's buffers are unusable, or not the size the plan was made for.
+    Target(String),
+}
+
+impl fmt::Display for SceneRenderError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Empty => f.write_str("the scene has no finite vertex to draw"),
+            Self::Camera(e) => write!(f, "bad camera: {e}"),
+            Self::Shadow { light, bounds, error: ShadowError::LightInsideBounds } => write!(
+                f,
+                "{}: cannot cast shadows from inside the scene's bounds (a sphere of radius {} about {}): one shadow \
+                 map cannot see every direction; move the light outside that sphere or set `shadows = false`",
+                Escaped(light),
+                Number(bounds.radius),
+                Triple(bounds.centre)
+            ),
+            Self::Shadow { light, error, .. } => write!(f, "{}: cannot cast shadows: {error}", Escaped(light)),
+            Self::Tangents { object, error } => {
+                write!(f, "{}: no tangents for its normal map: {error}", Escaped(object))
+            }
+            Self::Texture { draw, error } => write!(f, "{}: bad image: {error}", Escaped(draw)),
+            Self::Draw { draw, error } => write!(f, "{}: cannot draw: {error}", Escaped(draw)),
+            Self::Target(e) => write!(f, "bad frame: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for SceneRenderError {}
+
+impl From<CameraError> for SceneRenderError {
+    fn from(e: CameraError) -> Self {
+        Self::Camera(e)
+    }
+}
+
+impl From<TargetError> for SceneRenderError {
+    fn from(e: TargetError) -> Self {
+        Self::Target(e.to_string())
+    }
+}

@@ -1,0 +1,88 @@
+//! The plan as text: what `rasterm render SCENE.toml --explain` prints.
+
+use std::fmt;
+
+use rasterm_core::color::pack_rgb888;
+
+use super::ScenePlan;
+use super::camera::PlaneSource;
+use super::lights::{LightName, Number, Triple};
+use crate::escaped::Escaped;
+use crate::scene_file::Projection;
+
+/// What the ambient occlusion step says it does until the core's lands.
+pub const AMBIENT_OCCLUSION_NOTE: &str =
+    "ambient occlusion: hook only, no pixel changes until core::effects::AmbientOcclusion lands";
+
+impl fmt::Display for ScenePlan {
+    /// The frame, the lights, then the passes in the order they run, with one line per draw of the forward pass
+    /// (its object and part, escaped, and its [`rasterm_core::effects::SurfaceVariant`]). Only what the frame uses
+    /// appears, and the lights left out are named with the reason.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let (width, height) = self.size;
+        let c = &self.camera;
+        let lens = match c.lens {
+            Projection::Perspective { fov_degrees } => format!("perspective, fov {} degrees", Number(fov_degrees)),
+            Projection::Orthographic { height } => format!("orthographic, {} units high", Number(height)),
+        };
+        let source = |s: PlaneSource| match s {
+            PlaneSource::File => "from the file",
+            PlaneSource::Derived => "around the scene",
+        };
+        writeln!(
+            f,
+            "frame {width}x{height}: {lens}; near {} ({}), far {} ({}); background #{:06x}; ambient {}",
+            Number(c.near),
+            source(c.near_source),
+            Number(c.far),
+            source(c.far_source),
+            pack_rgb888(self.background),
+            Triple(self.ambient)
+        )?;
+        if self.lights.is_empty() && self.dropped_lights.is_empty() {
+            writeln!(f, "lights: none (ambient light only)")?;
+        } else {
+            writeln!(f, "lights:")?;
+        }
+        for light in &self.lights {
+            let shadows = if light.shadow_pass.is_some() { ", casts shadows" } else { "" };
+            writeln!(f, "  {}: colour {}{shadows}", self.light_name(light), Triple(light.color))?;
+        }
+        for light in &self.dropped_lights {
+            let why = if light.source.intensity == 0.0 { "intensity 0" } else { "black colour" };
+            let name = LightName { number: light.number, light: &light.source };
+            writeln!(f, "  {name}: dropped, it sheds no light ({why})")?;
+        }
+        writeln!(f, "passes:")?;
+        let mut step = 0;
+        let mut next = || {
+            step += 1;
+            step
+        };
+        for pass in &self.shadow_passes {
+            let light = &self.lights[pass.light];
+            let side = 2 * pass.pcf_radius + 1;
+            let plural = if pass.casters == 1 { "" } else { "s" };
+            writeln!(
+                f,
+                "  {}. shadow map of {}: {}x{} texels, {} caster{plural}, pcf {side}x{side}",
+                next(),
+                self.light_name(light),
+                pass.map_size,
+                pass.map_size,
+                pass.casters
+            )?;
+        }
+        let plural = if self.draws.len() == 1 { "" } else { "s" };
+        let wireframe = if self.wireframe { ", with wireframe lines" } else { "" };
+        let textures = if self.textures { "" } else { ", diffuse textures off" };
+        writeln!(f, "  {}. forward: {} draw{plural}{wireframe}{textures}", next(), self.draws.len())?;
+        for draw in &self.draws {
+            writeln!(f, "       {}: {}", Escaped(&draw.label), draw.variant)?;
+        }
+        if self.ambient_occlusion {
+            writeln!(f, "  {}. {AMBIENT_OCCLUSION_NOTE}", next())?;
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,67 @@
+//! The core material of one part of an object: the scene file's material keys over the part's MTL material, with
+//! the maps of switched-off effects left out.
+
+use rasterm_core::effects::{NormalMap, NormalSpace as CoreNormalSpace, SurfaceMaterial};
+use rasterm_core::math::Vec3;
+use rasterm_core::texture::TextureError;
+
+use super::PlanOptions;
+use crate::scene::{SHININESS, SPECULAR};
+use crate::scene_file::{NormalSpace, SceneObject};
+
+/// The material of part `part` of `object`:
+///
+/// - colour and diffuse texture: the scene's `color` and `diffuse` when given, else the part's MTL `Kd` and
+///   `map_Kd` ([`crate::scene_file::ObjectMaterial::color_over`] and `diffuse_over`); no texture when
+///   `options.textures` is off;
+/// - specular colour: the scene's `specular`, else [`SPECULAR`]; zero (no highlights, and no specular map) when
+///   the specular effect is off;
+/// - shininess: the scene's, else [`SHININESS`];
+/// - normal and glow maps: the scene's, unless their effect is off;
+/// - filter and wrap: the scene's, for every map.
+///
+/// # Errors
+/// [`TextureError`] for an image whose fields are inconsistent (only possible if changed by hand after loading).
+pub fn part_material<'a>(
+    object: &'a SceneObject,
+    part: usize,
+    options: &PlanOptions,
+) -> Result<SurfaceMaterial<'a>, TextureError> {
+    let mtl = object.model.part_material(part);
+    let m = &object.material;
+    let effects = &options.effects;
+    let diffuse = match m.diffuse_over(mtl) {
+        Some(image) if options.textures => Some(image.texture()?),
+        _ => None,
+    };
+    let normal_map = match &m.normal_map {
+        Some(map) if effects.normal_maps => {
+            let space = match map.space {
+                NormalSpace::Tangent => CoreNormalSpace::Tangent,
+                NormalSpace::Object => CoreNormalSpace::Object,
+            };
+            Some(NormalMap { texture: map.image.texture()?, space })
+        }
+        _ => None,
+    };
+    let specular = if effects.specular { m.specular.unwrap_or(SPECULAR) } else { Vec3::ZERO };
+    let specular_map = match &m.specular_map {
+        Some(image) if effects.specular => Some(image.texture()?),
+        _ => None,
+    };
+    let glow_map = match &m.glow_map {
+        Some(image) if effects.glow_maps => Some(image.texture()?),
+        _ => None,
+    };
+    Ok(SurfaceMaterial {
+        color: m.color_over(mtl),
+        specular,
+        shininess: m.shininess.unwrap_or(SHININESS),
+        diffuse,
+        normal_map,
+        specular_map,
+        glow_map,
+        filter: m.filter,
+        wrap: m.wrap,
+    })
+}

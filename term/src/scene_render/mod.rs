@@ -1,0 +1,89 @@
+//! Drawing scene files: a loaded [`SceneData`](crate::scene_file::SceneData) turned into frames, running exactly
+//! the passes the scene calls for.
+//!
+//! ```text
+//! SceneData ──PreparedScene::new──▶ PreparedScene (world bounds; tangents of tangent-space normal-mapped meshes)
+//!                                       │
+//!   SceneCamera (the file's, or orbited) + frame size + PlanOptions (effects on/off, textures, wireframe)
+//!                                       ▼  ScenePlan::new: nothing drawn, nothing allocated but the plan
+//!          ScenePlan: camera matrices, lights (colour × intensity; dark ones dropped), shadow passes,
+//!                     forward draws (one per part, SurfaceVariant resolved), ambient occlusion step
+//!                                       │                       │
+//!                                       ▼                       ▼  Display: `rasterm render --explain`
+//!   SceneRenderer::render(scene, plan, target)
+//!     1. shadow passes: clear_shadow_depth + draw_shadow_caster per object (maps kept and reused across frames)
+//!     2. forward pass: clear to the background, draw_surface per part (+ wireframe lines when asked)
+//!     3. apply_ambient_occlusion (a hook: changes nothing until the core's ambient occlusion lands)
+//! ```
+//!
+//! - [`PreparedScene`]: what every frame shares (bounds, tangents, object names).
+//! - [`ScenePlan`]: one frame's passes, from the scene, the camera, the frame's size and the [`PlanOptions`]
+//!   ([`EffectToggles`]: the viewer's keys `1` to `5`). A switched-off effect is not in the plan, so it costs
+//!   nothing. Its `Display` is the explanation, one line per pass and per draw.
+//! - [`SceneRenderer`]: runs plans, keeping shadow maps from frame to frame (they depend on the scene and the
+//!   lights, not the camera).
+//! - [`render_scene_image`]: plan and render into fresh buffers, with supersampling: `rasterm render`.
+//! - [`SceneOrbit`]: the viewer's camera for scenes: orbit about the file's target, zoom, switch the lens.
+//!
+//! Policies, each documented where it is decided: shadow map size ([`shadow_map_size`]: 2048 texels a side for
+//! frames above 512 pixels, 1024 otherwise), shadow bounds ([`scene_bounds`]: the sphere around every object's
+//! world-space box), clipping planes ([`FrameCamera::new`]: the file's, else around those bounds), materials
+//! ([`part_material`]: scene keys over MTL values, maps of switched-off effects left out).
+//!
+//! # Example
+//! ```
+//! use rasterm::scene_file::parse;
+//! use rasterm::scene_render::{PlanOptions, PreparedScene, ScenePlan, render_scene_image};
+//!
+//! let text = r#"
+//! [camera]
+//! position = [0, 1, 4]
+//! target = [0, 0, 0]
+//! fov = 40
+//!
+//! [[lights]]
+//! type = "directional"
+//! direction = [-1, -2, -1]
+//! shadows = true
+//!
+//! [[objects]]
+//! mesh = "builtin:spot"
+//! "#;
+//! let scene = PreparedScene::new(parse(text, "example.toml")?.load()?)?;
+//! let options = PlanOptions::default();
+//! let plan = ScenePlan::new(&scene, &scene.data().camera, (64, 48), &options)?;
+//! assert_eq!(plan.shadow_passes.len(), 1);
+//! assert!(plan.to_string().contains("shadow map of light 1 (directional"));
+//!
+//! let image = render_scene_image(&scene, &scene.data().camera, (64, 48), 1, &options)?;
+//! assert!(image.pixels.iter().any(|&p| p != image.pixels[0]));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+mod bounds;
+mod camera;
+mod error;
+mod explain;
+mod image;
+mod lights;
+mod material;
+mod orbit;
+mod plan;
+mod prepared;
+mod render;
+mod toggles;
+
+pub use bounds::scene_bounds;
+pub use camera::{FrameCamera, PlaneSource};
+pub use error::SceneRenderError;
+pub use explain::AMBIENT_OCCLUSION_NOTE;
+pub use image::{SceneImage, render_scene_image};
+pub use lights::{DroppedLight, LightName, Number, PlannedLight, Triple, core_light};
+pub use material::part_material;
+pub use orbit::SceneOrbit;
+pub use plan::{
+    LARGE_FRAME, LARGE_SHADOW_MAP, PCF_RADIUS, PlannedDraw, SMALL_SHADOW_MAP, ScenePlan, ShadowPass, shadow_map_size,
+};
+pub use prepared::PreparedScene;
+pub use render::{FrameReport, SceneRenderer, ShadowPassReport, apply_ambient_occlusion};
+pub use toggles::{EffectToggles, PlanOptions, SceneEffect};

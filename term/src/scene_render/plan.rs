@@ -1,0 +1,243 @@
+//! The plan of one frame: which passes run, with which lights, and what each draw computes.
+
+use rasterm_core::effects::{
+    Bounds, LightSource, SceneLights, ShadowBias, ShadowMap, ShadowView, SurfaceMaterial, SurfaceVariant,
+};
+use rasterm_core::math::Vec3;
+use rasterm_core::pipeline::DrawState;
+use rasterm_core::shading::Transforms;
+
+use super::camera::FrameCamera;
+use super::lights::{DroppedLight, LightName, PlannedLight, core_light};
+use super::material::part_material;
+use super::{PlanOptions, PreparedScene, SceneRenderError};
+use crate::scene_file::SceneCamera;
+
+/// Side of the shadow maps of frames whose longer side is above [`LARGE_FRAME`] pixels.
+pub const LARGE_SHADOW_MAP: u32 = 2048;
+/// Side of the shadow maps of smaller frames (the terminal viewer's, typically).
+pub const SMALL_SHADOW_MAP: u32 = 1024;
+/// Frames whose longer side is above this many pixels get [`LARGE_SHADOW_MAP`].
+pub const LARGE_FRAME: u32 = 512;
+/// Percentage-closer filtering radius of every shadow map: `r = 1` averages 3x3 texels.
+pub const PCF_RADIUS: u32 = 1;
+
+/// The side of the shadow maps for a frame of `width x height` pixels: [`LARGE_SHADOW_MAP`] (2048, 16 MiB of
+/// depth per light) when the longer side is above [`LARGE_FRAME`] (512), else [`SMALL_SHADOW_MAP`] (1024, 4 MiB).
+/// The map spans the whole scene, so a frame that shows the scene across `n` pixels gets about `2048 / n` map
+/// texels per pixel or more: enough for edges that stay sharp at 800x800 without more memory than that needs.
+pub fn shadow_map_size(width: u32, height: u32) -> u32 {
+    if width.max(height) > LARGE_FRAME { LARGE_SHADOW_MAP } else { SMALL_SHADOW_MAP }
+}
+
+/// A shadow pass: one light's depth map, drawn from every object.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ShadowPass {
+    /// The light, an index into [`ScenePlan::lights`].
+    pub light: usize,
+    /// The light's view of the scene's bounds.
+    pub view: ShadowView,
+    /// The map's side in texels.
+    pub map_size: u32,
+    /// Objects drawn into the map (every object of the scene casts).
+    pub casters: usize,
+    /// Percentage-closer filtering radius of the lookups.
+    pub pcf_radius: u32,
+}
+
+/// One draw of the forward pass: a part of an object's model.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlannedDraw {
+    /// Index into the scene's objects.
+    pub object: usize,
+    /// Index into the object's model's parts.
+    pub part: usize,
+    /// `object N (FILE), part "NAME"`, raw (escape before printing).
+    pub label: String,
+    /// The draw's matrices.
+    pub transforms: Transforms,
+    /// What the draw computes: its varyings and fragment stages.
+    pub variant: SurfaceVariant,
+}
+
+/// Everything one frame of a scene runs, in order: the shadow passes, the forward pass (one draw per part of each
+/// object, with wireframe lines when asked), and ambient occlusion when the scene asks for it. Nothing else runs,
+/// and switched-off effects ([`PlanOptions::effects`]) are absent from it. Its [`Display`](std::fmt::Display) is
+/// the text of `rasterm render --explain`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ScenePlan {
+    /// The frame's size in pixels.
+    pub size: (u32, u32),
+    /// The camera's matrices for this frame.
+    pub camera: FrameCamera,
+    /// The colour the frame is cleared to.
+    pub background: Vec3,
+    /// The ambient light.
+    pub ambient: Vec3,
+    /// The lights used, in file order.
+    pub lights: Vec<PlannedLight>,
+    /// The lights left out because they shed nothing.
+    pub dropped_lights: Vec<DroppedLight>,
+    /// The scene's bounds, which shadow maps are fitted to.
+    pub bounds: Bounds,
+    /// The shadow passes, one per light casting shadows, in the lights' order.
+    pub shadow_passes: Vec<ShadowPass>,
+    /// The forward pass's draws, in file order of objects and then parts.
+    pub draws: Vec<PlannedDraw>,
+    /// Triangle edges drawn over each part.
+    pub wireframe: bool,
+    /// The ambient occlusion step runs after the forward pass.
+    pub ambient_occlusion: bool,
+    /// The diffuse textures are used.
+    pub textures: bool,
+    /// The effects allowed when the plan was made.
+    pub options: PlanOptions,
+}
+
+/// The depth of the one-texel shadow map the plan resolves variants against (see [`ScenePlan::new`]).
+static PLAN_DEPTH: [f32; 1] = [1.0];
+
+impl ScenePlan {
+    /// Plans a frame of `width x height` pixels of `scene` seen by `camera` (the file's, or the viewer's after
+    /// orbiting), with the effects `options` allows.
+    ///
+    /// - Lights shedding nothing (intensity 0, black) are dropped (listed in [`Self::dropped_lights`]).
+    /// - A light with `shadows = true` gets a shadow pass when shadows are on: a [`shadow_map_size`] map fitted to
+    ///   the scene's bounds, [`PCF_RADIUS`] filtering.
+    /// - Each part with triangles of each object is one draw, whose [`SurfaceVariant`] is resolved here. The
+    ///   variant depends only on which lights have a shadow map and their filtering radius, not on what the map
+    ///   holds, so it is resolved against one-texel stand-in maps: planning allocates no shadow map and draws
+    ///   nothing. [`super::SceneRenderer::render`] resolves the same variants when it draws.
+    /// - Ambient occlusion when the scene asks for it and it is on.
+    ///
+    /// # Errors
+    /// [`SceneRenderError::Camera`] for a camera the core refuses; [`SceneRenderError::Shadow`] for a shadow light
+    /// whose map cannot be fitted (a point light inside the bounds); [`SceneRenderError::Texture`] and
+    /// [`SceneRenderError::Draw`] for a draw the core refuses.
+    pub fn new(
+        scene: &PreparedScene,
+        camera: &SceneCamera,
+        (width, height): (u32, u32),
+        options: &PlanOptions,
+    ) -> Result<Self, SceneRenderError> {
+        let aspect = width as f32 / height.max(1) as f32;
+        Self::with_aspect(scene, camera, (width, height), aspect, options)
+    }
+
+    /// As [`Self::new`], for a frame whose pixels are not square: `aspect` is the frame's physical width over its
+    /// height (a terminal's cells are taller than wide).
+    ///
+    /// # Errors
+    /// As [`Self::new`].
+    pub fn with_aspect(
+        scene: &PreparedScene,
+        camera: &SceneCamera,
+        (width, height): (u32, u32),
+        aspect: f32,
+        options: &PlanOptions,
+    ) -> Result<Self, SceneRenderError> {
+        let data = scene.data();
+        let bounds = scene.bounds();
+        let frame_camera = FrameCamera::new(camera, &bounds, aspect)?;
+        let map_size = shadow_map_size(width, height);
+        let mut lights = Vec::new();
+        let mut dropped_lights = Vec::new();
+        let mut shadow_passes = Vec::new();
+        for (i, light) in data.lights.iter().enumerate() {
+            let number = i + 1;
+            let Some((kind, color)) = core_light(light) else {
+                dropped_lights.push(DroppedLight { number, source: *light });
+                continue;
+            };
+            let shadow_pass = if light.shadows && options.effects.shadows {
+                let view = ShadowView::fit(kind, bounds, map_size).map_err(|error| SceneRenderError::Shadow {
+                    light: LightName { number, light }.to_string(),
+                    bounds,
+                    error,
+                })?;
+                let casters = data.objects.len();
+                shadow_passes.push(ShadowPass { light: lights.len(), view, map_size, casters, pcf_radius: PCF_RADIUS });
+                Some(shadow_passes.len() - 1)
+            } else {
+                None
+            };
+            lights.push(PlannedLight { number, source: *light, kind, color, shadow_pass });
+        }
+        let mut plan = Self {
+            size: (width, height),
+            camera: frame_camera,
+            background: options.background.unwrap_or(data.background),
+            ambient: data.ambient,
+            lights,
+            dropped_lights,
+            bounds,
+            shadow_passes,
+            draws: Vec::new(),
+            wireframe: options.wireframe,
+            ambient_occlusion: data.ambient_occlusion && options.effects.ambient_occlusion,
+            textures: options.textures,
+            options: *options,
+        };
+        plan.draws = plan.plan_draws(scene)?;
+        Ok(plan)
+    }
+
+    /// The forward pass's draws, with their variants resolved against stand-in shadow maps.
+    fn plan_draws(&self, scene: &PreparedScene) -> Result<Vec<PlannedDraw>, SceneRenderError> {
+        let mut stand_ins = Vec::with_capacity(self.lights.len());
+        for light in &self.lights {
+            let shadow = match light.shadow_pass {
+                Some(_) => {
+                    // A one-texel view of the same light: the variant reads only whether there is a map and its
+                    // radius. The fit cannot fail where the real one succeeded.
+                    let view = ShadowView::fit(light.kind, self.bounds, 1).map_err(|error| {
+                        SceneRenderError::Shadow { light: self.light_name(light), bounds: self.bounds, error }
+                    })?;
+                    let map = ShadowMap::new(view, &PLAN_DEPTH, ShadowBias::DEFAULT, PCF_RADIUS);
+                    Some(map.map_err(|error| SceneRenderError::Shadow {
+                        light: self.light_name(light),
+                        bounds: self.bounds,
+                        error,
+                    })?)
+                }
+                None => None,
+            };
+            stand_ins.push(LightSource { kind: light.kind, color: light.color, shadow });
+        }
+        let lights = SceneLights { ambient: self.ambient, lights: &stand_ins };
+        let mut draws = Vec::new();
+        for (index, object) in scene.data().objects.iter().enumerate() {
+            let transforms = Transforms::new(object.transform, self.camera.view, self.camera.projection);
+            for (part_index, part) in object.model.parts.iter().enumerate() {
+                if part.indices.is_empty() {
+                    continue;
+                }
+                let label = format!("{}, part \"{}\"", scene.object_label(index), part.name);
+                let Some(mesh) = object.model.part_mesh(part_index) else { continue };
+                let material = part_material(object, part_index, &self.options)
+                    .map_err(|error| SceneRenderError::Texture { draw: label.clone(), error })?;
+                let tangents = tangents_for(scene, index, &material);
+                let variant =
+                    SurfaceVariant::resolve(&mesh, tangents, &transforms, &material, &lights, &DrawState::DEFAULT)
+                        .map_err(|error| SceneRenderError::Draw { draw: label.clone(), error })?;
+                draws.push(PlannedDraw { object: index, part: part_index, label, transforms, variant });
+            }
+        }
+        Ok(draws)
+    }
+
+    /// The name of a planned light in messages.
+    pub fn light_name(&self, light: &PlannedLight) -> String {
+        LightName { number: light.number, light: &light.source }.to_string()
+    }
+}
+
+/// The tangents a draw of `object` with `material` needs: the object's, when the material has a normal map (which
+/// it has only when the normal-map effect is on).
+pub(crate) fn tangents_for<'a>(
+    scene: &'a PreparedScene,
+    object: usize,
+    material: &SurfaceMaterial<'_>,
+) -> Option<&'a [rasterm_core::math::Vec4]> {
+    material.normal_map.and_then(|_| scene.tangents(object))
+}

@@ -1,0 +1,108 @@
+//! A loaded scene with what every frame of it shares: its bounds, the tangents of its normal-mapped meshes, and
+//! the names of its objects.
+
+use std::collections::HashMap;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+use rasterm_core::effects::Bounds;
+use rasterm_core::math::Vec4;
+use rasterm_core::mesh::{TangentError, compute_tangents};
+
+use super::SceneRenderError;
+use super::bounds::scene_bounds;
+use crate::model::Model;
+use crate::scene_file::{NormalSpace, SceneData, SceneObject};
+
+/// Gives each prepared scene its own number, so that cached shadow maps are never taken for another scene's.
+static NEXT_ID: AtomicU64 = AtomicU64::new(0);
+
+/// A [`SceneData`] ready to be planned and drawn any number of times: its world bounds are measured once, and
+/// tangents are computed once for each mesh that an object draws with a tangent-space normal map (a mesh shared
+/// by several such objects is computed once). Nothing else is precomputed: which effects run is decided per frame.
+#[derive(Debug)]
+pub struct PreparedScene {
+    data: SceneData,
+    bounds: Bounds,
+    /// Per object: the tangents of its mesh, when it has a tangent-space normal map and texture coordinates.
+    tangents: Vec<Option<Arc<[Vec4]>>>,
+    /// Per object: `object N (FILE)`, raw.
+    labels: Vec<String>,
+    id: u64,
+}
+
+impl PreparedScene {
+    /// Prepares `data`.
+    ///
+    /// # Errors
+    /// [`SceneRenderError::Empty`] when no object has a finite vertex; [`SceneRenderError::Tangents`] when a
+    /// mesh's tangents cannot be computed (only possible for a model changed by hand after loading).
+    pub fn new(data: SceneData) -> Result<Self, SceneRenderError> {
+        let bounds = scene_bounds(&data.objects).ok_or(SceneRenderError::Empty)?;
+        let labels: Vec<String> = data.objects.iter().enumerate().map(|(i, o)| object_label(i, o)).collect();
+        let mut shared: HashMap<*const Model, Arc<[Vec4]>> = HashMap::new();
+        let mut tangents = Vec::with_capacity(data.objects.len());
+        for (object, label) in data.objects.iter().zip(&labels) {
+            let wanted = object.material.normal_map.as_ref().is_some_and(|m| m.space == NormalSpace::Tangent)
+                && object.model.uvs.is_some();
+            if !wanted {
+                tangents.push(None);
+                continue;
+            }
+            let key = Arc::as_ptr(&object.model);
+            let computed = match shared.get(&key) {
+                Some(t) => Arc::clone(t),
+                None => {
+                    let t: Arc<[Vec4]> = model_tangents(&object.model)
+                        .map_err(|error| SceneRenderError::Tangents { object: label.clone(), error })?
+                        .into();
+                    shared.insert(key, Arc::clone(&t));
+                    t
+                }
+            };
+            tangents.push(Some(computed));
+        }
+        let id = NEXT_ID.fetch_add(1, Ordering::Relaxed);
+        Ok(Self { data, bounds, tangents, labels, id })
+    }
+
+    /// The scene.
+    pub fn data(&self) -> &SceneData {
+        &self.data
+    }
+
+    /// The sphere around every object in world space ([`scene_bounds`]).
+    pub fn bounds(&self) -> Bounds {
+        self.bounds
+    }
+
+    /// The tangents of object `object`'s mesh, one per vertex, when it has a tangent-space normal map.
+    pub fn tangents(&self, object: usize) -> Option<&[Vec4]> {
+        self.tangents.get(object)?.as_deref()
+    }
+
+    /// `object N (FILE)`: the object's place among the file's `[[objects]]` (from 1) and its mesh's file name,
+    /// raw (escape before printing).
+    pub fn object_label(&self, object: usize) -> &str {
+        self.labels.get(object).map_or("", String::as_str)
+    }
+
+    /// A number unique to this preparation, for caches of things computed from it.
+    pub fn id(&self) -> u64 {
+        self.id
+    }
+}
+
+/// `object N (FILE)`, with the mesh's file name only (or `builtin:NAME`).
+fn object_label(index: usize, object: &SceneObject) -> String {
+    let file = object.mesh_path.file_name().unwrap_or(object.mesh_path.as_os_str()).to_string_lossy();
+    format!("object {} ({file})", index + 1)
+}
+
+/// One tangent per vertex of the whole model.
+fn model_tangents(model: &Model) -> Result<Vec<Vec4>, TangentError> {
+    let mesh = model.mesh().ok_or(TangentError::MissingAttributes)?;
+    let mut out = vec![Vec4::ZERO; mesh.vertex_count()];
+    compute_tangents(&mesh, &mut out)?;
+    Ok(out)
+}

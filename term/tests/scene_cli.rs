@@ -1,0 +1,129 @@
+//! The `rasterm` binary on scene files: `render SCENE.toml -o`, `--explain`, and the errors.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf()
+}
+
+/// Runs the binary in `dir` with `args`.
+fn rasterm(dir: &Path, args: &[&str]) -> (Option<i32>, String, String) {
+    let Output { status, stdout, stderr } =
+        Command::new(env!("CARGO_BIN_EXE_rasterm")).current_dir(dir).args(args).output().expect("run rasterm");
+    let stderr = String::from_utf8_lossy(&stderr).into_owned();
+    assert!(!stderr.contains("panicked"), "a panic: {stderr}");
+    (status.code(), String::from_utf8_lossy(&stdout).into_owned(), stderr)
+}
+
+#[test]
+fn explain_prints_the_plan_and_renders_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = root().join("assets/scenes/spot_lamp.toml");
+    let (code, stdout, stderr) = rasterm(dir.path(), &["render", scene.to_str().unwrap(), "--explain"]);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(stderr.is_empty(), "{stderr}");
+    let lines: Vec<&str> = stdout.lines().collect();
+    assert!(lines[0].starts_with("frame 800x600: perspective, fov 45 degrees; near 0.1 (from the file)"), "{stdout}");
+    assert!(stdout.contains("\npasses:\n  1. shadow map of light 1 (point at [1.6, 4.2, 1.4]): 2048x2048 texels"));
+    assert!(stdout.contains("\n  2. forward: 2 draws\n"), "{stdout}");
+    assert!(lines.last().unwrap().starts_with("  3. ambient occlusion"), "{stdout}");
+    assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 0, "--explain alone wrote a file");
+
+    let (code, stdout, _) = rasterm(
+        dir.path(),
+        &["render", scene.to_str().unwrap(), "--explain", "--without", "shadows", "--size", "64x64"],
+    );
+    assert_eq!(code, Some(0));
+    assert!(stdout.starts_with("frame 64x64") && !stdout.contains("shadow"), "{stdout}");
+}
+
+#[test]
+fn a_scene_renders_to_a_png_with_its_plan_and_stats() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = root().join("assets/scenes/spot_sun.toml");
+    let args = ["render", scene.to_str().unwrap(), "-o", "sun.png", "--size", "80x60", "--explain", "--stats"];
+    let (code, stdout, stderr) = rasterm(dir.path(), &args);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(stdout.starts_with("frame 80x60"), "{stdout}");
+    assert!(stdout.contains("\nshadow map of light 1: 1024x1024 texels, "), "{stdout}");
+    assert!(stdout.contains("\nrender: ") && stdout.contains(" at 80x60: shadows "), "{stdout}");
+    let decoder = png::Decoder::new(std::io::BufReader::new(fs::File::open(dir.path().join("sun.png")).unwrap()));
+    let info = decoder.read_info().unwrap();
+    assert_eq!((info.info().width, info.info().height), (80, 60));
+}
+
+#[test]
+fn scene_file_errors_name_the_file_and_line_and_exit_non_zero() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(
+        dir.path().join("bad.toml"),
+        "[camera]\nposition = [0, 1, 4]\ntarget = [0, 0, 0]\nfov = 200\n\n[[objects]]\nmesh = \"builtin:spot\"\n",
+    )
+    .unwrap();
+    for args in [&["render", "bad.toml", "-o", "x.png"][..], &["render", "bad.toml", "--explain"], &["bad.toml"]] {
+        let (code, stdout, stderr) = rasterm(dir.path(), args);
+        assert_eq!(code, Some(1), "{args:?}: {stderr}");
+        assert!(stdout.is_empty());
+        // The viewer refuses a non-terminal first; render reads the file.
+        if args[0] == "render" {
+            assert_eq!(
+                stderr.trim(),
+                "rasterm: error: bad.toml:4:7: camera.fov: must be between 0 and 180 degrees, got 200",
+                "{args:?}"
+            );
+        }
+    }
+    assert!(!dir.path().join("x.png").exists());
+}
+
+#[test]
+fn a_point_light_inside_the_scene_is_an_error_naming_the_light() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(
+        dir.path().join("lamp.toml"),
+        "[camera]\nposition = [0, 1, 4]\ntarget = [0, 0, 0]\nfov = 40\n\
+         [[lights]]\ntype = \"point\"\nposition = [0, 0.5, 0]\nshadows = true\n\
+         [[objects]]\nmesh = \"builtin:spot\"\n",
+    )
+    .unwrap();
+    let (code, _, stderr) = rasterm(dir.path(), &["render", "lamp.toml", "--explain"]);
+    assert_eq!(code, Some(1));
+    assert!(
+        stderr.starts_with("rasterm: error: lamp.toml: light 1 (point at [0, 0.5, 0]): cannot cast shadows"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn options_that_do_not_fit_are_errors() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = root().join("assets/scenes/spot_sun.toml");
+    let scene = scene.to_str().unwrap();
+    let cases: [(&[&str], &str); 5] = [
+        (
+            &["render", scene, "--explain", "--yaw", "10", "--shading", "flat"],
+            "--yaw, --shading cannot be used with a scene file",
+        ),
+        (&["render", scene, "--explain", "--near", "0.5"], "--near cannot be used with a scene file"),
+        (&["render", scene, "--explain", "--stats"], "--stats needs -o OUT.png"),
+        (&["render", "--explain"], "--explain needs a scene file (.toml)"),
+        (&["render", "--without", "shadows", "-o", "x.png"], "--without needs a scene file (.toml)"),
+    ];
+    for (args, message) in cases {
+        let (code, stdout, stderr) = rasterm(dir.path(), args);
+        assert_eq!(code, Some(1), "{args:?}: {stderr}");
+        assert!(stdout.is_empty(), "{args:?}: {stdout}");
+        assert!(stderr.starts_with(&format!("rasterm: error: {message}")), "{args:?}: {stderr}");
+    }
+    // Without --explain, -o is required (a usage error).
+    let (code, _, stderr) = rasterm(dir.path(), &["render", scene]);
+    assert_eq!(code, Some(2), "{stderr}");
+    assert!(stderr.contains("--output"), "{stderr}");
+    // Scene options that do fit are taken.
+    let (code, stdout, stderr) =
+        rasterm(dir.path(), &["render", scene, "--explain", "--wireframe", "--no-texture", "--background", "000000"]);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(stdout.contains("background #000000") && stdout.contains("with wireframe lines, diffuse textures off"));
+}

@@ -1,0 +1,284 @@
+//! Rendering scene files: every shipped scene draws, the plan lists exactly the passes a scene calls for (and
+//! nothing switched off), and the plan's explanation says so.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+
+use rasterm::scene_file::{load, parse};
+use rasterm::scene_render::{
+    AMBIENT_OCCLUSION_NOTE, EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError,
+    SceneRenderer, render_scene_image,
+};
+use rasterm_core::math::Vec3;
+use rasterm_core::target::{Rgb888, Target};
+
+/// The workspace's root.
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf()
+}
+
+/// Every `.toml` file directly in `dir`, sorted.
+fn scenes_in(dir: &Path) -> Vec<PathBuf> {
+    let mut scenes: Vec<PathBuf> = fs::read_dir(dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+        .collect();
+    scenes.sort();
+    scenes
+}
+
+fn prepared(path: &Path) -> PreparedScene {
+    PreparedScene::new(load(path).unwrap_or_else(|e| panic!("{e}"))).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn example(name: &str) -> PreparedScene {
+    prepared(&root().join("assets/scenes").join(name))
+}
+
+fn from_text(text: &str) -> PreparedScene {
+    PreparedScene::new(parse(text, "test.toml").unwrap().load().unwrap()).unwrap()
+}
+
+fn plan(scene: &PreparedScene, options: &PlanOptions) -> ScenePlan {
+    ScenePlan::new(scene, &scene.data().camera, (160, 120), options).unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn without(effect: SceneEffect) -> PlanOptions {
+    PlanOptions { effects: EffectToggles::all_but(&[effect]), ..PlanOptions::default() }
+}
+
+/// Checks that an image shows something: many colours, and most pixels not the background.
+fn assert_not_blank(name: &str, pixels: &[u32], background: Vec3) {
+    let background = rasterm_core::color::pack_rgb888(background);
+    let drawn = pixels.iter().filter(|&&p| p != background).count();
+    let mut colours: Vec<u32> = pixels.to_vec();
+    colours.sort_unstable();
+    colours.dedup();
+    assert!(drawn * 5 > pixels.len(), "{name}: only {drawn} of {} pixels drawn", pixels.len());
+    assert!(colours.len() > 100, "{name}: only {} colours", colours.len());
+}
+
+#[test]
+fn every_example_scene_renders_a_picture() {
+    let scenes = scenes_in(&root().join("assets/scenes"));
+    assert_eq!(scenes.len(), 3, "{scenes:?}");
+    for path in &scenes {
+        let scene = prepared(path);
+        let image = render_scene_image(&scene, &scene.data().camera, (96, 72), 1, &PlanOptions::default())
+            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        assert_eq!((image.width, image.height, image.pixels.len()), (96, 72, 96 * 72));
+        assert_not_blank(&path.display().to_string(), &image.pixels, scene.data().background);
+        assert_eq!(image.report.variants.len(), image.plan.draws.len());
+    }
+}
+
+/// The tinyrenderer models live outside the repository (`../shared/models/tinyrenderer/`); skipped without them.
+#[test]
+fn the_docs_scenes_render_when_their_models_are_there() {
+    if !root().join("../shared/models/tinyrenderer").is_dir() {
+        println!("skipped: the tinyrenderer models are absent");
+        return;
+    }
+    for path in scenes_in(&root().join("docs/scenes")) {
+        let scene = prepared(&path);
+        let image = render_scene_image(&scene, &scene.data().camera, (64, 64), 1, &PlanOptions::default()).unwrap();
+        assert_not_blank(&path.display().to_string(), &image.pixels, scene.data().background);
+        let text = image.plan.to_string();
+        assert!(text.contains("normals tangent-space map") && text.contains("shadow map of light 1"), "{text}");
+    }
+}
+
+#[test]
+fn spot_sun_has_a_shadow_pass_and_no_ambient_occlusion() {
+    let scene = example("spot_sun.toml");
+    let plan = plan(&scene, &PlanOptions::default());
+    let text = plan.to_string();
+    assert_eq!(plan.shadow_passes.len(), 1);
+    assert!(!plan.ambient_occlusion);
+    let passes: Vec<&str> = text.lines().skip_while(|l| *l != "passes:").collect();
+    assert!(passes[1].starts_with("  1. shadow map of light 1 (directional, travelling ["), "{text}");
+    assert!(passes[1].ends_with("1024x1024 texels, 2 casters, pcf 3x3"), "{text}");
+    assert!(passes[2].starts_with("  2. forward: 2 draws"), "{text}");
+    assert!(!text.contains("ambient occlusion"), "{text}");
+    assert_eq!(passes.len(), 5, "{text}");
+}
+
+#[test]
+fn spot_lamp_lists_ambient_occlusion_last() {
+    let scene = example("spot_lamp.toml");
+    let text = plan(&scene, &PlanOptions::default()).to_string();
+    let last = text.lines().last().unwrap();
+    assert_eq!(last, format!("  3. {AMBIENT_OCCLUSION_NOTE}"), "{text}");
+    assert!(text.contains("shadow map of light 1 (point at [1.6, 4.2, 1.4])"), "{text}");
+    // The floor uses every map.
+    let floor = text.lines().find(|l| l.contains("ground.obj")).unwrap();
+    assert!(
+        floor.contains(
+            "varyings normal+world+uv+tangent; albedo texture; normals tangent-space map; specular map; glow map"
+        ),
+        "{floor}"
+    );
+    // Switched off, it is gone.
+    let off = plan(&scene, &without(SceneEffect::AmbientOcclusion));
+    assert!(!off.ambient_occlusion && !off.to_string().contains("ambient occlusion"));
+}
+
+#[test]
+fn an_object_without_maps_interpolates_no_texture_coordinates() {
+    let scene = example("spot_herd.toml");
+    let plan = plan(&scene, &PlanOptions::default());
+    // The statue: spot.obj has texture coordinates, but the statue names no image and the OBJ has no MTL.
+    let statue = &plan.draws.iter().find(|d| d.object == 2).unwrap();
+    let line = statue.variant.to_string();
+    assert!(line.starts_with("varyings normal+world; albedo colour;"), "{line}");
+    assert!(!line.contains("uv") && !line.contains("maps "), "{line}");
+    // The textured cows do interpolate them.
+    assert!(plan.draws[0].variant.uvs);
+}
+
+#[test]
+fn a_shadow_light_switched_off_has_no_shadow_pass() {
+    let scene = example("spot_sun.toml");
+    let plan = plan(&scene, &without(SceneEffect::Shadows));
+    assert!(plan.shadow_passes.is_empty());
+    assert!(plan.lights.iter().all(|l| l.shadow_pass.is_none()));
+    assert!(plan.draws.iter().all(|d| d.variant.shadowed_lights == 0));
+    let text = plan.to_string();
+    assert!(!text.contains("shadow"), "{text}");
+    // The light itself still shines.
+    assert!(text.contains("light 1 (directional"), "{text}");
+}
+
+#[test]
+fn each_switch_takes_its_stages_out_of_the_draws() {
+    let scene = example("spot_lamp.toml");
+    let floor = |options: &PlanOptions| plan(&scene, options).draws.iter().find(|d| d.object == 1).unwrap().variant;
+    let all = floor(&PlanOptions::default());
+    assert!(all.tangents && all.glow_map && all.shadowed_lights == 1);
+    let v = floor(&without(SceneEffect::NormalMaps));
+    assert!(!v.tangents && v.to_string().contains("normals interpolated"));
+    let v = floor(&without(SceneEffect::Specular));
+    assert!(v.to_string().contains("no specular"), "{v}");
+    let v = floor(&without(SceneEffect::GlowMaps));
+    assert!(!v.glow_map);
+    let v = floor(&PlanOptions { textures: false, ..PlanOptions::default() });
+    assert!(!v.albedo_map);
+    // All maps off: no texture coordinates at all.
+    let none = EffectToggles { normal_maps: false, specular: false, glow_maps: false, ..EffectToggles::ALL_ON };
+    let v = floor(&PlanOptions { effects: none, textures: false, ..PlanOptions::default() });
+    assert!(!v.uvs, "{v}");
+}
+
+#[test]
+fn switching_an_effect_off_draws_the_scene_as_if_it_did_not_ask_for_it() {
+    let on = example("spot_sun.toml");
+    let text = fs::read_to_string(root().join("assets/scenes/spot_sun.toml")).unwrap();
+    let no_shadows = text.replace("shadows = true", "shadows = false");
+    let file_off =
+        PreparedScene::new(parse(no_shadows, root().join("assets/scenes/x.toml")).unwrap().load().unwrap()).unwrap();
+    let render = |scene: &PreparedScene, options: &PlanOptions| {
+        render_scene_image(scene, &scene.data().camera, (120, 90), 1, options).unwrap().pixels
+    };
+    let switched_off = render(&on, &without(SceneEffect::Shadows));
+    assert_eq!(switched_off, render(&file_off, &PlanOptions::default()));
+    // And the shadow does darken something.
+    let with_shadows = render(&on, &PlanOptions::default());
+    let darker = with_shadows.iter().zip(&switched_off).filter(|(a, b)| (**a & 0xFF) < (**b & 0xFF)).count();
+    assert!(darker > 200, "{darker} pixels darkened by the shadow");
+}
+
+#[test]
+fn the_planned_variants_are_the_ones_drawn() {
+    for name in ["spot_sun.toml", "spot_lamp.toml", "spot_herd.toml"] {
+        let scene = example(name);
+        let image = render_scene_image(&scene, &scene.data().camera, (80, 60), 1, &PlanOptions::default()).unwrap();
+        let planned: Vec<_> = image.plan.draws.iter().map(|d| d.variant).collect();
+        assert_eq!(planned, image.report.variants, "{name}");
+    }
+}
+
+#[test]
+fn shadow_maps_are_kept_while_only_the_camera_moves() {
+    let scene = example("spot_sun.toml");
+    let (w, h) = (64u32, 48u32);
+    let (mut color, mut depth) = (vec![0u32; (w * h) as usize], vec![0f32; (w * h) as usize]);
+    let mut renderer = SceneRenderer::new();
+    let mut frame = |camera: &rasterm::scene_file::SceneCamera| {
+        let plan = ScenePlan::new(&scene, camera, (w, h), &PlanOptions::default()).unwrap();
+        let mut target = Target::new(Rgb888(&mut color), &mut depth[..], w, h).unwrap();
+        let report = renderer.render(&scene, &plan, &mut target).unwrap();
+        (report.shadow_passes[0].reused, color.clone())
+    };
+    let camera = scene.data().camera;
+    let (reused, first) = frame(&camera);
+    assert!(!reused, "the first frame draws its map");
+    let (reused, again) = frame(&camera);
+    assert!(reused, "the same frame again reuses it");
+    assert_eq!(first, again);
+    let mut moved = camera;
+    moved.position += Vec3::new(0.3, 0.0, 0.0);
+    assert!(frame(&moved).0, "a moved camera reuses it too");
+    // A fresh renderer draws it again, with the same pixels.
+    let fresh = render_scene_image(&scene, &camera, (w, h), 1, &PlanOptions::default()).unwrap();
+    assert_eq!(fresh.pixels, first);
+}
+
+#[test]
+fn dark_lights_are_dropped_and_said_to_be() {
+    let scene = from_text(
+        "[camera]\nposition = [0, 1, 4]\ntarget = [0, 0, 0]\nfov = 40\n\
+         [[lights]]\ntype = \"directional\"\ndirection = [0, -1, 0]\nintensity = 0\nshadows = true\n\
+         [[lights]]\ntype = \"point\"\nposition = [3, 3, 3]\ncolor = [0, 0, 0]\n\
+         [[objects]]\nmesh = \"builtin:spot\"\n",
+    );
+    let plan = plan(&scene, &PlanOptions::default());
+    assert!(plan.lights.is_empty() && plan.shadow_passes.is_empty());
+    assert_eq!(plan.dropped_lights.len(), 2);
+    let text = plan.to_string();
+    assert!(text.contains("light 1 (directional, travelling [0, -1, 0]): dropped, it sheds no light (intensity 0)"));
+    assert!(text.contains("light 2 (point at [3, 3, 3]): dropped, it sheds no light (black colour)"));
+    assert!(text.contains("unlit but ambient"), "{text}");
+}
+
+#[test]
+fn a_shadow_casting_point_light_inside_the_scene_is_an_error_naming_it() {
+    let scene = from_text(
+        "[camera]\nposition = [0, 1, 4]\ntarget = [0, 0, 0]\nfov = 40\n\
+         [[lights]]\ntype = \"directional\"\ndirection = [0, -1, 0]\n\
+         [[lights]]\ntype = \"point\"\nposition = [0.1, 0.2, 0]\nshadows = true\n\
+         [[objects]]\nmesh = \"builtin:spot\"\n",
+    );
+    let error = ScenePlan::new(&scene, &scene.data().camera, (64, 64), &PlanOptions::default()).unwrap_err();
+    assert!(matches!(error, SceneRenderError::Shadow { .. }));
+    let text = error.to_string();
+    assert!(text.starts_with("light 2 (point at [0.1, 0.2, 0]): cannot cast shadows from inside"), "{text}");
+    // Without shadows, the same light is fine.
+    assert!(ScenePlan::new(&scene, &scene.data().camera, (64, 64), &without(SceneEffect::Shadows)).is_ok());
+}
+
+#[test]
+fn shadow_maps_follow_the_frame_size() {
+    let scene = example("spot_sun.toml");
+    let size = |w, h| {
+        ScenePlan::new(&scene, &scene.data().camera, (w, h), &PlanOptions::default()).unwrap().shadow_passes[0].map_size
+    };
+    assert_eq!(size(512, 300), 1024);
+    assert_eq!(size(800, 800), 2048);
+    assert_eq!(size(200, 513), 2048);
+}
+
+#[test]
+fn names_from_files_are_escaped_in_the_explanation() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(dir.path().join("m.obj"), "o evil\u{1b}[2Jname\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n").unwrap();
+    let scene_path = dir.path().join("s.toml");
+    fs::write(
+        &scene_path,
+        "[camera]\nposition = [0, 0, 3]\ntarget = [0, 0, 0]\nfov = 40\n[[objects]]\nmesh = \"m.obj\"\n",
+    )
+    .unwrap();
+    let text = plan(&prepared(&scene_path), &PlanOptions::default()).to_string();
+    assert!(text.contains("part \"evil\\u{1b}[2Jname\""), "{text}");
+    assert!(!text.contains('\u{1b}'));
+}
