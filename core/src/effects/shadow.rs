@@ -267,7 +267,8 @@ impl<'a> ShadowMap<'a> {
         // NDC to texels as the pipeline's viewport maps them: x right, y down, pixel centres at +0.5.
         let tx = float::floor_to_i32((clip.x * inv_w + 1.0) * half);
         let ty = float::floor_to_i32((1.0 - clip.y * inv_w) * half);
-        let z = clip.z * inv_w - b.depth;
+        // A point beyond the map's far plane compares as on it: lit wherever nothing was drawn.
+        let z = float::min(clip.z * inv_w, 1.0) - b.depth;
         let r = self.pcf_radius as i32;
         let mut lit = 0u32;
         for y in ty - r..=ty + r {
