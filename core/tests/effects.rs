@@ -297,9 +297,8 @@ fn a_tangent_space_map_without_tangents_is_refused() {
         ..base_material(&f)
     };
     let mesh: Mesh<'_> = f.torus.mesh();
-    let lights = SceneLights { ambient: Vec3::ZERO, lights: &[] };
     for tangents in [None, Some(&f.tangents[1..])] {
-        let result = SurfaceVariant::resolve(&mesh, tangents, &transforms(), &material, &lights, &DrawState::default());
+        let result = SurfaceVariant::resolve(&mesh, tangents, &transforms(), &material, [], &DrawState::default());
         let expected = rasterm_core::effects::SurfaceError::Tangents {
             expected: mesh.vertex_count(),
             actual: tangents.map_or(0, <[Vec4]>::len),

@@ -4,6 +4,7 @@ use std::fmt;
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
+use rasterm_core::math::Vec3;
 use rasterm_core::pipeline::DrawStats;
 use rasterm_core::target::{MAX_DIMENSION, Rgb888, Target, downsample_rgb888};
 
@@ -109,31 +110,63 @@ pub fn render_image(
     camera: &OrbitCamera,
     appearance: &Appearance,
 ) -> Result<RenderedImage, HeadlessError> {
+    let frame =
+        render_supersampled((width, height), supersample, appearance.background, HeadlessError::Size, |target| {
+            Ok(scene.draw(target, camera, appearance, width as f32 / height as f32)?)
+        })?;
+    let SampledFrame { pixels, value: stats, render_time } = frame;
+    Ok(RenderedImage { width, height, pixels, stats, render_time })
+}
+
+/// A frame drawn at `k x k` times its size and averaged, with what the drawing returned.
+#[derive(Clone, Debug)]
+pub struct SampledFrame<T> {
+    /// `0x00RRGGBB` pixels of the final size, top row first.
+    pub pixels: Vec<u32>,
+    /// What `draw` returned.
+    pub value: T,
+    /// Time spent drawing and averaging (not allocating or clearing the buffers).
+    pub render_time: Duration,
+}
+
+/// Allocates a `width x height` frame `supersample` times larger on each side, clears it to `background` (before
+/// the clock starts, which also maps the fresh pages, so the time measured is rendering), runs `draw` on it, and
+/// averages it down with [`downsample_rgb888`] when `supersample > 1`.
+///
+/// # Errors
+/// `size_error` with a message naming the sizes when the supersampled frame is outside `1..=MAX_DIMENSION`;
+/// whatever `draw` returns.
+pub fn render_supersampled<T, E>(
+    (width, height): (u32, u32),
+    supersample: u32,
+    background: Vec3,
+    size_error: impl Fn(String) -> E,
+    draw: impl FnOnce(&mut Target<Rgb888<'_>, &mut [f32]>) -> Result<T, E>,
+) -> Result<SampledFrame<T>, E> {
     let k = supersample.max(1);
-    let (sw, sh) = (width.checked_mul(k), height.checked_mul(k));
-    let (Some(sw), Some(sh)) = (sw, sh) else {
-        return Err(HeadlessError::Size(format!("{width}x{height} with {k}x{k} samples per pixel is too large")));
+    let too_large = || {
+        size_error(format!(
+            "{width}x{height} with {k}x{k} samples per pixel is more than {MAX_DIMENSION} pixels a side"
+        ))
     };
+    let sw = width.checked_mul(k).filter(|&s| s <= MAX_DIMENSION).ok_or_else(too_large)?;
+    let sh = height.checked_mul(k).filter(|&s| s <= MAX_DIMENSION).ok_or_else(too_large)?;
     let n = sw as usize * sh as usize;
     let mut samples = vec![0u32; n];
     let mut depth = vec![0f32; n];
-    let mut target = Target::new(Rgb888(&mut samples), &mut depth[..], sw, sh).map_err(|e| {
-        let what = if k > 1 { format!(" ({k}x{k} samples per pixel make {sw}x{sh})") } else { String::new() };
-        HeadlessError::Size(format!("{e}{what}"))
-    })?;
-    // Clearing before the clock starts also maps the fresh buffers' pages, so the time measured is rendering.
-    target.clear(appearance.background);
+    let mut target =
+        Target::new(Rgb888(&mut samples), &mut depth[..], sw, sh).map_err(|e| size_error(e.to_string()))?;
+    target.clear(background);
     let start = Instant::now();
-    let stats = scene.draw(&mut target, camera, appearance, width as f32 / height as f32)?;
+    let value = draw(&mut target)?;
     let pixels = if k > 1 {
         let mut pixels = vec![0u32; width as usize * height as usize];
-        downsample_rgb888(&samples, sw, k, &mut pixels).map_err(|e| HeadlessError::Size(e.to_string()))?;
+        downsample_rgb888(&samples, sw, k, &mut pixels).map_err(|e| size_error(e.to_string()))?;
         pixels
     } else {
         samples
     };
-    let render_time = start.elapsed();
-    Ok(RenderedImage { width, height, pixels, stats, render_time })
+    Ok(SampledFrame { pixels, value, render_time: start.elapsed() })
 }
 
 /// What `rasterm render` needs.

@@ -1,12 +1,11 @@
 //! The `rasterm` binary on scene files: `render SCENE.toml -o`, `--explain`, and the errors.
 
-use std::fs;
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod common;
 
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf()
-}
+use common::root;
+use std::fs;
+use std::path::Path;
+use std::process::{Command, Output};
 
 /// Runs the binary in `dir` with `args`.
 fn rasterm(dir: &Path, args: &[&str]) -> (Option<i32>, String, String) {

@@ -2,6 +2,9 @@
 //! column and key exactly; paths resolve from the scene file's directory; a file named twice loads once; the
 //! transform follows the documented order. Also the recipe of the project-made assets of `assets/scenes/`.
 
+mod common;
+
+use common::{root, scenes_in};
 use std::fs;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
@@ -15,11 +18,6 @@ use rasterm_core::texture::{FilterMode, WrapMode};
 
 // ---------------------------------------------------------------------------------------------------------------
 // Helpers
-
-/// The workspace's root.
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf()
-}
 
 /// A temporary directory holding the given files.
 fn dir_with(files: &[(&str, &[u8])]) -> tempfile::TempDir {
@@ -70,17 +68,6 @@ fn close(a: Vec3, b: Vec3) -> bool {
 
 // ---------------------------------------------------------------------------------------------------------------
 // The shipped scenes
-
-/// Every `.toml` file directly in `dir`, sorted.
-fn scenes_in(dir: &Path) -> Vec<PathBuf> {
-    let mut scenes: Vec<PathBuf> = fs::read_dir(dir)
-        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .collect();
-    scenes.sort();
-    scenes
-}
 
 #[test]
 fn every_example_scene_loads() {

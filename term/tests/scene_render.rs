@@ -1,8 +1,11 @@
 //! Rendering scene files: every shipped scene draws, the plan lists exactly the passes a scene calls for (and
 //! nothing switched off), and the plan's explanation says so.
 
+mod common;
+
+use common::{root, scenes_in};
 use std::fs;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use rasterm::scene_file::{load, parse};
 use rasterm::scene_render::{
@@ -11,22 +14,6 @@ use rasterm::scene_render::{
 };
 use rasterm_core::math::Vec3;
 use rasterm_core::target::{Rgb888, Target};
-
-/// The workspace's root.
-fn root() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).parent().unwrap().to_path_buf()
-}
-
-/// Every `.toml` file directly in `dir`, sorted.
-fn scenes_in(dir: &Path) -> Vec<PathBuf> {
-    let mut scenes: Vec<PathBuf> = fs::read_dir(dir)
-        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-        .collect();
-    scenes.sort();
-    scenes
-}
 
 fn prepared(path: &Path) -> PreparedScene {
     PreparedScene::new(load(path).unwrap_or_else(|e| panic!("{e}"))).unwrap_or_else(|e| panic!("{e}"))

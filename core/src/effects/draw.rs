@@ -1,7 +1,7 @@
 //! Mapped draws: the variant is resolved once, then the pipeline compiled for its varyings runs.
 
 use super::varyings::Absent;
-use super::{SceneLights, SurfaceError, SurfaceMaterial, SurfaceShader, SurfaceVariant};
+use super::{LightUse, SceneLights, SurfaceError, SurfaceMaterial, SurfaceShader, SurfaceVariant};
 use crate::math::{Vec2, Vec3, Vec4};
 use crate::mesh::Mesh;
 use crate::pipeline::{DrawState, DrawStats, draw, draw_unspecialised};
@@ -35,10 +35,7 @@ pub fn draw_surface<C: ColorBuffer, D: DepthBuffer>(
     lights: &SceneLights<'_>,
     state: &DrawState,
 ) -> Result<(SurfaceVariant, DrawStats), SurfaceError> {
-    let variant =
-        SurfaceVariant::resolve(&object.mesh, object.tangents, &object.transforms, &object.material, lights, state)?;
-    let stats = dispatch(target, object, lights, variant, false)?;
-    Ok((variant, stats))
+    dispatch(target, object, lights, state, false)
 }
 
 /// Like [`draw_surface`], but through the general pixel loop ([`draw_unspecialised`]) and with every varying
@@ -52,19 +49,19 @@ pub fn draw_surface_unspecialised<C: ColorBuffer, D: DepthBuffer>(
     lights: &SceneLights<'_>,
     state: &DrawState,
 ) -> Result<(SurfaceVariant, DrawStats), SurfaceError> {
-    let variant =
-        SurfaceVariant::resolve(&object.mesh, object.tangents, &object.transforms, &object.material, lights, state)?;
-    let stats = dispatch(target, object, lights, variant, true)?;
-    Ok((variant, stats))
+    dispatch(target, object, lights, state, true)
 }
 
 fn dispatch<C: ColorBuffer, D: DepthBuffer>(
     target: &mut Target<C, D>,
     object: &SurfaceDraw<'_>,
     lights: &SceneLights<'_>,
-    variant: SurfaceVariant,
+    state: &DrawState,
     general: bool,
-) -> Result<DrawStats, SurfaceError> {
+) -> Result<(SurfaceVariant, DrawStats), SurfaceError> {
+    let uses = lights.lights.iter().map(LightUse::from);
+    let variant =
+        SurfaceVariant::resolve(&object.mesh, object.tangents, &object.transforms, &object.material, uses, state)?;
     let tangents = object.tangents.unwrap_or(&[]);
     let (mesh, material, transforms) = (&object.mesh, object.material, object.transforms);
     let state = &variant.state;
@@ -93,5 +90,5 @@ fn dispatch<C: ColorBuffer, D: DepthBuffer>(
             (true, true, true) => run!(Vec3, Vec2, Vec4),
         }
     };
-    result.map_err(SurfaceError::Draw)
+    Ok((variant, result.map_err(SurfaceError::Draw)?))
 }

@@ -51,3 +51,20 @@ pub struct SceneLights<'a> {
     /// The lights.
     pub lights: &'a [LightSource<'a>],
 }
+
+/// What choosing a draw's stages needs to know of a light: whether it is a point light, and the filter radius of
+/// its shadow map if it has one. [`super::SurfaceVariant::resolve`] takes these, so a draw can be planned before
+/// any shadow map exists.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LightUse {
+    /// A point light (else directional).
+    pub point: bool,
+    /// The percentage-closer filter radius of its shadow map, if it casts shadows.
+    pub shadow_pcf: Option<u32>,
+}
+
+impl From<&LightSource<'_>> for LightUse {
+    fn from(light: &LightSource<'_>) -> Self {
+        Self { point: matches!(light.kind, LightKind::Point { .. }), shadow_pcf: light.shadow.map(|s| s.pcf_radius()) }
+    }
+}

@@ -30,7 +30,7 @@ mod variant;
 mod varyings;
 
 pub use draw::{SurfaceDraw, draw_surface, draw_surface_unspecialised};
-pub use lights::{LightKind, LightSource, SceneLights};
+pub use lights::{LightKind, LightSource, LightUse, SceneLights};
 pub use material::{NormalMap, NormalSpace, SurfaceMaterial};
 pub use occlusion::{AmbientOcclusion, OcclusionError};
 pub use shader::SurfaceShader;

@@ -2,8 +2,9 @@
 
 use core::marker::PhantomData;
 
-use super::maps::{self, with_sampler};
-use super::normals;
+// The stage loops are named directly so that `with_sampler!` can call them with their sampler types.
+use super::maps::{albedo, glow, specular_color, with_sampler};
+use super::normals::{self, object_map, tangent_map};
 use super::scratch::Scratch;
 use super::varyings::{Slot, SurfaceVaryings};
 use super::{NormalSource, SceneLights, SpecularSource, SurfaceMaterial, SurfaceVariant, lighting};
@@ -112,10 +113,6 @@ where
         }
     }
 }
-
-// The stage loops, named so that `with_sampler!` can call them with their sampler types.
-use maps::{albedo, glow, specular_color};
-use normals::{object_map, tangent_map};
 
 impl<W, U, T> Shader for SurfaceShader<'_, W, U, T>
 where

@@ -65,7 +65,7 @@ pub struct ShadowBias {
 
 impl ShadowBias {
     /// The defaults, chosen by `core/tests/shadows.rs`: no acne on a plane lit at 85 degrees from its normal, and
-    /// a shadow that starts within one map texel of where its caster touches the ground.
+    /// a shadow already dark at the first pixel centre past where its caster touches the ground (2.7 map texels).
     pub const DEFAULT: Self = Self { normal_offset: 0.6, slope_offset: 1.5, depth: 2e-5 };
 }
 

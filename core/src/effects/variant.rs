@@ -2,10 +2,10 @@
 
 use core::fmt;
 
-use super::{LightKind, SceneLights, SurfaceMaterial};
+use super::{LightUse, SurfaceMaterial};
 use crate::math::Vec4;
 use crate::mesh::{Attributes, Mesh};
-use crate::pipeline::{Cull, DepthTest, DrawError, DrawState, Interpolation};
+use crate::pipeline::{DrawError, DrawState, FixedFunction};
 use crate::shading::Transforms;
 use crate::texture::{FilterMode, WrapMode};
 
@@ -98,7 +98,8 @@ pub struct SurfaceVariant {
 }
 
 impl SurfaceVariant {
-    /// Decides what a draw of `mesh` with `material` under `lights` computes.
+    /// Decides what a draw of `mesh` with `material` under `lights` (one [`LightUse`] per light, as
+    /// `scene_lights.lights.iter().map(LightUse::from)` gives) computes.
     ///
     /// - Maps are sampled only on a mesh with texture coordinates; without, the draw is untextured.
     /// - A tangent-space normal map needs `tangents` (one per vertex), and only then are tangents interpolated.
@@ -115,7 +116,7 @@ impl SurfaceVariant {
         tangents: Option<&[Vec4]>,
         transforms: &Transforms,
         material: &SurfaceMaterial<'_>,
-        lights: &SceneLights<'_>,
+        lights: impl IntoIterator<Item = LightUse>,
         state: &DrawState,
     ) -> Result<Self, SurfaceError> {
         let present = mesh.attributes();
@@ -137,7 +138,19 @@ impl SurfaceVariant {
             },
             _ => NormalSource::Interpolated,
         };
-        let lit = !lights.lights.is_empty();
+        let (mut directional_lights, mut point_lights, mut shadowed_lights, mut pcf_radius) = (0, 0, 0, 0);
+        for light in lights {
+            if light.point {
+                point_lights += 1;
+            } else {
+                directional_lights += 1;
+            }
+            if let Some(r) = light.shadow_pcf {
+                shadowed_lights += 1;
+                pcf_radius = pcf_radius.max(r);
+            }
+        }
+        let lit = directional_lights + point_lights > 0;
         let specular = if !lit || material.specular == crate::math::Vec3::ZERO {
             SpecularSource::None
         } else if material.specular_map.is_some() && uvs {
@@ -145,20 +158,9 @@ impl SurfaceVariant {
         } else {
             SpecularSource::Constant
         };
-        let count = |f: fn(&super::LightSource<'_>) -> bool| lights.lights.iter().filter(|l| f(l)).count();
-        let directional_lights = count(|l| matches!(l.kind, LightKind::Directional { .. }));
-        let point_lights = count(|l| matches!(l.kind, LightKind::Point { .. }));
-        let shadowed_lights = count(|l| l.shadow.is_some());
-        let pcf_radius = lights.lights.iter().filter_map(|l| l.shadow.map(|s| s.pcf_radius())).max().unwrap_or(0);
         let albedo_map = material.diffuse.is_some() && uvs;
         let glow_map = material.glow_map.is_some() && uvs;
-        let mut state = *state;
-        if transforms.orthographic {
-            state.interpolation = Interpolation::Affine;
-        }
-        if transforms.mirrors() {
-            state.front_face = state.front_face.flipped();
-        }
+        let state = transforms.adapt(state);
         Ok(Self {
             world: specular != SpecularSource::None || point_lights > 0 || shadowed_lights > 0,
             uvs: albedo_map || glow_map || specular == SpecularSource::Map || normals != NormalSource::Interpolated,
@@ -221,19 +223,6 @@ impl fmt::Display for SurfaceVariant {
             let side = 2 * self.pcf_radius + 1;
             write!(f, " ({} with shadows, pcf {side}x{side})", self.shadowed_lights)?;
         }
-        let s = &self.state;
-        f.write_str(match s.interpolation {
-            Interpolation::PerspectiveCorrect => "; perspective-correct",
-            Interpolation::Affine => "; affine",
-        })?;
-        f.write_str(match s.depth_test {
-            DepthTest::Less => ", depth less",
-            DepthTest::Off => ", depth off",
-        })?;
-        f.write_str(match s.cull {
-            Cull::None => ", cull none",
-            Cull::Back => ", cull back",
-            Cull::Front => ", cull front",
-        })
+        write!(f, "; {}", FixedFunction(&self.state))
     }
 }

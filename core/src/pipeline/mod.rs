@@ -43,6 +43,6 @@ pub use clip::GUARD_BAND;
 pub use draw::{DrawError, draw, draw_unspecialised};
 pub use line::{LineStyle, draw_wireframe};
 pub use shader::{Fragment, Shader};
-pub use state::{Cull, DepthTest, DrawState, EdgeArithmetic, Interpolation, MAX_SUBPIXEL_BITS, Winding};
+pub use state::{Cull, DepthTest, DrawState, EdgeArithmetic, FixedFunction, Interpolation, MAX_SUBPIXEL_BITS, Winding};
 pub use stats::DrawStats;
 pub use varyings::Varyings;

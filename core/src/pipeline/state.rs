@@ -66,6 +66,29 @@ pub enum EdgeArithmetic {
     Float,
 }
 
+/// The per-draw fixed-function choices as `--explain` prints them: `perspective-correct, depth less, cull back`.
+#[derive(Clone, Copy, Debug)]
+pub struct FixedFunction<'a>(pub &'a DrawState);
+
+impl core::fmt::Display for FixedFunction<'_> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        let s = self.0;
+        f.write_str(match s.interpolation {
+            Interpolation::PerspectiveCorrect => "perspective-correct",
+            Interpolation::Affine => "affine",
+        })?;
+        f.write_str(match s.depth_test {
+            DepthTest::Less => ", depth less",
+            DepthTest::Off => ", depth off",
+        })?;
+        f.write_str(match s.cull {
+            Cull::None => ", cull none",
+            Cull::Back => ", cull back",
+            Cull::Front => ", cull front",
+        })
+    }
+}
+
 /// Largest supported number of sub-pixel bits.
 pub const MAX_SUBPIXEL_BITS: u8 = 8;
 

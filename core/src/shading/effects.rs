@@ -4,7 +4,7 @@ use core::fmt;
 
 use super::{Lighting, Material, Transforms};
 use crate::mesh::{Attributes, Mesh};
-use crate::pipeline::{DrawError, DrawState, Interpolation};
+use crate::pipeline::{DrawError, DrawState};
 use crate::texture::{FilterMode, Texture, WrapMode};
 
 /// How surfaces are coloured.
@@ -122,13 +122,7 @@ impl<'a> Effects<'a> {
             let needed = Attributes { normals: true, ..Attributes::NONE };
             return Err(DrawError::MissingAttributes { needed, present });
         }
-        let mut state = *state;
-        if transforms.orthographic {
-            state.interpolation = Interpolation::Affine;
-        }
-        if transforms.mirrors() {
-            state.front_face = state.front_face.flipped();
-        }
+        let state = transforms.adapt(state);
         Ok(Variant {
             shading: self.shading,
             vertex_colors: self.shading == ShadingModel::Unlit && present.colors,
@@ -164,19 +158,6 @@ impl fmt::Display for Variant<'_> {
         if self.shading.is_lit() {
             f.write_str(if self.specular { ", specular" } else { ", no specular" })?;
         }
-        let s = &self.state;
-        f.write_str(match s.interpolation {
-            Interpolation::PerspectiveCorrect => ", perspective-correct",
-            Interpolation::Affine => ", affine",
-        })?;
-        f.write_str(match s.depth_test {
-            crate::pipeline::DepthTest::Less => ", depth less",
-            crate::pipeline::DepthTest::Off => ", depth off",
-        })?;
-        f.write_str(match s.cull {
-            crate::pipeline::Cull::None => ", cull none",
-            crate::pipeline::Cull::Back => ", cull back",
-            crate::pipeline::Cull::Front => ", cull front",
-        })
+        write!(f, ", {}", crate::pipeline::FixedFunction(&self.state))
     }
 }

@@ -1,6 +1,7 @@
 //! The matrices a lit draw needs, derived once per draw.
 
 use crate::math::{Mat3, Mat4, Vec3};
+use crate::pipeline::{DrawState, Interpolation};
 
 /// Object-to-world, object-to-clip and normal transforms, and the camera position.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -36,5 +37,19 @@ impl Transforms {
     /// clockwise ones.
     pub fn mirrors(&self) -> bool {
         self.model.to_mat3().determinant() < 0.0
+    }
+
+    /// `state` as a draw with these transforms runs it: affine interpolation under an orthographic projection
+    /// (exact there, and no division per pixel), and the front face flipped when the model matrix mirrors, so
+    /// culling still removes the back.
+    pub fn adapt(&self, state: &DrawState) -> DrawState {
+        let mut state = *state;
+        if self.orthographic {
+            state.interpolation = Interpolation::Affine;
+        }
+        if self.mirrors() {
+            state.front_face = state.front_face.flipped();
+        }
+        state
     }
 }

@@ -1,8 +1,6 @@
 //! The plan of one frame: which passes run, with which lights, and what each draw computes.
 
-use rasterm_core::effects::{
-    Bounds, LightSource, SceneLights, ShadowBias, ShadowMap, ShadowView, SurfaceMaterial, SurfaceVariant,
-};
+use rasterm_core::effects::{Bounds, LightKind, LightUse, ShadowView, SurfaceMaterial, SurfaceVariant};
 use rasterm_core::math::Vec3;
 use rasterm_core::pipeline::DrawState;
 use rasterm_core::shading::Transforms;
@@ -94,9 +92,6 @@ pub struct ScenePlan {
     pub options: PlanOptions,
 }
 
-/// The depth of the one-texel shadow map the plan resolves variants against (see [`ScenePlan::new`]).
-static PLAN_DEPTH: [f32; 1] = [1.0];
-
 impl ScenePlan {
     /// Plans a frame of `width x height` pixels of `scene` seen by `camera` (the file's, or the viewer's after
     /// orbiting), with the effects `options` allows.
@@ -105,9 +100,8 @@ impl ScenePlan {
     /// - A light with `shadows = true` gets a shadow pass when shadows are on: a [`shadow_map_size`] map fitted to
     ///   the scene's bounds, [`PCF_RADIUS`] filtering.
     /// - Each part with triangles of each object is one draw, whose [`SurfaceVariant`] is resolved here. The
-    ///   variant depends only on which lights have a shadow map and their filtering radius, not on what the map
-    ///   holds, so it is resolved against one-texel stand-in maps: planning allocates no shadow map and draws
-    ///   nothing. [`super::SceneRenderer::render`] resolves the same variants when it draws.
+    ///   variant depends only on each light's kind and shadow filtering ([`LightUse`]), not on what a map holds,
+    ///   so planning allocates no shadow map and draws nothing. [`super::SceneRenderer::render`] resolves the same variants when it draws.
     /// - Ambient occlusion when the scene asks for it and it is on.
     ///
     /// # Errors
@@ -182,29 +176,16 @@ impl ScenePlan {
         Ok(plan)
     }
 
-    /// The forward pass's draws, with their variants resolved against stand-in shadow maps.
+    /// The forward pass's draws, with their variants resolved for the planned lights.
     fn plan_draws(&self, scene: &PreparedScene) -> Result<Vec<PlannedDraw>, SceneRenderError> {
-        let mut stand_ins = Vec::with_capacity(self.lights.len());
-        for light in &self.lights {
-            let shadow = match light.shadow_pass {
-                Some(_) => {
-                    // A one-texel view of the same light: the variant reads only whether there is a map and its
-                    // radius. The fit cannot fail where the real one succeeded.
-                    let view = ShadowView::fit(light.kind, self.bounds, 1).map_err(|error| {
-                        SceneRenderError::Shadow { light: self.light_name(light), bounds: self.bounds, error }
-                    })?;
-                    let map = ShadowMap::new(view, &PLAN_DEPTH, ShadowBias::DEFAULT, PCF_RADIUS);
-                    Some(map.map_err(|error| SceneRenderError::Shadow {
-                        light: self.light_name(light),
-                        bounds: self.bounds,
-                        error,
-                    })?)
-                }
-                None => None,
-            };
-            stand_ins.push(LightSource { kind: light.kind, color: light.color, shadow });
-        }
-        let lights = SceneLights { ambient: self.ambient, lights: &stand_ins };
+        let lights: Vec<LightUse> = self
+            .lights
+            .iter()
+            .map(|l| LightUse {
+                point: matches!(l.kind, LightKind::Point { .. }),
+                shadow_pcf: l.shadow_pass.map(|p| self.shadow_passes[p].pcf_radius),
+            })
+            .collect();
         let mut draws = Vec::new();
         for (index, object) in scene.data().objects.iter().enumerate() {
             let transforms = Transforms::new(object.transform, self.camera.view, self.camera.projection);
@@ -217,9 +198,15 @@ impl ScenePlan {
                 let material = part_material(object, part_index, &self.options)
                     .map_err(|error| SceneRenderError::Texture { draw: label.clone(), error })?;
                 let tangents = tangents_for(scene, index, &material);
-                let variant =
-                    SurfaceVariant::resolve(&mesh, tangents, &transforms, &material, &lights, &DrawState::DEFAULT)
-                        .map_err(|error| SceneRenderError::Draw { draw: label.clone(), error })?;
+                let variant = SurfaceVariant::resolve(
+                    &mesh,
+                    tangents,
+                    &transforms,
+                    &material,
+                    lights.iter().copied(),
+                    &DrawState::DEFAULT,
+                )
+                .map_err(|error| SceneRenderError::Draw { draw: label.clone(), error })?;
                 draws.push(PlannedDraw { object: index, part: part_index, label, transforms, variant });
             }
         }
