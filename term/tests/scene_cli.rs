@@ -25,7 +25,7 @@ fn explain_prints_the_plan_and_renders_nothing() {
     assert!(stderr.is_empty(), "{stderr}");
     let lines: Vec<&str> = stdout.lines().collect();
     assert!(lines[0].starts_with("frame 800x600: perspective, fov 45 degrees; near 0.1 (from the file)"), "{stdout}");
-    assert!(stdout.contains("\npasses:\n  1. shadow map of light 1 (point at [1.6, 4.2, 1.4]): 2048x2048 texels"));
+    assert!(stdout.contains("\npasses:\n  1. shadow map of light 1 (point at [1.6, 4.2, 1.4]): 1024x1024 texels"));
     assert!(stdout.contains("\n  2. forward: 2 draws\n"), "{stdout}");
     assert!(lines.last().unwrap().starts_with("  3. ambient occlusion"), "{stdout}");
     assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 0, "--explain alone wrote a file");
@@ -46,7 +46,7 @@ fn a_scene_renders_to_a_png_with_its_plan_and_stats() {
     let (code, stdout, stderr) = rasterm(dir.path(), &args);
     assert_eq!(code, Some(0), "{stderr}");
     assert!(stdout.starts_with("frame 80x60"), "{stdout}");
-    assert!(stdout.contains("\nshadow map of light 1: 1024x1024 texels, "), "{stdout}");
+    assert!(stdout.contains("\nshadow map of light 1: 512x512 texels, "), "{stdout}");
     assert!(stdout.contains("\nrender: ") && stdout.contains(" at 80x60: shadows "), "{stdout}");
     let decoder = png::Decoder::new(std::io::BufReader::new(fs::File::open(dir.path().join("sun.png")).unwrap()));
     let info = decoder.read_info().unwrap();

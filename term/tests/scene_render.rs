@@ -9,7 +9,7 @@ use std::path::Path;
 
 use rasterm::scene_file::{load, parse};
 use rasterm::scene_render::{
-    AMBIENT_OCCLUSION_NOTE, EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError,
+    AMBIENT_OCCLUSION, EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError,
     SceneRenderer, render_scene_image,
 };
 use rasterm_core::math::Vec3;
@@ -82,10 +82,10 @@ fn spot_sun_has_a_shadow_pass_and_no_ambient_occlusion() {
     let plan = plan(&scene, &PlanOptions::default());
     let text = plan.to_string();
     assert_eq!(plan.shadow_passes.len(), 1);
-    assert!(!plan.ambient_occlusion);
+    assert!(plan.ambient_occlusion.is_none());
     let passes: Vec<&str> = text.lines().skip_while(|l| *l != "passes:").collect();
     assert!(passes[1].starts_with("  1. shadow map of light 1 (directional, travelling ["), "{text}");
-    assert!(passes[1].ends_with("1024x1024 texels, 2 casters, pcf 3x3"), "{text}");
+    assert!(passes[1].ends_with("512x512 texels, 2 casters, pcf 3x3"), "{text}");
     assert!(passes[2].starts_with("  2. forward: 2 draws"), "{text}");
     assert!(!text.contains("ambient occlusion"), "{text}");
     assert_eq!(passes.len(), 5, "{text}");
@@ -96,7 +96,10 @@ fn spot_lamp_lists_ambient_occlusion_last() {
     let scene = example("spot_lamp.toml");
     let text = plan(&scene, &PlanOptions::default()).to_string();
     let last = text.lines().last().unwrap();
-    assert_eq!(last, format!("  3. {AMBIENT_OCCLUSION_NOTE}"), "{text}");
+    let (o, radius) = (AMBIENT_OCCLUSION, AMBIENT_OCCLUSION.radius);
+    let expected =
+        format!("  3. ambient occlusion: from the depth buffer, {} directions x {} steps", o.directions, o.steps);
+    assert!(last.starts_with(&expected) && last.contains(&format!(" within {radius} units")), "{text}");
     assert!(text.contains("shadow map of light 1 (point at [1.6, 4.2, 1.4])"), "{text}");
     // The floor uses every map.
     let floor = text.lines().find(|l| l.contains("ground.obj")).unwrap();
@@ -108,7 +111,7 @@ fn spot_lamp_lists_ambient_occlusion_last() {
     );
     // Switched off, it is gone.
     let off = plan(&scene, &without(SceneEffect::AmbientOcclusion));
-    assert!(!off.ambient_occlusion && !off.to_string().contains("ambient occlusion"));
+    assert!(off.ambient_occlusion.is_none() && !off.to_string().contains("ambient occlusion"));
 }
 
 #[test]
@@ -185,6 +188,44 @@ fn the_planned_variants_are_the_ones_drawn() {
     }
 }
 
+/// Renders `scene` from its file's camera at `w x h` on `threads` threads.
+fn render_on_threads(scene: &PreparedScene, (w, h): (u32, u32), options: &PlanOptions, threads: usize) -> Vec<u32> {
+    let (mut color, mut depth) = (vec![0u32; (w * h) as usize], vec![0f32; (w * h) as usize]);
+    let plan = ScenePlan::new(scene, &scene.data().camera, (w, h), options).unwrap();
+    let mut target = Target::new(Rgb888(&mut color), &mut depth[..], w, h).unwrap();
+    SceneRenderer::with_threads(threads).render(scene, &plan, &mut target).unwrap();
+    color
+}
+
+#[test]
+fn any_number_of_threads_draws_the_same_pixels() {
+    // spot_lamp has every effect, ambient occlusion included (whose bands need rows of depth around them).
+    let scene = example("spot_lamp.toml");
+    let options = PlanOptions::default();
+    let one = render_on_threads(&scene, (96, 71), &options, 1);
+    for threads in [2, 3, 7, 71, 500] {
+        assert!(one == render_on_threads(&scene, (96, 71), &options, threads), "{threads} threads");
+    }
+    assert_eq!(SceneRenderer::with_threads(0).threads(), 1);
+}
+
+#[test]
+fn ambient_occlusion_darkens_creases_and_only_darkens() {
+    let scene = example("spot_lamp.toml");
+    let size = (160, 120);
+    let with = render_on_threads(&scene, size, &PlanOptions::default(), 2);
+    let without = render_on_threads(&scene, size, &without(SceneEffect::AmbientOcclusion), 2);
+    let channels = |p: u32| [(p >> 16) & 0xFF, (p >> 8) & 0xFF, p & 0xFF];
+    let mut darkened = 0;
+    for (a, b) in with.iter().zip(&without) {
+        let (a, b) = (channels(*a), channels(*b));
+        assert!(a.iter().zip(&b).all(|(x, y)| x <= y), "ambient occlusion brightened {b:?} to {a:?}");
+        darkened += usize::from(a != b);
+    }
+    // Some pixels darken (the cows' creases and where they stand), most of the frame does not.
+    assert!(darkened > 100 && darkened < with.len() / 3, "{darkened} of {} pixels darkened", with.len());
+}
+
 #[test]
 fn shadow_maps_are_kept_while_only_the_camera_moves() {
     let scene = example("spot_sun.toml");
@@ -250,9 +291,12 @@ fn shadow_maps_follow_the_frame_size() {
     let size = |w, h| {
         ScenePlan::new(&scene, &scene.data().camera, (w, h), &PlanOptions::default()).unwrap().shadow_passes[0].map_size
     };
-    assert_eq!(size(512, 300), 1024);
-    assert_eq!(size(800, 800), 2048);
-    assert_eq!(size(200, 513), 2048);
+    assert_eq!(size(200, 120), 512, "the smallest map");
+    assert_eq!(size(512, 300), 512);
+    assert_eq!(size(513, 300), 1024);
+    assert_eq!(size(800, 800), 1024);
+    assert_eq!(size(200, 1025), 2048);
+    assert_eq!(size(4000, 3000), 2048, "the largest map");
 }
 
 #[test]

@@ -179,6 +179,11 @@ impl<C: ColorBuffer, D: DepthBuffer> Target<C, D> {
         &self.depth
     }
 
+    /// Both buffers, mutably: to split them into bands drawn side by side, or to post-process a finished frame.
+    pub fn buffers_mut(&mut self) -> (&mut C, &mut D) {
+        (&mut self.color, &mut self.depth)
+    }
+
     /// Gives the buffers back.
     pub fn into_parts(self) -> (C, D) {
         (self.color, self.depth)

@@ -3,7 +3,7 @@
 use std::fmt;
 
 use rasterm_core::camera::CameraError;
-use rasterm_core::effects::{Bounds, ShadowError, SurfaceError};
+use rasterm_core::effects::{Bounds, OcclusionError, ShadowError, SurfaceError};
 use rasterm_core::mesh::TangentError;
 use rasterm_core::target::TargetError;
 use rasterm_core::texture::TextureError;
@@ -49,6 +49,8 @@ pub enum SceneRenderError {
         /// What the core said.
         error: SurfaceError,
     },
+    /// The core refused the ambient occlusion step.
+    Occlusion(OcclusionError),
     /// The frame's buffers are unusable, or not the size the plan was made for.
     Target(String),
 }
@@ -72,6 +74,7 @@ impl fmt::Display for SceneRenderError {
             }
             Self::Texture { draw, error } => write!(f, "{}: bad image: {error}", Escaped(draw)),
             Self::Draw { draw, error } => write!(f, "{}: cannot draw: {error}", Escaped(draw)),
+            Self::Occlusion(e) => write!(f, "cannot apply ambient occlusion: {e}"),
             Self::Target(e) => write!(f, "bad frame: {e}"),
         }
     }

@@ -10,10 +10,6 @@ use super::lights::{LightName, Number, Triple};
 use crate::escaped::Escaped;
 use crate::scene_file::Projection;
 
-/// What the ambient occlusion step says it does until the core's lands.
-pub const AMBIENT_OCCLUSION_NOTE: &str =
-    "ambient occlusion: hook only, no pixel changes until core::effects::AmbientOcclusion lands";
-
 impl fmt::Display for ScenePlan {
     /// The frame, the lights, then the passes in the order they run, with one line per draw of the forward pass
     /// (its object and part, escaped, and its [`rasterm_core::effects::SurfaceVariant`]). Only what the frame uses
@@ -80,8 +76,16 @@ impl fmt::Display for ScenePlan {
         for draw in &self.draws {
             writeln!(f, "       {}: {}", Escaped(&draw.label), draw.variant)?;
         }
-        if self.ambient_occlusion {
-            writeln!(f, "  {}. {AMBIENT_OCCLUSION_NOTE}", next())?;
+        if let Some(o) = &self.ambient_occlusion {
+            writeln!(
+                f,
+                "  {}. ambient occlusion: from the depth buffer, {} directions x {} steps within {} units, strength {}",
+                next(),
+                o.directions,
+                o.steps,
+                Number(o.radius),
+                Number(o.strength)
+            )?;
         }
         Ok(())
     }

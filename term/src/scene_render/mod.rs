@@ -12,8 +12,9 @@
 //!                                       ▼                       ▼  Display: `rasterm render --explain`
 //!   SceneRenderer::render(scene, plan, target)
 //!     1. shadow passes: clear_shadow_depth + draw_shadow_caster per object (maps kept and reused across frames)
-//!     2. forward pass: clear to the background, draw_surface per part (+ wireframe lines when asked)
-//!     3. apply_ambient_occlusion (a hook: changes nothing until the core's ambient occlusion lands)
+//!     2. forward pass, one band of rows per thread: clear to the background, draw_surface per part
+//!        (+ wireframe lines when asked)
+//!     3. ambient occlusion, one band per thread: AmbientOcclusion::apply on the finished depth buffer
 //! ```
 //!
 //! - [`PreparedScene`]: what every frame shares (bounds, tangents, object names).
@@ -25,8 +26,8 @@
 //! - [`render_scene_image`]: plan and render into fresh buffers, with supersampling: `rasterm render`.
 //! - [`SceneOrbit`]: the viewer's camera for scenes: orbit about the file's target, zoom, switch the lens.
 //!
-//! Policies, each documented where it is decided: shadow map size ([`shadow_map_size`]: 2048 texels a side for
-//! frames above 512 pixels, 1024 otherwise), shadow bounds ([`scene_bounds`]: the sphere around every object's
+//! Policies, each documented where it is decided: shadow map size ([`shadow_map_size`]: the frame's longer side
+//! rounded up to a power of two, 512 to 2048), shadow bounds ([`scene_bounds`]: the sphere around every object's
 //! world-space box), clipping planes ([`FrameCamera::new`]: the file's, else around those bounds), materials
 //! ([`part_material`]: scene keys over MTL values, maps of switched-off effects left out).
 //!
@@ -76,14 +77,13 @@ mod toggles;
 pub use bounds::scene_bounds;
 pub use camera::{FrameCamera, PlaneSource};
 pub use error::SceneRenderError;
-pub use explain::AMBIENT_OCCLUSION_NOTE;
 pub use image::{SceneImage, render_scene_image};
 pub use lights::{DroppedLight, LightName, Number, PlannedLight, Triple, core_light};
 pub use material::part_material;
 pub use orbit::SceneOrbit;
 pub use plan::{
-    LARGE_FRAME, LARGE_SHADOW_MAP, PCF_RADIUS, PlannedDraw, SMALL_SHADOW_MAP, ScenePlan, ShadowPass, shadow_map_size,
+    AMBIENT_OCCLUSION, MAX_SHADOW_MAP, MIN_SHADOW_MAP, PCF_RADIUS, PlannedDraw, ScenePlan, ShadowPass, shadow_map_size,
 };
 pub use prepared::PreparedScene;
-pub use render::{FrameReport, SceneRenderer, ShadowPassReport, apply_ambient_occlusion};
+pub use render::{FrameReport, SceneRenderer, ShadowPassReport};
 pub use toggles::{EffectToggles, PlanOptions, SceneEffect};

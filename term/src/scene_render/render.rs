@@ -1,6 +1,8 @@
-//! Running a plan: the shadow passes into maps the renderer keeps, the forward pass into the caller's target, then
-//! the ambient occlusion step.
+//! Running a plan: the shadow passes into maps the renderer keeps, the forward pass into the caller's frame in
+//! bands drawn side by side on threads, then the ambient occlusion step, also in bands.
 
+use std::ops::Range;
+use std::thread;
 use std::time::{Duration, Instant};
 
 use rasterm_core::effects::{
@@ -8,9 +10,8 @@ use rasterm_core::effects::{
     draw_shadow_caster, draw_surface,
 };
 use rasterm_core::pipeline::{DrawState, DrawStats, draw_wireframe};
-use rasterm_core::target::{ColorBuffer, DepthBuffer, Target};
+use rasterm_core::target::{Rgb888, Target};
 
-use super::camera::FrameCamera;
 use super::material::part_material;
 use super::plan::tangents_for;
 use super::{PreparedScene, ScenePlan, SceneRenderError};
@@ -73,38 +74,73 @@ struct ShadowSlot {
 /// so a map drawn for an earlier frame of the same prepared scene is used again as it is: orbiting in the viewer
 /// redraws no shadow map. A switched-off effect is absent from the plan, so nothing of it runs; a kept map costs
 /// only its memory until shadows are switched back on.
-#[derive(Debug, Default)]
+///
+/// The forward pass and the ambient occlusion step split the frame into one horizontal band per thread. Each
+/// band runs the whole draw list into its own rows (the core clips every triangle to the band), so the pixels are
+/// the same for any number of threads: only the vertex work is repeated per band.
+#[derive(Debug)]
 pub struct SceneRenderer {
     slots: Vec<ShadowSlot>,
+    threads: usize,
+}
+
+impl Default for SceneRenderer {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// The rows and buffers of one band of the frame.
+struct Band<'a> {
+    rows: Range<u32>,
+    pixels: &'a mut [u32],
+    depth: &'a mut [f32],
+}
+
+/// What the forward pass did in one band.
+struct BandResult {
+    stats: DrawStats,
+    variants: Vec<SurfaceVariant>,
 }
 
 impl SceneRenderer {
-    /// A renderer with no shadow map yet.
+    /// A renderer with no shadow map yet, drawing on as many threads as this machine runs at once.
     pub fn new() -> Self {
-        Self::default()
+        Self::with_threads(thread::available_parallelism().map_or(1, usize::from))
+    }
+
+    /// A renderer with no shadow map yet, drawing in `threads` bands at once (at least 1; a frame has at most one
+    /// band per row).
+    pub fn with_threads(threads: usize) -> Self {
+        Self { slots: Vec::new(), threads: threads.max(1) }
+    }
+
+    /// The number of bands a frame is split into (fewer for a frame with fewer rows).
+    pub fn threads(&self) -> usize {
+        self.threads
     }
 
     /// Runs `plan` (made for `scene`) into `target`, which must be the plan's size: the shadow passes (each skipped
-    /// when its kept map is still right), then clears the target to the background and draws every part, then the
-    /// ambient occlusion step when planned.
+    /// when its kept map is still right), then, in bands on [`Self::threads`] threads, clears the target to the
+    /// background and draws every part, then the ambient occlusion step when planned.
     ///
     /// # Errors
     /// [`SceneRenderError::Target`] when the target is not the plan's size or the plan names objects the scene does
-    /// not have; the core's refusals as [`SceneRenderError::Shadow`], [`SceneRenderError::Texture`] and
-    /// [`SceneRenderError::Draw`].
-    pub fn render<C: ColorBuffer, D: DepthBuffer>(
+    /// not have; the core's refusals as [`SceneRenderError::Shadow`], [`SceneRenderError::Texture`],
+    /// [`SceneRenderError::Draw`] and [`SceneRenderError::Occlusion`].
+    pub fn render(
         &mut self,
         scene: &PreparedScene,
         plan: &ScenePlan,
-        target: &mut Target<C, D>,
+        target: &mut Target<Rgb888<'_>, &mut [f32]>,
     ) -> Result<FrameReport, SceneRenderError> {
-        if (target.width(), target.height()) != plan.size {
+        let (width, height) = (target.width(), target.height());
+        if (width, height) != plan.size || target.rows() != (0..height) {
             return Err(SceneRenderError::Target(format!(
-                "the plan is for {}x{} pixels, the target is {}x{}",
+                "the plan is for {}x{} pixels, the target is {width}x{height} (rows {:?})",
                 plan.size.0,
                 plan.size.1,
-                target.width(),
-                target.height()
+                target.rows()
             )));
         }
         let mut report = FrameReport::default();
@@ -113,6 +149,43 @@ impl SceneRenderer {
         report.shadow_time = start.elapsed();
 
         let start = Instant::now();
+        let sources = self.light_sources(plan)?;
+        let lights = SceneLights { ambient: plan.ambient, lights: &sources };
+        let (color, depth) = target.buffers_mut();
+        let (pixels, depth) = (&mut *color.0, &mut **depth);
+        let results = in_bands(pixels, depth, width, height, self.threads, |band| {
+            forward_band(scene, plan, &lights, band, width, height)
+        });
+        for result in results {
+            let result = result?;
+            report.forward += result.stats;
+            // Every band resolves the same variants; keep the first band's.
+            if report.variants.is_empty() {
+                report.variants = result.variants;
+            }
+        }
+        report.forward_time = start.elapsed();
+
+        if let Some(occlusion) = &plan.ambient_occlusion {
+            let start = Instant::now();
+            let projection = plan.camera.projection;
+            let whole_depth: &[f32] = depth;
+            let results = in_bands(pixels, &mut [], width, height, self.threads, |band| {
+                let margin = occlusion.margin_rows(&projection, width, height);
+                let depth_rows = band.rows.start.saturating_sub(margin)..(band.rows.end + margin).min(height);
+                let span = depth_rows.start as usize * width as usize..depth_rows.end as usize * width as usize;
+                occlusion.apply(&projection, &whole_depth[span], depth_rows, band.pixels, band.rows, width, height)
+            });
+            for result in results {
+                result.map_err(SceneRenderError::Occlusion)?;
+            }
+            report.occlusion_time = start.elapsed();
+        }
+        Ok(report)
+    }
+
+    /// The planned lights as the core takes them, with the kept shadow maps.
+    fn light_sources(&self, plan: &ScenePlan) -> Result<Vec<LightSource<'_>>, SceneRenderError> {
         let mut sources = Vec::with_capacity(plan.lights.len());
         for light in &plan.lights {
             let shadow = match light.shadow_pass {
@@ -129,37 +202,8 @@ impl SceneRenderer {
             };
             sources.push(LightSource { kind: light.kind, color: light.color, shadow });
         }
-        let lights = SceneLights { ambient: plan.ambient, lights: &sources };
-        target.clear(plan.background);
-        let objects = &scene.data().objects;
-        for draw in &plan.draws {
-            let mismatch = || SceneRenderError::Target(format!("the plan's {} is not in the scene", draw.label));
-            let object = objects.get(draw.object).ok_or_else(mismatch)?;
-            let mesh = object.model.part_mesh(draw.part).ok_or_else(mismatch)?;
-            let material = part_material(object, draw.part, &plan.options)
-                .map_err(|error| SceneRenderError::Texture { draw: draw.label.clone(), error })?;
-            let tangents = tangents_for(scene, draw.object, &material);
-            let surface = SurfaceDraw { mesh, tangents, transforms: draw.transforms, material };
-            let (variant, stats) = draw_surface(target, &surface, &lights, &DrawState::DEFAULT)
-                .map_err(|error| SceneRenderError::Draw { draw: draw.label.clone(), error })?;
-            report.forward += stats;
-            if plan.wireframe {
-                // The lines' pixels count as fragments; their triangles are the ones counted above.
-                let clip = &draw.transforms.clip_from_object;
-                report.forward.fragments += draw_wireframe(target, &mesh, clip, &WIREFRAME, &variant.state).fragments;
-            }
-            report.variants.push(variant);
-        }
-        report.forward_time = start.elapsed();
-
-        if plan.ambient_occlusion {
-            let start = Instant::now();
-            apply_ambient_occlusion(target, &plan.camera);
-            report.occlusion_time = start.elapsed();
-        }
-        Ok(report)
+        Ok(sources)
     }
-
     /// Draws the shadow maps the plan needs that are not kept already.
     fn shadow_passes(
         &mut self,
@@ -200,13 +244,76 @@ impl SceneRenderer {
     }
 }
 
-/// The ambient occlusion step: darkens creases and contact areas from the finished depth buffer of `target`, seen
-/// through `camera`.
-///
-/// Not applied yet: the core's screen-space ambient occlusion is being written elsewhere, and until it lands this
-/// step returns without changing a pixel. Plans list it (and `--explain` says it changes nothing yet) whenever a
-/// scene asks for ambient occlusion and the effect is on; this function is the one place to wire it.
-pub fn apply_ambient_occlusion<C: ColorBuffer, D: DepthBuffer>(target: &mut Target<C, D>, camera: &FrameCamera) {
-    // AO: wired when core::effects::AmbientOcclusion lands
-    let _ = (target, camera);
+/// Splits a `width x height` frame into at most `bands` bands of nearly equal rows (one per row at most) and runs
+/// `work` on each, the first on this thread and the others on threads of their own, returning the results in
+/// band order. `depth` may be empty (a step that only changes colours); else it holds the frame's depths too.
+fn in_bands<T: Send>(
+    mut pixels: &mut [u32],
+    mut depth: &mut [f32],
+    width: u32,
+    height: u32,
+    bands: usize,
+    work: impl Fn(Band<'_>) -> T + Sync,
+) -> Vec<T> {
+    let count = bands.clamp(1, height as usize) as u32;
+    let mut jobs = Vec::with_capacity(count as usize);
+    for i in 0..count {
+        let rows = height * i / count..height * (i + 1) / count;
+        let n = rows.len() * width as usize;
+        let (p, rest) = std::mem::take(&mut pixels).split_at_mut(n);
+        pixels = rest;
+        let d = if depth.is_empty() {
+            &mut []
+        } else {
+            let (d, rest) = std::mem::take(&mut depth).split_at_mut(n);
+            depth = rest;
+            d
+        };
+        jobs.push(Band { rows, pixels: p, depth: d });
+    }
+    let work = &work;
+    thread::scope(|s| {
+        let mut jobs = jobs.into_iter();
+        let first = jobs.next();
+        let others: Vec<_> = jobs.map(|band| s.spawn(move || work(band))).collect();
+        let mut results = Vec::with_capacity(count as usize);
+        results.extend(first.map(work));
+        // A band's work does not panic (errors are values); if one did, resume it here rather than lose it.
+        results.extend(others.into_iter().map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p))));
+        results
+    })
+}
+
+/// The forward pass over one band: clears it to the background and draws every planned part into it.
+fn forward_band(
+    scene: &PreparedScene,
+    plan: &ScenePlan,
+    lights: &SceneLights<'_>,
+    band: Band<'_>,
+    width: u32,
+    height: u32,
+) -> Result<BandResult, SceneRenderError> {
+    let mut target = Target::band(Rgb888(band.pixels), band.depth, width, height, band.rows)?;
+    target.clear(plan.background);
+    let objects = &scene.data().objects;
+    let mut result = BandResult { stats: DrawStats::default(), variants: Vec::with_capacity(plan.draws.len()) };
+    for draw in &plan.draws {
+        let mismatch = || SceneRenderError::Target(format!("the plan's {} is not in the scene", draw.label));
+        let object = objects.get(draw.object).ok_or_else(mismatch)?;
+        let mesh = object.model.part_mesh(draw.part).ok_or_else(mismatch)?;
+        let material = part_material(object, draw.part, &plan.options)
+            .map_err(|error| SceneRenderError::Texture { draw: draw.label.clone(), error })?;
+        let tangents = tangents_for(scene, draw.object, &material);
+        let surface = SurfaceDraw { mesh, tangents, transforms: draw.transforms, material };
+        let (variant, stats) = draw_surface(&mut target, &surface, lights, &DrawState::DEFAULT)
+            .map_err(|error| SceneRenderError::Draw { draw: draw.label.clone(), error })?;
+        result.stats += stats;
+        if plan.wireframe {
+            // The lines' pixels count as fragments; their triangles are the ones counted above.
+            let clip = &draw.transforms.clip_from_object;
+            result.stats.fragments += draw_wireframe(&mut target, &mesh, clip, &WIREFRAME, &variant.state).fragments;
+        }
+        result.variants.push(variant);
+    }
+    Ok(result)
 }
