@@ -269,7 +269,44 @@ impl<'a> ShadowMap<'a> {
         let ty = float::floor_to_i32((1.0 - clip.y * inv_w) * half);
         // A point beyond the map's far plane compares as on it: lit wherever nothing was drawn.
         let z = float::min(clip.z * inv_w, 1.0) - b.depth;
-        let r = self.pcf_radius as i32;
+        let lit = match self.pcf_radius {
+            0 => self.lit_taps::<0>(tx, ty, z),
+            1 => self.lit_taps::<1>(tx, ty, z),
+            2 => self.lit_taps::<2>(tx, ty, z),
+            r => self.lit_taps_any(r as i32, tx, ty, z),
+        };
+        let r = self.pcf_radius;
+        let taps = (2 * r + 1) * (2 * r + 1);
+        if lit == taps { 1.0 } else { lit as f32 / taps as f32 }
+    }
+
+    /// How many of the `(2R + 1)^2` texels around `(tx, ty)` are at or beyond depth `z` (texels outside the map
+    /// count as lit). A window wholly inside the map, nearly every lookup, reads its rows as slices with no test
+    /// per texel; the loops have constant bounds and unroll.
+    #[inline(always)]
+    fn lit_taps<const R: i32>(&self, tx: i32, ty: i32, z: f32) -> u32 {
+        let size = self.view.size as i32;
+        let inside = tx >= R && ty >= R && tx < size - R && ty < size - R;
+        if !inside {
+            return self.lit_taps_any(R, tx, ty, z);
+        }
+        let side = (2 * R + 1) as usize;
+        let mut lit = 0u32;
+        for y in ty - R..=ty + R {
+            let start = (y * size + tx - R) as usize;
+            // In the map (checked above); `get` keeps the lookup panic-free regardless.
+            if let Some(row) = self.depth.get(start..start + side) {
+                for &stored in row {
+                    lit += u32::from(z <= stored);
+                }
+            }
+        }
+        lit
+    }
+
+    /// [`Self::lit_taps`] for any radius and any window, texel by texel.
+    fn lit_taps_any(&self, r: i32, tx: i32, ty: i32, z: f32) -> u32 {
+        let size = self.view.size as i32;
         let mut lit = 0u32;
         for y in ty - r..=ty + r {
             for x in tx - r..=tx + r {
@@ -278,7 +315,40 @@ impl<'a> ShadowMap<'a> {
                 lit += u32::from(!inside || z <= stored);
             }
         }
-        let taps = ((2 * r + 1) * (2 * r + 1)) as u32;
-        if lit == taps { 1.0 } else { lit as f32 / taps as f32 }
+        lit
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The unrolled windows count exactly what the texel-by-texel loop counts, inside the map and across its
+    /// edges and corners.
+    #[test]
+    fn unrolled_pcf_windows_count_as_the_general_loop() {
+        const SIZE: u32 = 9;
+        let bounds = Bounds { centre: Vec3::ZERO, radius: 1.0 };
+        let kind = LightKind::Directional { to_light: Vec3::new(0.0, 1.0, 0.0) };
+        let view = ShadowView::fit(kind, bounds, SIZE).unwrap();
+        // Depths in a scrambled order so that every window sees a different mix.
+        let depth: [f32; (SIZE * SIZE) as usize] = core::array::from_fn(|i| ((i * 37) % 81) as f32 / 81.0);
+        for radius in 0..=3 {
+            let map = ShadowMap::new(view, &depth, ShadowBias::DEFAULT, radius).unwrap();
+            for ty in -3..SIZE as i32 + 3 {
+                for tx in -3..SIZE as i32 + 3 {
+                    for z in [0.0, 0.3, 0.5, 0.99] {
+                        let expected = map.lit_taps_any(radius as i32, tx, ty, z);
+                        let unrolled = match radius {
+                            0 => map.lit_taps::<0>(tx, ty, z),
+                            1 => map.lit_taps::<1>(tx, ty, z),
+                            2 => map.lit_taps::<2>(tx, ty, z),
+                            _ => expected,
+                        };
+                        assert_eq!(unrolled, expected, "radius {radius} at ({tx}, {ty}), z {z}");
+                    }
+                }
+            }
+        }
     }
 }
