@@ -6,8 +6,8 @@
 
 use rasterm_core::camera::{look_at, orthographic};
 use rasterm_core::effects::{
-    Bounds, LightSource, SceneLights, ShadowBias, ShadowMap, ShadowView, SurfaceDraw, SurfaceMaterial,
-    clear_shadow_depth, draw_shadow_caster, draw_surface,
+    Bounds, LightSource, SceneLights, ShadowBias, ShadowError, ShadowMap, ShadowView, SurfaceDraw, SurfaceMaterial,
+    clear_shadow_depth, draw_shadow_caster, draw_shadow_caster_band, draw_surface,
 };
 use rasterm_core::math::{Mat4, Vec3};
 use rasterm_core::mesh::{Indices, Mesh};
@@ -220,4 +220,38 @@ fn pcf_softens_the_edge_and_nothing_else() {
         }
     }
     assert!(changed > 0 && between > 0, "changed {changed}, intermediate {between}");
+}
+
+#[test]
+fn a_map_drawn_in_bands_is_the_map_drawn_whole() {
+    let (ground, cube) = (ground(), cube());
+    let kind = LightSource::directional(Vec3::new(0.4, 1.0, 0.3), Vec3::ONE).kind;
+    let view = ShadowView::fit(kind, Bounds { centre: Vec3::new(0.0, 0.5, 0.0), radius: 3.0 }, 64).unwrap();
+    let mut whole = vec![0.0; 64 * 64];
+    clear_shadow_depth(&mut whole);
+    for o in [&ground, &cube] {
+        draw_shadow_caster(&view, &mut whole, &o.mesh(), &Mat4::IDENTITY).unwrap();
+    }
+    assert!(whole.iter().any(|&d| d < 1.0), "the casters are in the map");
+    for cuts in [&[0, 64][..], &[0, 1, 64], &[0, 17, 40, 63, 64]] {
+        let mut banded = vec![0.0; 64 * 64];
+        clear_shadow_depth(&mut banded);
+        for rows in cuts.windows(2) {
+            let band = &mut banded[rows[0] * 64..rows[1] * 64];
+            for o in [&ground, &cube] {
+                let rows = rows[0] as u32..rows[1] as u32;
+                draw_shadow_caster_band(&view, band, rows, &o.mesh(), &Mat4::IDENTITY).unwrap();
+            }
+        }
+        assert!(banded == whole, "bands {cuts:?}");
+    }
+    let mesh = cube.mesh();
+    let mut band = vec![1.0; 64 * 4];
+    let refused = draw_shadow_caster_band(&view, &mut band, 62..66, &mesh, &Mat4::IDENTITY);
+    assert_eq!(refused, Err(ShadowError::Rows { start: 62, end: 66, size: 64 }));
+    assert_eq!(refused.unwrap_err().to_string(), "rows 62..66 are not a band of a map 64 texels high");
+    let refused = draw_shadow_caster_band(&view, &mut band, 3..3, &mesh, &Mat4::IDENTITY);
+    assert_eq!(refused, Err(ShadowError::Rows { start: 3, end: 3, size: 64 }));
+    let refused = draw_shadow_caster_band(&view, &mut band, 0..3, &mesh, &Mat4::IDENTITY);
+    assert_eq!(refused, Err(ShadowError::Buffer { expected: 64 * 3, actual: 64 * 4 }));
 }

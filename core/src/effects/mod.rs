@@ -34,6 +34,9 @@ pub use lights::{LightKind, LightSource, LightUse, SceneLights};
 pub use material::{NormalMap, NormalSpace, SurfaceMaterial};
 pub use occlusion::{AmbientOcclusion, OcclusionError};
 pub use shader::SurfaceShader;
-pub use shadow::{Bounds, ShadowBias, ShadowError, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster};
+pub use shadow::{
+    Bounds, ShadowBias, ShadowError, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster,
+    draw_shadow_caster_band,
+};
 pub use variant::{NormalSource, SpecularSource, SurfaceError, SurfaceVariant};
 pub use varyings::{Absent, Slot, SurfaceVaryings};

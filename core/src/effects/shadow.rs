@@ -7,6 +7,8 @@
 //! itself because one texel spans a range of depths) without the large depth bias that detaches shadows from
 //! their casters (peter-panning). `core/tests/shadows.rs` holds both limits.
 
+use core::ops::Range;
+
 use super::LightKind;
 use crate::camera::{CameraError, look_at, orthographic, perspective};
 use crate::math::{Mat4, Vec3, Vec4, float};
@@ -26,9 +28,18 @@ pub enum ShadowError {
     Camera(CameraError),
     /// The map's side is 0 or above [`crate::target::MAX_DIMENSION`].
     Size(u32),
-    /// The depth buffer does not hold `size * size` values.
+    /// A band's rows are empty or leave the map.
+    Rows {
+        /// The band's first row.
+        start: u32,
+        /// The row after its last.
+        end: u32,
+        /// The map's side.
+        size: u32,
+    },
+    /// The depth buffer does not hold `size * size` values (`size * rows.len()` for a band).
     Buffer {
-        /// `size * size`.
+        /// `size * size`, or `size * rows.len()`.
         expected: usize,
         /// Values given.
         actual: usize,
@@ -44,6 +55,9 @@ impl core::fmt::Display for ShadowError {
             Self::Bounds => f.write_str("the shadow bounds are empty or not finite"),
             Self::Camera(e) => write!(f, "the light's camera: {e}"),
             Self::Size(s) => write!(f, "a shadow map of {s}x{s} texels is not supported"),
+            Self::Rows { start, end, size } => {
+                write!(f, "rows {start}..{end} are not a band of a map {size} texels high")
+            }
             Self::Buffer { expected, actual } => {
                 write!(f, "the shadow map needs {expected} depth values, {actual} given")
             }
@@ -195,10 +209,29 @@ pub fn draw_shadow_caster(
     mesh: &Mesh<'_>,
     model: &Mat4,
 ) -> Result<DrawStats, ShadowError> {
+    draw_shadow_caster_band(view, depth, 0..view.size, mesh, model)
+}
+
+/// [`draw_shadow_caster`] into rows `rows` of the map only: `depth` holds `size * rows.len()` values, row
+/// `rows.start` first. Bands drawn separately (on separate threads, say) make exactly the map drawn whole.
+///
+/// # Errors
+/// [`ShadowError::Rows`] when `rows` is empty or leaves the map; [`ShadowError::Buffer`] when `depth` does not
+/// hold `size * rows.len()` values.
+pub fn draw_shadow_caster_band(
+    view: &ShadowView,
+    depth: &mut [f32],
+    rows: Range<u32>,
+    mesh: &Mesh<'_>,
+    model: &Mat4,
+) -> Result<DrawStats, ShadowError> {
     let size = view.size;
-    let expected = size as usize * size as usize;
+    if rows.is_empty() || rows.end > size {
+        return Err(ShadowError::Rows { start: rows.start, end: rows.end, size });
+    }
+    let expected = size as usize * rows.len();
     let actual = depth.len();
-    let Ok(mut target) = Target::new(NoColor, depth, size, size) else {
+    let Ok(mut target) = Target::band(NoColor, depth, size, size, rows) else {
         return Err(ShadowError::Buffer { expected, actual });
     };
     let shader = CasterShader { clip_from_object: view.clip_from_world * *model };
@@ -262,7 +295,6 @@ impl<'a> ShadowMap<'a> {
             return 1.0;
         }
         let inv_w = 1.0 / clip.w;
-        let size = self.view.size as i32;
         let half = self.view.size as f32 * 0.5;
         // NDC to texels as the pipeline's viewport maps them: x right, y down, pixel centres at +0.5.
         let tx = float::floor_to_i32((clip.x * inv_w + 1.0) * half);

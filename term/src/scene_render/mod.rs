@@ -11,7 +11,8 @@
 //!                                       │                       │
 //!                                       ▼                       ▼  Display: `rasterm render --explain`
 //!   SceneRenderer::render(scene, plan, target)
-//!     1. shadow passes: clear_shadow_depth + draw_shadow_caster per object (maps kept and reused across frames)
+//!     1. shadow passes, one band of map rows per thread: clear_shadow_depth + draw_shadow_caster_band per object
+//!        (maps kept and reused across frames)
 //!     2. forward pass, one band of rows per thread: clear to the background, draw_surface per part
 //!        (+ wireframe lines when asked)
 //!     3. ambient occlusion, one band per thread: AmbientOcclusion::apply on the finished depth buffer

@@ -7,7 +7,7 @@ use std::time::{Duration, Instant};
 
 use rasterm_core::effects::{
     LightSource, SceneLights, ShadowBias, ShadowMap, ShadowView, SurfaceDraw, SurfaceVariant, clear_shadow_depth,
-    draw_shadow_caster, draw_surface,
+    draw_shadow_caster_band, draw_surface,
 };
 use rasterm_core::pipeline::{DrawState, DrawStats, draw_wireframe};
 use rasterm_core::target::{Rgb888, Target};
@@ -75,9 +75,9 @@ struct ShadowSlot {
 /// redraws no shadow map. A switched-off effect is absent from the plan, so nothing of it runs; a kept map costs
 /// only its memory until shadows are switched back on.
 ///
-/// The forward pass and the ambient occlusion step split the frame into one horizontal band per thread. Each
-/// band runs the whole draw list into its own rows (the core clips every triangle to the band), so the pixels are
-/// the same for any number of threads: only the vertex work is repeated per band.
+/// The shadow passes, the forward pass and the ambient occlusion step each split their buffer into one horizontal
+/// band per thread. Each band runs the whole draw list into its own rows (the core clips every triangle to the
+/// band), so maps and pixels are the same for any number of threads: only the vertex work is repeated per band.
 #[derive(Debug)]
 pub struct SceneRenderer {
     slots: Vec<ShadowSlot>,
@@ -153,9 +153,14 @@ impl SceneRenderer {
         let lights = SceneLights { ambient: plan.ambient, lights: &sources };
         let (color, depth) = target.buffers_mut();
         let (pixels, depth) = (&mut *color.0, &mut **depth);
-        let results = in_bands(pixels, depth, width, height, self.threads, |band| {
-            forward_band(scene, plan, &lights, band, width, height)
-        });
+        let bands = split_rows(pixels, width, height, self.threads).into_iter().zip(split_rows(
+            depth,
+            width,
+            height,
+            self.threads,
+        ));
+        let bands = bands.map(|((rows, pixels), (_, depth))| Band { rows, pixels, depth }).collect();
+        let results = on_threads(bands, |band| forward_band(scene, plan, &lights, band, width, height));
         for result in results {
             let result = result?;
             report.forward += result.stats;
@@ -170,11 +175,12 @@ impl SceneRenderer {
             let start = Instant::now();
             let projection = plan.camera.projection;
             let whole_depth: &[f32] = depth;
-            let results = in_bands(pixels, &mut [], width, height, self.threads, |band| {
-                let margin = occlusion.margin_rows(&projection, width, height);
-                let depth_rows = band.rows.start.saturating_sub(margin)..(band.rows.end + margin).min(height);
+            let margin = occlusion.margin_rows(&projection, width, height);
+            let results = on_threads(split_rows(pixels, width, height, self.threads), |(rows, pixels)| {
+                // The band's rows of depth and `margin` more on each side: exactly the whole frame's result.
+                let depth_rows = rows.start.saturating_sub(margin)..(rows.end + margin).min(height);
                 let span = depth_rows.start as usize * width as usize..depth_rows.end as usize * width as usize;
-                occlusion.apply(&projection, &whole_depth[span], depth_rows, band.pixels, band.rows, width, height)
+                occlusion.apply(&projection, &whole_depth[span], depth_rows, pixels, rows, width, height)
             });
             for result in results {
                 result.map_err(SceneRenderError::Occlusion)?;
@@ -228,14 +234,23 @@ impl SceneRenderer {
             slot.key = None;
             let side = pass.map_size as usize;
             slot.depth.resize(side * side, 1.0);
-            clear_shadow_depth(&mut slot.depth);
+            let bands = split_rows(&mut slot.depth, pass.map_size, pass.map_size, self.threads);
+            let results = on_threads(bands, |(rows, depth)| {
+                clear_shadow_depth(depth);
+                let mut stats = DrawStats::default();
+                for object in &scene.data().objects {
+                    let Some(mesh) = object.model.mesh() else { continue };
+                    stats += draw_shadow_caster_band(&pass.view, depth, rows.clone(), &mesh, &object.transform)?;
+                }
+                Ok(stats)
+            });
             let mut stats = DrawStats::default();
-            for object in &scene.data().objects {
-                let Some(mesh) = object.model.mesh() else { continue };
-                stats +=
-                    draw_shadow_caster(&pass.view, &mut slot.depth, &mesh, &object.transform).map_err(|error| {
-                        SceneRenderError::Shadow { light: plan.light_name(light), bounds: plan.bounds, error }
-                    })?;
+            for result in results {
+                stats += result.map_err(|error| SceneRenderError::Shadow {
+                    light: plan.light_name(light),
+                    bounds: plan.bounds,
+                    error,
+                })?;
             }
             slot.key = Some(key);
             report.shadow_passes.push(ShadowPassReport { light: light.number, reused: false, stats });
@@ -244,41 +259,31 @@ impl SceneRenderer {
     }
 }
 
-/// Splits a `width x height` frame into at most `bands` bands of nearly equal rows (one per row at most) and runs
-/// `work` on each, the first on this thread and the others on threads of their own, returning the results in
-/// band order. `depth` may be empty (a step that only changes colours); else it holds the frame's depths too.
-fn in_bands<T: Send>(
-    mut pixels: &mut [u32],
-    mut depth: &mut [f32],
-    width: u32,
-    height: u32,
-    bands: usize,
-    work: impl Fn(Band<'_>) -> T + Sync,
-) -> Vec<T> {
-    let count = bands.clamp(1, height as usize) as u32;
-    let mut jobs = Vec::with_capacity(count as usize);
+/// Splits `buffer`, the `width x height` values of a frame, into at most `count` bands of nearly equal rows (at
+/// least one row each), top first, each with its rows.
+fn split_rows<T>(mut buffer: &mut [T], width: u32, height: u32, count: usize) -> Vec<(Range<u32>, &mut [T])> {
+    let count = count.clamp(1, height as usize) as u32;
+    let mut bands = Vec::with_capacity(count as usize);
     for i in 0..count {
         let rows = height * i / count..height * (i + 1) / count;
-        let n = rows.len() * width as usize;
-        let (p, rest) = std::mem::take(&mut pixels).split_at_mut(n);
-        pixels = rest;
-        let d = if depth.is_empty() {
-            &mut []
-        } else {
-            let (d, rest) = std::mem::take(&mut depth).split_at_mut(n);
-            depth = rest;
-            d
-        };
-        jobs.push(Band { rows, pixels: p, depth: d });
+        let (band, rest) = std::mem::take(&mut buffer).split_at_mut(rows.len() * width as usize);
+        buffer = rest;
+        bands.push((rows, band));
     }
+    bands
+}
+
+/// Runs `work` on every job, the first on this thread and the others on threads of their own, and returns the
+/// results in the jobs' order.
+fn on_threads<J: Send, T: Send>(jobs: Vec<J>, work: impl Fn(J) -> T + Sync) -> Vec<T> {
     let work = &work;
     thread::scope(|s| {
         let mut jobs = jobs.into_iter();
         let first = jobs.next();
-        let others: Vec<_> = jobs.map(|band| s.spawn(move || work(band))).collect();
-        let mut results = Vec::with_capacity(count as usize);
+        let others: Vec<_> = jobs.map(|job| s.spawn(move || work(job))).collect();
+        let mut results = Vec::with_capacity(others.len() + 1);
         results.extend(first.map(work));
-        // A band's work does not panic (errors are values); if one did, resume it here rather than lose it.
+        // The work returns errors as values and does not panic; if it did, the panic goes on here.
         results.extend(others.into_iter().map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p))));
         results
     })
