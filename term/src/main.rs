@@ -388,17 +388,21 @@ fn render_scene(args: &RenderArgs, path: &Path, matches: &ArgMatches) -> Result<
     if args.stats {
         let r = &image.report;
         let ms = |d: std::time::Duration| d.as_secs_f64() * 1e3;
+        let bands = match r.bands {
+            1 => String::new(),
+            n => format!(" (in {n} bands of rows, one per thread: triangles count once per band)"),
+        };
         for (pass, done) in image.plan.shadow_passes.iter().zip(&r.shadow_passes) {
             let s = &done.stats;
             println!(
-                "shadow map of light {}: {}x{} texels, {} triangles in, {} drawn, {} fragments",
+                "shadow map of light {}: {}x{} texels, {} triangles in, {} drawn, {} fragments{bands}",
                 done.light, pass.map_size, pass.map_size, s.triangles_in, s.rasterized, s.fragments
             );
         }
         let s = &r.forward;
         println!(
             "forward: {} draws; triangles {} in, {} culled, {} clipped, {} drawn ({} outside, {} degenerate, {} \
-             invalid); {} fragments",
+             invalid); {} fragments{bands}",
             r.variants.len(),
             s.triangles_in,
             s.culled,

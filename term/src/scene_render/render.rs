@@ -25,7 +25,7 @@ pub struct ShadowPassReport {
     /// The map of an earlier frame was still right (same scene, light and view) and was used again: nothing was
     /// drawn.
     pub reused: bool,
-    /// What drawing the casters did (zero when reused).
+    /// What drawing the casters did (zero when reused), summed over the map's bands.
     pub stats: DrawStats,
 }
 
@@ -34,8 +34,11 @@ pub struct ShadowPassReport {
 pub struct FrameReport {
     /// The shadow passes, in the plan's order.
     pub shadow_passes: Vec<ShadowPassReport>,
-    /// The forward pass's counts, wireframe lines' fragments included.
+    /// The forward pass's counts, wireframe lines' fragments included, summed over the bands: every band runs
+    /// every triangle, so a triangle counts once per band (as "outside" in the bands it misses).
     pub forward: DrawStats,
+    /// How many bands of rows the frame and each shadow map were split into (one per thread).
+    pub bands: usize,
     /// The variant each draw ran, in the plan's order (the plan's own, resolved again with the real maps).
     pub variants: Vec<SurfaceVariant>,
     /// Time in the shadow passes.
@@ -143,7 +146,7 @@ impl SceneRenderer {
                 target.rows()
             )));
         }
-        let mut report = FrameReport::default();
+        let mut report = FrameReport { bands: self.threads.clamp(1, height as usize), ..FrameReport::default() };
         let start = Instant::now();
         self.shadow_passes(scene, plan, &mut report)?;
         report.shadow_time = start.elapsed();
