@@ -1,4 +1,7 @@
 //! Integration tests of the rasterm workspace live in `tests/tests/`: `snapshots.rs` compares rendered frames of
-//! the built-in model with the golden PNG files in `tests/snapshots/` (re-bless them with
-//! `UPDATE_SNAPSHOTS=1 cargo test -p rasterm-tests`); `stability.rs` holds the hard cases that need the program
-//! crate; `firmware_checksum.rs` computes the checksums the firmware must match under QEMU.
+//! the built-in model with the golden PNG files in `tests/snapshots/`; `effect_snapshots.rs` does the same for the
+//! scene files' effects (`spot_lamp` with every effect, none, and each one left out; `spot_sun`'s shadow), with
+//! goldens in `tests/snapshots/effects/`, and checks that leaving out any effect changes the frame. Both share the
+//! harness in `tests/tests/snapshot/`; re-bless their goldens with `UPDATE_SNAPSHOTS=1 cargo test -p rasterm-tests`.
+//! `stability.rs` holds the hard cases that need the program crate; `firmware_checksum.rs` computes the checksums
+//! the firmware must match under QEMU.

@@ -9,29 +9,16 @@
 
 mod snapshot;
 
-use std::path::Path;
 use std::sync::LazyLock;
 
 use rasterm::builtin::builtin_model;
 use rasterm::scene::{Appearance, Lens, OrbitCamera, Scene, ShadingMode};
 use rasterm_core::target::{Rgb888, Target};
 
-use snapshot::{Comparison, Failure, Image, Mode, Passed, Snapshot, compare};
-
-/// Largest difference allowed in any channel of any pixel: none. Rendering is designed to be bit-exact on every
-/// machine: the core does its non-trivial float maths through `libm`, never the platform's maths library, and Rust
-/// never fuses or reorders float operations on its own, so the same scene gives the same pixels on every target
-/// and at every optimisation level (debug and release builds give identical images). Any change of any pixel is
-/// therefore a change of the renderer, to be looked at and blessed.
-const TOLERANCE: u8 = 0;
+use snapshot::{Comparison, Failure, Image, Mode, Passed, Snapshot, TOLERANCE, compare, golden_dir};
 
 /// Rows of the band buffer used for the banded rendering.
 const BAND_ROWS: u32 = 16;
-
-/// Where the goldens live.
-fn snapshot_dir() -> &'static Path {
-    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots"))
-}
 
 /// The built-in model, loaded once for all tests.
 static SPOT: LazyLock<Scene> = LazyLock::new(|| Scene::new(builtin_model().expect("the built-in model loads")));
@@ -92,7 +79,7 @@ impl Shot {
 
     /// Renders whole and banded and checks both against the golden `NAME.png`.
     fn check(&self, name: &str) {
-        let dir = snapshot_dir();
+        let dir = golden_dir();
         let (full, bands) = (self.render_full(), self.render_bands());
         let mut failures = Vec::new();
         match (Snapshot { dir, name, variant: "" }).check(&full, TOLERANCE, Mode::from_env()) {

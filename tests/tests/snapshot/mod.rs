@@ -1,6 +1,7 @@
 //! The golden-image harness: compares rendered frames with PNG files, writes what failed, and re-blesses.
 //!
-//! A snapshot named `NAME` is the golden `NAME.png` in a directory (the test files use `tests/snapshots/`). When a
+//! A snapshot named `NAME` is the golden `NAME.png` in a directory (the test files use [`golden_dir`],
+//! `tests/snapshots/`, or a folder in it: `effects/` for `effect_snapshots.rs`). When a
 //! frame does not match, the harness writes `NAME.actual.png` (the frame) and `NAME.diff.png` (the golden dimmed
 //! to grey with the differing pixels in red) beside the golden and reports where they are. With
 //! `UPDATE_SNAPSHOTS=1` in the environment ([`Mode::from_env`]), goldens are (re)written instead.
@@ -13,6 +14,18 @@ use rasterm::png_file::write_png;
 
 /// The environment variable that turns on blessing.
 pub const UPDATE_VARIABLE: &str = "UPDATE_SNAPSHOTS";
+
+/// Largest difference allowed in any channel of any pixel: none. Rendering is designed to be bit-exact on every
+/// machine: the core does its non-trivial float maths through `libm`, never the platform's maths library, and Rust
+/// never fuses or reorders float operations on its own, so the same scene gives the same pixels on every target
+/// and at every optimisation level (debug and release builds give identical images). Any change of any pixel is
+/// therefore a change of the renderer, to be looked at and blessed.
+pub const TOLERANCE: u8 = 0;
+
+/// Where the goldens live: `tests/snapshots/`.
+pub fn golden_dir() -> &'static Path {
+    Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots"))
+}
 
 /// An RGB frame: `0x00RRGGBB` pixels, row-major, top row first (what `rasterm_core::target::Rgb888` holds).
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -41,11 +54,15 @@ impl Image {
         Ok(Self { width, height, pixels })
     }
 
-    /// Writes the image as an 8-bit RGB PNG file.
+    /// Writes the image as an 8-bit RGB PNG file, creating its directory if needed (a new folder of goldens is
+    /// blessed like a new golden).
     ///
     /// # Errors
     /// A message naming the file when it cannot be written.
     pub fn write_png(&self, path: &Path) -> Result<(), String> {
+        if let Some(dir) = path.parent() {
+            fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+        }
         write_png(path, self.width, self.height, &self.pixels).map_err(|e| e.to_string())
     }
 }
