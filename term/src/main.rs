@@ -12,6 +12,7 @@ use clap::{ArgMatches, Args, CommandFactory, FromArgMatches, Parser, Subcommand}
 use rasterm::escaped::{Escaped, path_text};
 use rasterm::headless::{ModelSource, RenderRequest, TextureChoice, parse_size, render_to_png};
 use rasterm::png_file::write_png;
+use rasterm::report::effects;
 use rasterm::report::terminal::{DEFAULT_FRAMES, TerminalReport};
 use rasterm::scene::{Appearance, Lens, OrbitCamera, ShadingMode, parse_hex_color};
 use rasterm::scene_file::SceneData;
@@ -47,6 +48,24 @@ enum ReportCommand {
     /// Time and error of every quality knob against a high-precision reference; writes accuracy.md and
     /// accuracy.png.
     Accuracy(AccuracyReportArgs),
+    /// Time per frame of a scene file with no effect, each effect alone and every effect, at 800x800 and 200x120.
+    Effects(EffectsReportArgs),
+}
+
+/// Options of `rasterm report effects`.
+#[derive(Args, Debug)]
+struct EffectsReportArgs {
+    /// The scene file to measure (default: assets/scenes/spot_lamp.toml, which uses every effect).
+    scene: Option<PathBuf>,
+    /// Frames measured per configuration and size, after one warm-up frame each.
+    #[arg(long, default_value_t = effects::DEFAULT_FRAMES as u32, value_parser = clap::value_parser!(u32).range(1..=100_000))]
+    frames: u32,
+    /// Threads per frame, each drawing a band of rows (default: every logical CPU).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    threads: Option<u32>,
+    /// A few frames only (for CI): the same as `--frames 5`.
+    #[arg(long, conflicts_with = "frames")]
+    quick: bool,
 }
 
 /// Options of `rasterm report accuracy`.
@@ -304,6 +323,7 @@ fn main() -> ExitCode {
         }
         Some(Command::Report(ReportCommand::Terminal(args))) => terminal_report(&args).map(|()| ExitCode::SUCCESS),
         Some(Command::Report(ReportCommand::Accuracy(args))) => accuracy_report(&args).map(|()| ExitCode::SUCCESS),
+        Some(Command::Report(ReportCommand::Effects(args))) => effects_report(&args).map(|()| ExitCode::SUCCESS),
         None => view(&cli.viewer, &matches),
     };
     result.unwrap_or_else(|message| {
@@ -448,6 +468,21 @@ fn accuracy_report(args: &AccuracyReportArgs) -> Result<(), String> {
 fn terminal_report(args: &TerminalReportArgs) -> Result<(), String> {
     let report = if args.quick { TerminalReport::quick() } else { TerminalReport::new(args.frames as usize) };
     rasterm::report::terminal::run(&report, &mut std::io::stdout().lock()).map(|_| ()).map_err(|e| e.to_string())
+}
+
+fn effects_report(args: &EffectsReportArgs) -> Result<(), String> {
+    let threads = args.threads.map(|n| n as usize);
+    let report = if args.quick {
+        effects::EffectsReport::quick(args.scene.clone(), threads)
+    } else {
+        effects::EffectsReport::new(args.scene.clone(), args.frames as usize, threads)
+    };
+    let scene = load_scene_file(&report.scene_path)?;
+    let in_file = |e: effects::EffectsError| match e {
+        effects::EffectsError::Render(e) => format!("{}: {e}", path_text(&report.scene_path)),
+        e => e.to_string(),
+    };
+    effects::run(&report, &scene, &mut std::io::stdout().lock()).map(|_| ()).map_err(in_file)
 }
 
 fn view(args: &ViewerArgs, matches: &ArgMatches) -> Result<ExitCode, String> {

@@ -3,9 +3,11 @@
 //! | report | measures |
 //! |---|---|
 //! | [`accuracy`] | time and error of every quality knob against a high-precision reference |
+//! | [`effects`] | time per frame of a scene file with no effect, each effect alone and every effect |
 //! | [`terminal`] | bytes and times of terminal frames for a turntable of the built-in model |
 
 pub mod accuracy;
+pub mod effects;
 pub mod terminal;
 
 use std::time::Duration;
