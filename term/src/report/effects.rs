@@ -28,7 +28,8 @@ use rasterm_core::target::{Rgb888, Target};
 use super::median;
 use crate::escaped::path_text;
 use crate::scene_render::{
-    EffectToggles, FrameReport, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError, SceneRenderer,
+    BANDS_PER_THREAD, EffectToggles, FrameReport, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError,
+    SceneRenderer,
 };
 
 /// The scene measured when none is given, relative to the current directory: it uses every effect.
@@ -341,7 +342,14 @@ pub fn header(report: &EffectsReport, plans: &[ScenePlan], threads: usize, machi
         String::new(),
         format!("- command: `{}` ({build})", report.command_line()),
         format!("- machine: {machine}"),
-        format!("- threads: {threads} (every pass drawn in {} of rows side by side)", plural(threads, "band")),
+        if threads == 1 {
+            "- threads: 1 (every pass drawn whole)".to_owned()
+        } else {
+            format!(
+                "- threads: {threads} (every pass drawn in {} bands of rows, taken in turn by the threads)",
+                threads * BANDS_PER_THREAD
+            )
+        },
         format!("- scene, every effect on: the file's camera; {scene}{}", maps.join(", ")),
         format!(
             "- frames: at {}, each configuration renders 1 warm-up frame, then {frames} measured frames, the \

@@ -11,11 +11,11 @@
 //!                                       │                       │
 //!                                       ▼                       ▼  Display: `rasterm render --explain`
 //!   SceneRenderer::render(scene, plan, target)
-//!     1. shadow passes, one band of map rows per thread: clear_shadow_depth + draw_shadow_caster_band per object
+//!     1. shadow passes, in bands of map rows: clear_shadow_depth + draw_shadow_caster_band per object
 //!        (maps kept and reused across frames)
-//!     2. forward pass, one band of rows per thread: clear to the background, draw_surface per part
+//!     2. forward pass, in bands of rows: clear to the background, draw_surface per part
 //!        (+ wireframe lines when asked)
-//!     3. ambient occlusion, one band per thread: AmbientOcclusion::apply on the finished depth buffer
+//!     3. ambient occlusion, in bands of rows: AmbientOcclusion::apply on the finished depth buffer
 //! ```
 //!
 //! - [`PreparedScene`]: what every frame shares (bounds, tangents, object names).
@@ -86,5 +86,5 @@ pub use plan::{
     AMBIENT_OCCLUSION, MAX_SHADOW_MAP, MIN_SHADOW_MAP, PCF_RADIUS, PlannedDraw, ScenePlan, ShadowPass, shadow_map_size,
 };
 pub use prepared::PreparedScene;
-pub use render::{FrameReport, SceneRenderer, ShadowPassReport};
+pub use render::{BANDS_PER_THREAD, FrameReport, SceneRenderer, ShadowPassReport};
 pub use toggles::{EffectToggles, PlanOptions, SceneEffect};

@@ -2,6 +2,7 @@
 //! bands drawn side by side on threads, then the ambient occlusion step, also in bands.
 
 use std::ops::Range;
+use std::sync::Mutex;
 use std::thread;
 use std::time::{Duration, Instant};
 
@@ -37,7 +38,8 @@ pub struct FrameReport {
     /// The forward pass's counts, wireframe lines' fragments included, summed over the bands: every band runs
     /// every triangle, so a triangle counts once per band (as "outside" in the bands it misses).
     pub forward: DrawStats,
-    /// How many bands of rows the frame and each shadow map were split into (one per thread).
+    /// How many bands of rows the frame and each shadow map were split into ([`BANDS_PER_THREAD`] per thread
+    /// when there is more than one).
     pub bands: usize,
     /// The variant each draw ran, in the plan's order (the plan's own, resolved again with the real maps).
     pub variants: Vec<SurfaceVariant>,
@@ -71,6 +73,11 @@ struct ShadowSlot {
     depth: Vec<f32>,
 }
 
+/// Bands of rows per thread when drawing on several: threads take the next band as they finish one, so a frame
+/// whose content sits in a few rows (a floor at the bottom, sky above) still keeps every thread busy. Each band
+/// repeats the vertex work of every draw.
+pub const BANDS_PER_THREAD: usize = 4;
+
 /// Draws [`ScenePlan`]s, keeping the shadow maps' buffers between frames.
 ///
 /// A shadow map depends on the scene, the light and its view (the bounds and the map size), never on the camera,
@@ -78,8 +85,8 @@ struct ShadowSlot {
 /// redraws no shadow map. A switched-off effect is absent from the plan, so nothing of it runs; a kept map costs
 /// only its memory until shadows are switched back on.
 ///
-/// The shadow passes, the forward pass and the ambient occlusion step each split their buffer into one horizontal
-/// band per thread. Each band runs the whole draw list into its own rows (the core clips every triangle to the
+/// The shadow passes, the forward pass and the ambient occlusion step each split their buffer into horizontal
+/// bands ([`BANDS_PER_THREAD`] per thread), which the threads take in turn. Each band runs the whole draw list into its own rows (the core clips every triangle to the
 /// band), so maps and pixels are the same for any number of threads: only the vertex work is repeated per band.
 #[derive(Debug)]
 pub struct SceneRenderer {
@@ -118,9 +125,14 @@ impl SceneRenderer {
         Self { slots: Vec::new(), threads: threads.max(1) }
     }
 
-    /// The number of bands a frame is split into (fewer for a frame with fewer rows).
+    /// The number of threads frames are drawn on.
     pub fn threads(&self) -> usize {
         self.threads
+    }
+
+    /// The number of bands of rows a frame is split into (fewer for a frame with fewer rows).
+    fn bands(&self) -> usize {
+        if self.threads == 1 { 1 } else { self.threads * BANDS_PER_THREAD }
     }
 
     /// Runs `plan` (made for `scene`) into `target`, which must be the plan's size: the shadow passes (each skipped
@@ -146,7 +158,8 @@ impl SceneRenderer {
                 target.rows()
             )));
         }
-        let mut report = FrameReport { bands: self.threads.clamp(1, height as usize), ..FrameReport::default() };
+        let band_count = self.bands();
+        let mut report = FrameReport { bands: band_count.clamp(1, height as usize), ..FrameReport::default() };
         let start = Instant::now();
         self.shadow_passes(scene, plan, &mut report)?;
         report.shadow_time = start.elapsed();
@@ -156,14 +169,10 @@ impl SceneRenderer {
         let lights = SceneLights { ambient: plan.ambient, lights: &sources };
         let (color, depth) = target.buffers_mut();
         let (pixels, depth) = (&mut *color.0, &mut **depth);
-        let bands = split_rows(pixels, width, height, self.threads).into_iter().zip(split_rows(
-            depth,
-            width,
-            height,
-            self.threads,
-        ));
+        let bands = split_rows(pixels, width, height, band_count);
+        let bands = bands.into_iter().zip(split_rows(depth, width, height, band_count));
         let bands = bands.map(|((rows, pixels), (_, depth))| Band { rows, pixels, depth }).collect();
-        let results = on_threads(bands, |band| forward_band(scene, plan, &lights, band, width, height));
+        let results = on_threads(bands, self.threads, |band| forward_band(scene, plan, &lights, band, width, height));
         for result in results {
             let result = result?;
             report.forward += result.stats;
@@ -179,7 +188,8 @@ impl SceneRenderer {
             let projection = plan.camera.projection;
             let whole_depth: &[f32] = depth;
             let margin = occlusion.margin_rows(&projection, width, height);
-            let results = on_threads(split_rows(pixels, width, height, self.threads), |(rows, pixels)| {
+            let bands = split_rows(pixels, width, height, band_count);
+            let results = on_threads(bands, self.threads, |(rows, pixels)| {
                 // The band's rows of depth and `margin` more on each side: exactly the whole frame's result.
                 let depth_rows = rows.start.saturating_sub(margin)..(rows.end + margin).min(height);
                 let span = depth_rows.start as usize * width as usize..depth_rows.end as usize * width as usize;
@@ -223,6 +233,7 @@ impl SceneRenderer {
         if self.slots.len() < plan.shadow_passes.len() {
             self.slots.resize_with(plan.shadow_passes.len(), ShadowSlot::default);
         }
+        let (band_count, threads) = (self.bands(), self.threads);
         for (pass, slot) in plan.shadow_passes.iter().zip(&mut self.slots) {
             let light = &plan.lights[pass.light];
             let key = ShadowKey { scene: scene.id(), light: light.number, view: pass.view };
@@ -237,8 +248,8 @@ impl SceneRenderer {
             slot.key = None;
             let side = pass.map_size as usize;
             slot.depth.resize(side * side, 1.0);
-            let bands = split_rows(&mut slot.depth, pass.map_size, pass.map_size, self.threads);
-            let results = on_threads(bands, |(rows, depth)| {
+            let bands = split_rows(&mut slot.depth, pass.map_size, pass.map_size, band_count);
+            let results = on_threads(bands, threads, |(rows, depth)| {
                 clear_shadow_depth(depth);
                 let mut stats = DrawStats::default();
                 for object in &scene.data().objects {
@@ -276,20 +287,30 @@ fn split_rows<T>(mut buffer: &mut [T], width: u32, height: u32, count: usize) ->
     bands
 }
 
-/// Runs `work` on every job, the first on this thread and the others on threads of their own, and returns the
-/// results in the jobs' order.
-fn on_threads<J: Send, T: Send>(jobs: Vec<J>, work: impl Fn(J) -> T + Sync) -> Vec<T> {
-    let work = &work;
-    thread::scope(|s| {
-        let mut jobs = jobs.into_iter();
-        let first = jobs.next();
-        let others: Vec<_> = jobs.map(|job| s.spawn(move || work(job))).collect();
-        let mut results = Vec::with_capacity(others.len() + 1);
-        results.extend(first.map(work));
-        // The work returns errors as values and does not panic; if it did, the panic goes on here.
-        results.extend(others.into_iter().map(|h| h.join().unwrap_or_else(|p| std::panic::resume_unwind(p))));
+/// Runs `work` on every job on up to `threads` threads (this one and `threads - 1` more), each taking the next
+/// job not yet taken until none is left, and returns the results in the jobs' order.
+fn on_threads<J: Send, T: Send>(jobs: Vec<J>, threads: usize, work: impl Fn(J) -> T + Sync) -> Vec<T> {
+    let count = jobs.len();
+    let queue = Mutex::new(jobs.into_iter().enumerate());
+    let worker = || {
+        let mut done = Vec::new();
+        // The lock is held only to take a job; a poisoned lock means a worker panicked, which is resumed below.
+        while let Some((i, job)) = queue.lock().ok().and_then(|mut q| q.next()) {
+            done.push((i, work(job)));
+        }
+        done
+    };
+    let mut results: Vec<(usize, T)> = thread::scope(|s| {
+        let others: Vec<_> = (1..threads.min(count)).map(|_| s.spawn(worker)).collect();
+        let mut results = worker();
+        for other in others {
+            // The work returns errors as values and does not panic; if it did, the panic goes on here.
+            results.extend(other.join().unwrap_or_else(|p| std::panic::resume_unwind(p)));
+        }
         results
-    })
+    });
+    results.sort_unstable_by_key(|(i, _)| *i);
+    results.into_iter().map(|(_, result)| result).collect()
 }
 
 /// The forward pass over one band: clears it to the background and draws every planned part into it.
