@@ -28,8 +28,8 @@ use rasterm_core::target::{Rgb888, Target};
 use super::median;
 use crate::escaped::path_text;
 use crate::scene_render::{
-    BANDS_PER_THREAD, EffectToggles, FrameReport, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError,
-    SceneRenderer,
+    BAND_PIXELS, BANDS_PER_THREAD, EffectToggles, FrameReport, PlanOptions, PreparedScene, SceneEffect, ScenePlan,
+    SceneRenderError, SceneRenderer,
 };
 
 /// The scene measured when none is given, relative to the current directory: it uses every effect.
@@ -346,7 +346,9 @@ pub fn header(report: &EffectsReport, plans: &[ScenePlan], threads: usize, machi
             "- threads: 1 (every pass drawn whole)".to_owned()
         } else {
             format!(
-                "- threads: {threads} (every pass drawn in {} bands of rows, taken in turn by the threads)",
+                "- threads: {threads} (shadow maps drawn in {threads} bands of rows; frames in one band per {} \
+                 pixels, {threads} to {} bands, taken in turn by the threads)",
+                BAND_PIXELS,
                 threads * BANDS_PER_THREAD
             )
         },

@@ -86,5 +86,5 @@ pub use plan::{
     AMBIENT_OCCLUSION, MAX_SHADOW_MAP, MIN_SHADOW_MAP, PCF_RADIUS, PlannedDraw, ScenePlan, ShadowPass, shadow_map_size,
 };
 pub use prepared::PreparedScene;
-pub use render::{BANDS_PER_THREAD, FrameReport, SceneRenderer, ShadowPassReport};
+pub use render::{BAND_PIXELS, BANDS_PER_THREAD, FrameReport, SceneRenderer, ShadowPassReport};
 pub use toggles::{EffectToggles, PlanOptions, SceneEffect};

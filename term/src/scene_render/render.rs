@@ -38,8 +38,7 @@ pub struct FrameReport {
     /// The forward pass's counts, wireframe lines' fragments included, summed over the bands: every band runs
     /// every triangle, so a triangle counts once per band (as "outside" in the bands it misses).
     pub forward: DrawStats,
-    /// How many bands of rows the frame and each shadow map were split into ([`BANDS_PER_THREAD`] per thread
-    /// when there is more than one).
+    /// How many bands of rows the frame was split into (see [`SceneRenderer`]).
     pub bands: usize,
     /// The variant each draw ran, in the plan's order (the plan's own, resolved again with the real maps).
     pub variants: Vec<SurfaceVariant>,
@@ -73,10 +72,13 @@ struct ShadowSlot {
     depth: Vec<f32>,
 }
 
-/// Bands of rows per thread when drawing on several: threads take the next band as they finish one, so a frame
-/// whose content sits in a few rows (a floor at the bottom, sky above) still keeps every thread busy. Each band
-/// repeats the vertex work of every draw.
+/// At most this many bands of frame rows per thread when drawing on several: threads take the next band as they
+/// finish one, so a frame whose content sits in a few rows (a floor at the bottom, sky above) still keeps every
+/// thread busy.
 pub const BANDS_PER_THREAD: usize = 4;
+/// About this many pixels per band of a frame at least: each band repeats the vertex work of every draw, which a
+/// small frame would otherwise spend more time on than on its pixels.
+pub const BAND_PIXELS: usize = 65_536;
 
 /// Draws [`ScenePlan`]s, keeping the shadow maps' buffers between frames.
 ///
@@ -85,9 +87,11 @@ pub const BANDS_PER_THREAD: usize = 4;
 /// redraws no shadow map. A switched-off effect is absent from the plan, so nothing of it runs; a kept map costs
 /// only its memory until shadows are switched back on.
 ///
-/// The shadow passes, the forward pass and the ambient occlusion step each split their buffer into horizontal
-/// bands ([`BANDS_PER_THREAD`] per thread), which the threads take in turn. Each band runs the whole draw list into its own rows (the core clips every triangle to the
-/// band), so maps and pixels are the same for any number of threads: only the vertex work is repeated per band.
+/// The shadow passes split their map into one band of rows per thread; the forward pass and the ambient
+/// occlusion step split the frame into one band per [`BAND_PIXELS`] pixels, at least one and at most
+/// [`BANDS_PER_THREAD`] per thread, which the threads take in turn. Each band runs the whole draw list into its own
+/// rows (the core clips every triangle to the band), so maps and pixels are the same for any number of threads:
+/// only the vertex work is repeated per band.
 #[derive(Debug)]
 pub struct SceneRenderer {
     slots: Vec<ShadowSlot>,
@@ -131,8 +135,8 @@ impl SceneRenderer {
     }
 
     /// The number of bands of rows a frame is split into (fewer for a frame with fewer rows).
-    fn bands(&self) -> usize {
-        if self.threads == 1 { 1 } else { self.threads * BANDS_PER_THREAD }
+    fn bands(&self, pixels: usize) -> usize {
+        if self.threads == 1 { 1 } else { (pixels / BAND_PIXELS).clamp(self.threads, self.threads * BANDS_PER_THREAD) }
     }
 
     /// Runs `plan` (made for `scene`) into `target`, which must be the plan's size: the shadow passes (each skipped
@@ -158,7 +162,7 @@ impl SceneRenderer {
                 target.rows()
             )));
         }
-        let band_count = self.bands();
+        let band_count = self.bands(width as usize * height as usize);
         let mut report = FrameReport { bands: band_count.clamp(1, height as usize), ..FrameReport::default() };
         let start = Instant::now();
         self.shadow_passes(scene, plan, &mut report)?;
@@ -233,7 +237,7 @@ impl SceneRenderer {
         if self.slots.len() < plan.shadow_passes.len() {
             self.slots.resize_with(plan.shadow_passes.len(), ShadowSlot::default);
         }
-        let (band_count, threads) = (self.bands(), self.threads);
+        let threads = self.threads;
         for (pass, slot) in plan.shadow_passes.iter().zip(&mut self.slots) {
             let light = &plan.lights[pass.light];
             let key = ShadowKey { scene: scene.id(), light: light.number, view: pass.view };
@@ -248,7 +252,8 @@ impl SceneRenderer {
             slot.key = None;
             let side = pass.map_size as usize;
             slot.depth.resize(side * side, 1.0);
-            let bands = split_rows(&mut slot.depth, pass.map_size, pass.map_size, band_count);
+            // One band per thread: casters are few fragments for their vertex work, which every band repeats.
+            let bands = split_rows(&mut slot.depth, pass.map_size, pass.map_size, threads);
             let results = on_threads(bands, threads, |(rows, depth)| {
                 clear_shadow_depth(depth);
                 let mut stats = DrawStats::default();
