@@ -207,6 +207,11 @@ fn any_number_of_threads_draws_the_same_pixels() {
         assert!(one == render_on_threads(&scene, (96, 71), &options, threads), "{threads} threads");
     }
     assert_eq!(SceneRenderer::with_threads(0).threads(), 1);
+    // A frame large enough for more bands than threads: 512x400 is 3 bands of at least 65536 pixels.
+    let options = without(SceneEffect::AmbientOcclusion);
+    let one = render_on_threads(&scene, (512, 400), &options, 1);
+    assert!(one == render_on_threads(&scene, (512, 400), &options, 2), "3 bands on 2 threads");
+    assert!(one == render_on_threads(&scene, (512, 400), &options, 3), "3 bands on 3 threads");
 }
 
 #[test]
