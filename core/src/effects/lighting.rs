@@ -1,92 +1,108 @@
 //! Light over a batch: ambient, Lambert diffuse and Blinn-Phong highlights from each light, times the share of
-//! it that its shadow map lets through. One loop per kind of light, with or without shadows and highlights,
-//! chosen per light and batch.
+//! it that its shadow map lets through.
+//!
+//! Each light is a few passes over the batch's columns, chosen per light and batch: the direction to the light
+//! (constant, or one per fragment for a point light), the share of it that arrives (shadow lookups only for a light
+//! with a shadow map), the diffuse term, and the highlight only when the material has one. The passes are
+//! lane-wise loops ([`super::columns`]), except the shadow lookups, which read the map fragment by fragment.
 
+use super::columns::{self, Column, Column3};
 use super::scratch::Scratch;
-use super::{LightKind, SceneLights, ShadowMap};
+use super::{LightKind, SceneLights};
 use crate::math::{Vec3, float};
-
-/// How much of a light reaches a point.
-trait Occlusion {
-    fn light_reaching(&self, p: Vec3, n: Vec3, n_dot_l: f32) -> f32;
-}
-
-/// No shadow map: all of it (a multiplication by 1, which the compiler removes).
-struct Unshadowed;
-
-impl Occlusion for Unshadowed {
-    #[inline(always)]
-    fn light_reaching(&self, _: Vec3, _: Vec3, _: f32) -> f32 {
-        1.0
-    }
-}
-
-impl Occlusion for ShadowMap<'_> {
-    #[inline(always)]
-    fn light_reaching(&self, p: Vec3, n: Vec3, n_dot_l: f32) -> f32 {
-        ShadowMap::light_reaching(self, p, n, n_dot_l)
-    }
-}
+use crate::pipeline::BATCH_SIZE;
 
 /// Fills `s.diffuse` (and `s.specular` when `specular`) with the light arriving at each fragment.
+///
+/// Per light: `color * max(0, n . l) * shadow` to the diffuse light and, with `specular`,
+/// `color * max(0, n . h)^shininess * shadow` to the specular light where `n . l > 0` (Blinn, "Models of light
+/// reflection for computer synthesized pictures", SIGGRAPH 1977).
 pub(crate) fn light(s: &mut Scratch, lights: &SceneLights<'_>, eye: Vec3, shininess: f32, specular: bool) {
-    s.diffuse[..s.len].fill(lights.ambient);
+    let len = s.len;
+    s.diffuse = Column3::splat(lights.ambient);
     if specular {
-        s.specular[..s.len].fill(Vec3::ZERO);
+        s.specular = Column3::ZERO;
+        // The direction to the eye, once for every light.
+        for i in 0..BATCH_SIZE {
+            s.view.x[i] = eye.x - s.world.x[i];
+            s.view.y[i] = eye.y - s.world.y[i];
+            s.view.z[i] = eye.z - s.world.z[i];
+        }
+        s.view.normalize(len, &mut s.lane);
     }
     for light in lights.lights {
-        let color = light.color;
-        match (light.kind, &light.shadow, specular) {
-            (LightKind::Directional { to_light }, None, false) => {
-                add::<false>(s, color, |_| to_light, &Unshadowed, eye, shininess);
+        let to_light = match light.kind {
+            LightKind::Directional { to_light } => Column3::splat(to_light),
+            LightKind::Point { position } => {
+                let mut l = Column3::ZERO;
+                for i in 0..BATCH_SIZE {
+                    l.x[i] = position.x - s.world.x[i];
+                    l.y[i] = position.y - s.world.y[i];
+                    l.z[i] = position.z - s.world.z[i];
+                }
+                l.normalize(len, &mut s.lane);
+                l
             }
-            (LightKind::Directional { to_light }, None, true) => {
-                add::<true>(s, color, |_| to_light, &Unshadowed, eye, shininess);
+        };
+        let mut n_dot_l = [0.0; BATCH_SIZE];
+        s.shading.dot(&to_light, &mut n_dot_l);
+        // The share of the light that arrives, times max(0, n . l): the diffuse factor.
+        let mut arriving: Column = n_dot_l.map(|d| float::max(d, 0.0));
+        if let Some(map) = &light.shadow {
+            s.geometric.dot(&to_light, &mut s.lane);
+            let mut shares = [0.0; BATCH_SIZE];
+            map.light_reaching_lanes(&s.world, &s.geometric, &s.lane, len, &mut shares);
+            for i in 0..BATCH_SIZE {
+                arriving[i] *= shares[i];
             }
-            (LightKind::Directional { to_light }, Some(map), false) => {
-                add::<false>(s, color, |_| to_light, map, eye, shininess);
-            }
-            (LightKind::Directional { to_light }, Some(map), true) => {
-                add::<true>(s, color, |_| to_light, map, eye, shininess);
-            }
-            (LightKind::Point { position }, None, false) => {
-                add::<false>(s, color, |p| (position - p).normalize_or_zero(), &Unshadowed, eye, shininess);
-            }
-            (LightKind::Point { position }, None, true) => {
-                add::<true>(s, color, |p| (position - p).normalize_or_zero(), &Unshadowed, eye, shininess);
-            }
-            (LightKind::Point { position }, Some(map), false) => {
-                add::<false>(s, color, |p| (position - p).normalize_or_zero(), map, eye, shininess);
-            }
-            (LightKind::Point { position }, Some(map), true) => {
-                add::<true>(s, color, |p| (position - p).normalize_or_zero(), map, eye, shininess);
-            }
+            // The highlight takes the share too.
+            s.lane = shares;
+        }
+        s.diffuse.add_scaled(light.color, &arriving);
+        if specular {
+            let shares = light.shadow.is_some().then_some(&s.lane);
+            highlight(s.len, &s.shading, &s.view, &to_light, &n_dot_l, shares, light.color, shininess, &mut s.specular);
         }
     }
 }
 
-/// One light's contribution: `color * max(0, n . l) * shadow` to the diffuse light and, with `SPECULAR`,
-/// `color * max(0, n . h)^shininess * shadow` to the specular light where `n . l > 0` (Blinn, "Models of light
-/// reflection for computer synthesized pictures", SIGGRAPH 1977).
+/// Adds `color * max(0, n . h)^shininess * share` to `specular` where `n . l > 0`, with `h` the unit half vector
+/// of `l` and the view direction `v`, and `share` 1 without `shares`.
+#[allow(clippy::too_many_arguments)]
 #[inline(always)]
-fn add<const SPECULAR: bool>(
-    s: &mut Scratch,
+fn highlight(
+    len: usize,
+    n: &Column3,
+    v: &Column3,
+    l: &Column3,
+    n_dot_l: &Column,
+    shares: Option<&Column>,
     color: Vec3,
-    to_light: impl Fn(Vec3) -> Vec3,
-    occlusion: &impl Occlusion,
-    eye: Vec3,
     shininess: f32,
+    specular: &mut Column3,
 ) {
-    for i in 0..s.len {
-        let (n, p) = (s.shading[i], s.world[i]);
-        let l = to_light(p);
-        let n_dot_l = n.dot(l);
-        let g = s.geometric[i];
-        let share = occlusion.light_reaching(p, g, g.dot(l));
-        s.diffuse[i] += color * (float::max(n_dot_l, 0.0) * share);
-        if SPECULAR && n_dot_l > 0.0 {
-            let h = (l + (eye - p).normalize_or_zero()).normalize_or_zero();
-            s.specular[i] += color * (float::pow(float::max(n.dot(h), 0.0), shininess) * share);
+    let mut h = Column3::ZERO;
+    for i in 0..BATCH_SIZE {
+        h.x[i] = l.x[i] + v.x[i];
+        h.y[i] = l.y[i] + v.y[i];
+        h.z[i] = l.z[i] + v.z[i];
+    }
+    let mut k = [0.0; BATCH_SIZE];
+    h.normalize(len, &mut k);
+    n.dot(&h, &mut k);
+    for x in &mut k {
+        *x = float::max(*x, 0.0);
+    }
+    columns::pow_lanes(&mut k, shininess, len);
+    if let Some(shares) = shares {
+        for i in 0..BATCH_SIZE {
+            k[i] *= shares[i];
         }
+    }
+    for i in 0..BATCH_SIZE {
+        let lit = n_dot_l[i] > 0.0;
+        specular.x[i] = if lit { specular.x[i] + color.x * k[i] } else { specular.x[i] };
+        specular.y[i] = if lit { specular.y[i] + color.y * k[i] } else { specular.y[i] };
+        specular.z[i] = if lit { specular.z[i] + color.z * k[i] } else { specular.z[i] };
     }
 }

@@ -1,38 +1,44 @@
 //! The working set of one batch of fragments, as a structure of arrays: each stage reads and writes whole
 //! columns.
 
-use crate::math::{Vec2, Vec3, Vec4};
+use super::columns::{Column, Column3};
+use crate::math::{Vec2, Vec4};
 use crate::pipeline::BATCH_SIZE;
 
-/// Per-fragment values of one batch. Only the first `len` entries of each column are meaningful, and a column
-/// is filled only by a draw that uses it.
+/// Per-fragment values of one batch. Only the first `len` lanes of each column are meaningful, and a column is
+/// filled only by a draw that uses it; the others hold finite values nobody reads (lane-wise loops run over every
+/// lane, see [`super::columns`]).
 pub(crate) struct Scratch {
     pub len: usize,
     /// Interpolated world normal (not normalised).
-    pub normal: [Vec3; BATCH_SIZE],
+    pub normal: Column3,
     /// Unit geometric normal: the interpolated one, normalised (for shadow offsets).
-    pub geometric: [Vec3; BATCH_SIZE],
+    pub geometric: Column3,
     /// Unit shading normal: the geometric one, or the normal map's.
-    pub shading: [Vec3; BATCH_SIZE],
-    pub world: [Vec3; BATCH_SIZE],
+    pub shading: Column3,
+    pub world: Column3,
     pub uv: [Vec2; BATCH_SIZE],
     pub tangent: [Vec4; BATCH_SIZE],
+    /// Unit vector from the surface toward the eye (for highlights).
+    pub view: Column3,
     /// Albedo: material colour, times the diffuse map.
-    pub albedo: [Vec3; BATCH_SIZE],
+    pub albedo: Column3,
     /// Light arriving: ambient plus diffuse.
-    pub diffuse: [Vec3; BATCH_SIZE],
+    pub diffuse: Column3,
     /// Specular light arriving.
-    pub specular: [Vec3; BATCH_SIZE],
+    pub specular: Column3,
     /// Specular colour: the material's, times the specular map.
-    pub specular_color: [Vec3; BATCH_SIZE],
+    pub specular_color: Column3,
     /// Emitted light (glow map).
-    pub emission: [Vec3; BATCH_SIZE],
+    pub emission: Column3,
+    /// Working space for one value per fragment (lengths, dot products).
+    pub lane: Column,
 }
 
 impl Scratch {
     #[inline(always)]
     pub fn new(len: usize) -> Self {
-        let v3 = [Vec3::ZERO; BATCH_SIZE];
+        let v3 = Column3::ZERO;
         Self {
             len,
             normal: v3,
@@ -41,11 +47,13 @@ impl Scratch {
             world: v3,
             uv: [Vec2::ZERO; BATCH_SIZE],
             tangent: [Vec4::ZERO; BATCH_SIZE],
+            view: v3,
             albedo: v3,
             diffuse: v3,
             specular: v3,
             specular_color: v3,
             emission: v3,
+            lane: [0.0; BATCH_SIZE],
         }
     }
 }

@@ -3,6 +3,7 @@
 use core::marker::PhantomData;
 
 // The stage loops are named directly so that `with_sampler!` can call them with their sampler types.
+use super::columns::Column3;
 use super::maps::{albedo, glow, specular_color, with_sampler};
 use super::normals::{self, object_map, tangent_map};
 use super::scratch::Scratch;
@@ -76,13 +77,13 @@ where
         }
         match m.diffuse {
             Some(map) if v.albedo_map => with_sampler!(filter, wrap, albedo(s, &map, m.color)),
-            _ => s.albedo[..s.len].fill(m.color),
+            _ => s.albedo = Column3::splat(m.color),
         }
         let specular = v.specular != SpecularSource::None;
         lighting::light(s, &self.lights, self.transforms.eye, m.shininess, specular);
         match (v.specular, m.specular_map) {
             (SpecularSource::Map, Some(map)) => with_sampler!(filter, wrap, specular_color(s, &map, m.specular)),
-            _ => s.specular_color[..s.len].fill(m.specular),
+            _ => s.specular_color = Column3::splat(m.specular),
         }
         if let (true, Some(map)) = (v.glow_map, m.glow_map) {
             with_sampler!(filter, wrap, glow(s, &map));
@@ -91,23 +92,25 @@ where
         match (specular, v.glow_map) {
             (false, false) => {
                 for (i, c) in out.iter_mut().enumerate() {
-                    *c = s.albedo[i].mul_elem(s.diffuse[i]);
+                    *c = s.albedo.get(i).mul_elem(s.diffuse.get(i));
                 }
             }
             (true, false) => {
                 for (i, c) in out.iter_mut().enumerate() {
-                    *c = s.albedo[i].mul_elem(s.diffuse[i]) + s.specular_color[i].mul_elem(s.specular[i]);
+                    *c = s.albedo.get(i).mul_elem(s.diffuse.get(i))
+                        + s.specular_color.get(i).mul_elem(s.specular.get(i));
                 }
             }
             (false, true) => {
                 for (i, c) in out.iter_mut().enumerate() {
-                    *c = s.albedo[i].mul_elem(s.diffuse[i]) + s.emission[i];
+                    *c = s.albedo.get(i).mul_elem(s.diffuse.get(i)) + s.emission.get(i);
                 }
             }
             (true, true) => {
                 for (i, c) in out.iter_mut().enumerate() {
-                    let lit = s.albedo[i].mul_elem(s.diffuse[i]) + s.specular_color[i].mul_elem(s.specular[i]);
-                    *c = lit + s.emission[i];
+                    let lit = s.albedo.get(i).mul_elem(s.diffuse.get(i))
+                        + s.specular_color.get(i).mul_elem(s.specular.get(i));
+                    *c = lit + s.emission.get(i);
                 }
             }
         }
@@ -162,9 +165,9 @@ where
     fn shade_batch(&self, _: &(), batch: &FragmentBatch<Self::Varyings>, colors: &mut [Vec3; BATCH_SIZE]) {
         let mut s = Scratch::new(batch.len());
         for (i, v) in batch.varyings().iter().enumerate() {
-            s.normal[i] = v.normal;
+            s.normal.set(i, v.normal);
             if let Some(w) = v.world.get() {
-                s.world[i] = w;
+                s.world.set(i, w);
             }
             if let Some(uv) = v.uv.get() {
                 s.uv[i] = uv;

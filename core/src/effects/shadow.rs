@@ -10,10 +10,11 @@
 use core::ops::Range;
 
 use super::LightKind;
+use super::columns::{self, Column, Column3};
 use crate::camera::{CameraError, look_at, orthographic, perspective};
 use crate::math::{Mat4, Vec3, Vec4, float};
 use crate::mesh::{Attributes, Mesh};
-use crate::pipeline::{Cull, DrawState, DrawStats, Fragment, Shader, draw};
+use crate::pipeline::{BATCH_SIZE, Cull, DrawState, DrawStats, Fragment, Shader, draw};
 use crate::target::{MAX_DIMENSION, NoColor, Target};
 
 /// Why a shadow map could not be set up.
@@ -312,6 +313,67 @@ impl<'a> ShadowMap<'a> {
         if lit == taps { 1.0 } else { lit as f32 / taps as f32 }
     }
 
+    /// [`Self::light_reaching`] for the first `len` lanes of a batch, into `share`: the same values, bit for bit.
+    /// The projection into the map runs lane-wise ([`super::columns`]); only the taps read the map fragment by
+    /// fragment.
+    pub(crate) fn light_reaching_lanes(
+        &self,
+        p: &Column3,
+        n: &Column3,
+        n_dot_l: &Column,
+        len: usize,
+        share: &mut Column,
+    ) {
+        let b = &self.bias;
+        let reach = (1 + self.pcf_radius) as f32;
+        let texel = match self.view.texel {
+            TexelSize::Constant(t) => [t; BATCH_SIZE],
+            TexelSize::Perspective { eye, per_distance } => {
+                let mut d = Column3::ZERO;
+                for i in 0..BATCH_SIZE {
+                    d.x[i] = p.x[i] - eye.x;
+                    d.y[i] = p.y[i] - eye.y;
+                    d.z[i] = p.z[i] - eye.z;
+                }
+                let mut length = [0.0; BATCH_SIZE];
+                d.dot(&d, &mut length);
+                columns::sqrt_lanes(&mut length, len);
+                length.map(|l| per_distance * l)
+            }
+        };
+        let m = &self.view.clip_from_world;
+        let half = self.view.size as f32 * 0.5;
+        let (mut tx, mut ty, mut z) = ([0i32; BATCH_SIZE], [0i32; BATCH_SIZE], [0.0; BATCH_SIZE]);
+        let mut in_front = [false; BATCH_SIZE];
+        for i in 0..BATCH_SIZE {
+            let slope = 1.0 - float::clamp(n_dot_l[i], 0.0, 1.0);
+            let offset = texel[i] * (b.normal_offset + b.slope_offset * slope) * reach;
+            let q = Vec3::new(p.x[i] + n.x[i] * offset, p.y[i] + n.y[i] * offset, p.z[i] + n.z[i] * offset);
+            let clip = m.project_point(q);
+            in_front[i] = clip.w > 0.0;
+            let inv_w = 1.0 / clip.w;
+            tx[i] = float::floor_to_i32((clip.x * inv_w + 1.0) * half);
+            ty[i] = float::floor_to_i32((1.0 - clip.y * inv_w) * half);
+            z[i] = float::min(clip.z * inv_w, 1.0) - b.depth;
+        }
+        let r = self.pcf_radius;
+        let taps = (2 * r + 1) * (2 * r + 1);
+        macro_rules! count {
+            ($lit:expr) => {
+                for i in 0..len {
+                    let lit = if in_front[i] { $lit(tx[i], ty[i], z[i]) } else { taps };
+                    share[i] = if lit == taps { 1.0 } else { lit as f32 / taps as f32 };
+                }
+            };
+        }
+        match r {
+            0 => count!(|x, y, z| self.lit_taps::<0>(x, y, z)),
+            1 => count!(|x, y, z| self.lit_taps::<1>(x, y, z)),
+            2 => count!(|x, y, z| self.lit_taps::<2>(x, y, z)),
+            r => count!(|x, y, z| self.lit_taps_any(r as i32, x, y, z)),
+        }
+    }
+
     /// How many of the `(2R + 1)^2` texels around `(tx, ty)` are at or beyond depth `z` (texels outside the map
     /// count as lit). A window wholly inside the map, nearly every lookup, reads its rows as slices with no test
     /// per texel; the loops have constant bounds and unroll.
@@ -382,5 +444,48 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The lane-wise lookup gives bit for bit the scalar lookup's share, for directional and point lights, every
+    /// filter radius, points in front of and behind the light, and lanes past the batch's length left alone.
+    #[test]
+    #[allow(clippy::needless_range_loop)] // lanes: one index into every column
+    fn lanes_look_up_what_the_scalar_lookup_does() {
+        const SIZE: u32 = 16;
+        let bounds = Bounds { centre: Vec3::ZERO, radius: 1.0 };
+        let depth: [f32; (SIZE * SIZE) as usize] = core::array::from_fn(|i| 0.3 + ((i * 37) % 97) as f32 / 200.0);
+        let kinds = [
+            LightKind::Directional { to_light: Vec3::new(0.3, 0.9, 0.2).normalize_or_zero() },
+            LightKind::Point { position: Vec3::new(0.5, 4.0, 1.0) },
+        ];
+        let (mut p, mut n, mut n_dot_l) = (Column3::ZERO, Column3::ZERO, [0.0; BATCH_SIZE]);
+        for i in 0..BATCH_SIZE {
+            let t = i as f32 / BATCH_SIZE as f32;
+            // Across the map, and a few points behind the point light.
+            let y = if i % 7 == 6 { 6.0 } else { t - 0.5 };
+            p.set(i, Vec3::new(1.6 * t - 0.8, y, 0.7 - 1.3 * t));
+            n.set(i, Vec3::new(t - 0.5, 1.0, 0.25).normalize_or_zero());
+            n_dot_l[i] = 1.2 * t - 0.1;
+        }
+        // Shadowed, lit and partly lit lanes all occur.
+        let (mut dark, mut lit, mut partly) = (false, false, false);
+        for kind in kinds {
+            let view = ShadowView::fit(kind, bounds, SIZE).unwrap();
+            for radius in 0..=3 {
+                let map = ShadowMap::new(view, &depth, ShadowBias::DEFAULT, radius).unwrap();
+                let len = BATCH_SIZE - 3;
+                let mut share = [-1.0; BATCH_SIZE];
+                map.light_reaching_lanes(&p, &n, &n_dot_l, len, &mut share);
+                for i in 0..len {
+                    let expected = map.light_reaching(p.get(i), n.get(i), n_dot_l[i]);
+                    assert_eq!(share[i].to_bits(), expected.to_bits(), "{kind:?}, radius {radius}, lane {i}");
+                    dark |= share[i] == 0.0;
+                    lit |= share[i] == 1.0;
+                    partly |= share[i] > 0.0 && share[i] < 1.0;
+                }
+                assert!(share[len..].iter().all(|&s| s == -1.0), "lanes past the length are left alone");
+            }
+        }
+        assert!(dark && lit && partly, "dark {dark}, lit {lit}, partly lit {partly}");
     }
 }

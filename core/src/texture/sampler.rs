@@ -60,6 +60,16 @@ pub trait Filter {
     /// Samples `texture` at `uv` with wrap mode `W`, as a packed `0x00RRGGBB` value.
     fn sample_packed<W: Wrap>(texture: &Texture<'_>, uv: Vec2) -> u32;
 
+    /// [`Filter::sample_packed`] at each of `uv`, into `out`: a batch of samples at once. Filters whose texel
+    /// addresses are plain arithmetic compute them for all lanes in one loop the compiler can widen, then read
+    /// the texels one by one.
+    #[inline(always)]
+    fn sample_packed_lanes<W: Wrap, const N: usize>(texture: &Texture<'_>, uv: &[Vec2; N], out: &mut [u32; N]) {
+        for (o, uv) in out.iter_mut().zip(uv) {
+            *o = Self::sample_packed::<W>(texture, *uv);
+        }
+    }
+
     /// Samples `texture` at `uv` with wrap mode `W`, channels in `[0, 1]`.
     #[inline(always)]
     fn sample<W: Wrap>(texture: &Texture<'_>, uv: Vec2) -> Vec3 {
@@ -79,6 +89,20 @@ impl Filter for Nearest {
         let x = float::round_small_to_u32(float::floor(W::reduce(uv.x) * w as f32)) as i32;
         let y = float::round_small_to_u32(float::floor((1.0 - W::reduce(uv.y)) * h as f32)) as i32;
         t.packed(W::index(x, w), W::index(y, h))
+    }
+
+    #[inline(always)]
+    fn sample_packed_lanes<W: Wrap, const N: usize>(t: &Texture<'_>, uv: &[Vec2; N], out: &mut [u32; N]) {
+        let (w, h) = (t.width, t.height);
+        let (mut x, mut y) = ([0i32; N], [0i32; N]);
+        for i in 0..N {
+            // As `sample_packed`, lane by lane.
+            x[i] = W::index(float::round_small_to_u32(float::floor(W::reduce(uv[i].x) * w as f32)) as i32, w);
+            y[i] = W::index(float::round_small_to_u32(float::floor((1.0 - W::reduce(uv[i].y)) * h as f32)) as i32, h);
+        }
+        for i in 0..N {
+            out[i] = t.packed(x[i], y[i]);
+        }
     }
 }
 
@@ -139,4 +163,33 @@ pub enum WrapMode {
     Repeat,
     /// [`Clamp`].
     Clamp,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A batch of samples gives what one sample at a time gives, for both filters and wrap modes, at coordinates
+    /// inside, outside and on the edges of the texture, and at NaN and infinities.
+    #[test]
+    fn lanes_sample_what_single_samples_do() {
+        let texels: [u32; 15] = core::array::from_fn(|i| (i as u32 * 0x10_2030) & 0xFF_FFFF);
+        let texture = Texture::new(&texels, 5, 3).unwrap();
+        let special = [0.0, 1.0, -0.0, 0.5, -1.25, 2.75, 1e-9, -1e-9, 1e9, f32::NAN, f32::INFINITY, f32::NEG_INFINITY];
+        let uv: [Vec2; 64] = core::array::from_fn(|i| {
+            let u = if i < special.len() { special[i] } else { i as f32 * 0.173 - 3.0 };
+            Vec2::new(u, special[(i * 5) % special.len()] + i as f32 * 0.031)
+        });
+        fn check<F: Filter, W: Wrap>(texture: &Texture<'_>, uv: &[Vec2; 64]) {
+            let mut lanes = [0; 64];
+            F::sample_packed_lanes::<W, 64>(texture, uv, &mut lanes);
+            for (i, (&lane, &uv)) in lanes.iter().zip(uv).enumerate() {
+                assert_eq!(lane, F::sample_packed::<W>(texture, uv), "lane {i} at {uv:?}");
+            }
+        }
+        check::<Nearest, Repeat>(&texture, &uv);
+        check::<Nearest, Clamp>(&texture, &uv);
+        check::<Bilinear, Repeat>(&texture, &uv);
+        check::<Bilinear, Clamp>(&texture, &uv);
+    }
 }

@@ -1,0 +1,162 @@
+//! Per-fragment vectors of a batch stored as three columns (all x, all y, all z), and the lane-wise operations
+//! the fragment stages share.
+//!
+//! The arithmetic loops run over every lane of a batch, a constant count with no branch, so the compiler turns
+//! them into SIMD instructions (SSE on x86-64, four lanes at a time); lanes past a batch's length hold values
+//! nobody reads. Square roots run in a scalar pass of their own: `libm`'s square root is one instruction the
+//! compiler cannot widen, and inside a loop it would keep the rest of the loop scalar too. Every lane computes
+//! exactly what the scalar [`Vec3`] operations compute, in the same order, so the pixels do not change with the
+//! layout.
+
+// Lane loops index every column they touch by the same lane, which iterators would hide.
+#![allow(clippy::needless_range_loop)]
+
+use crate::math::{Vec3, float};
+use crate::pipeline::BATCH_SIZE;
+
+/// One `f32` per fragment of a batch.
+pub(crate) type Column = [f32; BATCH_SIZE];
+
+/// One [`Vec3`] per fragment of a batch, as three columns.
+#[derive(Clone, Copy)]
+pub(crate) struct Column3 {
+    pub x: Column,
+    pub y: Column,
+    pub z: Column,
+}
+
+impl Column3 {
+    /// Every lane `(0, 0, 0)`.
+    pub const ZERO: Self = Self::splat(Vec3::ZERO);
+
+    /// Every lane `v`.
+    #[inline(always)]
+    pub const fn splat(v: Vec3) -> Self {
+        Self { x: [v.x; BATCH_SIZE], y: [v.y; BATCH_SIZE], z: [v.z; BATCH_SIZE] }
+    }
+
+    /// Lane `i`.
+    #[inline(always)]
+    pub fn get(&self, i: usize) -> Vec3 {
+        Vec3::new(self.x[i], self.y[i], self.z[i])
+    }
+
+    /// Sets lane `i` to `v`.
+    #[inline(always)]
+    pub fn set(&mut self, i: usize, v: Vec3) {
+        self.x[i] = v.x;
+        self.y[i] = v.y;
+        self.z[i] = v.z;
+    }
+
+    /// Lane-wise [`Vec3::dot`].
+    #[inline(always)]
+    pub fn dot(&self, o: &Self, out: &mut Column) {
+        for i in 0..BATCH_SIZE {
+            out[i] = self.x[i] * o.x[i] + self.y[i] * o.y[i] + self.z[i] * o.z[i];
+        }
+    }
+
+    /// `self += color * k` lane by lane, where `k[i]` multiplies each channel of `color` (`Vec3 * f32`).
+    #[inline(always)]
+    pub fn add_scaled(&mut self, color: Vec3, k: &Column) {
+        for i in 0..BATCH_SIZE {
+            self.x[i] += color.x * k[i];
+            self.y[i] += color.y * k[i];
+            self.z[i] += color.z * k[i];
+        }
+    }
+
+    /// Lane-wise [`Vec3::normalize_or_zero`], in place; `lengths` is working space. Only the first `len` lanes
+    /// are normalised; the others are set to zero.
+    #[inline(always)]
+    pub fn normalize(&mut self, len: usize, lengths: &mut Column) {
+        self.dot(&*self, lengths);
+        sqrt_lanes(lengths, len);
+        for i in 0..BATCH_SIZE {
+            let l = lengths[i];
+            // `l > 0.0 && l.is_finite()`, as `Vec3::try_normalize` asks (NaN fails both); lanes past `len` fail.
+            let usable = i < len && l > 0.0 && l < f32::INFINITY;
+            let inv = 1.0 / l;
+            self.x[i] = if usable { self.x[i] * inv } else { 0.0 };
+            self.y[i] = if usable { self.y[i] * inv } else { 0.0 };
+            self.z[i] = if usable { self.z[i] * inv } else { 0.0 };
+        }
+    }
+}
+
+/// The square root of each of the first `len` lanes, in place (a scalar pass: see the module docs).
+#[inline(always)]
+pub(crate) fn sqrt_lanes(v: &mut Column, len: usize) {
+    for x in &mut v[..len] {
+        *x = float::sqrt(*x);
+    }
+}
+
+/// `x[i]` raised to `y`, lane by lane, as [`float::pow`] computes it: for a whole exponent up to 256 the same
+/// multiplications as [`float::powi`] in the same order, run across the lanes; otherwise `powf` on the first
+/// `len` lanes.
+#[inline(always)]
+pub(crate) fn pow_lanes(x: &mut Column, y: f32, len: usize) {
+    if (0.0..=256.0).contains(&y) && y == (y as u32) as f32 {
+        let mut n = y as u32;
+        let mut result = [1.0; BATCH_SIZE];
+        while n > 0 {
+            if n & 1 == 1 {
+                for i in 0..BATCH_SIZE {
+                    result[i] *= x[i];
+                }
+            }
+            for v in x.iter_mut() {
+                *v *= *v;
+            }
+            n >>= 1;
+        }
+        *x = result;
+    } else {
+        for v in &mut x[..len] {
+            *v = float::pow(*v, y);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The lane-wise operations give bit for bit what the scalar ones give, zero and non-finite vectors and
+    /// fractional exponents included.
+    #[test]
+    fn lanes_compute_what_scalars_compute() {
+        let samples = [
+            Vec3::new(0.3, -0.4, 0.5),
+            Vec3::ZERO,
+            Vec3::new(f32::NAN, 1.0, 0.0),
+            Vec3::new(f32::INFINITY, 0.0, 0.0),
+            Vec3::new(1e-30, 2e-30, -1e-30),
+            Vec3::new(3e30, -2e30, 1e30),
+            Vec3::new(-0.0, 0.0, 7.25),
+        ];
+        let mut c = Column3::ZERO;
+        for i in 0..BATCH_SIZE {
+            c.set(i, samples[i % samples.len()] * (1.0 + i as f32 * 0.37));
+        }
+        let (mut lengths, mut out) = ([0.0; BATCH_SIZE], c);
+        out.normalize(BATCH_SIZE, &mut lengths);
+        let mut d = [0.0; BATCH_SIZE];
+        let l = Vec3::new(0.25, -0.5, 0.75);
+        c.dot(&Column3::splat(l), &mut d);
+        let bits = |v: Vec3| [v.x, v.y, v.z].map(f32::to_bits);
+        for i in 0..BATCH_SIZE {
+            let v = c.get(i);
+            assert_eq!(bits(out.get(i)), bits(v.normalize_or_zero()));
+            assert_eq!(d[i].to_bits(), v.dot(l).to_bits());
+        }
+        for y in [0.0, 1.0, 7.0, 32.0, 256.0, 12.5, 300.0] {
+            let mut x: Column = core::array::from_fn(|i| i as f32 / 31.0);
+            let expected = x.map(|v| float::pow(v, y));
+            pow_lanes(&mut x, y, BATCH_SIZE);
+            assert_eq!(x.map(f32::to_bits), expected.map(f32::to_bits), "exponent {y}");
+        }
+    }
+}
