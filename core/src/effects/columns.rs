@@ -98,8 +98,7 @@ pub(crate) fn sqrt_lanes(v: &mut Column, len: usize) {
 /// `len` lanes.
 #[inline(always)]
 pub(crate) fn pow_lanes(x: &mut Column, y: f32, len: usize) {
-    if (0.0..=256.0).contains(&y) && y == (y as u32) as f32 {
-        let mut n = y as u32;
+    if let Some(mut n) = float::whole_exponent(y) {
         let mut result = [1.0; BATCH_SIZE];
         while n > 0 {
             if n & 1 == 1 {

@@ -46,21 +46,23 @@ pub(crate) fn light(s: &mut Scratch, lights: &SceneLights<'_>, eye: Vec3, shinin
         };
         let mut n_dot_l = [0.0; BATCH_SIZE];
         s.shading.dot(&to_light, &mut n_dot_l);
-        // The share of the light that arrives, times max(0, n . l): the diffuse factor.
-        let mut arriving: Column = n_dot_l.map(|d| float::max(d, 0.0));
-        if let Some(map) = &light.shadow {
+        // The share of the light its shadow map lets through, if it has one.
+        let shares = light.shadow.map(|map| {
             s.geometric.dot(&to_light, &mut s.lane);
             let mut shares = [0.0; BATCH_SIZE];
             map.light_reaching_lanes(&s.world, &s.geometric, &s.lane, len, &mut shares);
-            for i in 0..BATCH_SIZE {
-                arriving[i] *= shares[i];
+            shares
+        });
+        // max(0, n . l) times the share: the diffuse factor.
+        let mut arriving: Column = n_dot_l.map(|d| float::max(d, 0.0));
+        if let Some(shares) = &shares {
+            for (a, share) in arriving.iter_mut().zip(shares) {
+                *a *= share;
             }
-            // The highlight takes the share too.
-            s.lane = shares;
         }
         s.diffuse.add_scaled(light.color, &arriving);
         if specular {
-            let shares = light.shadow.is_some().then_some(&s.lane);
+            let shares = shares.as_ref();
             highlight(s.len, &s.shading, &s.view, &to_light, &n_dot_l, shares, light.color, shininess, &mut s.specular);
         }
     }

@@ -284,33 +284,17 @@ impl<'a> ShadowMap<'a> {
     /// `n_dot_l` is `n . l` for this light: 1 lit, 0 in shadow. Points outside the map are lit.
     #[inline(always)]
     pub fn light_reaching(&self, p: Vec3, n: Vec3, n_dot_l: f32) -> f32 {
-        let b = &self.bias;
-        // A PCF tap r texels away meets the receiver's own depth up to r texels' slope nearer the light: the
-        // offset grows with the filter's reach.
-        let reach = (1 + self.pcf_radius) as f32;
-        let slope = 1.0 - float::clamp(n_dot_l, 0.0, 1.0);
-        let offset = self.view.texel_at(p) * (b.normal_offset + b.slope_offset * slope) * reach;
-        let clip = self.view.clip_from_world.project_point(p + n * offset);
-        let in_front = clip.w > 0.0; // false for NaN too
+        let (in_front, tx, ty, z) = self.lookup(p, n, n_dot_l, self.view.texel_at(p));
         if !in_front {
             return 1.0;
         }
-        let inv_w = 1.0 / clip.w;
-        let half = self.view.size as f32 * 0.5;
-        // NDC to texels as the pipeline's viewport maps them: x right, y down, pixel centres at +0.5.
-        let tx = float::floor_to_i32((clip.x * inv_w + 1.0) * half);
-        let ty = float::floor_to_i32((1.0 - clip.y * inv_w) * half);
-        // A point beyond the map's far plane compares as on it: lit wherever nothing was drawn.
-        let z = float::min(clip.z * inv_w, 1.0) - b.depth;
         let lit = match self.pcf_radius {
             0 => self.lit_taps::<0>(tx, ty, z),
             1 => self.lit_taps::<1>(tx, ty, z),
             2 => self.lit_taps::<2>(tx, ty, z),
             r => self.lit_taps_any(r as i32, tx, ty, z),
         };
-        let r = self.pcf_radius;
-        let taps = (2 * r + 1) * (2 * r + 1);
-        if lit == taps { 1.0 } else { lit as f32 / taps as f32 }
+        self.share(lit)
     }
 
     /// [`Self::light_reaching`] for the first `len` lanes of a batch, into `share`: the same values, bit for bit.
@@ -324,11 +308,10 @@ impl<'a> ShadowMap<'a> {
         len: usize,
         share: &mut Column,
     ) {
-        let b = &self.bias;
-        let reach = (1 + self.pcf_radius) as f32;
         let texel = match self.view.texel {
             TexelSize::Constant(t) => [t; BATCH_SIZE],
             TexelSize::Perspective { eye, per_distance } => {
+                // `texel_at`, lane by lane.
                 let mut d = Column3::ZERO;
                 for i in 0..BATCH_SIZE {
                     d.x[i] = p.x[i] - eye.x;
@@ -341,37 +324,56 @@ impl<'a> ShadowMap<'a> {
                 length.map(|l| per_distance * l)
             }
         };
-        let m = &self.view.clip_from_world;
-        let half = self.view.size as f32 * 0.5;
         let (mut tx, mut ty, mut z) = ([0i32; BATCH_SIZE], [0i32; BATCH_SIZE], [0.0; BATCH_SIZE]);
         let mut in_front = [false; BATCH_SIZE];
         for i in 0..BATCH_SIZE {
-            let slope = 1.0 - float::clamp(n_dot_l[i], 0.0, 1.0);
-            let offset = texel[i] * (b.normal_offset + b.slope_offset * slope) * reach;
-            let q = Vec3::new(p.x[i] + n.x[i] * offset, p.y[i] + n.y[i] * offset, p.z[i] + n.z[i] * offset);
-            let clip = m.project_point(q);
-            in_front[i] = clip.w > 0.0;
-            let inv_w = 1.0 / clip.w;
-            tx[i] = float::floor_to_i32((clip.x * inv_w + 1.0) * half);
-            ty[i] = float::floor_to_i32((1.0 - clip.y * inv_w) * half);
-            z[i] = float::min(clip.z * inv_w, 1.0) - b.depth;
+            (in_front[i], tx[i], ty[i], z[i]) = self.lookup(p.get(i), n.get(i), n_dot_l[i], texel[i]);
         }
-        let r = self.pcf_radius;
-        let taps = (2 * r + 1) * (2 * r + 1);
+        // The radius is chosen once for the batch, not per lane.
         macro_rules! count {
             ($lit:expr) => {
                 for i in 0..len {
-                    let lit = if in_front[i] { $lit(tx[i], ty[i], z[i]) } else { taps };
-                    share[i] = if lit == taps { 1.0 } else { lit as f32 / taps as f32 };
+                    share[i] = if in_front[i] { self.share($lit(tx[i], ty[i], z[i])) } else { 1.0 };
                 }
             };
         }
-        match r {
+        match self.pcf_radius {
             0 => count!(|x, y, z| self.lit_taps::<0>(x, y, z)),
             1 => count!(|x, y, z| self.lit_taps::<1>(x, y, z)),
             2 => count!(|x, y, z| self.lit_taps::<2>(x, y, z)),
             r => count!(|x, y, z| self.lit_taps_any(r as i32, x, y, z)),
         }
+    }
+
+    /// Where the lookup of `p` (unit geometric normal `n`, `n . l` = `n_dot_l`, a map texel `texel` world units
+    /// wide there) reads the map: whether it is in front of the light, the texel `(tx, ty)` and the depth `z` to
+    /// compare.
+    #[inline(always)]
+    fn lookup(&self, p: Vec3, n: Vec3, n_dot_l: f32, texel: f32) -> (bool, i32, i32, f32) {
+        let b = &self.bias;
+        // A PCF tap r texels away meets the receiver's own depth up to r texels' slope nearer the light: the
+        // offset grows with the filter's reach.
+        let reach = (1 + self.pcf_radius) as f32;
+        let slope = 1.0 - float::clamp(n_dot_l, 0.0, 1.0);
+        let offset = texel * (b.normal_offset + b.slope_offset * slope) * reach;
+        let clip = self.view.clip_from_world.project_point(p + n * offset);
+        let in_front = clip.w > 0.0; // false for NaN too
+        let inv_w = 1.0 / clip.w;
+        let half = self.view.size as f32 * 0.5;
+        // NDC to texels as the pipeline's viewport maps them: x right, y down, pixel centres at +0.5.
+        let tx = float::floor_to_i32((clip.x * inv_w + 1.0) * half);
+        let ty = float::floor_to_i32((1.0 - clip.y * inv_w) * half);
+        // A point beyond the map's far plane compares as on it: lit wherever nothing was drawn.
+        let z = float::min(clip.z * inv_w, 1.0) - b.depth;
+        (in_front, tx, ty, z)
+    }
+
+    /// The share of the light that `lit` of the filter's taps let through.
+    #[inline(always)]
+    fn share(&self, lit: u32) -> f32 {
+        let r = self.pcf_radius;
+        let taps = (2 * r + 1) * (2 * r + 1);
+        if lit == taps { 1.0 } else { lit as f32 / taps as f32 }
     }
 
     /// How many of the `(2R + 1)^2` texels around `(tx, ty)` are at or beyond depth `z` (texels outside the map

@@ -48,7 +48,16 @@ pub fn atan(x: f32) -> f32 {
 /// handful of multiplications instead of a `powf` call, equally deterministic on every target.
 #[inline(always)]
 pub fn pow(x: f32, y: f32) -> f32 {
-    if (0.0..=256.0).contains(&y) && y == (y as u32) as f32 { powi(x, y as u32) } else { libm::powf(x, y) }
+    match whole_exponent(y) {
+        Some(n) => powi(x, n),
+        None => libm::powf(x, y),
+    }
+}
+
+/// `y` as a whole number when it is one from 0 to 256: the exponents [`pow`] computes by [`powi`].
+#[inline(always)]
+pub fn whole_exponent(y: f32) -> Option<u32> {
+    ((0.0..=256.0).contains(&y) && y == (y as u32) as f32).then_some(y as u32)
 }
 
 /// `x` raised to the whole power `n`, by binary exponentiation (square-and-multiply, Knuth TAOCP vol. 2,

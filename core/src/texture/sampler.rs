@@ -84,25 +84,28 @@ pub struct Nearest;
 impl Filter for Nearest {
     #[inline(always)]
     fn sample_packed<W: Wrap>(t: &Texture<'_>, uv: Vec2) -> u32 {
-        let (w, h) = (t.width, t.height);
-        // In [0, size]: floor is exact, and the integer conversion needs no saturation.
-        let x = float::round_small_to_u32(float::floor(W::reduce(uv.x) * w as f32)) as i32;
-        let y = float::round_small_to_u32(float::floor((1.0 - W::reduce(uv.y)) * h as f32)) as i32;
-        t.packed(W::index(x, w), W::index(y, h))
+        let (x, y) = Self::texel::<W>(t, uv);
+        t.packed(x, y)
     }
 
     #[inline(always)]
     fn sample_packed_lanes<W: Wrap, const N: usize>(t: &Texture<'_>, uv: &[Vec2; N], out: &mut [u32; N]) {
+        let texels = uv.map(|uv| Self::texel::<W>(t, uv));
+        for (o, (x, y)) in out.iter_mut().zip(texels) {
+            *o = t.packed(x, y);
+        }
+    }
+}
+
+impl Nearest {
+    /// The column and row of the texel containing `uv`.
+    #[inline(always)]
+    fn texel<W: Wrap>(t: &Texture<'_>, uv: Vec2) -> (i32, i32) {
         let (w, h) = (t.width, t.height);
-        let (mut x, mut y) = ([0i32; N], [0i32; N]);
-        for i in 0..N {
-            // As `sample_packed`, lane by lane.
-            x[i] = W::index(float::round_small_to_u32(float::floor(W::reduce(uv[i].x) * w as f32)) as i32, w);
-            y[i] = W::index(float::round_small_to_u32(float::floor((1.0 - W::reduce(uv[i].y)) * h as f32)) as i32, h);
-        }
-        for i in 0..N {
-            out[i] = t.packed(x[i], y[i]);
-        }
+        // In [0, size]: floor is exact, and the integer conversion needs no saturation.
+        let x = float::round_small_to_u32(float::floor(W::reduce(uv.x) * w as f32)) as i32;
+        let y = float::round_small_to_u32(float::floor((1.0 - W::reduce(uv.y)) * h as f32)) as i32;
+        (W::index(x, w), W::index(y, h))
     }
 }
 
