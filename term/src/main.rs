@@ -410,7 +410,7 @@ fn render_scene(args: &RenderArgs, path: &Path, matches: &ArgMatches) -> Result<
         let ms = |d: std::time::Duration| d.as_secs_f64() * 1e3;
         let bands = match r.bands {
             1 => String::new(),
-            n => format!(" (in {n} bands of rows: triangles count once per band)"),
+            n => format!(" (in {n} bands of rows: a triangle counts once per band it may reach)"),
         };
         for (pass, done) in image.plan.shadow_passes.iter().zip(&r.shadow_passes) {
             let s = &done.stats;

@@ -11,11 +11,44 @@
 // Lane loops index every column they touch by the same lane, which iterators would hide.
 #![allow(clippy::needless_range_loop)]
 
-use crate::math::{Vec3, float};
-use crate::pipeline::BATCH_SIZE;
+use crate::math::{Vec2, Vec3, float};
+use crate::pipeline::{BATCH_SIZE, Lanes};
 
 /// One `f32` per fragment of a batch.
-pub(crate) type Column = [f32; BATCH_SIZE];
+pub(crate) type Column = Lanes;
+
+/// A batch's interpolation weights of its triangle's second and third vertex (see
+/// [`crate::pipeline::FragmentBatch::weights`]).
+pub(crate) type Weights<'a> = (&'a Column, &'a Column);
+
+/// `v0 + d1 * w1 + d2 * w2` in every lane: what [`crate::pipeline::Varyings::interpolate`] computes for an `f32`,
+/// in the same order.
+#[inline(always)]
+pub(crate) fn interpolated(v0: f32, d1: f32, d2: f32, (w1, w2): Weights<'_>) -> Column {
+    let mut out = [0.0; BATCH_SIZE];
+    for i in 0..BATCH_SIZE {
+        out[i] = v0 + d1 * w1[i] + d2 * w2[i];
+    }
+    out
+}
+
+/// One [`Vec2`] per fragment of a batch, as two columns.
+#[derive(Clone, Copy)]
+pub(crate) struct Column2 {
+    pub x: Column,
+    pub y: Column,
+}
+
+impl Column2 {
+    /// Every lane `(0, 0)`.
+    pub const ZERO: Self = Self { x: [0.0; BATCH_SIZE], y: [0.0; BATCH_SIZE] };
+
+    /// [`interpolated`] for each component.
+    #[inline(always)]
+    pub fn interpolated(v0: Vec2, d1: Vec2, d2: Vec2, w: Weights<'_>) -> Self {
+        Self { x: interpolated(v0.x, d1.x, d2.x, w), y: interpolated(v0.y, d1.y, d2.y, w) }
+    }
+}
 
 /// One [`Vec3`] per fragment of a batch, as three columns.
 #[derive(Clone, Copy)]
@@ -33,6 +66,16 @@ impl Column3 {
     #[inline(always)]
     pub const fn splat(v: Vec3) -> Self {
         Self { x: [v.x; BATCH_SIZE], y: [v.y; BATCH_SIZE], z: [v.z; BATCH_SIZE] }
+    }
+
+    /// [`interpolated`] for each component.
+    #[inline(always)]
+    pub fn interpolated(v0: Vec3, d1: Vec3, d2: Vec3, w: Weights<'_>) -> Self {
+        Self {
+            x: interpolated(v0.x, d1.x, d2.x, w),
+            y: interpolated(v0.y, d1.y, d2.y, w),
+            z: interpolated(v0.z, d1.z, d2.z, w),
+        }
     }
 
     /// Lane `i`.

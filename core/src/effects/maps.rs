@@ -1,9 +1,9 @@
 //! Colour maps over a batch: albedo, specular colour and glow, each one loop per filter and wrap mode.
 
-use super::columns::Column3;
+use super::columns::{Column2, Column3};
 use super::scratch::Scratch;
 use crate::color::unpack_rgb888;
-use crate::math::{Vec2, Vec3};
+use crate::math::Vec3;
 use crate::pipeline::BATCH_SIZE;
 use crate::texture::{Filter, Texture, Wrap};
 
@@ -40,9 +40,9 @@ pub(crate) fn glow<F: Filter, W: Wrap>(s: &mut Scratch, map: &Texture<'_>) {
 /// The map at every lane's texture coordinates, times `color` if given, into `out`.
 #[allow(clippy::needless_range_loop)] // lanes: one index into every column
 #[inline(always)]
-fn modulated<F: Filter, W: Wrap>(out: &mut Column3, uv: &[Vec2; BATCH_SIZE], map: &Texture<'_>, color: Option<Vec3>) {
+fn modulated<F: Filter, W: Wrap>(out: &mut Column3, uv: &Column2, map: &Texture<'_>, color: Option<Vec3>) {
     let mut texels = [0; BATCH_SIZE];
-    F::sample_packed_lanes::<W, BATCH_SIZE>(map, uv, &mut texels);
+    F::sample_packed_lanes::<W, BATCH_SIZE>(map, &uv.x, &uv.y, &mut texels);
     match color {
         // `color.mul_elem(texel)`, lane by lane.
         Some(color) => {

@@ -23,13 +23,12 @@ pub(crate) fn interpolated(s: &mut Scratch, shading_too: bool) {
 /// normalised, bit for bit the normal of a draw without the map.
 pub(crate) fn tangent_map<F: Filter, W: Wrap>(s: &mut Scratch, map: &Texture<'_>) {
     let mut texels = [0; BATCH_SIZE];
-    F::sample_packed_lanes::<W, BATCH_SIZE>(map, &s.uv, &mut texels);
+    F::sample_packed_lanes::<W, BATCH_SIZE>(map, &s.uv.x, &s.uv.y, &mut texels);
     for (i, &texel) in texels.iter().enumerate() {
-        let (n, t) = (s.normal.get(i), s.tangent[i]);
-        let t3 = t.truncate();
-        let b = n.cross(t3) * t.w;
+        let (n, t) = (s.normal.get(i), s.tangent.get(i));
+        let b = n.cross(t) * s.handedness[i];
         let m = decode_normal(texel);
-        s.shading.set(i, t3 * m.x + b * m.y + n * m.z);
+        s.shading.set(i, t * m.x + b * m.y + n * m.z);
     }
     s.shading.normalize(s.len, &mut s.lane);
 }
@@ -37,7 +36,7 @@ pub(crate) fn tangent_map<F: Filter, W: Wrap>(s: &mut Scratch, map: &Texture<'_>
 /// Object-space normal map: the decoded texel through the normal matrix, normalised.
 pub(crate) fn object_map<F: Filter, W: Wrap>(s: &mut Scratch, map: &Texture<'_>, normal_matrix: &Mat3) {
     let mut texels = [0; BATCH_SIZE];
-    F::sample_packed_lanes::<W, BATCH_SIZE>(map, &s.uv, &mut texels);
+    F::sample_packed_lanes::<W, BATCH_SIZE>(map, &s.uv.x, &s.uv.y, &mut texels);
     for (i, &texel) in texels.iter().enumerate() {
         let m: Vec3 = decode_normal(texel);
         s.shading.set(i, *normal_matrix * m);

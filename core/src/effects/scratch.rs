@@ -1,8 +1,7 @@
 //! The working set of one batch of fragments, as a structure of arrays: each stage reads and writes whole
 //! columns.
 
-use super::columns::{Column, Column3};
-use crate::math::{Vec2, Vec4};
+use super::columns::{Column, Column2, Column3};
 use crate::pipeline::BATCH_SIZE;
 
 /// Per-fragment values of one batch. Only the first `len` lanes of each column are meaningful, and a column is
@@ -17,8 +16,12 @@ pub(crate) struct Scratch {
     /// Unit shading normal: the geometric one, or the normal map's.
     pub shading: Column3,
     pub world: Column3,
-    pub uv: [Vec2; BATCH_SIZE],
-    pub tangent: [Vec4; BATCH_SIZE],
+    /// Texture coordinates.
+    pub uv: Column2,
+    /// World tangent.
+    pub tangent: Column3,
+    /// The tangent frame's handedness: the sign of the bitangent.
+    pub handedness: Column,
     /// Unit vector from the surface toward the eye (for highlights).
     pub view: Column3,
     /// Albedo: material colour, times the diffuse map.
@@ -45,8 +48,9 @@ impl Scratch {
             geometric: v3,
             shading: v3,
             world: v3,
-            uv: [Vec2::ZERO; BATCH_SIZE],
-            tangent: [Vec4::ZERO; BATCH_SIZE],
+            uv: Column2::ZERO,
+            tangent: v3,
+            handedness: [0.0; BATCH_SIZE],
             view: v3,
             albedo: v3,
             diffuse: v3,

@@ -3,7 +3,7 @@
 use core::marker::PhantomData;
 
 // The stage loops are named directly so that `with_sampler!` can call them with their sampler types.
-use super::columns::Column3;
+use super::columns::{self, Column2, Column3};
 use super::maps::{albedo, glow, specular_color, with_sampler};
 use super::normals::{self, object_map, tangent_map};
 use super::scratch::Scratch;
@@ -155,26 +155,26 @@ where
     /// One fragment as a batch of one.
     fn fragment(&self, f: &Fragment, _: &(), v: &Self::Varyings) -> Vec3 {
         let mut colors = [Vec3::ZERO; BATCH_SIZE];
-        if let Some(batch) = FragmentBatch::from_fragments(core::slice::from_ref(f), core::slice::from_ref(v)) {
-            self.shade_batch(&(), &batch, &mut colors);
-        }
+        self.shade_batch(&(), &FragmentBatch::single(f, *v), &mut colors);
         colors[0]
     }
 
+    /// Interpolates the carried varyings into columns, lane by lane, and runs the variant's stages over them.
     #[inline(always)]
     fn shade_batch(&self, _: &(), batch: &FragmentBatch<Self::Varyings>, colors: &mut [Vec3; BATCH_SIZE]) {
         let mut s = Scratch::new(batch.len());
-        for (i, v) in batch.varyings().iter().enumerate() {
-            s.normal.set(i, v.normal);
-            if let Some(w) = v.world.get() {
-                s.world.set(i, w);
-            }
-            if let Some(uv) = v.uv.get() {
-                s.uv[i] = uv;
-            }
-            if let Some(t) = v.tangent.get() {
-                s.tangent[i] = t;
-            }
+        let [v0, d1, d2] = batch.triangle();
+        let w = batch.weights();
+        s.normal = Column3::interpolated(v0.normal, d1.normal, d2.normal, w);
+        if let (Some(v0), Some(d1), Some(d2)) = (v0.world.get(), d1.world.get(), d2.world.get()) {
+            s.world = Column3::interpolated(v0, d1, d2, w);
+        }
+        if let (Some(v0), Some(d1), Some(d2)) = (v0.uv.get(), d1.uv.get(), d2.uv.get()) {
+            s.uv = Column2::interpolated(v0, d1, d2, w);
+        }
+        if let (Some(v0), Some(d1), Some(d2)) = (v0.tangent.get(), d1.tangent.get(), d2.tangent.get()) {
+            s.tangent = Column3::interpolated(v0.truncate(), d1.truncate(), d2.truncate(), w);
+            s.handedness = columns::interpolated(v0.w, d1.w, d2.w, w);
         }
         self.shade(&mut s, colors);
     }

@@ -113,6 +113,15 @@ impl<'a> Mesh<'a> {
         Ok(Self { positions, normals: None, uvs: None, colors: None, indices })
     }
 
+    /// The same vertices and attributes with the triangles of `indices` instead (for example some of this mesh's
+    /// own, as a renderer that sorts triangles into bands of rows draws them).
+    ///
+    /// # Errors
+    /// As [`Mesh::new`].
+    pub fn with_indices(self, indices: Indices<'a>) -> Result<Self, MeshError> {
+        Ok(Self { indices: Self::new(self.positions, indices)?.indices, ..self })
+    }
+
     fn check_length(&self, attribute: &'static str, actual: usize) -> Result<(), MeshError> {
         let expected = self.positions.len();
         if actual == expected { Ok(()) } else { Err(MeshError::AttributeLength { attribute, expected, actual }) }

@@ -12,8 +12,19 @@ pub(crate) trait Interpolator: Copy {
     type Setup: Copy;
     /// Prepares a triangle from its vertices' `1/w` and the reciprocal of its doubled screen area.
     fn setup(&self, inv_w: [f32; 3], inv_area: f32) -> Self::Setup;
+    /// The weights of vertices 1 and 2 at a pixel with edge-function values `e`, as fractions `[n1, n2, d]`: the
+    /// weights are `n1 * (1 / d)` and `n2 * (1 / d)`. Split so that a batch of pixels can do its divisions at once
+    /// (see [`super::FragmentBatch`]).
+    fn fractions(&self, setup: &Self::Setup, e: [f32; 3]) -> [f32; 3];
+
     /// The weights of vertices 1 and 2 at a pixel with edge-function values `e`.
-    fn weights(&self, setup: &Self::Setup, e: [f32; 3]) -> (f32, f32);
+    #[inline(always)]
+    fn weights(&self, setup: &Self::Setup, e: [f32; 3]) -> (f32, f32) {
+        let [n1, n2, d] = self.fractions(setup, e);
+        // For `d = 1` (affine) this folds away: `1 / 1` and `n * 1` are exact.
+        let r = 1.0 / d;
+        (n1 * r, n2 * r)
+    }
 }
 
 /// Perspective-correct: `w_k = (e_k / w_k) / sum_j (e_j / w_j)` (Heckbert and Moreton, "Interpolation for
@@ -32,10 +43,9 @@ impl Interpolator for PerspectiveCorrect {
     }
 
     #[inline(always)]
-    fn weights(&self, q: &[f32; 3], e: [f32; 3]) -> (f32, f32) {
+    fn fractions(&self, q: &[f32; 3], e: [f32; 3]) -> [f32; 3] {
         let (l0, l1, l2) = (e[0] * q[0], e[1] * q[1], e[2] * q[2]);
-        let r = 1.0 / (l0 + l1 + l2);
-        (l1 * r, l2 * r)
+        [l1, l2, l0 + l1 + l2]
     }
 }
 
@@ -52,8 +62,8 @@ impl Interpolator for Affine {
     }
 
     #[inline(always)]
-    fn weights(&self, inv_area: &f32, e: [f32; 3]) -> (f32, f32) {
-        (e[1] * inv_area, e[2] * inv_area)
+    fn fractions(&self, inv_area: &f32, e: [f32; 3]) -> [f32; 3] {
+        [e[1] * inv_area, e[2] * inv_area, 1.0]
     }
 }
 
@@ -70,10 +80,10 @@ impl Interpolator for DynamicInterpolator {
     }
 
     #[inline(always)]
-    fn weights(&self, setup: &Self::Setup, e: [f32; 3]) -> (f32, f32) {
+    fn fractions(&self, setup: &Self::Setup, e: [f32; 3]) -> [f32; 3] {
         match self.0 {
-            Interpolation::PerspectiveCorrect => PerspectiveCorrect.weights(&setup.0, e),
-            Interpolation::Affine => Affine.weights(&setup.1, e),
+            Interpolation::PerspectiveCorrect => PerspectiveCorrect.fractions(&setup.0, e),
+            Interpolation::Affine => Affine.fractions(&setup.1, e),
         }
     }
 }

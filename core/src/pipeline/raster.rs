@@ -332,7 +332,8 @@ impl<E: Edges> Coverage<E> {
     }
 
     /// [`Coverage::fill`] for a [`Shader::BATCHED`] shader: the same fragments, in the same order, depth-tested
-    /// and interpolated alike, gathered into batches and shaded with [`Shader::shade_batch`].
+    /// alike, gathered with their interpolation weights into batches and shaded with [`Shader::shade_batch`], which
+    /// interpolates the varyings it reads.
     ///
     /// Its row walk repeats `fill`'s on purpose: sharing one walk through a closure made the per-pixel loop twice
     /// as slow (`cargo bench -p rasterm-core --bench render -- sphere_2_5k_phong_lambert_800x800`: fastest 13.4
@@ -359,10 +360,11 @@ impl<E: Edges> Coverage<E> {
         let (var_d1, var_d2) = (v1.sub(v0), v2.sub(v0));
         let width = target.width() as usize;
         let row0 = target.rows().start as i32;
-        let mut batch = FragmentBatch::new(*v0);
+        let mut batch = FragmentBatch::new(*v0, var_d1, var_d2, f.front_facing);
         let mut colors = [Vec3::ZERO; BATCH_SIZE];
         let mut shaded = 0u64;
         let mut flush = |batch: &mut FragmentBatch<S::Varyings>, target: &mut Target<C, D>| {
+            batch.resolve();
             stages.shader.shade_batch(face, batch, &mut colors);
             for (&index, &color) in batch.indices().iter().zip(&colors) {
                 target.color.write(index, color);
@@ -382,11 +384,9 @@ impl<E: Edges> Coverage<E> {
                 let z = f.z0 + ef[1] * f.dz1 + ef[2] * f.dz2;
                 let index = base + x as usize;
                 if stages.depth.test(&mut target.depth, index, z) {
-                    let (w1, w2) = stages.interpolator.weights(&setup, ef);
-                    let var = v0.interpolate(&var_d1, w1, &var_d2, w2);
-                    let fragment = Fragment { x: x as u32, y: y as u32, depth: z, front_facing: f.front_facing };
+                    let fractions = stages.interpolator.fractions(&setup, ef);
                     shaded += 1;
-                    if batch.push(fragment, var, index) {
+                    if batch.push(x as u32, y as u32, z, fractions, index) {
                         flush(&mut batch, target);
                     }
                 }

@@ -59,8 +59,8 @@ pub trait Shader {
     /// when [`Shader::BATCHED`] is set; by default it calls [`Shader::fragment`] for each.
     #[inline(always)]
     fn shade_batch(&self, face: &Self::Face, batch: &FragmentBatch<Self::Varyings>, colors: &mut [Vec3; BATCH_SIZE]) {
-        for ((c, f), v) in colors.iter_mut().zip(batch.fragments()).zip(batch.varyings()) {
-            *c = self.fragment(f, face, v);
+        for (i, c) in colors.iter_mut().enumerate().take(batch.len()) {
+            *c = self.fragment(&batch.fragment(i), face, &batch.varyings(i));
         }
     }
 }

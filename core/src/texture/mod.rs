@@ -83,8 +83,13 @@ impl<'a> Texture<'a> {
     /// The packed texel at column `x`, row `y` (row 0 at the top); the caller keeps them in range.
     #[inline(always)]
     fn packed(&self, x: i32, y: i32) -> u32 {
-        let i = y as usize * self.width as usize + x as usize;
-        self.texels.get(i).copied().unwrap_or(0)
+        self.texels.get(self.index(x, y) as usize).copied().unwrap_or(0)
+    }
+
+    /// The position in [`Self::texels`] of column `x`, row `y`, both in range (at most [`MAX_TEXTURE_SIZE`]^2 = 2^28).
+    #[inline(always)]
+    fn index(&self, x: i32, y: i32) -> u32 {
+        y as u32 * self.width as u32 + x as u32
     }
 
     /// Samples the texture at `uv` with filter `F` and wrap mode `W`, chosen at compile time.

@@ -60,13 +60,18 @@ pub trait Filter {
     /// Samples `texture` at `uv` with wrap mode `W`, as a packed `0x00RRGGBB` value.
     fn sample_packed<W: Wrap>(texture: &Texture<'_>, uv: Vec2) -> u32;
 
-    /// [`Filter::sample_packed`] at each of `uv`, into `out`: a batch of samples at once. Filters whose texel
-    /// addresses are plain arithmetic compute them for all lanes in one loop the compiler can widen, then read
-    /// the texels one by one.
+    /// [`Filter::sample_packed`] at each `(u[i], v[i])`, into `out[i]`: a batch of samples at once. Filters
+    /// whose texel addresses are plain arithmetic compute them for all lanes in one loop the compiler can widen,
+    /// then read the texels one by one.
     #[inline(always)]
-    fn sample_packed_lanes<W: Wrap, const N: usize>(texture: &Texture<'_>, uv: &[Vec2; N], out: &mut [u32; N]) {
-        for (o, uv) in out.iter_mut().zip(uv) {
-            *o = Self::sample_packed::<W>(texture, *uv);
+    fn sample_packed_lanes<W: Wrap, const N: usize>(
+        texture: &Texture<'_>,
+        u: &[f32; N],
+        v: &[f32; N],
+        out: &mut [u32; N],
+    ) {
+        for ((o, &u), &v) in out.iter_mut().zip(u).zip(v) {
+            *o = Self::sample_packed::<W>(texture, Vec2::new(u, v));
         }
     }
 
@@ -89,10 +94,15 @@ impl Filter for Nearest {
     }
 
     #[inline(always)]
-    fn sample_packed_lanes<W: Wrap, const N: usize>(t: &Texture<'_>, uv: &[Vec2; N], out: &mut [u32; N]) {
-        let texels = uv.map(|uv| Self::texel::<W>(t, uv));
-        for (o, (x, y)) in out.iter_mut().zip(texels) {
-            *o = t.packed(x, y);
+    fn sample_packed_lanes<W: Wrap, const N: usize>(t: &Texture<'_>, u: &[f32; N], v: &[f32; N], out: &mut [u32; N]) {
+        // Addresses in one loop over every lane (it widens), then the reads.
+        let mut index = [0u32; N];
+        for i in 0..N {
+            let (x, y) = Self::texel::<W>(t, Vec2::new(u[i], v[i]));
+            index[i] = t.index(x, y);
+        }
+        for (o, &i) in out.iter_mut().zip(&index) {
+            *o = t.texels.get(i as usize).copied().unwrap_or(0);
         }
     }
 }
@@ -185,7 +195,8 @@ mod tests {
         });
         fn check<F: Filter, W: Wrap>(texture: &Texture<'_>, uv: &[Vec2; 64]) {
             let mut lanes = [0; 64];
-            F::sample_packed_lanes::<W, 64>(texture, uv, &mut lanes);
+            let (u, v) = (uv.map(|uv| uv.x), uv.map(|uv| uv.y));
+            F::sample_packed_lanes::<W, 64>(texture, &u, &v, &mut lanes);
             for (i, (&lane, &uv)) in lanes.iter().zip(uv).enumerate() {
                 assert_eq!(lane, F::sample_packed::<W>(texture, uv), "lane {i} at {uv:?}");
             }

@@ -10,13 +10,16 @@ use rasterm_core::effects::{
     LightSource, SceneLights, ShadowBias, ShadowMap, ShadowView, SurfaceDraw, SurfaceVariant, clear_shadow_depth,
     draw_shadow_caster_band, draw_surface,
 };
+use rasterm_core::mesh::{Indices, Mesh};
 use rasterm_core::pipeline::{DrawState, DrawStats, draw_wireframe};
 use rasterm_core::target::{Rgb888, Target};
 
+use super::bins::TriangleBins;
 use super::material::part_material;
-use super::plan::tangents_for;
+use super::plan::{PlannedDraw, tangents_for};
 use super::{PreparedScene, ScenePlan, SceneRenderError};
 use crate::scene::WIREFRAME;
+use crate::scene_file::SceneObject;
 
 /// What one shadow pass did.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -35,8 +38,8 @@ pub struct ShadowPassReport {
 pub struct FrameReport {
     /// The shadow passes, in the plan's order.
     pub shadow_passes: Vec<ShadowPassReport>,
-    /// The forward pass's counts, wireframe lines' fragments included, summed over the bands: every band runs
-    /// every triangle, so a triangle counts once per band (as "outside" in the bands it misses).
+    /// The forward pass's counts, wireframe lines' fragments included, summed over the bands: a triangle counts
+    /// once in each band whose rows it may reach (with a margin), as "outside" in those it then misses.
     pub forward: DrawStats,
     /// How many bands of rows the frame was split into (see [`SceneRenderer`]).
     pub bands: usize,
@@ -72,10 +75,10 @@ struct ShadowSlot {
     depth: Vec<f32>,
 }
 
-/// At most this many bands of frame rows per thread when drawing on several: threads take the next band as they
-/// finish one, so a frame whose content sits in a few rows (a floor at the bottom, sky above) still keeps every
-/// thread busy.
-pub const BANDS_PER_THREAD: usize = 4;
+/// At most this many bands of frame rows per thread: threads take the next band as they finish one, so a frame
+/// whose content sits in a few rows (a floor at the bottom, sky above) still keeps every thread busy, and a band's
+/// colour and depth rows (8 bytes a pixel) stay in the core's cache from its clear to its last fragment.
+pub const BANDS_PER_THREAD: usize = 8;
 /// About this many pixels per band of a frame at least: each band repeats the vertex work of every draw, which a
 /// small frame would otherwise spend more time on than on its pixels.
 pub const BAND_PIXELS: usize = 65_536;
@@ -106,6 +109,8 @@ impl Default for SceneRenderer {
 
 /// The rows and buffers of one band of the frame.
 struct Band<'a> {
+    /// The band's place, top first.
+    index: usize,
     rows: Range<u32>,
     pixels: &'a mut [u32],
     depth: &'a mut [f32],
@@ -136,7 +141,7 @@ impl SceneRenderer {
 
     /// The number of bands of rows a frame is split into (fewer for a frame with fewer rows).
     fn bands(&self, pixels: usize) -> usize {
-        if self.threads == 1 { 1 } else { (pixels / BAND_PIXELS).clamp(self.threads, self.threads * BANDS_PER_THREAD) }
+        (pixels / BAND_PIXELS).clamp(self.threads, self.threads * BANDS_PER_THREAD)
     }
 
     /// Runs `plan` (made for `scene`) into `target`, which must be the plan's size: the shadow passes (each skipped
@@ -174,9 +179,20 @@ impl SceneRenderer {
         let (color, depth) = target.buffers_mut();
         let (pixels, depth) = (&mut *color.0, &mut **depth);
         let bands = split_rows(pixels, width, height, band_count);
-        let bands = bands.into_iter().zip(split_rows(depth, width, height, band_count));
-        let bands = bands.map(|((rows, pixels), (_, depth))| Band { rows, pixels, depth }).collect();
-        let results = on_threads(bands, self.threads, |band| forward_band(scene, plan, &lights, band, width, height));
+        let bands = bands.into_iter().zip(split_rows(depth, width, height, band_count)).enumerate();
+        let bands: Vec<_> =
+            bands.map(|(index, ((rows, pixels), (_, depth)))| Band { index, rows, pixels, depth }).collect();
+        let rows: Vec<_> = bands.iter().map(|band| band.rows.clone()).collect();
+        let bins = plan
+            .draws
+            .iter()
+            .map(|draw| {
+                let (_, mesh) = draw_mesh(scene, draw)?;
+                Ok(TriangleBins::new(&mesh, &draw.transforms.clip_from_object, height, &rows))
+            })
+            .collect::<Result<Vec<_>, SceneRenderError>>()?;
+        let results =
+            on_threads(bands, self.threads, |band| forward_band(scene, plan, &bins, &lights, band, width, height));
         for result in results {
             let result = result?;
             report.forward += result.stats;
@@ -318,10 +334,23 @@ fn on_threads<J: Send, T: Send>(jobs: Vec<J>, threads: usize, work: impl Fn(J) -
     results.into_iter().map(|(_, result)| result).collect()
 }
 
-/// The forward pass over one band: clears it to the background and draws every planned part into it.
+/// The mesh of a planned draw.
+fn draw_mesh<'a>(
+    scene: &'a PreparedScene,
+    draw: &PlannedDraw,
+) -> Result<(&'a SceneObject, Mesh<'a>), SceneRenderError> {
+    let mismatch = || SceneRenderError::Target(format!("the plan's {} is not in the scene", draw.label));
+    let object = scene.data().objects.get(draw.object).ok_or_else(mismatch)?;
+    let mesh = object.model.part_mesh(draw.part).ok_or_else(mismatch)?;
+    Ok((object, mesh))
+}
+
+/// The forward pass over one band: clears it to the background and draws every planned part into it, each with
+/// the triangles that `bins` sorted into the band.
 fn forward_band(
     scene: &PreparedScene,
     plan: &ScenePlan,
+    bins: &[TriangleBins],
     lights: &SceneLights<'_>,
     band: Band<'_>,
     width: u32,
@@ -329,23 +358,23 @@ fn forward_band(
 ) -> Result<BandResult, SceneRenderError> {
     let mut target = Target::band(Rgb888(band.pixels), band.depth, width, height, band.rows)?;
     target.clear(plan.background);
-    let objects = &scene.data().objects;
     let mut result = BandResult { stats: DrawStats::default(), variants: Vec::with_capacity(plan.draws.len()) };
-    for draw in &plan.draws {
-        let mismatch = || SceneRenderError::Target(format!("the plan's {} is not in the scene", draw.label));
-        let object = objects.get(draw.object).ok_or_else(mismatch)?;
-        let mesh = object.model.part_mesh(draw.part).ok_or_else(mismatch)?;
+    for (draw, bins) in plan.draws.iter().zip(bins) {
+        let (object, mesh) = draw_mesh(scene, draw)?;
+        let triangles = mesh.with_indices(Indices::U32(bins.band(band.index)));
+        let triangles = triangles.map_err(|error| SceneRenderError::Target(format!("{}: {error}", draw.label)))?;
         let material = part_material(object, draw.part, &plan.options)
             .map_err(|error| SceneRenderError::Texture { draw: draw.label.clone(), error })?;
         let tangents = tangents_for(scene, draw.object, &material);
-        let surface = SurfaceDraw { mesh, tangents, transforms: draw.transforms, material };
+        let surface = SurfaceDraw { mesh: triangles, tangents, transforms: draw.transforms, material };
         let (variant, stats) = draw_surface(&mut target, &surface, lights, &DrawState::DEFAULT)
             .map_err(|error| SceneRenderError::Draw { draw: draw.label.clone(), error })?;
         result.stats += stats;
         if plan.wireframe {
             // The lines' pixels count as fragments; their triangles are the ones counted above.
             let clip = &draw.transforms.clip_from_object;
-            result.stats.fragments += draw_wireframe(&mut target, &mesh, clip, &WIREFRAME, &variant.state).fragments;
+            let lines = draw_wireframe(&mut target, &triangles, clip, &WIREFRAME, &variant.state);
+            result.stats.fragments += lines.fragments;
         }
         result.variants.push(variant);
     }
