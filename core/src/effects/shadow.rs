@@ -387,9 +387,11 @@ impl<'a> ShadowMap<'a> {
             return self.lit_taps_any(R, tx, ty, z);
         }
         let side = (2 * R + 1) as usize;
+        let first = ((ty - R) * size + tx - R) as usize;
         let mut lit = 0u32;
-        for y in ty - R..=ty + R {
-            let start = (y * size + tx - R) as usize;
+        // Rows counted with a constant bound (not an inclusive range of rows), so the loop unrolls.
+        for row in 0..side {
+            let start = first + row * size as usize;
             // In the map (checked above); `get` keeps the lookup panic-free regardless.
             if let Some(row) = self.depth.get(start..start + side) {
                 for &stored in row {
