@@ -343,7 +343,11 @@ pub fn header(report: &EffectsReport, plans: &[ScenePlan], threads: usize, machi
         format!("- command: `{}` ({build})", report.command_line()),
         format!("- machine: {machine}"),
         if threads == 1 {
-            "- threads: 1 (every pass drawn whole)".to_owned()
+            format!(
+                "- threads: 1 (shadow maps drawn whole; frames in one band per {} pixels, 1 to {} bands, drawn one \
+                 after another)",
+                BAND_PIXELS, BANDS_PER_THREAD
+            )
         } else {
             format!(
                 "- threads: {threads} (shadow maps drawn in {threads} bands of rows; frames in one band per {} \
