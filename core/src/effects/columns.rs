@@ -78,6 +78,18 @@ impl Column3 {
         }
     }
 
+    /// `to - from[i]` in every lane: the vectors from the lanes' points to one point.
+    #[inline(always)]
+    pub fn toward(to: Vec3, from: &Self) -> Self {
+        let mut d = Self::ZERO;
+        for i in 0..BATCH_SIZE {
+            d.x[i] = to.x - from.x[i];
+            d.y[i] = to.y - from.y[i];
+            d.z[i] = to.z - from.z[i];
+        }
+        d
+    }
+
     /// Lane `i`.
     #[inline(always)]
     pub fn get(&self, i: usize) -> Vec3 {

@@ -23,23 +23,14 @@ pub(crate) fn light(s: &mut Scratch, lights: &SceneLights<'_>, eye: Vec3, shinin
     if specular {
         s.specular = Column3::ZERO;
         // The direction to the eye, once for every light.
-        for i in 0..BATCH_SIZE {
-            s.view.x[i] = eye.x - s.world.x[i];
-            s.view.y[i] = eye.y - s.world.y[i];
-            s.view.z[i] = eye.z - s.world.z[i];
-        }
+        s.view = Column3::toward(eye, &s.world);
         s.view.normalize(len, &mut s.lane);
     }
     for light in lights.lights {
         let to_light = match light.kind {
             LightKind::Directional { to_light } => Column3::splat(to_light),
             LightKind::Point { position } => {
-                let mut l = Column3::ZERO;
-                for i in 0..BATCH_SIZE {
-                    l.x[i] = position.x - s.world.x[i];
-                    l.y[i] = position.y - s.world.y[i];
-                    l.z[i] = position.z - s.world.z[i];
-                }
+                let mut l = Column3::toward(position, &s.world);
                 l.normalize(len, &mut s.lane);
                 l
             }

@@ -311,13 +311,8 @@ impl<'a> ShadowMap<'a> {
         let texel = match self.view.texel {
             TexelSize::Constant(t) => [t; BATCH_SIZE],
             TexelSize::Perspective { eye, per_distance } => {
-                // `texel_at`, lane by lane.
-                let mut d = Column3::ZERO;
-                for i in 0..BATCH_SIZE {
-                    d.x[i] = p.x[i] - eye.x;
-                    d.y[i] = p.y[i] - eye.y;
-                    d.z[i] = p.z[i] - eye.z;
-                }
+                // `texel_at`, lane by lane: `|p - eye|`, which is `|eye - p|` bit for bit (squares lose the sign).
+                let d = Column3::toward(eye, p);
                 let mut length = [0.0; BATCH_SIZE];
                 d.dot(&d, &mut length);
                 columns::sqrt_lanes(&mut length, len);

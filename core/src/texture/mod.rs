@@ -83,7 +83,13 @@ impl<'a> Texture<'a> {
     /// The packed texel at column `x`, row `y` (row 0 at the top); the caller keeps them in range.
     #[inline(always)]
     fn packed(&self, x: i32, y: i32) -> u32 {
-        self.texels.get(self.index(x, y) as usize).copied().unwrap_or(0)
+        self.at(self.index(x, y))
+    }
+
+    /// The packed texel at position `index` of [`Self::texels`] (0 past the end, which in-range texels never are).
+    #[inline(always)]
+    fn at(&self, index: u32) -> u32 {
+        self.texels.get(index as usize).copied().unwrap_or(0)
     }
 
     /// The position in [`Self::texels`] of column `x`, row `y`, both in range (at most [`MAX_TEXTURE_SIZE`]^2 = 2^28).

@@ -102,7 +102,7 @@ impl Filter for Nearest {
             index[i] = t.index(x, y);
         }
         for (o, &i) in out.iter_mut().zip(&index) {
-            *o = t.texels.get(i as usize).copied().unwrap_or(0);
+            *o = t.at(i);
         }
     }
 }

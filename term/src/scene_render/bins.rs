@@ -8,6 +8,7 @@
 
 use std::ops::Range;
 
+use rasterm_core::camera::Viewport;
 use rasterm_core::math::Mat4;
 use rasterm_core::mesh::Mesh;
 
@@ -22,17 +23,17 @@ pub struct TriangleBins {
 }
 
 impl TriangleBins {
-    /// Sorts the triangles of `mesh`, drawn with `clip_from_object` into a frame `height` rows high, into `bands`
+    /// Sorts the triangles of `mesh`, drawn with `clip_from_object` into a `width x height` frame, into `bands`
     /// (row ranges, top first, in order).
-    pub fn new(mesh: &Mesh<'_>, clip_from_object: &Mat4, height: u32, bands: &[Range<u32>]) -> Self {
-        let half_height = height as f32 * 0.5;
-        // The screen row of each vertex (as `Viewport::to_screen` maps NDC y), NaN where it is uncertain.
+    pub fn new(mesh: &Mesh<'_>, clip_from_object: &Mat4, (width, height): (u32, u32), bands: &[Range<u32>]) -> Self {
+        let viewport = Viewport::full(width, height);
+        // The screen row of each vertex, as the rasterizer maps it, NaN where it is uncertain.
         let rows: Vec<f32> = mesh
             .positions()
             .iter()
             .map(|&p| {
                 let clip = clip_from_object.project_point(p);
-                if clip.w > 0.0 { (1.0 - clip.y / clip.w) * half_height } else { f32::NAN }
+                if clip.w > 0.0 { viewport.clip_to_screen(clip).y } else { f32::NAN }
             })
             .collect();
         let mut sorted = TriangleBins { bands: vec![Vec::new(); bands.len()] };
@@ -112,7 +113,7 @@ mod tests {
 
         for cuts in [vec![0, 48], vec![0, 1, 2, 17, 30, 47, 48], (0..=48).collect::<Vec<u32>>()] {
             let bands: Vec<Range<u32>> = cuts.windows(2).map(|c| c[0]..c[1]).collect();
-            let bins = TriangleBins::new(&mesh, &clip, h, &bands);
+            let bins = TriangleBins::new(&mesh, &clip, (w, h), &bands);
             let (mut banded, mut depth) = (vec![0u32; (w * h) as usize], vec![0f32; (w * h) as usize]);
             let mut sorted = 0;
             for (i, rows) in bands.iter().enumerate() {

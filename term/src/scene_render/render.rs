@@ -79,8 +79,9 @@ struct ShadowSlot {
 /// whose content sits in a few rows (a floor at the bottom, sky above) still keeps every thread busy, and a band's
 /// colour and depth rows (8 bytes a pixel) stay in the core's cache from its clear to its last fragment.
 pub const BANDS_PER_THREAD: usize = 8;
-/// About this many pixels per band of a frame at least: each band repeats the vertex work of every draw, which a
-/// small frame would otherwise spend more time on than on its pixels.
+/// About this many pixels per band of a frame at least: each band repeats the set-up of every draw and the vertex
+/// work of the triangles it shares with its neighbours, which a small frame would otherwise spend more time on than
+/// on its pixels.
 pub const BAND_PIXELS: usize = 65_536;
 
 /// Draws [`ScenePlan`]s, keeping the shadow maps' buffers between frames.
@@ -93,8 +94,9 @@ pub const BAND_PIXELS: usize = 65_536;
 /// The shadow passes split their map into one band of rows per thread; the forward pass and the ambient
 /// occlusion step split the frame into one band per [`BAND_PIXELS`] pixels, at least one and at most
 /// [`BANDS_PER_THREAD`] per thread, which the threads take in turn. Each band runs the whole draw list into its own
-/// rows (the core clips every triangle to the band), so maps and pixels are the same for any number of threads:
-/// only the vertex work is repeated per band.
+/// rows, each draw with the triangles sorted into the band (conservatively, by their screen rows; the core clips
+/// every triangle to the band), so maps and pixels are the same for any number of threads: only the vertex work
+/// of triangles that reach several bands is repeated.
 #[derive(Debug)]
 pub struct SceneRenderer {
     slots: Vec<ShadowSlot>,
@@ -188,7 +190,7 @@ impl SceneRenderer {
             .iter()
             .map(|draw| {
                 let (_, mesh) = draw_mesh(scene, draw)?;
-                Ok(TriangleBins::new(&mesh, &draw.transforms.clip_from_object, height, &rows))
+                Ok(TriangleBins::new(&mesh, &draw.transforms.clip_from_object, (width, height), &rows))
             })
             .collect::<Result<Vec<_>, SceneRenderError>>()?;
         let results =
