@@ -131,11 +131,14 @@ impl Column3 {
         for i in 0..BATCH_SIZE {
             let l = lengths[i];
             // `l > 0.0 && l.is_finite()`, as `Vec3::try_normalize` asks (NaN fails both); lanes past `len` fail.
-            let usable = i < len && l > 0.0 && l < f32::INFINITY;
+            // Non-short-circuit `&` and products computed before the choice: written with `&&` and the products
+            // inside it, the loop compiled to a branch per lane instead of SIMD.
+            let usable = (i < len) & (l > 0.0) & (l < f32::INFINITY);
             let inv = 1.0 / l;
-            self.x[i] = if usable { self.x[i] * inv } else { 0.0 };
-            self.y[i] = if usable { self.y[i] * inv } else { 0.0 };
-            self.z[i] = if usable { self.z[i] * inv } else { 0.0 };
+            let (x, y, z) = (self.x[i] * inv, self.y[i] * inv, self.z[i] * inv);
+            self.x[i] = if usable { x } else { 0.0 };
+            self.y[i] = if usable { y } else { 0.0 };
+            self.z[i] = if usable { z } else { 0.0 };
         }
     }
 }

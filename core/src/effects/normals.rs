@@ -1,5 +1,6 @@
 //! Shading normals over a batch: the interpolated normal, or a tangent-space or object-space normal map.
 
+use super::maps::MapReader;
 use super::material::decode_normal;
 use super::scratch::Scratch;
 use crate::math::{Mat3, Vec3};
@@ -21,9 +22,9 @@ pub(crate) fn interpolated(s: &mut Scratch, shading_too: bool) {
 /// The frame's vectors are used as interpolated, not renormalised (the convention of MikkTSpace, mikktspace.com),
 /// so the flat texel `(128, 128, 255)`, which decodes to exactly `(0, 0, 1)`, gives the interpolated normal
 /// normalised, bit for bit the normal of a draw without the map.
-pub(crate) fn tangent_map<F: Filter, W: Wrap>(s: &mut Scratch, map: &Texture<'_>) {
+pub(crate) fn tangent_map<F: Filter, W: Wrap>(s: &mut Scratch, maps: &mut MapReader<F, W>, map: &Texture<'_>) {
     let mut texels = [0; BATCH_SIZE];
-    F::sample_packed_lanes::<W, BATCH_SIZE>(map, &s.uv.x, &s.uv.y, &mut texels);
+    maps.read(map, &s.uv, &mut texels);
     for (i, &texel) in texels.iter().enumerate() {
         let (n, t) = (s.normal.get(i), s.tangent.get(i));
         let b = n.cross(t) * s.handedness[i];
@@ -34,9 +35,14 @@ pub(crate) fn tangent_map<F: Filter, W: Wrap>(s: &mut Scratch, map: &Texture<'_>
 }
 
 /// Object-space normal map: the decoded texel through the normal matrix, normalised.
-pub(crate) fn object_map<F: Filter, W: Wrap>(s: &mut Scratch, map: &Texture<'_>, normal_matrix: &Mat3) {
+pub(crate) fn object_map<F: Filter, W: Wrap>(
+    s: &mut Scratch,
+    maps: &mut MapReader<F, W>,
+    map: &Texture<'_>,
+    normal_matrix: &Mat3,
+) {
     let mut texels = [0; BATCH_SIZE];
-    F::sample_packed_lanes::<W, BATCH_SIZE>(map, &s.uv.x, &s.uv.y, &mut texels);
+    maps.read(map, &s.uv, &mut texels);
     for (i, &texel) in texels.iter().enumerate() {
         let m: Vec3 = decode_normal(texel);
         s.shading.set(i, *normal_matrix * m);

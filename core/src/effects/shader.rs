@@ -2,9 +2,8 @@
 
 use core::marker::PhantomData;
 
-// The stage loops are named directly so that `with_sampler!` can call them with their sampler types.
 use super::columns::{self, Column2, Column3};
-use super::maps::{albedo, glow, specular_color, with_sampler};
+use super::maps::{MapReader, albedo, glow, specular_color};
 use super::normals::{self, object_map, tangent_map};
 use super::scratch::Scratch;
 use super::varyings::{Slot, SurfaceVaryings};
@@ -13,6 +12,7 @@ use crate::math::{Mat3, Vec2, Vec3, Vec4};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{BATCH_SIZE, Fragment, FragmentBatch, Shader};
 use crate::shading::Transforms;
+use crate::texture::{Bilinear, Clamp, Filter, FilterMode, Nearest, Repeat, Wrap, WrapMode};
 
 /// Shades a mesh with a [`SurfaceMaterial`] under [`SceneLights`], computing what its [`SurfaceVariant`] says.
 ///
@@ -64,29 +64,40 @@ where
 
     /// Runs the stages of the variant over `s`, whose varyings columns are filled, into `colors`.
     fn shade(&self, s: &mut Scratch, colors: &mut [Vec3; BATCH_SIZE]) {
+        // One decision per batch: every map of a draw is read with the draw's filter and wrap mode.
+        match (self.variant.filter, self.variant.wrap) {
+            (FilterMode::Nearest, WrapMode::Repeat) => self.stages::<Nearest, Repeat>(s, colors),
+            (FilterMode::Nearest, WrapMode::Clamp) => self.stages::<Nearest, Clamp>(s, colors),
+            (FilterMode::Bilinear, WrapMode::Repeat) => self.stages::<Bilinear, Repeat>(s, colors),
+            (FilterMode::Bilinear, WrapMode::Clamp) => self.stages::<Bilinear, Clamp>(s, colors),
+        }
+    }
+
+    /// [`Self::shade`] with the maps read with filter `F` and wrap mode `Wr`, through one [`MapReader`]: maps of
+    /// one size share their texel addresses.
+    #[inline(always)]
+    fn stages<F: Filter, Wr: Wrap>(&self, s: &mut Scratch, colors: &mut [Vec3; BATCH_SIZE]) {
+        let maps = &mut MapReader::<F, Wr>::new();
         let v = &self.variant;
         let m = &self.material;
-        let (filter, wrap) = (v.filter, v.wrap);
         normals::interpolated(s, v.normals == NormalSource::Interpolated);
         match (v.normals, m.normal_map) {
-            (NormalSource::TangentMap, Some(map)) => with_sampler!(filter, wrap, tangent_map(s, &map.texture)),
-            (NormalSource::ObjectMap, Some(map)) => {
-                with_sampler!(filter, wrap, object_map(s, &map.texture, &self.transforms.normal));
-            }
+            (NormalSource::TangentMap, Some(map)) => tangent_map(s, maps, &map.texture),
+            (NormalSource::ObjectMap, Some(map)) => object_map(s, maps, &map.texture, &self.transforms.normal),
             _ => {}
         }
         match m.diffuse {
-            Some(map) if v.albedo_map => with_sampler!(filter, wrap, albedo(s, &map, m.color)),
+            Some(map) if v.albedo_map => albedo(s, maps, &map, m.color),
             _ => s.albedo = Column3::splat(m.color),
         }
         let specular = v.specular != SpecularSource::None;
         lighting::light(s, &self.lights, self.transforms.eye, m.shininess, specular);
         match (v.specular, m.specular_map) {
-            (SpecularSource::Map, Some(map)) => with_sampler!(filter, wrap, specular_color(s, &map, m.specular)),
+            (SpecularSource::Map, Some(map)) => specular_color(s, maps, &map, m.specular),
             _ => s.specular_color = Column3::splat(m.specular),
         }
         if let (true, Some(map)) = (v.glow_map, m.glow_map) {
-            with_sampler!(filter, wrap, glow(s, &map));
+            glow(s, maps, &map);
         }
         let out = &mut colors[..s.len];
         match (specular, v.glow_map) {

@@ -356,8 +356,9 @@ impl<'a> ShadowMap<'a> {
         let inv_w = 1.0 / clip.w;
         let half = self.view.size as f32 * 0.5;
         // NDC to texels as the pipeline's viewport maps them: x right, y down, pixel centres at +0.5.
-        let tx = float::floor_to_i32((clip.x * inv_w + 1.0) * half);
-        let ty = float::floor_to_i32((1.0 - clip.y * inv_w) * half);
+        // Clamped far outside any map (so that `tx + r` cannot overflow), and widened to SIMD in a loop of lanes.
+        let tx = float::floor_to_i32_clamped((clip.x * inv_w + 1.0) * half);
+        let ty = float::floor_to_i32_clamped((1.0 - clip.y * inv_w) * half);
         // A point beyond the map's far plane compares as on it: lit wherever nothing was drawn.
         let z = float::min(clip.z * inv_w, 1.0) - b.depth;
         (in_front, tx, ty, z)

@@ -131,6 +131,19 @@ pub fn floor_to_i32(x: f32) -> i32 {
     t.saturating_sub(i32::from((t as f32) > x))
 }
 
+/// `floor(x)` as an integer for `x` within `±(2^22 - 1)`; beyond, the floor of `x` clamped to that range, and NaN
+/// gives 0 (as [`floor_to_i32`] does).
+///
+/// Unlike [`floor_to_i32`], it has no saturating conversion (which compiles to a branch per value), so a loop of
+/// it widens to SIMD: the clamped floor plus `2^22` is a whole number in `(0, 2^23)`, read from the mantissa bits
+/// by [`round_small_to_u32`].
+#[inline(always)]
+pub fn floor_to_i32_clamped(x: f32) -> i32 {
+    const LIMIT: f32 = 4_194_303.0; // 2^22 - 1
+    let x = if x.is_nan() { 0.0 } else { clamp(x, -LIMIT, LIMIT) };
+    round_small_to_u32(floor(x) + 4_194_304.0) as i32 - 4_194_304
+}
+
 /// `x` in `[0, 2^23)` rounded to the nearest integer (ties to even). Outside that range the result is
 /// meaningless but defined (never a panic), so callers bound `x` first.
 ///
@@ -146,4 +159,30 @@ pub fn round_small_to_u32(x: f32) -> u32 {
 #[inline(always)]
 pub fn quantize_unit(x: f32, max: f32) -> u32 {
     round_small_to_u32(clamp(x, 0.0, 1.0) * max)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Within `±(2^22 - 1)` the clamped floor is [`floor_to_i32`]'s, bit for bit; beyond it clamps, and NaN
+    /// gives 0 as in [`floor_to_i32`].
+    #[test]
+    fn clamped_floor_matches_the_saturating_floor_in_range() {
+        let limit = 4_194_303.0;
+        let samples = [0.0, -0.0, 0.5, -0.5, 1.0, -1.0, 0.999_999_9, -1e-30, 2.5, -2.5, limit, -limit, 4_194_302.5];
+        for x in samples.into_iter().chain((0..2000).map(|i| (i as f32 - 1000.0) * 1234.567)) {
+            assert_eq!(floor_to_i32_clamped(x), floor_to_i32(x), "{x}");
+        }
+        for (x, expected) in [
+            (4_194_303.5, 4_194_303),
+            (1e30, 4_194_303),
+            (f32::INFINITY, 4_194_303),
+            (-4_194_303.5, -4_194_303),
+            (f32::NEG_INFINITY, -4_194_303),
+            (f32::NAN, 0),
+        ] {
+            assert_eq!(floor_to_i32_clamped(x), expected, "{x}");
+        }
+    }
 }

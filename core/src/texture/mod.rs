@@ -95,7 +95,13 @@ impl<'a> Texture<'a> {
     /// The position in [`Self::texels`] of column `x`, row `y`, both in range (at most [`MAX_TEXTURE_SIZE`]^2 = 2^28).
     #[inline(always)]
     fn index(&self, x: i32, y: i32) -> u32 {
-        y as u32 * self.width as u32 + x as u32
+        Self::index_in(self.width, x, y)
+    }
+
+    /// [`Self::index`] in a texture `width` texels wide.
+    #[inline(always)]
+    fn index_in(width: i32, x: i32, y: i32) -> u32 {
+        y as u32 * width as u32 + x as u32
     }
 
     /// Samples the texture at `uv` with filter `F` and wrap mode `W`, chosen at compile time.

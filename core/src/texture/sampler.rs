@@ -57,12 +57,24 @@ impl Wrap for Clamp {
 
 /// How a texel colour is reconstructed from the texels around a sample point.
 pub trait Filter {
+    /// Where a batch of `N` samples reads a texture: it depends on the texture's size, not on its texels, so
+    /// textures of one size sampled at the same coordinates (a material's maps, usually) share it.
+    type Addresses<const N: usize>: Copy;
+
     /// Samples `texture` at `uv` with wrap mode `W`, as a packed `0x00RRGGBB` value.
     fn sample_packed<W: Wrap>(texture: &Texture<'_>, uv: Vec2) -> u32;
 
-    /// [`Filter::sample_packed`] at each `(u[i], v[i])`, into `out[i]`: a batch of samples at once. Filters
-    /// whose texel addresses are plain arithmetic compute them for all lanes in one loop the compiler can widen,
-    /// then read the texels one by one.
+    /// The addresses of the samples at each `(u[i], v[i])` in a `width x height` texture (as
+    /// [`Texture::new`] accepts it). Filters whose addresses are plain arithmetic compute them for all lanes in one
+    /// loop the compiler can widen.
+    fn addresses<W: Wrap, const N: usize>(width: u32, height: u32, u: &[f32; N], v: &[f32; N]) -> Self::Addresses<N>;
+
+    /// The samples of `texture` at `addresses` (made for its size), into `out[i]`: what
+    /// [`Filter::sample_packed`] gives at each lane's coordinates. Addresses made for another size read other
+    /// texels (0 past the end), never panic.
+    fn read<W: Wrap, const N: usize>(texture: &Texture<'_>, addresses: &Self::Addresses<N>, out: &mut [u32; N]);
+
+    /// [`Filter::sample_packed`] at each `(u[i], v[i])`, into `out[i]`: a batch of samples at once.
     #[inline(always)]
     fn sample_packed_lanes<W: Wrap, const N: usize>(
         texture: &Texture<'_>,
@@ -70,9 +82,8 @@ pub trait Filter {
         v: &[f32; N],
         out: &mut [u32; N],
     ) {
-        for ((o, &u), &v) in out.iter_mut().zip(u).zip(v) {
-            *o = Self::sample_packed::<W>(texture, Vec2::new(u, v));
-        }
+        let addresses = Self::addresses::<W, N>(texture.width(), texture.height(), u, v);
+        Self::read::<W, N>(texture, &addresses, out);
     }
 
     /// Samples `texture` at `uv` with wrap mode `W`, channels in `[0, 1]`.
@@ -87,31 +98,38 @@ pub trait Filter {
 pub struct Nearest;
 
 impl Filter for Nearest {
+    /// The position of each lane's texel in the texture's row-major texels.
+    type Addresses<const N: usize> = [u32; N];
+
     #[inline(always)]
     fn sample_packed<W: Wrap>(t: &Texture<'_>, uv: Vec2) -> u32 {
-        let (x, y) = Self::texel::<W>(t, uv);
+        let (x, y) = Self::texel::<W>(t.width, t.height, uv);
         t.packed(x, y)
     }
 
     #[inline(always)]
-    fn sample_packed_lanes<W: Wrap, const N: usize>(t: &Texture<'_>, u: &[f32; N], v: &[f32; N], out: &mut [u32; N]) {
-        // Addresses in one loop over every lane (it widens), then the reads.
+    fn addresses<W: Wrap, const N: usize>(width: u32, height: u32, u: &[f32; N], v: &[f32; N]) -> [u32; N] {
+        let (w, h) = (width as i32, height as i32);
         let mut index = [0u32; N];
         for i in 0..N {
-            let (x, y) = Self::texel::<W>(t, Vec2::new(u[i], v[i]));
-            index[i] = t.index(x, y);
+            let (x, y) = Self::texel::<W>(w, h, Vec2::new(u[i], v[i]));
+            index[i] = Texture::index_in(w, x, y);
         }
-        for (o, &i) in out.iter_mut().zip(&index) {
+        index
+    }
+
+    #[inline(always)]
+    fn read<W: Wrap, const N: usize>(t: &Texture<'_>, index: &[u32; N], out: &mut [u32; N]) {
+        for (o, &i) in out.iter_mut().zip(index) {
             *o = t.at(i);
         }
     }
 }
 
 impl Nearest {
-    /// The column and row of the texel containing `uv`.
+    /// The column and row of the texel containing `uv` in a `w x h` texture.
     #[inline(always)]
-    fn texel<W: Wrap>(t: &Texture<'_>, uv: Vec2) -> (i32, i32) {
-        let (w, h) = (t.width, t.height);
+    fn texel<W: Wrap>(w: i32, h: i32, uv: Vec2) -> (i32, i32) {
         // In [0, size]: floor is exact, and the integer conversion needs no saturation.
         let x = float::round_small_to_u32(float::floor(W::reduce(uv.x) * w as f32)) as i32;
         let y = float::round_small_to_u32(float::floor((1.0 - W::reduce(uv.y)) * h as f32)) as i32;
@@ -128,6 +146,22 @@ impl Nearest {
 pub struct Bilinear;
 
 impl Filter for Bilinear {
+    /// The lanes' coordinates: the four texels and their weights are worked out per sample, in
+    /// [`Filter::read`].
+    type Addresses<const N: usize> = ([f32; N], [f32; N]);
+
+    #[inline(always)]
+    fn addresses<W: Wrap, const N: usize>(_: u32, _: u32, u: &[f32; N], v: &[f32; N]) -> Self::Addresses<N> {
+        (*u, *v)
+    }
+
+    #[inline(always)]
+    fn read<W: Wrap, const N: usize>(t: &Texture<'_>, (u, v): &Self::Addresses<N>, out: &mut [u32; N]) {
+        for ((o, &u), &v) in out.iter_mut().zip(u).zip(v) {
+            *o = Self::sample_packed::<W>(t, Vec2::new(u, v));
+        }
+    }
+
     #[inline(always)]
     fn sample_packed<W: Wrap>(t: &Texture<'_>, uv: Vec2) -> u32 {
         let (w, h) = (t.width, t.height);
