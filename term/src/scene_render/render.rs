@@ -269,7 +269,11 @@ impl SceneRenderer {
             }
             slot.key = None;
             let side = pass.map_size as usize;
-            slot.depth.resize(side * side, 1.0);
+            if slot.depth.len() != side * side {
+                // Zeroed memory comes from the allocator untouched; the bands' clears below fill it (page faults
+                // and all) on their own threads, once.
+                slot.depth = vec![0.0; side * side];
+            }
             // One band per thread: casters are few fragments for their vertex work, which every band repeats.
             let bands = split_rows(&mut slot.depth, pass.map_size, pass.map_size, threads);
             let results = on_threads(bands, threads, |(rows, depth)| {
