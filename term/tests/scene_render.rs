@@ -234,7 +234,7 @@ fn ambient_occlusion_darkens_creases_and_only_darkens() {
 #[test]
 fn shadow_maps_are_kept_while_only_the_camera_moves() {
     let scene = example("spot_sun.toml");
-    let (w, h) = (64u32, 48u32);
+    let (w, h) = (160u32, 120u32);
     let (mut color, mut depth) = (vec![0u32; (w * h) as usize], vec![0f32; (w * h) as usize]);
     let mut renderer = SceneRenderer::new();
     let mut frame = |camera: &rasterm::scene_file::SceneCamera| {
@@ -248,7 +248,9 @@ fn shadow_maps_are_kept_while_only_the_camera_moves() {
     assert!(!reused, "the first frame draws its map");
     let (reused, again) = frame(&camera);
     assert!(reused, "the same frame again reuses it");
+    // The second frame works out the map's window ranges and decides most lookups by them: the same light.
     assert_eq!(first, again);
+    assert_eq!(frame(&camera).1, first, "and so does the third, which finds the ranges ready");
     let mut moved = camera;
     moved.position += Vec3::new(0.3, 0.0, 0.0);
     assert!(frame(&moved).0, "a moved camera reuses it too");

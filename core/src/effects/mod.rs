@@ -4,7 +4,9 @@
 //! A frame with effects is a sequence of passes, each run only if the scene needs it:
 //!
 //! 1. **Shadow passes**, one per shadow-casting light: [`ShadowView::fit`] frames the scene from the light, and
-//!    [`draw_shadow_caster`] draws every object's depth into a buffer the caller owns.
+//!    [`draw_shadow_caster`] draws every object's depth into a buffer the caller owns. For a filtered map,
+//!    [`window_ranges_band`] then records each filter window's nearest and farthest depth ([`WindowRanges`]), so
+//!    that most lookups read one value instead of the whole window.
 //! 2. **Forward pass**: [`draw_surface`] per object. [`SurfaceVariant::resolve`] decides, once per draw, which
 //!    varyings are interpolated (world position, texture coordinates, tangents) and which fragment stages run:
 //!    normals (interpolated or from a map), albedo, lights (each with or without its shadow map and
@@ -27,6 +29,7 @@ mod occlusion;
 mod scratch;
 mod shader;
 mod shadow;
+mod shadow_windows;
 mod variant;
 mod varyings;
 
@@ -39,5 +42,6 @@ pub use shadow::{
     Bounds, ShadowBias, ShadowError, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster,
     draw_shadow_caster_band,
 };
+pub use shadow_windows::{WindowRanges, window_ranges_band};
 pub use variant::{NormalSource, SpecularSource, SurfaceError, SurfaceVariant};
 pub use varyings::{Absent, Slot, SurfaceVaryings};

@@ -11,6 +11,7 @@ use core::ops::Range;
 
 use super::LightKind;
 use super::columns::{self, Column, Column3};
+use super::shadow_windows::WindowRanges;
 use crate::camera::{CameraError, look_at, orthographic, perspective};
 use crate::math::{Mat4, Vec3, Vec4, float};
 use crate::mesh::{Attributes, Mesh};
@@ -38,6 +39,13 @@ pub enum ShadowError {
         /// The map's side.
         size: u32,
     },
+    /// Window ranges ([`WindowRanges`]) made for another map size or filter radius than the map's.
+    Windows {
+        /// The map's side.
+        size: u32,
+        /// The map's filter radius.
+        radius: u32,
+    },
     /// The depth buffer does not hold `size * size` values (`size * rows.len()` for a band).
     Buffer {
         /// `size * size`, or `size * rows.len()`.
@@ -58,6 +66,9 @@ impl core::fmt::Display for ShadowError {
             Self::Size(s) => write!(f, "a shadow map of {s}x{s} texels is not supported"),
             Self::Rows { start, end, size } => {
                 write!(f, "rows {start}..{end} are not a band of a map {size} texels high")
+            }
+            Self::Windows { size, radius } => {
+                write!(f, "the window ranges are not those of a {size}x{size} map filtered with radius {radius}")
             }
             Self::Buffer { expected, actual } => {
                 write!(f, "the shadow map needs {expected} depth values, {actual} given")
@@ -253,6 +264,7 @@ pub struct ShadowMap<'a> {
     depth: &'a [f32],
     bias: ShadowBias,
     pcf_radius: u32,
+    windows: Option<WindowRanges<'a>>,
 }
 
 impl<'a> ShadowMap<'a> {
@@ -267,7 +279,20 @@ impl<'a> ShadowMap<'a> {
         if depth.len() != expected {
             return Err(ShadowError::Buffer { expected, actual: depth.len() });
         }
-        Ok(Self { view, depth, bias, pcf_radius })
+        Ok(Self { view, depth, bias, pcf_radius, windows: None })
+    }
+
+    /// The same map, with the depth ranges of its filter's windows ([`super::window_ranges_band`], computed from
+    /// this map's depths): lookups that the range decides read one value instead of the window. The light reaching
+    /// any point is the same, bit for bit.
+    ///
+    /// # Errors
+    /// [`ShadowError::Windows`] when the ranges are for another map size or filter radius.
+    pub fn with_windows(self, windows: WindowRanges<'a>) -> Result<Self, ShadowError> {
+        if windows.size() != self.view.size || windows.radius() != self.pcf_radius {
+            return Err(ShadowError::Windows { size: self.view.size, radius: self.pcf_radius });
+        }
+        Ok(Self { windows: Some(windows), ..self })
     }
 
     /// The `r` of `(2r + 1)^2` percentage-closer samples.
@@ -377,10 +402,13 @@ impl<'a> ShadowMap<'a> {
     /// per texel; the loops have constant bounds and unroll.
     #[inline(always)]
     fn lit_taps<const R: i32>(&self, tx: i32, ty: i32, z: f32) -> u32 {
+        if let Some(lit) = self.decided(tx, ty, z) {
+            return lit;
+        }
         let size = self.view.size as i32;
         let inside = tx >= R && ty >= R && tx < size - R && ty < size - R;
         if !inside {
-            return self.lit_taps_any(R, tx, ty, z);
+            return self.count_taps(R, tx, ty, z);
         }
         let side = (2 * R + 1) as usize;
         let first = ((ty - R) * size + tx - R) as usize;
@@ -400,6 +428,21 @@ impl<'a> ShadowMap<'a> {
 
     /// [`Self::lit_taps`] for any radius and any window, texel by texel.
     fn lit_taps_any(&self, r: i32, tx: i32, ty: i32, z: f32) -> u32 {
+        if let Some(lit) = self.decided(tx, ty, z) {
+            return lit;
+        }
+        self.count_taps(r, tx, ty, z)
+    }
+
+    /// What the window's depth range alone tells of [`Self::lit_taps`], if the map has ranges.
+    #[inline(always)]
+    fn decided(&self, tx: i32, ty: i32, z: f32) -> Option<u32> {
+        let side = 2 * self.pcf_radius + 1;
+        self.windows?.decided(tx, ty, z, side * side)
+    }
+
+    /// [`Self::lit_taps_any`] without the ranges: every texel of the window read.
+    fn count_taps(&self, r: i32, tx: i32, ty: i32, z: f32) -> u32 {
         let size = self.view.size as i32;
         let mut lit = 0u32;
         for y in ty - r..=ty + r {
@@ -417,14 +460,18 @@ impl<'a> ShadowMap<'a> {
 mod tests {
     use super::*;
 
+    /// The view of a `size x size` map of the unit sphere from a light straight above it.
+    fn overhead_view(size: u32) -> ShadowView {
+        let bounds = Bounds { centre: Vec3::ZERO, radius: 1.0 };
+        ShadowView::fit(LightKind::Directional { to_light: Vec3::Y }, bounds, size).unwrap()
+    }
+
     /// The unrolled windows count exactly what the texel-by-texel loop counts, inside the map and across its
     /// edges and corners.
     #[test]
     fn unrolled_pcf_windows_count_as_the_general_loop() {
         const SIZE: u32 = 9;
-        let bounds = Bounds { centre: Vec3::ZERO, radius: 1.0 };
-        let kind = LightKind::Directional { to_light: Vec3::new(0.0, 1.0, 0.0) };
-        let view = ShadowView::fit(kind, bounds, SIZE).unwrap();
+        let view = overhead_view(SIZE);
         // Depths in a scrambled order so that every window sees a different mix.
         let depth: [f32; (SIZE * SIZE) as usize] = core::array::from_fn(|i| ((i * 37) % 81) as f32 / 81.0);
         for radius in 0..=3 {
@@ -446,8 +493,57 @@ mod tests {
         }
     }
 
+    /// With window ranges, every window (inside the map, across its edges, centred outside it) counts what reading
+    /// its texels counts, for depths NaN, signed zero and infinite too, and the ranges decide most lookups.
+    #[test]
+    fn window_ranges_count_what_the_texels_count() {
+        const SIZE: u32 = 9;
+        let view = overhead_view(SIZE);
+        // A smooth slope (lit surfaces), a step (a shadow's edge), a NaN and a -0.0.
+        let depth: [f32; (SIZE * SIZE) as usize] = core::array::from_fn(|i| match i {
+            70 => f32::NAN,
+            13 => -0.0,
+            _ if i % 9 < 5 => 0.3 + i as f32 / 400.0,
+            _ => 0.8,
+        });
+        let zs = [f32::NEG_INFINITY, -0.0, 0.0, 0.2, 0.3 + 20.0 / 400.0, 0.5, 0.8, 0.9, 1.0, f32::INFINITY, f32::NAN];
+        for radius in 0..=3u32 {
+            let (mut near, mut far) = ([0.0; (SIZE * SIZE) as usize], [0.0; (SIZE * SIZE) as usize]);
+            super::super::window_ranges_band(&depth, SIZE, radius, 0..SIZE, &mut near, &mut far).unwrap();
+            let plain = ShadowMap::new(view, &depth, ShadowBias::DEFAULT, radius).unwrap();
+            let windows = WindowRanges::new(&near, &far, SIZE, radius).unwrap();
+            let ranged = plain.with_windows(windows).unwrap();
+            let (mut all, mut none) = (0, 0);
+            for ty in -4..SIZE as i32 + 4 {
+                for tx in -4..SIZE as i32 + 4 {
+                    for z in zs {
+                        let expected = plain.count_taps(radius as i32, tx, ty, z);
+                        let counted = match radius {
+                            0 => ranged.lit_taps::<0>(tx, ty, z),
+                            1 => ranged.lit_taps::<1>(tx, ty, z),
+                            2 => ranged.lit_taps::<2>(tx, ty, z),
+                            r => ranged.lit_taps_any(r as i32, tx, ty, z),
+                        };
+                        assert_eq!(counted, expected, "radius {radius} at ({tx}, {ty}), z {z}");
+                        match ranged.decided(tx, ty, z) {
+                            Some(0) => none += 1,
+                            Some(_) => all += 1,
+                            None => {}
+                        }
+                    }
+                }
+            }
+            assert!(all > 0 && none > 0, "radius {radius}: {all} decided lit, {none} decided dark");
+        }
+        let (near, far) = ([0.0; (SIZE * SIZE) as usize], [0.0; (SIZE * SIZE) as usize]);
+        let plain = ShadowMap::new(view, &depth, ShadowBias::DEFAULT, 1).unwrap();
+        let other_radius = WindowRanges::new(&near, &far, SIZE, 2).unwrap();
+        assert_eq!(plain.with_windows(other_radius).err(), Some(ShadowError::Windows { size: SIZE, radius: 1 }));
+    }
+
     /// The lane-wise lookup gives bit for bit the scalar lookup's share, for directional and point lights, every
-    /// filter radius, points in front of and behind the light, and lanes past the batch's length left alone.
+    /// filter radius, maps with and without window ranges, points in front of and behind the light, and lanes
+    /// past the batch's length left alone.
     #[test]
     #[allow(clippy::needless_range_loop)] // lanes: one index into every column
     fn lanes_look_up_what_the_scalar_lookup_does() {
@@ -472,18 +568,33 @@ mod tests {
         for kind in kinds {
             let view = ShadowView::fit(kind, bounds, SIZE).unwrap();
             for radius in 0..=3 {
-                let map = ShadowMap::new(view, &depth, ShadowBias::DEFAULT, radius).unwrap();
-                let len = BATCH_SIZE - 3;
-                let mut share = [-1.0; BATCH_SIZE];
-                map.light_reaching_lanes(&p, &n, &n_dot_l, len, &mut share);
-                for i in 0..len {
-                    let expected = map.light_reaching(p.get(i), n.get(i), n_dot_l[i]);
-                    assert_eq!(share[i].to_bits(), expected.to_bits(), "{kind:?}, radius {radius}, lane {i}");
-                    dark |= share[i] == 0.0;
-                    lit |= share[i] == 1.0;
-                    partly |= share[i] > 0.0 && share[i] < 1.0;
+                let plain = ShadowMap::new(view, &depth, ShadowBias::DEFAULT, radius).unwrap();
+                let (mut near, mut far) = ([0.0; (SIZE * SIZE) as usize], [0.0; (SIZE * SIZE) as usize]);
+                super::super::window_ranges_band(&depth, SIZE, radius, 0..SIZE, &mut near, &mut far).unwrap();
+                let ranged = plain.with_windows(WindowRanges::new(&near, &far, SIZE, radius).unwrap()).unwrap();
+                for (map, ranges) in [(plain, "without"), (ranged, "with")] {
+                    let len = BATCH_SIZE - 3;
+                    let mut share = [-1.0; BATCH_SIZE];
+                    map.light_reaching_lanes(&p, &n, &n_dot_l, len, &mut share);
+                    for i in 0..len {
+                        let expected = plain.light_reaching(p.get(i), n.get(i), n_dot_l[i]);
+                        let scalar = map.light_reaching(p.get(i), n.get(i), n_dot_l[i]);
+                        assert_eq!(
+                            scalar.to_bits(),
+                            expected.to_bits(),
+                            "{kind:?}, radius {radius}, lane {i}, {ranges} ranges"
+                        );
+                        assert_eq!(
+                            share[i].to_bits(),
+                            expected.to_bits(),
+                            "{kind:?}, radius {radius}, lane {i}, {ranges} ranges"
+                        );
+                        dark |= share[i] == 0.0;
+                        lit |= share[i] == 1.0;
+                        partly |= share[i] > 0.0 && share[i] < 1.0;
+                    }
+                    assert!(share[len..].iter().all(|&s| s == -1.0), "lanes past the length are left alone");
                 }
-                assert!(share[len..].iter().all(|&s| s == -1.0), "lanes past the length are left alone");
             }
         }
         assert!(dark && lit && partly, "dark {dark}, lit {lit}, partly lit {partly}");

@@ -369,7 +369,7 @@ pub fn header(report: &EffectsReport, plans: &[ScenePlan], threads: usize, machi
         "- map drawn every frame: a fresh `SceneRenderer` for every frame (as `rasterm render` makes one per image), \
          so the map's buffer is allocated and the map drawn every frame; map kept: one renderer for every frame (as \
          the viewer while only the camera moves), the map drawn in the warm-up frame and reused by every measured \
-         frame"
+         frame (the first of them works out its filter windows' depth ranges, once)"
             .to_owned(),
     ]
     .join("\n")

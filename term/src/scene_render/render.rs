@@ -7,8 +7,8 @@ use std::thread;
 use std::time::{Duration, Instant};
 
 use rasterm_core::effects::{
-    LightSource, SceneLights, ShadowBias, ShadowMap, ShadowView, SurfaceDraw, SurfaceVariant, clear_shadow_depth,
-    draw_shadow_caster_band, draw_surface,
+    LightSource, SceneLights, ShadowBias, ShadowError, ShadowMap, ShadowView, SurfaceDraw, SurfaceVariant,
+    WindowRanges, clear_shadow_depth, draw_shadow_caster_band, draw_surface, window_ranges_band,
 };
 use rasterm_core::mesh::{Indices, Mesh};
 use rasterm_core::pipeline::{DrawState, DrawStats, draw_wireframe};
@@ -16,7 +16,7 @@ use rasterm_core::target::{Rgb888, Target};
 
 use super::bins::TriangleBins;
 use super::material::part_material;
-use super::plan::{PlannedDraw, tangents_for};
+use super::plan::{PlannedDraw, ShadowPass, tangents_for};
 use super::{PreparedScene, ScenePlan, SceneRenderError};
 use crate::scene::WIREFRAME;
 use crate::scene_file::SceneObject;
@@ -68,11 +68,21 @@ struct ShadowKey {
     view: ShadowView,
 }
 
-/// A shadow map's depth buffer, kept from frame to frame.
+/// A shadow map's depth buffer and its filter windows' depth ranges, kept from frame to frame.
+///
+/// The ranges are worked out in the map's second frame, not its first: they read every texel's window (a million
+/// for a 1024x1024 map) to spare the lookups' reads, and one 800x800 frame looks up a quarter as many. A map used
+/// once (`rasterm render`, a moving light) never pays for them; a kept one (the viewer orbiting) does once.
 #[derive(Debug, Default)]
 struct ShadowSlot {
     key: Option<ShadowKey>,
+    /// The ranges in `near` and `far` are those of the map in `depth`.
+    ranges_ready: bool,
     depth: Vec<f32>,
+    /// The nearest depth of each texel's filter window (empty for a map read without a filter).
+    near: Vec<f32>,
+    /// The farthest depth of each texel's filter window.
+    far: Vec<f32>,
 }
 
 /// At most this many bands of frame rows per thread: threads take the next band as they finish one, so a frame
@@ -232,7 +242,14 @@ impl SceneRenderer {
             let shadow = match light.shadow_pass {
                 Some(p) => {
                     let pass = &plan.shadow_passes[p];
-                    let map = ShadowMap::new(pass.view, &self.slots[p].depth, ShadowBias::DEFAULT, pass.pcf_radius);
+                    let slot = &self.slots[p];
+                    let map = ShadowMap::new(pass.view, &slot.depth, ShadowBias::DEFAULT, pass.pcf_radius);
+                    let map = map.and_then(|map| match slot.ranges_ready {
+                        false => Ok(map),
+                        true => {
+                            map.with_windows(WindowRanges::new(&slot.near, &slot.far, pass.map_size, pass.pcf_radius)?)
+                        }
+                    });
                     Some(map.map_err(|error| SceneRenderError::Shadow {
                         light: plan.light_name(light),
                         bounds: plan.bounds,
@@ -260,6 +277,14 @@ impl SceneRenderer {
             let light = &plan.lights[pass.light];
             let key = ShadowKey { scene: scene.id(), light: light.number, view: pass.view };
             if slot.key == Some(key) {
+                if pass.pcf_radius > 0 && !slot.ranges_ready {
+                    slot.window_ranges(pass, threads).map_err(|error| SceneRenderError::Shadow {
+                        light: plan.light_name(light),
+                        bounds: plan.bounds,
+                        error,
+                    })?;
+                    slot.ranges_ready = true;
+                }
                 report.shadow_passes.push(ShadowPassReport {
                     light: light.number,
                     reused: true,
@@ -267,7 +292,7 @@ impl SceneRenderer {
                 });
                 continue;
             }
-            slot.key = None;
+            (slot.key, slot.ranges_ready) = (None, false);
             let side = pass.map_size as usize;
             if slot.depth.len() != side * side {
                 // Zeroed memory comes from the allocator untouched; the bands' clears below fill it (page faults
@@ -297,6 +322,28 @@ impl SceneRenderer {
             report.shadow_passes.push(ShadowPassReport { light: light.number, reused: false, stats });
         }
         Ok(())
+    }
+}
+
+impl ShadowSlot {
+    /// Works out the depth ranges of the filter windows of the map in `depth`, in one band of rows per thread
+    /// (every band reads the whole map, so the depth pass must be done).
+    fn window_ranges(&mut self, pass: &ShadowPass, threads: usize) -> Result<(), ShadowError> {
+        let side = pass.map_size as usize;
+        for buffer in [&mut self.near, &mut self.far] {
+            if buffer.len() != side * side {
+                // Every value is written below, on the bands' threads.
+                *buffer = vec![0.0; side * side];
+            }
+        }
+        let depth = &self.depth;
+        let near = split_rows(&mut self.near, pass.map_size, pass.map_size, threads);
+        let far = split_rows(&mut self.far, pass.map_size, pass.map_size, threads);
+        let bands: Vec<_> = near.into_iter().zip(far).collect();
+        let results = on_threads(bands, threads, |((rows, near), (_, far))| {
+            window_ranges_band(depth, pass.map_size, pass.pcf_radius, rows, near, far)
+        });
+        results.into_iter().collect()
     }
 }
 
