@@ -27,12 +27,11 @@ impl<F: Filter, W: Wrap> MapReader<F, W> {
     #[inline(always)]
     pub fn read(&mut self, map: &Texture<'_>, uv: &Column2, out: &mut [u32; BATCH_SIZE]) {
         let size = (map.width(), map.height());
-        if self.addresses.as_ref().is_none_or(|(made_for, _)| *made_for != size) {
-            self.addresses = Some((size, F::addresses::<W, BATCH_SIZE>(size.0, size.1, &uv.x, &uv.y)));
-        }
-        if let Some((_, addresses)) = &self.addresses {
-            F::read::<W, BATCH_SIZE>(map, addresses, out);
-        }
+        let addresses = match &mut self.addresses {
+            Some((made_for, addresses)) if *made_for == size => addresses,
+            slot => &mut slot.insert((size, F::addresses::<W, BATCH_SIZE>(size.0, size.1, &uv.x, &uv.y))).1,
+        };
+        F::read::<W, BATCH_SIZE>(map, addresses, out);
     }
 }
 

@@ -108,7 +108,7 @@ pub fn window_ranges_band(
     // A depth pass never leaves a NaN (its depth test fails for one), so the rows this band reads are checked once
     // and, without a NaN, widened with minNum and maxNum, which make plain SIMD stores; with one, with
     // comparisons that keep it.
-    let read = rows.start as usize - (rows.start as usize).min(r)..(rows.end as usize + r).min(side);
+    let read = (rows.start as usize).saturating_sub(r)..(rows.end as usize + r).min(side);
     // A fold, not `any`: no branch per value, so the check widens to SIMD.
     let nan = depth[read.start * side..read.end * side].iter().fold(false, |nan, d| nan | d.is_nan());
     let rows_near = near.chunks_exact_mut(side);
@@ -129,9 +129,9 @@ pub fn window_ranges_band(
         if past_edge {
             far.fill(f32::INFINITY);
         } else {
-            let edge = r.min(side);
-            far[..edge].fill(f32::INFINITY);
-            far[side - edge..].fill(f32::INFINITY);
+            // Here `r < side`: the row has a window's reach of texels on each side of its centre.
+            far[..r].fill(f32::INFINITY);
+            far[side - r..].fill(f32::INFINITY);
         }
     }
     Ok(())
@@ -148,6 +148,7 @@ fn widen_by_row(
     lower: impl Fn(f32, f32) -> f32,
     higher: impl Fn(f32, f32) -> f32,
 ) {
+    // `r <= side` (the caller clamps it).
     let side = row.len();
     // The columns whose window lies inside the row: one pass per offset, over contiguous slices (SIMD).
     if side > 2 * r {
@@ -161,7 +162,7 @@ fn widen_by_row(
         }
     }
     // The columns near the row's ends, texel by texel (their windows are cut by the edge).
-    for x in (0..r.min(side)).chain(side.saturating_sub(r).max(r.min(side))..side) {
+    for x in (0..r).chain(side.saturating_sub(r).max(r)..side) {
         for &d in &row[x.saturating_sub(r)..(x + r + 1).min(side)] {
             (near[x], far[x]) = (lower(near[x], d), higher(far[x], d));
         }

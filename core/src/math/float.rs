@@ -153,9 +153,10 @@ pub fn floor_to_i32(x: f32) -> i32 {
 /// by [`round_small_to_u32`].
 #[inline(always)]
 pub fn floor_to_i32_clamped(x: f32) -> i32 {
-    const LIMIT: f32 = 4_194_303.0; // 2^22 - 1
+    const OFFSET: i32 = 1 << 22;
+    const LIMIT: f32 = (OFFSET - 1) as f32;
     let x = if x.is_nan() { 0.0 } else { clamp(x, -LIMIT, LIMIT) };
-    round_small_to_u32(floor(x) + 4_194_304.0) as i32 - 4_194_304
+    round_small_to_u32(floor(x) + OFFSET as f32) as i32 - OFFSET
 }
 
 /// `x` in `[0, 2^23)` rounded to the nearest integer (ties to even). Outside that range the result is

@@ -244,11 +244,11 @@ impl SceneRenderer {
                     let pass = &plan.shadow_passes[p];
                     let slot = &self.slots[p];
                     let map = ShadowMap::new(pass.view, &slot.depth, ShadowBias::DEFAULT, pass.pcf_radius);
-                    let map = map.and_then(|map| match slot.ranges_ready {
-                        false => Ok(map),
-                        true => {
-                            map.with_windows(WindowRanges::new(&slot.near, &slot.far, pass.map_size, pass.pcf_radius)?)
+                    let map = map.and_then(|map| {
+                        if !slot.ranges_ready {
+                            return Ok(map);
                         }
+                        map.with_windows(WindowRanges::new(&slot.near, &slot.far, pass.map_size, pass.pcf_radius)?)
                     });
                     Some(map.map_err(|error| SceneRenderError::Shadow {
                         light: plan.light_name(light),
@@ -276,13 +276,11 @@ impl SceneRenderer {
         for (pass, slot) in plan.shadow_passes.iter().zip(&mut self.slots) {
             let light = &plan.lights[pass.light];
             let key = ShadowKey { scene: scene.id(), light: light.number, view: pass.view };
+            let shadow_error =
+                |error| SceneRenderError::Shadow { light: plan.light_name(light), bounds: plan.bounds, error };
             if slot.key == Some(key) {
                 if pass.pcf_radius > 0 && !slot.ranges_ready {
-                    slot.window_ranges(pass, threads).map_err(|error| SceneRenderError::Shadow {
-                        light: plan.light_name(light),
-                        bounds: plan.bounds,
-                        error,
-                    })?;
+                    slot.window_ranges(pass, threads).map_err(shadow_error)?;
                     slot.ranges_ready = true;
                 }
                 report.shadow_passes.push(ShadowPassReport {
@@ -312,11 +310,7 @@ impl SceneRenderer {
             });
             let mut stats = DrawStats::default();
             for result in results {
-                stats += result.map_err(|error| SceneRenderError::Shadow {
-                    light: plan.light_name(light),
-                    bounds: plan.bounds,
-                    error,
-                })?;
+                stats += result.map_err(shadow_error)?;
             }
             slot.key = Some(key);
             report.shadow_passes.push(ShadowPassReport { light: light.number, reused: false, stats });
