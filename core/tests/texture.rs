@@ -2,7 +2,7 @@
 
 use rasterm_core::color::{pack_rgb888, unpack_rgb888};
 use rasterm_core::math::{Vec2, Vec3};
-use rasterm_core::texture::{Bilinear, Clamp, Nearest, Repeat, Texture, TextureError};
+use rasterm_core::texture::{Bilinear, Clamp, Filter, MAX_INTERLEAVED, Nearest, Repeat, Texture, TextureError, Wrap};
 
 /// 4x2 texels; texel (x, y) = 0x00_XY_00_00 style values so the index is readable: red = 16 * x + y.
 fn texels() -> Vec<u32> {
@@ -78,4 +78,51 @@ fn texture_size_errors() {
     assert_eq!(Texture::new(&t, 0, 6).unwrap_err(), TextureError::Empty);
     assert_eq!(Texture::new(&t, 4, 2).unwrap_err(), TextureError::Length { expected: 8, actual: 6 });
     assert!(Texture::new(&t, 3, 2).is_ok());
+}
+
+/// Each map of an interleaved slice samples exactly as a texture of its own texels does: every filter and wrap
+/// mode, at coordinates inside, outside and on the edges, at NaN and infinities, one sample at a time and in lanes.
+#[test]
+fn interleaved_maps_sample_as_their_own_textures() {
+    const MAPS: usize = 3;
+    let (w, h) = (5u32, 4u32);
+    let own: [[u32; 20]; MAPS] =
+        core::array::from_fn(|m| core::array::from_fn(|i| (i as u32 * 0x0B_1D07 + m as u32 * 0x40_3010) & 0xFF_FFFF));
+    let shared: [u32; 60] = core::array::from_fn(|i| own[i % MAPS][i / MAPS]);
+    let special = [0.0, 1.0, -0.0, 0.5, -1.25, 2.75, 1e-9, 1e9, f32::NAN, f32::INFINITY, f32::NEG_INFINITY];
+    let uv: [Vec2; 48] = core::array::from_fn(|i| {
+        let u = if i < special.len() { special[i] } else { i as f32 * 0.087 - 1.7 };
+        Vec2::new(u, special[(i * 7) % special.len()] + i as f32 * 0.043)
+    });
+    for (m, texels) in own.iter().enumerate() {
+        let alone = Texture::new(texels, w, h).unwrap();
+        let interleaved = Texture::interleaved(&shared, w, h, MAPS as u32, m as u32).unwrap();
+        check::<Nearest, Repeat>(&alone, &interleaved, &uv);
+        check::<Nearest, Clamp>(&alone, &interleaved, &uv);
+        check::<Bilinear, Repeat>(&alone, &interleaved, &uv);
+        check::<Bilinear, Clamp>(&alone, &interleaved, &uv);
+    }
+    fn check<F: Filter, W: Wrap>(alone: &Texture<'_>, interleaved: &Texture<'_>, uv: &[Vec2; 48]) {
+        let (u, v) = (uv.map(|uv| uv.x), uv.map(|uv| uv.y));
+        let (mut a, mut b) = ([0; 48], [0; 48]);
+        F::sample_packed_lanes::<W, 48>(alone, &u, &v, &mut a);
+        F::sample_packed_lanes::<W, 48>(interleaved, &u, &v, &mut b);
+        assert_eq!(a, b);
+        for &uv in uv {
+            assert_eq!(F::sample_packed::<W>(alone, uv), F::sample_packed::<W>(interleaved, uv), "at {uv:?}");
+        }
+    }
+}
+
+#[test]
+fn interleaving_errors() {
+    let t = [0u32; 24];
+    let interleaving = |maps, map| TextureError::Interleaving { maps, map };
+    assert_eq!(Texture::interleaved(&t, 4, 3, 0, 0).unwrap_err(), interleaving(0, 0));
+    assert_eq!(Texture::interleaved(&t, 4, 3, 2, 2).unwrap_err(), interleaving(2, 2));
+    assert_eq!(Texture::interleaved(&t, 1, 1, MAX_INTERLEAVED + 1, 0).unwrap_err(), interleaving(9, 0));
+    assert_eq!(Texture::interleaved(&t, 4, 3, 3, 0).unwrap_err(), TextureError::Length { expected: 36, actual: 24 });
+    assert_eq!(Texture::interleaved(&t, 0, 3, 2, 0).unwrap_err(), TextureError::Empty);
+    assert!(Texture::interleaved(&t, 4, 3, 2, 1).is_ok());
+    assert!(Texture::interleaved(&t, 3, 1, MAX_INTERLEAVED, MAX_INTERLEAVED - 1).is_ok());
 }

@@ -3,6 +3,10 @@
 //! A texture is a `&[u32]` of `0x00RRGGBB` texels, row 0 at the top of the image. Texture coordinates follow the
 //! OBJ and OpenGL convention: `u` runs left to right, `v` bottom to top, and `(0, 0)` is the bottom-left corner of
 //! the image.
+//!
+//! Several maps of one size can share one slice, texel by texel ([`Texture::interleaved`]): a fragment reads all
+//! of a material's maps at the same texel, so their texels then come in on the same cache line instead of one line
+//! per map.
 
 mod sampler;
 
@@ -14,6 +18,9 @@ use crate::math::{Vec2, Vec3};
 /// bits inside a float's 23-bit mantissa.
 pub const MAX_TEXTURE_SIZE: u32 = 16384;
 
+/// Most maps one slice of texels can interleave ([`Texture::interleaved`]).
+pub const MAX_INTERLEAVED: u32 = 8;
+
 /// Why a texture could not be built.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum TextureError {
@@ -21,12 +28,20 @@ pub enum TextureError {
     Empty,
     /// Wider or higher than [`MAX_TEXTURE_SIZE`] texels.
     TooLarge,
-    /// The texel slice does not hold `width * height` texels.
+    /// The texel slice does not hold `width * height` texels (times the number of interleaved maps).
     Length {
-        /// `width * height`.
+        /// `width * height` (times the number of interleaved maps).
         expected: usize,
         /// Texels given.
         actual: usize,
+    },
+    /// [`Texture::interleaved`] was asked for map `map` of `maps`: `maps` must be in `1..=`[`MAX_INTERLEAVED`]
+    /// and `map` below it.
+    Interleaving {
+        /// The number of interleaved maps.
+        maps: u32,
+        /// The map asked for.
+        map: u32,
     },
 }
 
@@ -38,6 +53,9 @@ impl core::fmt::Display for TextureError {
             Self::Length { expected, actual } => {
                 write!(f, "the texture needs {expected} texels, {actual} given")
             }
+            Self::Interleaving { maps, map } => {
+                write!(f, "map {map} of {maps} interleaved maps asked for (at most {MAX_INTERLEAVED} maps)")
+            }
         }
     }
 }
@@ -48,6 +66,10 @@ pub struct Texture<'a> {
     texels: &'a [u32],
     width: i32,
     height: i32,
+    /// The number of maps interleaved in `texels` (1 for a texture of its own).
+    stride: usize,
+    /// This map's place among them.
+    offset: usize,
 }
 
 impl<'a> Texture<'a> {
@@ -56,18 +78,42 @@ impl<'a> Texture<'a> {
     /// # Errors
     /// [`TextureError`] for an empty or oversized texture or a slice of the wrong length.
     pub fn new(texels: &'a [u32], width: u32, height: u32) -> Result<Self, TextureError> {
+        Self::interleaved(texels, width, height, 1, 0)
+    }
+
+    /// Map `map` of `maps` textures of `width x height` texels that `texels` holds texel by texel: texel `i` of the
+    /// row-major order (top row first) of map `k` is `texels[i * maps + k]`. Samples are those of a texture made
+    /// with [`Texture::new`] from the map's own texels.
+    ///
+    /// # Errors
+    /// [`TextureError`] for an empty or oversized texture, `maps` outside `1..=`[`MAX_INTERLEAVED`] or `map` not
+    /// below it, or a slice not of `width * height * maps` texels.
+    ///
+    /// # Examples
+    /// ```
+    /// use rasterm_core::{math::{Vec2, Vec3}, texture::{Nearest, Repeat, Texture}};
+    /// // Two 2x1 maps: red, blue (the first) and white, black (the second), texel by texel.
+    /// let texels = [0xFF0000, 0xFFFFFF, 0x0000FF, 0x000000];
+    /// let second = Texture::interleaved(&texels, 2, 1, 2, 1).unwrap();
+    /// assert_eq!(second.sample::<Nearest, Repeat>(Vec2::new(0.25, 0.5)), Vec3::ONE);
+    /// assert_eq!(second.sample::<Nearest, Repeat>(Vec2::new(0.75, 0.5)), Vec3::ZERO);
+    /// ```
+    pub fn interleaved(texels: &'a [u32], width: u32, height: u32, maps: u32, map: u32) -> Result<Self, TextureError> {
         if width == 0 || height == 0 {
             return Err(TextureError::Empty);
         }
         if width > MAX_TEXTURE_SIZE || height > MAX_TEXTURE_SIZE {
             return Err(TextureError::TooLarge);
         }
-        let (w, h) = (width as i32, height as i32);
-        let expected = width as usize * height as usize;
+        if maps == 0 || maps > MAX_INTERLEAVED || map >= maps {
+            return Err(TextureError::Interleaving { maps, map });
+        }
+        let expected = width as usize * height as usize * maps as usize;
         if texels.len() != expected {
             return Err(TextureError::Length { expected, actual: texels.len() });
         }
-        Ok(Self { texels, width: w, height: h })
+        let (width, height, stride, offset) = (width as i32, height as i32, maps as usize, map as usize);
+        Ok(Self { texels, width, height, stride, offset })
     }
 
     /// Width in texels.
@@ -86,13 +132,15 @@ impl<'a> Texture<'a> {
         self.at(self.index(x, y))
     }
 
-    /// The packed texel at position `index` of [`Self::texels`] (0 past the end, which in-range texels never are).
+    /// The packed texel at position `index` of the map's row-major texels (0 past the end, which in-range texels
+    /// never are).
     #[inline(always)]
     fn at(&self, index: u32) -> u32 {
-        self.texels.get(index as usize).copied().unwrap_or(0)
+        self.texels.get(index as usize * self.stride + self.offset).copied().unwrap_or(0)
     }
 
-    /// The position in [`Self::texels`] of column `x`, row `y`, both in range (at most [`MAX_TEXTURE_SIZE`]^2 = 2^28).
+    /// The position in the map's row-major texels of column `x`, row `y`, both in range (at most
+    /// [`MAX_TEXTURE_SIZE`]^2 = 2^28).
     #[inline(always)]
     fn index(&self, x: i32, y: i32) -> u32 {
         Self::index_in(self.width, x, y)

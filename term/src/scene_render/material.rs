@@ -6,6 +6,8 @@ use rasterm_core::math::Vec3;
 use rasterm_core::texture::TextureError;
 
 use super::PlanOptions;
+use super::interleaved::{MapRole, PartMaps};
+use crate::model::TextureImage;
 use crate::scene::{SHININESS, SPECULAR};
 use crate::scene_file::{NormalSpace, SceneObject};
 
@@ -20,18 +22,23 @@ use crate::scene_file::{NormalSpace, SceneObject};
 /// - normal and glow maps: the scene's, unless their effect is off;
 /// - filter and wrap: the scene's, for every map.
 ///
+/// Each map is read from `maps` ([`crate::scene_render::PreparedScene::part_maps`]) when interleaved there, else from
+/// its image: the same samples either way.
+///
 /// # Errors
 /// [`TextureError`] for an image whose fields are inconsistent (only possible if changed by hand after loading).
 pub fn part_material<'a>(
     object: &'a SceneObject,
+    maps: &'a PartMaps,
     part: usize,
     options: &PlanOptions,
 ) -> Result<SurfaceMaterial<'a>, TextureError> {
     let mtl = object.model.part_material(part);
     let m = &object.material;
     let effects = &options.effects;
+    let texture = |role, image: &'a TextureImage| maps.texture(role).unwrap_or_else(|| image.texture());
     let diffuse = match m.diffuse_over(mtl) {
-        Some(image) if options.textures => Some(image.texture()?),
+        Some(image) if options.textures => Some(texture(MapRole::Diffuse, image)?),
         _ => None,
     };
     let normal_map = match &m.normal_map {
@@ -40,17 +47,17 @@ pub fn part_material<'a>(
                 NormalSpace::Tangent => CoreNormalSpace::Tangent,
                 NormalSpace::Object => CoreNormalSpace::Object,
             };
-            Some(NormalMap { texture: map.image.texture()?, space })
+            Some(NormalMap { texture: texture(MapRole::Normal, &map.image)?, space })
         }
         _ => None,
     };
     let specular = if effects.specular { m.specular.unwrap_or(SPECULAR) } else { Vec3::ZERO };
     let specular_map = match &m.specular_map {
-        Some(image) if effects.specular => Some(image.texture()?),
+        Some(image) if effects.specular => Some(texture(MapRole::Specular, image)?),
         _ => None,
     };
     let glow_map = match &m.glow_map {
-        Some(image) if effects.glow_maps => Some(image.texture()?),
+        Some(image) if effects.glow_maps => Some(texture(MapRole::Glow, image)?),
         _ => None,
     };
     Ok(SurfaceMaterial {

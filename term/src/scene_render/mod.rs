@@ -2,7 +2,8 @@
 //! the passes the scene calls for.
 //!
 //! ```text
-//! SceneData ──PreparedScene::new──▶ PreparedScene (world bounds; tangents of tangent-space normal-mapped meshes)
+//! SceneData ──PreparedScene::new──▶ PreparedScene (world bounds; tangents of tangent-space normal-mapped meshes;
+//!                                       each part's maps of one size interleaved texel by texel)
 //!                                       │
 //!   SceneCamera (the file's, or orbited) + frame size + PlanOptions (effects on/off, textures, wireframe)
 //!                                       ▼  ScenePlan::new: nothing drawn, nothing allocated but the plan
@@ -18,7 +19,7 @@
 //!     3. ambient occlusion, in bands of rows: AmbientOcclusion::apply on the finished depth buffer
 //! ```
 //!
-//! - [`PreparedScene`]: what every frame shares (bounds, tangents, object names).
+//! - [`PreparedScene`]: what every frame shares (bounds, tangents, interleaved maps, object names).
 //! - [`ScenePlan`]: one frame's passes, from the scene, the camera, the frame's size and the [`PlanOptions`]
 //!   ([`EffectToggles`]: the viewer's keys `1` to `5`). A switched-off effect is not in the plan, so it costs
 //!   nothing. Its `Display` is the explanation, one line per pass and per draw.
@@ -68,6 +69,7 @@ mod camera;
 mod error;
 mod explain;
 mod image;
+mod interleaved;
 mod lights;
 mod material;
 mod orbit;
@@ -80,6 +82,7 @@ pub use bounds::scene_bounds;
 pub use camera::{FrameCamera, PlaneSource};
 pub use error::SceneRenderError;
 pub use image::{SceneImage, render_scene_image};
+pub use interleaved::{InterleavedBuffers, MapRole, PartMaps};
 pub use lights::{DroppedLight, LightName, Number, PlannedLight, Triple, core_light};
 pub use material::part_material;
 pub use orbit::SceneOrbit;

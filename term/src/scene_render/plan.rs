@@ -201,7 +201,7 @@ impl ScenePlan {
                 }
                 let label = format!("{}, part \"{}\"", scene.object_label(index), part.name);
                 let Some(mesh) = object.model.part_mesh(part_index) else { continue };
-                let material = part_material(object, part_index, &self.options)
+                let material = part_material(object, scene.part_maps(index, part_index), part_index, &self.options)
                     .map_err(|error| SceneRenderError::Texture { draw: label.clone(), error })?;
                 let tangents = tangents_for(scene, index, &material);
                 let variant = SurfaceVariant::resolve(

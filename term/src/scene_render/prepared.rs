@@ -1,5 +1,5 @@
-//! A loaded scene with what every frame of it shares: its bounds, the tangents of its normal-mapped meshes, and
-//! the names of its objects.
+//! A loaded scene with what every frame of it shares: its bounds, the tangents of its normal-mapped meshes, its
+//! parts' maps interleaved, and the names of its objects.
 
 use std::collections::HashMap;
 use std::sync::Arc;
@@ -11,21 +11,26 @@ use rasterm_core::mesh::{TangentError, compute_tangents};
 
 use super::SceneRenderError;
 use super::bounds::scene_bounds;
+use super::interleaved::{InterleavedBuffers, PartMaps};
 use crate::model::Model;
 use crate::scene_file::{NormalSpace, SceneData, SceneObject};
 
 /// Gives each prepared scene its own number, so that cached shadow maps are never taken for another scene's.
 static NEXT_ID: AtomicU64 = AtomicU64::new(0);
 
-/// A [`SceneData`] ready to be planned and drawn any number of times: its world bounds are measured once, and
+/// A [`SceneData`] ready to be planned and drawn any number of times: its world bounds are measured once,
 /// tangents are computed once for each mesh that an object draws with a tangent-space normal map (a mesh shared
-/// by several such objects is computed once). Nothing else is precomputed: which effects run is decided per frame.
+/// by several such objects is computed once), and each part's maps of one size are interleaved texel by texel
+/// ([`PartMaps`], shared by the parts with the same maps). Nothing else is precomputed: which effects run is decided
+/// per frame.
 #[derive(Debug)]
 pub struct PreparedScene {
     data: SceneData,
     bounds: Bounds,
     /// Per object: the tangents of its mesh, when it has a tangent-space normal map and texture coordinates.
     tangents: Vec<Option<Arc<[Vec4]>>>,
+    /// Per object, per part: its maps, interleaved.
+    maps: Vec<Vec<PartMaps>>,
     /// Per object: `object N (FILE)`, raw.
     labels: Vec<String>,
     id: u64,
@@ -62,8 +67,14 @@ impl PreparedScene {
             };
             tangents.push(Some(computed));
         }
+        let mut buffers = InterleavedBuffers::new();
+        let maps = data
+            .objects
+            .iter()
+            .map(|object| (0..object.model.parts.len()).map(|part| PartMaps::new(object, part, &mut buffers)).collect())
+            .collect();
         let id = NEXT_ID.fetch_add(1, Ordering::Relaxed);
-        Ok(Self { data, bounds, tangents, labels, id })
+        Ok(Self { data, bounds, tangents, maps, labels, id })
     }
 
     /// The scene.
@@ -79,6 +90,12 @@ impl PreparedScene {
     /// The tangents of object `object`'s mesh, one per vertex, when it has a tangent-space normal map.
     pub fn tangents(&self, object: usize) -> Option<&[Vec4]> {
         self.tangents.get(object)?.as_deref()
+    }
+
+    /// The maps of part `part` of object `object`, interleaved (none for a part the scene does not have).
+    pub fn part_maps(&self, object: usize, part: usize) -> &PartMaps {
+        static NONE: PartMaps = PartMaps::NONE;
+        self.maps.get(object).and_then(|parts| parts.get(part)).unwrap_or(&NONE)
     }
 
     /// `object N (FILE)`: the object's place among the file's `[[objects]]` (from 1) and its mesh's file name,

@@ -410,7 +410,7 @@ fn forward_band(
         let (object, mesh) = draw_mesh(scene, draw)?;
         let triangles = mesh.with_indices(Indices::U32(bins.band(band.index)));
         let triangles = triangles.map_err(|error| SceneRenderError::Target(format!("{}: {error}", draw.label)))?;
-        let material = part_material(object, draw.part, &plan.options)
+        let material = part_material(object, scene.part_maps(draw.object, draw.part), draw.part, &plan.options)
             .map_err(|error| SceneRenderError::Texture { draw: draw.label.clone(), error })?;
         let tangents = tangents_for(scene, draw.object, &material);
         let surface = SurfaceDraw { mesh: triangles, tangents, transforms: draw.transforms, material };
