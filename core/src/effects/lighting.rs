@@ -80,22 +80,24 @@ fn highlight(
         h.y[i] = l.y[i] + v.y[i];
         h.z[i] = l.z[i] + v.z[i];
     }
-    let mut k = [0.0; BATCH_SIZE];
-    h.normalize(len, &mut k);
-    n.dot(&h, &mut k);
-    for x in &mut k {
-        *x = float::max(*x, 0.0);
-    }
+    let mut n_dot_h = [0.0; BATCH_SIZE];
+    h.normalize(len, &mut n_dot_h);
+    n.dot(&h, &mut n_dot_h);
+    // Into a new column, not in place: `x = max(x, 0)` in place compiled to masked stores (`vmaskmovps`), slow on
+    // some x86 processors.
+    let mut k = n_dot_h.map(|x| float::max(x, 0.0));
     columns::pow_lanes(&mut k, shininess, len);
     if let Some(shares) = shares {
         for i in 0..BATCH_SIZE {
             k[i] *= shares[i];
         }
     }
+    // Adding +0.0 where unlit leaves the sum as it was (it starts at +0.0 and never holds -0.0), and unlike
+    // keeping the old value in a select, it compiles to plain SIMD stores, not masked ones.
     for i in 0..BATCH_SIZE {
         let lit = n_dot_l[i] > 0.0;
-        specular.x[i] = if lit { specular.x[i] + color.x * k[i] } else { specular.x[i] };
-        specular.y[i] = if lit { specular.y[i] + color.y * k[i] } else { specular.y[i] };
-        specular.z[i] = if lit { specular.z[i] + color.z * k[i] } else { specular.z[i] };
+        specular.x[i] += if lit { color.x * k[i] } else { 0.0 };
+        specular.y[i] += if lit { color.y * k[i] } else { 0.0 };
+        specular.z[i] += if lit { color.z * k[i] } else { 0.0 };
     }
 }
