@@ -30,6 +30,8 @@ pub type InterleavedBuffers = HashMap<Vec<usize>, Arc<[u32]>>;
 /// Where one map of a part sits in an interleaved buffer.
 #[derive(Clone, Debug)]
 struct Place {
+    /// The address of the image it was made from: the place is used only for that image.
+    image: usize,
     texels: Arc<[u32]>,
     width: u32,
     height: u32,
@@ -49,8 +51,8 @@ impl PartMaps {
     /// No map interleaved: every map is read from its image.
     pub const NONE: Self = Self { places: [None, None, None, None] };
 
-    /// Interleaves the maps that part `part` of `object` has, whether or not their effects are switched on (the
-    /// switches change per frame), taking and leaving buffers in `made`.
+    /// Interleaves the maps that part `part_index` of `object` has, whether or not their effects are switched on
+    /// (the switches change per frame), taking and leaving buffers in `made`.
     pub fn new(object: &SceneObject, part_index: usize, made: &mut InterleavedBuffers) -> Self {
         let m = &object.material;
         let images: [Option<&TextureImage>; 4] = [
@@ -74,25 +76,30 @@ impl PartMaps {
             }
         }
         for group in groups.iter().filter(|g| g.len() >= 2 && g.len() <= MAX_INTERLEAVED as usize) {
-            let key: Vec<usize> = group.iter().map(|image| std::ptr::from_ref(*image) as usize).collect();
+            let key: Vec<usize> = group.iter().map(|image| address(image)).collect();
             let texels = made.entry(key).or_insert_with(|| interleave(group)).clone();
             for (role, image) in images.iter().enumerate() {
-                let Some(map) = image.and_then(|image| group.iter().position(|g| std::ptr::eq(*g, image))) else {
-                    continue;
-                };
-                let (width, height) = (group[0].width, group[0].height);
-                let maps = group.len() as u32;
-                part.places[role] = Some(Place { texels: texels.clone(), width, height, maps, map: map as u32 });
+                let Some(image) = image else { continue };
+                let Some(map) = group.iter().position(|g| std::ptr::eq(*g, *image)) else { continue };
+                let (width, height, maps, map) = (group[0].width, group[0].height, group.len() as u32, map as u32);
+                let texels = texels.clone();
+                part.places[role] = Some(Place { image: address(image), texels, width, height, maps, map });
             }
         }
         part
     }
 
-    /// The map in `role` as the core samples it from the interleaved buffer, or `None` when it is not interleaved.
-    pub fn texture(&self, role: MapRole) -> Option<Result<Texture<'_>, TextureError>> {
-        let p = self.places[role as usize].as_ref()?;
+    /// The map `image` in `role` as the core samples it from the interleaved buffer, or `None` when that role's
+    /// map is not interleaved or was made from another image (these maps belong to another part).
+    pub fn texture(&self, role: MapRole, image: &TextureImage) -> Option<Result<Texture<'_>, TextureError>> {
+        let p = self.places[role as usize].as_ref().filter(|p| p.image == address(image))?;
         Some(Texture::interleaved(&p.texels, p.width, p.height, p.maps, p.map))
     }
+}
+
+/// An image's address: what identifies it among a scene's images (they are not moved while a scene is prepared).
+fn address(image: &TextureImage) -> usize {
+    std::ptr::from_ref(image) as usize
 }
 
 /// The texels of `images` (all of one size) texel by texel: texel `i` of image `k` at `i * images.len() + k`.
@@ -134,7 +141,9 @@ mod tests {
             let place = maps.places[role as usize].as_ref().unwrap();
             assert_eq!((place.maps, place.map), (4, role as u32));
             assert!(Arc::ptr_eq(&place.texels, &again.places[role as usize].as_ref().unwrap().texels));
-            let (own, interleaved) = (image.texture().unwrap(), maps.texture(role).unwrap().unwrap());
+            let (own, interleaved) = (image.texture().unwrap(), maps.texture(role, image).unwrap().unwrap());
+            // Another image in the same role is read from that image.
+            assert!(maps.texture(role, images[(role as usize + 1) % 4]).is_none());
             same::<Nearest>(&own, &interleaved, &uv);
             same::<Bilinear>(&own, &interleaved, &uv);
         }
@@ -157,6 +166,6 @@ mod tests {
         assert_eq!(place(MapRole::Normal), Some((2, 1)));
         assert_eq!(place(MapRole::Specular), None);
         assert_eq!(place(MapRole::Glow), Some((2, 0)));
-        assert!(maps.texture(MapRole::Specular).is_none());
+        assert!(maps.texture(MapRole::Specular, ground.material.specular_map.as_ref().unwrap()).is_none());
     }
 }

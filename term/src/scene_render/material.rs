@@ -22,8 +22,8 @@ use crate::scene_file::{NormalSpace, SceneObject};
 /// - normal and glow maps: the scene's, unless their effect is off;
 /// - filter and wrap: the scene's, for every map.
 ///
-/// Each map is read from `maps` ([`crate::scene_render::PreparedScene::part_maps`]) when interleaved there, else from
-/// its image: the same samples either way.
+/// Each map is read from `maps` (the part's [`crate::scene_render::PreparedScene::part_maps`]) when interleaved
+/// there from the same image, else from its image: the same samples either way.
 ///
 /// # Errors
 /// [`TextureError`] for an image whose fields are inconsistent (only possible if changed by hand after loading).
@@ -36,7 +36,7 @@ pub fn part_material<'a>(
     let mtl = object.model.part_material(part);
     let m = &object.material;
     let effects = &options.effects;
-    let texture = |role, image: &'a TextureImage| maps.texture(role).unwrap_or_else(|| image.texture());
+    let texture = |role, image: &'a TextureImage| maps.texture(role, image).unwrap_or_else(|| image.texture());
     let diffuse = match m.diffuse_over(mtl) {
         Some(image) if options.textures => Some(texture(MapRole::Diffuse, image)?),
         _ => None,
