@@ -309,7 +309,12 @@ impl<'a> ShadowMap<'a> {
     /// `n_dot_l` is `n . l` for this light: 1 lit, 0 in shadow. Points outside the map are lit.
     #[inline(always)]
     pub fn light_reaching(&self, p: Vec3, n: Vec3, n_dot_l: f32) -> f32 {
-        let (in_front, tx, ty, z) = self.lookup(p, n, n_dot_l, self.view.texel_at(p));
+        let texel = self.view.texel_at(p);
+        let (in_front, tx, ty, z) = if self.affine() {
+            self.lookup::<true>(p, n, n_dot_l, texel)
+        } else {
+            self.lookup::<false>(p, n, n_dot_l, texel)
+        };
         if !in_front {
             return 1.0;
         }
@@ -346,8 +351,15 @@ impl<'a> ShadowMap<'a> {
         };
         let (mut tx, mut ty, mut z) = ([0i32; BATCH_SIZE], [0i32; BATCH_SIZE], [0.0; BATCH_SIZE]);
         let mut in_front = [false; BATCH_SIZE];
-        for i in 0..BATCH_SIZE {
-            (in_front[i], tx[i], ty[i], z[i]) = self.lookup(p.get(i), n.get(i), n_dot_l[i], texel[i]);
+        // One decision per batch: an orthographic map (a directional light's) needs no division.
+        if self.affine() {
+            for i in 0..BATCH_SIZE {
+                (in_front[i], tx[i], ty[i], z[i]) = self.lookup::<true>(p.get(i), n.get(i), n_dot_l[i], texel[i]);
+            }
+        } else {
+            for i in 0..BATCH_SIZE {
+                (in_front[i], tx[i], ty[i], z[i]) = self.lookup::<false>(p.get(i), n.get(i), n_dot_l[i], texel[i]);
+            }
         }
         // The radius is chosen once for the batch, not per lane.
         macro_rules! count {
@@ -365,11 +377,21 @@ impl<'a> ShadowMap<'a> {
         }
     }
 
+    /// True when the light's projection is orthographic (a directional light's): every finite point has `w = 1`.
+    #[inline(always)]
+    fn affine(&self) -> bool {
+        self.view.clip_from_world.is_affine()
+    }
+
     /// Where the lookup of `p` (unit geometric normal `n`, `n . l` = `n_dot_l`, a map texel `texel` world units
     /// wide there) reads the map: whether it is in front of the light, the texel `(tx, ty)` and the depth `z` to
     /// compare.
+    ///
+    /// `AFFINE` (only for a map whose [`Self::affine`] holds) skips the perspective division: `w` is then exactly 1
+    /// for a finite point (`0 * x + 0 * y + 0 * z + 1`), so dividing by it changes nothing, and a point with a
+    /// non-finite coordinate has `w` NaN and is not in front either way.
     #[inline(always)]
-    fn lookup(&self, p: Vec3, n: Vec3, n_dot_l: f32, texel: f32) -> (bool, i32, i32, f32) {
+    fn lookup<const AFFINE: bool>(&self, p: Vec3, n: Vec3, n_dot_l: f32, texel: f32) -> (bool, i32, i32, f32) {
         let b = &self.bias;
         // A PCF tap r texels away meets the receiver's own depth up to r texels' slope nearer the light: the
         // offset grows with the filter's reach.
@@ -378,7 +400,7 @@ impl<'a> ShadowMap<'a> {
         let offset = texel * (b.normal_offset + b.slope_offset * slope) * reach;
         let clip = self.view.clip_from_world.project_point(p + n * offset);
         let in_front = clip.w > 0.0; // false for NaN too
-        let inv_w = 1.0 / clip.w;
+        let inv_w = if AFFINE { 1.0 } else { 1.0 / clip.w };
         let half = self.view.size as f32 * 0.5;
         // NDC to texels as the pipeline's viewport maps them: x right, y down, pixel centres at +0.5.
         // Clamped far outside any map (so that `tx + r` cannot overflow), and widened to SIMD in a loop of lanes.
@@ -539,6 +561,39 @@ mod tests {
         let plain = ShadowMap::new(view, &depth, ShadowBias::DEFAULT, 1).unwrap();
         let other_radius = WindowRanges::new(&near, &far, SIZE, 2).unwrap();
         assert_eq!(plain.with_windows(other_radius).err(), Some(ShadowError::Windows { size: SIZE, radius: 1 }));
+    }
+
+    /// An orthographic map's lookup without the perspective division finds the same texel, depth and facing as
+    /// with it, at points across and beyond the map, huge, tiny, infinite and NaN; a perspective map is not
+    /// affine.
+    #[test]
+    fn orthographic_lookups_need_no_division() {
+        let bounds = Bounds { centre: Vec3::new(0.2, -0.1, 0.3), radius: 1.5 };
+        let depth = [0.5; 64 * 64];
+        let to_light = Vec3::new(-0.4, 0.8, 0.45).normalize_or_zero();
+        let view = ShadowView::fit(LightKind::Directional { to_light }, bounds, 64).unwrap();
+        let map = ShadowMap::new(view, &depth, ShadowBias::DEFAULT, 1).unwrap();
+        assert!(map.affine());
+        let point = ShadowView::fit(LightKind::Point { position: Vec3::new(0.0, 5.0, 0.0) }, bounds, 64).unwrap();
+        assert!(!ShadowMap::new(point, &depth, ShadowBias::DEFAULT, 1).unwrap().affine());
+        let values = [0.0, -0.0, 0.37, -1.9, 2.5, 1e-30, -3e7, 1e30, f32::INFINITY, f32::NEG_INFINITY, f32::NAN];
+        let bits = |(f, x, y, z): (bool, i32, i32, f32)| (f, x, y, z.to_bits());
+        for (i, &a) in values.iter().enumerate() {
+            for &b in &values {
+                let p = Vec3::new(a, b, values[(i * 7 + 3) % values.len()]);
+                let n = Vec3::new(0.0, 1.0, 0.0);
+                for n_dot_l in [-1.0, 0.0, 0.3, 1.0] {
+                    let texel = view.texel_at(p);
+                    let divided = map.lookup::<false>(p, n, n_dot_l, texel);
+                    let (in_front, ..) = divided;
+                    if in_front {
+                        assert_eq!(bits(map.lookup::<true>(p, n, n_dot_l, texel)), bits(divided), "{p:?}");
+                    } else {
+                        assert!(!map.lookup::<true>(p, n, n_dot_l, texel).0, "{p:?}");
+                    }
+                }
+            }
+        }
     }
 
     /// The lane-wise lookup gives bit for bit the scalar lookup's share, for directional and point lights, every
