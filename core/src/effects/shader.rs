@@ -80,7 +80,12 @@ where
         let maps = &mut MapReader::<F, Wr>::new();
         let v = &self.variant;
         let m = &self.material;
-        normals::interpolated(s, v.normals == NormalSource::Interpolated);
+        // The geometric normal is the shading normal without a normal map, and offsets shadow lookups: with a map
+        // and no shadows, nothing reads it.
+        let interpolated_shading = v.normals == NormalSource::Interpolated;
+        if interpolated_shading || v.shadowed_lights > 0 {
+            normals::interpolated(s, interpolated_shading);
+        }
         match (v.normals, m.normal_map) {
             (NormalSource::TangentMap, Some(map)) => tangent_map(s, maps, &map.texture),
             (NormalSource::ObjectMap, Some(map)) => object_map(s, maps, &map.texture, &self.transforms.normal),

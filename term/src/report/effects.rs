@@ -351,7 +351,7 @@ pub fn header(report: &EffectsReport, plans: &[ScenePlan], threads: usize, machi
         } else {
             format!(
                 "- threads: {threads} (shadow maps drawn in {threads} bands of rows; frames in one band per {} \
-                 pixels, {threads} to {} bands, taken in turn by the threads)",
+                 pixels, {threads} to {} bands, taken in turn by the threads, the most triangles first)",
                 BAND_PIXELS,
                 threads * BANDS_PER_THREAD
             )

@@ -103,7 +103,8 @@ pub const BAND_PIXELS: usize = 65_536;
 ///
 /// The shadow passes split their map into one band of rows per thread; the forward pass and the ambient
 /// occlusion step split the frame into one band per [`BAND_PIXELS`] pixels, at least one and at most
-/// [`BANDS_PER_THREAD`] per thread, which the threads take in turn. Each band runs the whole draw list into its own
+/// [`BANDS_PER_THREAD`] per thread, which the threads take in turn (the forward pass's with the most triangles
+/// first, so that the threads finish together). Each band runs the whole draw list into its own
 /// rows, each draw with the triangles sorted into the band (conservatively, by their screen rows; the core clips
 /// every triangle to the band), so maps and pixels are the same for any number of threads: only the vertex work
 /// of triangles that reach several bands is repeated.
@@ -203,6 +204,10 @@ impl SceneRenderer {
                 Ok(TriangleBins::new(&mesh, &draw.transforms.clip_from_object, (width, height), &rows))
             })
             .collect::<Result<Vec<_>, SceneRenderError>>()?;
+        // Threads take the bands with the most triangles first, so that the last ones taken are short and the
+        // threads finish together.
+        let mut bands = bands;
+        bands.sort_by_key(|band| std::cmp::Reverse(bins.iter().map(|b| b.band(band.index).len()).sum::<usize>()));
         let results =
             on_threads(bands, self.threads, |band| forward_band(scene, plan, &bins, &lights, band, width, height));
         for result in results {
