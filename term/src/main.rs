@@ -12,8 +12,8 @@ use clap::{ArgMatches, Args, CommandFactory, FromArgMatches, Parser, Subcommand}
 use rasterm::escaped::{Escaped, path_text};
 use rasterm::headless::{ModelSource, RenderRequest, TextureChoice, parse_size, render_to_png};
 use rasterm::png_file::write_png;
-use rasterm::report::effects;
 use rasterm::report::terminal::{DEFAULT_FRAMES, TerminalReport};
+use rasterm::report::{effects, frames};
 use rasterm::scene::{Appearance, Lens, OrbitCamera, ShadingMode, parse_hex_color};
 use rasterm::scene_file::SceneData;
 use rasterm::scene_render::{EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, render_scene_image};
@@ -50,6 +50,28 @@ enum ReportCommand {
     Accuracy(AccuracyReportArgs),
     /// Time per frame of a scene file with no effect, each effect alone and every effect, at 800x800 and 200x120.
     Effects(EffectsReportArgs),
+    /// Time per frame of a scene file as it is (shadow maps kept, drawn every frame, and without shadows), the
+    /// same frame drawn again and again.
+    Frames(FramesReportArgs),
+}
+
+/// Options of `rasterm report frames`.
+#[derive(Args, Debug)]
+struct FramesReportArgs {
+    /// The scene file to measure.
+    scene: PathBuf,
+    /// Frames measured per configuration.
+    #[arg(long, default_value_t = frames::DEFAULT_FRAMES as u32, value_parser = clap::value_parser!(u32).range(1..=100_000))]
+    frames: u32,
+    /// Threads per frame, each drawing a band of rows (default: every logical CPU).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    threads: Option<u32>,
+    /// Frame size.
+    #[arg(long, value_name = "WxH", default_value = "800x800", value_parser = parse_size)]
+    size: (u32, u32),
+    /// A few frames only (for CI): the same as `--frames 5`.
+    #[arg(long, conflicts_with = "frames")]
+    quick: bool,
 }
 
 /// Options of `rasterm report effects`.
@@ -324,6 +346,7 @@ fn main() -> ExitCode {
         Some(Command::Report(ReportCommand::Terminal(args))) => terminal_report(&args).map(|()| ExitCode::SUCCESS),
         Some(Command::Report(ReportCommand::Accuracy(args))) => accuracy_report(&args).map(|()| ExitCode::SUCCESS),
         Some(Command::Report(ReportCommand::Effects(args))) => effects_report(&args).map(|()| ExitCode::SUCCESS),
+        Some(Command::Report(ReportCommand::Frames(args))) => frames_report(&args).map(|()| ExitCode::SUCCESS),
         None => view(&cli.viewer, &matches),
     };
     result.unwrap_or_else(|message| {
@@ -483,6 +506,21 @@ fn effects_report(args: &EffectsReportArgs) -> Result<(), String> {
         e => e.to_string(),
     };
     effects::run(&report, &scene, &mut std::io::stdout().lock()).map(|_| ()).map_err(in_file)
+}
+
+fn frames_report(args: &FramesReportArgs) -> Result<(), String> {
+    let threads = args.threads.map(|n| n as usize);
+    let report = if args.quick {
+        frames::FramesReport::quick(args.scene.clone(), threads, args.size)
+    } else {
+        frames::FramesReport::new(args.scene.clone(), args.frames as usize, threads, args.size)
+    };
+    let scene = load_scene_file(&report.scene_path)?;
+    let in_file = |e: effects::EffectsError| match e {
+        effects::EffectsError::Render(e) => format!("{}: {e}", path_text(&report.scene_path)),
+        e => e.to_string(),
+    };
+    frames::run(&report, &scene, &mut std::io::stdout().lock()).map(|_| ()).map_err(in_file)
 }
 
 fn view(args: &ViewerArgs, matches: &ArgMatches) -> Result<ExitCode, String> {

@@ -4,10 +4,12 @@
 //! |---|---|
 //! | [`accuracy`] | time and error of every quality knob against a high-precision reference |
 //! | [`effects`] | time per frame of a scene file with no effect, each effect alone and every effect |
+//! | [`frames`] | time per frame of a scene file as it is, the same frame drawn again and again |
 //! | [`terminal`] | bytes and times of terminal frames for a turntable of the built-in model |
 
 pub mod accuracy;
 pub mod effects;
+pub mod frames;
 pub mod terminal;
 
 use std::time::Duration;

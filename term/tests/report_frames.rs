@@ -1,0 +1,133 @@
+//! `rasterm report frames`: the report's rows and numbers on a small frame through the library, and its errors
+//! through the binary. Timings are never compared.
+
+mod common;
+
+use std::path::PathBuf;
+use std::process::Command;
+
+use rasterm::report::effects::ShadowMaps;
+use rasterm::report::frames::{self, FramesReport, rows};
+use rasterm::scene_render::{EffectToggles, PreparedScene, SceneEffect};
+
+fn load(path: &PathBuf, text: Option<String>) -> PreparedScene {
+    let data = match text {
+        Some(text) => rasterm::scene_file::parse(text, path).and_then(|file| file.load()),
+        None => rasterm::scene_file::load(path),
+    };
+    PreparedScene::new(data.unwrap_or_else(|e| panic!("{e}"))).unwrap()
+}
+
+/// The table's lines split into cells.
+fn table(text: &str) -> Vec<Vec<String>> {
+    let lines = text.lines().filter(|l| l.starts_with('|'));
+    lines.map(|l| l.trim_matches('|').split('|').map(|c| c.trim().to_owned()).collect()).collect()
+}
+
+#[test]
+fn rows_are_the_scene_with_its_shadow_maps_kept_drawn_and_left_out() {
+    let with = rows(true);
+    let labels: Vec<&str> = with.iter().map(|r| r.label).collect();
+    assert_eq!(
+        labels,
+        ["every effect, shadow maps kept", "every effect, shadow maps drawn every frame", "every effect but shadows"]
+    );
+    assert_eq!((with[0].effects, with[0].maps), (EffectToggles::ALL_ON, ShadowMaps::Kept));
+    assert_eq!((with[1].effects, with[1].maps), (EffectToggles::ALL_ON, ShadowMaps::Drawn));
+    let mut no_shadows = EffectToggles::ALL_ON;
+    no_shadows.set(SceneEffect::Shadows, false);
+    assert_eq!(with[2].effects, no_shadows);
+    let without = rows(false);
+    assert_eq!(without.len(), 1);
+    assert_eq!((without[0].label, without[0].effects), ("every effect", EffectToggles::ALL_ON));
+}
+
+#[test]
+fn the_report_has_every_row_and_every_number() {
+    let path = common::root().join("assets/scenes/spot_lamp.toml");
+    let scene = load(&path, None);
+    for threads in [Some(1), None] {
+        let report = FramesReport::new(path.clone(), 3, threads, (40, 30));
+        let mut out = Vec::new();
+        let results = frames::run(&report, &scene, &mut out).unwrap();
+        let text = String::from_utf8(out).unwrap();
+        let expected_threads = threads.unwrap_or_else(|| rasterm::scene_render::SceneRenderer::new().threads());
+        assert!(text.contains(&format!("- threads: {expected_threads}\n")), "{text}");
+        assert!(text.contains(&format!("- command: `{}`", report.command_line())), "{text}");
+        assert!(text.contains("at 40x30"), "{text}");
+        assert!(results.samples.iter().all(|s| s.frame.len() == 3), "three measured frames a row");
+
+        let cells = table(&text);
+        assert_eq!(cells.len(), 2 + 3, "{text}");
+        assert_eq!(cells[0], ["configuration", "ms", "min ms", "shadow", "forward", "occlusion", "fragments"]);
+        for (row, label) in cells[2..].iter().zip(rows(true).iter().map(|r| r.label)) {
+            assert_eq!(row[0], label);
+            // spot_lamp has shadow maps and ambient occlusion: the shadow column is empty only without shadows.
+            assert_eq!(row[3] == "–", label == "every effect but shadows", "{row:?}");
+            for cell in &row[1..6] {
+                if cell != "–" {
+                    let ms: f64 = cell.parse().unwrap_or_else(|_| panic!("{label}: {cell:?}"));
+                    assert!(ms.is_finite() && ms >= 0.0, "{label}: {cell}");
+                }
+            }
+            let fragments: u64 = row[6].parse().unwrap_or_else(|_| panic!("{label}: {:?}", row[6]));
+            assert!(fragments > 0, "{label}: the lamp and the ground cover pixels");
+        }
+        // The same frame in every row: the same fragments.
+        assert!(cells[2..].iter().all(|row| row[6] == cells[2][6]), "{text}");
+    }
+}
+
+#[test]
+fn a_scene_without_shadows_has_one_row() {
+    let path = common::root().join("assets/scenes/spot_sun.toml");
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert!(text.contains("shadows = true"));
+    let scene = load(&path, Some(text.replace("shadows = true", "shadows = false")));
+    let report = FramesReport::quick(path, Some(1), (32, 24));
+    let mut out = Vec::new();
+    let results = frames::run(&report, &scene, &mut out).unwrap();
+    let text = String::from_utf8(out).unwrap();
+    assert_eq!(results.rows.len(), 1);
+    let cells = table(&text);
+    assert_eq!(cells.len(), 3, "{text}");
+    assert_eq!((cells[2][0].as_str(), cells[2][3].as_str()), ("every effect", "–"), "{text}");
+    assert!(text.contains("no shadow map"), "{text}");
+}
+
+#[test]
+fn command_lines_show_the_options_given() {
+    let report = FramesReport::new("a.toml".into(), 30, None, frames::DEFAULT_SIZE);
+    assert_eq!(report.command_line(), "rasterm report frames a.toml --frames 30");
+    let report = FramesReport::quick("a.toml".into(), Some(1), (200, 120));
+    assert_eq!(report.command_line(), "rasterm report frames a.toml --size 200x120 --quick --threads 1");
+}
+
+fn rasterm(args: &[&str]) -> std::process::Output {
+    let dir = tempfile::tempdir().unwrap();
+    Command::new(env!("CARGO_BIN_EXE_rasterm")).current_dir(dir.path()).args(args).output().expect("run rasterm")
+}
+
+#[test]
+fn a_scene_that_does_not_load_is_an_error_naming_it() {
+    let out = rasterm(&["report", "frames", "missing.toml", "--quick"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.starts_with("rasterm: error: missing.toml: "), "{stderr}");
+    assert!(out.stdout.is_empty());
+}
+
+#[test]
+fn bad_options_are_usage_errors() {
+    let cases: [&[&str]; 5] = [
+        &[],
+        &["a.toml", "--frames", "0"],
+        &["a.toml", "--threads", "0"],
+        &["a.toml", "--quick", "--frames", "3"],
+        &["a.toml", "--size", "0x5"],
+    ];
+    for args in cases {
+        let out = rasterm(&[&["report", "frames"][..], args].concat());
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
+    }
+}
