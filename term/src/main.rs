@@ -501,11 +501,15 @@ fn effects_report(args: &EffectsReportArgs) -> Result<(), String> {
         effects::EffectsReport::new(args.scene.clone(), args.frames as usize, threads)
     };
     let scene = load_scene_file(&report.scene_path)?;
-    let in_file = |e: effects::EffectsError| match e {
-        effects::EffectsError::Render(e) => format!("{}: {e}", path_text(&report.scene_path)),
+    effects::run(&report, &scene, &mut std::io::stdout().lock()).map(|_| ()).map_err(in_file(&report.scene_path))
+}
+
+/// A timing report's error as a message; a frame that could not be planned or drawn names the scene file.
+fn in_file(scene: &Path) -> impl Fn(effects::EffectsError) -> String + '_ {
+    move |e| match e {
+        effects::EffectsError::Render(e) => format!("{}: {e}", path_text(scene)),
         e => e.to_string(),
-    };
-    effects::run(&report, &scene, &mut std::io::stdout().lock()).map(|_| ()).map_err(in_file)
+    }
 }
 
 fn frames_report(args: &FramesReportArgs) -> Result<(), String> {
@@ -516,11 +520,7 @@ fn frames_report(args: &FramesReportArgs) -> Result<(), String> {
         frames::FramesReport::new(args.scene.clone(), args.frames as usize, threads, args.size)
     };
     let scene = load_scene_file(&report.scene_path)?;
-    let in_file = |e: effects::EffectsError| match e {
-        effects::EffectsError::Render(e) => format!("{}: {e}", path_text(&report.scene_path)),
-        e => e.to_string(),
-    };
-    frames::run(&report, &scene, &mut std::io::stdout().lock()).map(|_| ()).map_err(in_file)
+    frames::run(&report, &scene, &mut std::io::stdout().lock()).map(|_| ()).map_err(in_file(&report.scene_path))
 }
 
 fn view(args: &ViewerArgs, matches: &ArgMatches) -> Result<ExitCode, String> {

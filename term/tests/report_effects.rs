@@ -4,7 +4,6 @@
 mod common;
 
 use std::path::PathBuf;
-use std::process::Command;
 
 use rasterm::report::effects::{self, EffectsReport, ShadowMaps, configurations};
 use rasterm::scene_render::{EffectToggles, PreparedScene, SceneEffect};
@@ -113,21 +112,16 @@ fn command_lines_show_the_options_given() {
     );
 }
 
-fn rasterm(args: &[&str]) -> std::process::Output {
-    let dir = tempfile::tempdir().unwrap();
-    Command::new(env!("CARGO_BIN_EXE_rasterm")).current_dir(dir.path()).args(args).output().expect("run rasterm")
-}
-
 #[test]
 fn a_scene_that_does_not_load_is_an_error_naming_it() {
-    let out = rasterm(&["report", "effects", "missing.toml", "--quick"]);
+    let out = common::rasterm_in_empty_dir(&["report", "effects", "missing.toml", "--quick"]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{stderr}");
     assert!(stderr.starts_with("rasterm: error: missing.toml: "), "{stderr}");
     assert!(out.stdout.is_empty());
 
     // Without a scene, the default is looked for in the current directory: named too.
-    let out = rasterm(&["report", "effects", "--quick"]);
+    let out = common::rasterm_in_empty_dir(&["report", "effects", "--quick"]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{stderr}");
     assert!(stderr.contains(effects::DEFAULT_SCENE), "{stderr}");
@@ -136,7 +130,7 @@ fn a_scene_that_does_not_load_is_an_error_naming_it() {
 #[test]
 fn bad_options_are_usage_errors() {
     for args in [&["--frames", "0"][..], &["--threads", "0"], &["--quick", "--frames", "3"]] {
-        let out = rasterm(&[&["report", "effects"][..], args].concat());
+        let out = common::rasterm_in_empty_dir(&[&["report", "effects"][..], args].concat());
         assert_eq!(out.status.code(), Some(2), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
     }
 }

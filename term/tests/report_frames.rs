@@ -4,7 +4,6 @@
 mod common;
 
 use std::path::PathBuf;
-use std::process::Command;
 
 use rasterm::report::effects::ShadowMaps;
 use rasterm::report::frames::{self, FramesReport, rows};
@@ -103,14 +102,9 @@ fn command_lines_show_the_options_given() {
     assert_eq!(report.command_line(), "rasterm report frames a.toml --size 200x120 --quick --threads 1");
 }
 
-fn rasterm(args: &[&str]) -> std::process::Output {
-    let dir = tempfile::tempdir().unwrap();
-    Command::new(env!("CARGO_BIN_EXE_rasterm")).current_dir(dir.path()).args(args).output().expect("run rasterm")
-}
-
 #[test]
 fn a_scene_that_does_not_load_is_an_error_naming_it() {
-    let out = rasterm(&["report", "frames", "missing.toml", "--quick"]);
+    let out = common::rasterm_in_empty_dir(&["report", "frames", "missing.toml", "--quick"]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{stderr}");
     assert!(stderr.starts_with("rasterm: error: missing.toml: "), "{stderr}");
@@ -127,7 +121,7 @@ fn bad_options_are_usage_errors() {
         &["a.toml", "--size", "0x5"],
     ];
     for args in cases {
-        let out = rasterm(&[&["report", "frames"][..], args].concat());
+        let out = common::rasterm_in_empty_dir(&[&["report", "frames"][..], args].concat());
         assert_eq!(out.status.code(), Some(2), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
     }
 }

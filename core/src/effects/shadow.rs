@@ -351,7 +351,8 @@ impl<'a> ShadowMap<'a> {
         };
         let (mut tx, mut ty, mut z) = ([0i32; BATCH_SIZE], [0i32; BATCH_SIZE], [0.0; BATCH_SIZE]);
         let mut in_front = [false; BATCH_SIZE];
-        // One decision per batch: an orthographic map (a directional light's) needs no division.
+        // One decision per batch: an orthographic map (a directional light's) needs no division. The two loops
+        // are written out: a helper returning the four columns made the batch 7% slower (copies of the columns).
         if self.affine() {
             for i in 0..BATCH_SIZE {
                 (in_front[i], tx[i], ty[i], z[i]) = self.lookup::<true>(p.get(i), n.get(i), n_dot_l[i], texel[i]);

@@ -122,8 +122,7 @@ impl EffectsReport {
 
     /// The threads each frame is drawn on: [`Self::threads`], else this machine's logical CPUs (at least 1).
     pub fn thread_count(&self) -> usize {
-        let threads = self.threads.unwrap_or_else(|| SceneRenderer::new().threads());
-        SceneRenderer::with_threads(threads).threads()
+        super::thread_count(self.threads)
     }
 
     /// The command that prints this report.
@@ -195,14 +194,89 @@ pub struct Samples {
     pub shadow_passes: usize,
     /// Whether the plan has the ambient occlusion step.
     pub occlusion_step: bool,
+    /// Fragments the forward pass shaded in the last measured frame ([`FrameReport::forward`]).
+    pub fragments: u64,
 }
 
 impl Samples {
-    fn push(&mut self, frame: Duration, report: &FrameReport) {
+    /// No samples yet, for `plan`.
+    pub(super) fn for_plan(plan: &ScenePlan) -> Self {
+        Self {
+            shadow_passes: plan.shadow_passes.len(),
+            occlusion_step: plan.ambient_occlusion.is_some(),
+            ..Self::default()
+        }
+    }
+
+    /// Adds one measured frame.
+    pub(super) fn push(&mut self, frame: Duration, report: &FrameReport) {
         self.frame.push(frame);
         self.shadow.push(report.shadow_time);
         self.forward.push(report.forward_time);
         self.occlusion.push(report.occlusion_time);
+        self.fragments = report.forward.fragments;
+    }
+}
+
+/// The plan of `scene`'s frame at `size` with its file's camera and `effects` allowed.
+pub(super) fn plan(
+    scene: &PreparedScene,
+    size: (u32, u32),
+    effects: EffectToggles,
+) -> Result<ScenePlan, SceneRenderError> {
+    ScenePlan::new(scene, &scene.data().camera, size, &PlanOptions { effects, ..PlanOptions::default() })
+}
+
+/// Frames of one scene at one size, drawn into one colour and one depth buffer and timed: what the timing reports
+/// run.
+pub(super) struct TimedFrames<'s> {
+    scene: &'s PreparedScene,
+    size: (u32, u32),
+    threads: usize,
+    pixels: Vec<u32>,
+    depth: Vec<f32>,
+}
+
+impl<'s> TimedFrames<'s> {
+    /// Buffers for `scene`'s frames at `size`, drawn on `threads` threads.
+    pub(super) fn new(scene: &'s PreparedScene, size: (u32, u32), threads: usize) -> Self {
+        let pixel_count = size.0 as usize * size.1 as usize;
+        Self { scene, size, threads, pixels: vec![0; pixel_count], depth: vec![0.0; pixel_count] }
+    }
+
+    /// Renders `plan` with `renderer`, which is made afresh first for [`ShadowMaps::Drawn`]; the wall time of
+    /// [`SceneRenderer::render`] and its report.
+    pub(super) fn render(
+        &mut self,
+        renderer: &mut SceneRenderer,
+        maps: ShadowMaps,
+        plan: &ScenePlan,
+    ) -> Result<(Duration, FrameReport), EffectsError> {
+        if maps == ShadowMaps::Drawn {
+            *renderer = SceneRenderer::with_threads(self.threads);
+        }
+        let (width, height) = self.size;
+        let mut target = Target::new(Rgb888(&mut self.pixels), &mut self.depth[..], width, height)
+            .map_err(SceneRenderError::from)?;
+        let start = Instant::now();
+        let report = renderer.render(self.scene, plan, &mut target)?;
+        Ok((start.elapsed(), report))
+    }
+}
+
+/// An error unless the measured frame `report` of row `label` drew (for [`ShadowMaps::Drawn`]) or reused (for
+/// [`ShadowMaps::Kept`]) every shadow map: the report would otherwise print figures under the wrong label.
+pub(super) fn check_maps(label: &str, maps: ShadowMaps, report: &FrameReport) -> Result<(), EffectsError> {
+    let want_reused = maps == ShadowMaps::Kept;
+    match report.shadow_passes.iter().find(|p| p.reused != want_reused) {
+        Some(pass) => {
+            let did = if pass.reused { "reused" } else { "drew" };
+            Err(EffectsError::Setup(format!(
+                "{label}: the renderer {did} the shadow map of light {} (a bug in the report)",
+                pass.light
+            )))
+        }
+        None => Ok(()),
     }
 }
 
@@ -256,52 +330,19 @@ fn measure_size(
     threads: usize,
     frames: usize,
 ) -> Result<Vec<Samples>, EffectsError> {
-    let camera = scene.data().camera;
-    let plans = configurations
-        .iter()
-        .map(|c| {
-            ScenePlan::new(
-                scene,
-                &camera,
-                (width, height),
-                &PlanOptions { effects: c.effects, ..PlanOptions::default() },
-            )
-        })
-        .collect::<Result<Vec<_>, _>>()?;
+    let plans =
+        configurations.iter().map(|c| plan(scene, (width, height), c.effects)).collect::<Result<Vec<_>, _>>()?;
     let mut renderers: Vec<SceneRenderer> =
         configurations.iter().map(|_| SceneRenderer::with_threads(threads)).collect();
-    let mut samples: Vec<Samples> = plans
-        .iter()
-        .map(|plan| Samples {
-            shadow_passes: plan.shadow_passes.len(),
-            occlusion_step: plan.ambient_occlusion.is_some(),
-            ..Samples::default()
-        })
-        .collect();
-    let pixel_count = width as usize * height as usize;
-    let (mut pixels, mut depth) = (vec![0u32; pixel_count], vec![0f32; pixel_count]);
+    let mut samples: Vec<Samples> = plans.iter().map(Samples::for_plan).collect();
+    let mut frames_drawn = TimedFrames::new(scene, (width, height), threads);
     let mut frame = |row: usize, warm_up: bool| -> Result<(), EffectsError> {
         let configuration = &configurations[row];
-        if configuration.maps == ShadowMaps::Drawn {
-            renderers[row] = SceneRenderer::with_threads(threads);
+        let (elapsed, report) = frames_drawn.render(&mut renderers[row], configuration.maps, &plans[row])?;
+        if !warm_up {
+            check_maps(&format!("{} at {width}x{height}", configuration.label), configuration.maps, &report)?;
+            samples[row].push(elapsed, &report);
         }
-        let mut target =
-            Target::new(Rgb888(&mut pixels), &mut depth[..], width, height).map_err(SceneRenderError::from)?;
-        let start = Instant::now();
-        let report = renderers[row].render(scene, &plans[row], &mut target)?;
-        let elapsed = start.elapsed();
-        if warm_up {
-            return Ok(());
-        }
-        let want_reused = configuration.maps == ShadowMaps::Kept;
-        if let Some(pass) = report.shadow_passes.iter().find(|p| p.reused != want_reused) {
-            let did = if pass.reused { "reused" } else { "drew" };
-            return Err(EffectsError::Setup(format!(
-                "{} at {width}x{height}: the renderer {did} the shadow map of light {} (a bug in the report)",
-                configuration.label, pass.light
-            )));
-        }
-        samples[row].push(elapsed, &report);
         Ok(())
     };
     let count = configurations.len();

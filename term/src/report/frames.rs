@@ -12,16 +12,12 @@
 use std::fmt::Write as _;
 use std::io::Write;
 use std::path::PathBuf;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
-use rasterm_core::target::{Rgb888, Target};
-
-use super::effects::{EffectsError, ShadowMaps};
+use super::effects::{EffectsError, Samples, ShadowMaps, TimedFrames, check_maps, plan};
 use super::median;
 use crate::escaped::path_text;
-use crate::scene_render::{
-    EffectToggles, FrameReport, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError, SceneRenderer,
-};
+use crate::scene_render::{EffectToggles, PreparedScene, SceneEffect, ScenePlan, SceneRenderer};
 
 /// Frame size measured unless another is given: the tinyrenderer comparison's.
 pub const DEFAULT_SIZE: (u32, u32) = (800, 800);
@@ -60,8 +56,7 @@ impl FramesReport {
 
     /// The threads each frame is drawn on: [`Self::threads`], else this machine's logical CPUs (at least 1).
     pub fn thread_count(&self) -> usize {
-        let threads = self.threads.unwrap_or_else(|| SceneRenderer::new().threads());
-        SceneRenderer::with_threads(threads).threads()
+        super::thread_count(self.threads)
     }
 
     /// The command that prints this report.
@@ -109,25 +104,6 @@ pub fn rows(has_shadows: bool) -> Vec<Row> {
     ]
 }
 
-/// The measured frames of one row.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct RowSamples {
-    /// Wall time of [`SceneRenderer::render`], one per measured frame.
-    pub frame: Vec<Duration>,
-    /// The shadow passes' time of each frame.
-    pub shadow: Vec<Duration>,
-    /// The forward pass's time of each frame.
-    pub forward: Vec<Duration>,
-    /// The ambient occlusion step's time of each frame.
-    pub occlusion: Vec<Duration>,
-    /// Fragments the forward pass shaded in a frame.
-    pub fragments: u64,
-    /// Shadow passes in the row's plan.
-    pub shadow_passes: usize,
-    /// Whether the row's plan has the ambient occlusion step.
-    pub occlusion_step: bool,
-}
-
 /// Everything measured.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FramesResults {
@@ -136,12 +112,7 @@ pub struct FramesResults {
     /// The threads each frame was drawn on.
     pub threads: usize,
     /// Each row's samples.
-    pub samples: Vec<RowSamples>,
-}
-
-/// The plan of `scene` at the report's size with `effects` allowed.
-fn plan(scene: &PreparedScene, size: (u32, u32), effects: EffectToggles) -> Result<ScenePlan, SceneRenderError> {
-    ScenePlan::new(scene, &scene.data().camera, size, &PlanOptions { effects, ..PlanOptions::default() })
+    pub samples: Vec<Samples>,
 }
 
 /// Measures every row of `report` on `scene`.
@@ -153,36 +124,17 @@ pub fn measure(scene: &PreparedScene, report: &FramesReport) -> Result<FramesRes
     if report.frames == 0 {
         return Err(EffectsError::Setup("the report needs at least one frame per row".into()));
     }
-    let (width, height) = report.size;
     let has_shadows = !plan(scene, report.size, EffectToggles::ALL_ON)?.shadow_passes.is_empty();
     let rows = rows(has_shadows);
     let plans = rows.iter().map(|row| plan(scene, report.size, row.effects)).collect::<Result<Vec<_>, _>>()?;
     let threads = report.thread_count();
     let mut renderers: Vec<SceneRenderer> = rows.iter().map(|_| SceneRenderer::with_threads(threads)).collect();
-    let mut samples: Vec<RowSamples> = plans
-        .iter()
-        .map(|plan| RowSamples {
-            shadow_passes: plan.shadow_passes.len(),
-            occlusion_step: plan.ambient_occlusion.is_some(),
-            ..RowSamples::default()
-        })
-        .collect();
-    let pixel_count = width as usize * height as usize;
-    let (mut pixels, mut depth) = (vec![0u32; pixel_count], vec![0f32; pixel_count]);
-    let mut frame = |r: usize| -> Result<(Duration, FrameReport), EffectsError> {
-        if rows[r].maps == ShadowMaps::Drawn {
-            renderers[r] = SceneRenderer::with_threads(threads);
-        }
-        let mut target =
-            Target::new(Rgb888(&mut pixels), &mut depth[..], width, height).map_err(SceneRenderError::from)?;
-        let start = Instant::now();
-        let frame_report = renderers[r].render(scene, &plans[r], &mut target)?;
-        Ok((start.elapsed(), frame_report))
-    };
+    let mut samples: Vec<Samples> = plans.iter().map(Samples::for_plan).collect();
+    let mut frames = TimedFrames::new(scene, report.size, threads);
     // Two frames first: a kept map is drawn in the first and its filter windows' ranges worked out in the second.
-    for r in 0..rows.len() {
+    for (r, row) in rows.iter().enumerate() {
         for _ in 0..2 {
-            frame(r)?;
+            frames.render(&mut renderers[r], row.maps, &plans[r])?;
         }
     }
     while samples.iter().any(|s| s.frame.len() < report.frames) {
@@ -191,23 +143,11 @@ pub fn measure(scene: &PreparedScene, report: &FramesReport) -> Result<FramesRes
             if block == 0 {
                 continue;
             }
-            frame(r)?;
+            frames.render(&mut renderers[r], row.maps, &plans[r])?;
             for _ in 0..block {
-                let (elapsed, frame_report) = frame(r)?;
-                let want_reused = row.maps == ShadowMaps::Kept;
-                if let Some(pass) = frame_report.shadow_passes.iter().find(|p| p.reused != want_reused) {
-                    let did = if pass.reused { "reused" } else { "drew" };
-                    return Err(EffectsError::Setup(format!(
-                        "{}: the renderer {did} the shadow map of light {} (a bug in the report)",
-                        row.label, pass.light
-                    )));
-                }
-                let s = &mut samples[r];
-                s.frame.push(elapsed);
-                s.shadow.push(frame_report.shadow_time);
-                s.forward.push(frame_report.forward_time);
-                s.occlusion.push(frame_report.occlusion_time);
-                s.fragments = frame_report.forward.fragments;
+                let (elapsed, frame_report) = frames.render(&mut renderers[r], row.maps, &plans[r])?;
+                check_maps(row.label, row.maps, &frame_report)?;
+                samples[r].push(elapsed, &frame_report);
             }
         }
     }

@@ -28,6 +28,12 @@ pub fn machine_description() -> String {
     }
 }
 
+/// The threads a timing report draws each frame on: `threads`, else this machine's logical CPUs (at least 1).
+pub fn thread_count(threads: Option<usize>) -> usize {
+    use crate::scene_render::SceneRenderer;
+    SceneRenderer::with_threads(threads.unwrap_or_else(|| SceneRenderer::new().threads())).threads()
+}
+
 /// Which build measured: `"release build"`, or a warning that a debug build's timings mean little.
 pub fn build_description() -> &'static str {
     if cfg!(debug_assertions) { "debug build: timings are not representative" } else { "release build" }

@@ -193,7 +193,7 @@ impl SceneRenderer {
         let (pixels, depth) = (&mut *color.0, &mut **depth);
         let bands = split_rows(pixels, width, height, band_count);
         let bands = bands.into_iter().zip(split_rows(depth, width, height, band_count)).enumerate();
-        let bands: Vec<_> =
+        let mut bands: Vec<_> =
             bands.map(|(index, ((rows, pixels), (_, depth)))| Band { index, rows, pixels, depth }).collect();
         let rows: Vec<_> = bands.iter().map(|band| band.rows.clone()).collect();
         let bins = plan
@@ -206,7 +206,6 @@ impl SceneRenderer {
             .collect::<Result<Vec<_>, SceneRenderError>>()?;
         // Threads take the bands with the most triangles first, so that the last ones taken are short and the
         // threads finish together.
-        let mut bands = bands;
         bands.sort_by_key(|band| std::cmp::Reverse(bins.iter().map(|b| b.band(band.index).len()).sum::<usize>()));
         let results =
             on_threads(bands, self.threads, |band| forward_band(scene, plan, &bins, &lights, band, width, height));

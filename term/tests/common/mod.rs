@@ -1,4 +1,4 @@
-//! Paths the scene-file tests share.
+//! Paths and helpers the integration tests share.
 
 #![allow(dead_code)] // Each test file uses its own subset.
 
@@ -19,4 +19,14 @@ pub fn scenes_in(dir: &Path) -> Vec<PathBuf> {
         .collect();
     scenes.sort();
     scenes
+}
+
+/// Runs the `rasterm` binary with `args` in an empty temporary directory.
+pub fn rasterm_in_empty_dir(args: &[&str]) -> std::process::Output {
+    let dir = tempfile::tempdir().unwrap();
+    std::process::Command::new(env!("CARGO_BIN_EXE_rasterm"))
+        .current_dir(dir.path())
+        .args(args)
+        .output()
+        .expect("run rasterm")
 }
