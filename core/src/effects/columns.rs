@@ -2,11 +2,12 @@
 //! the fragment stages share.
 //!
 //! The arithmetic loops run over every lane of a batch, a constant count with no branch, so the compiler turns
-//! them into SIMD instructions (SSE on x86-64, four lanes at a time); lanes past a batch's length hold values
-//! nobody reads. Square roots run in a scalar pass of their own: `libm`'s square root is one instruction the
-//! compiler cannot widen, and inside a loop it would keep the rest of the loop scalar too. Every lane computes
-//! exactly what the scalar [`Vec3`] operations compute, in the same order, so the pixels do not change with the
-//! layout.
+//! them into SIMD instructions (SSE or AVX on x86-64, four or eight lanes at a time); lanes past a batch's length
+//! hold values nobody reads. Normalising needs no square root ([`float::inv_sqrt`] is plain arithmetic), so it
+//! widens too; the one square root left, a length, runs in a scalar pass of its own: `libm`'s square root is one
+//! instruction the compiler cannot widen, and inside a loop it would keep the rest of the loop scalar too. Every
+//! lane computes exactly what the scalar [`Vec3`] operations compute, in the same order, so the pixels do not
+//! change with the layout.
 
 // Lane loops index every column they touch by the same lane, which iterators would hide.
 #![allow(clippy::needless_range_loop)]
@@ -122,19 +123,18 @@ impl Column3 {
         }
     }
 
-    /// Lane-wise [`Vec3::normalize_or_zero`], in place; `lengths` is working space. Only the first `len` lanes
+    /// Lane-wise [`Vec3::normalize_or_zero`], in place; `squared` is working space. Only the first `len` lanes
     /// are normalised; the others are set to zero.
     #[inline(always)]
-    pub fn normalize(&mut self, len: usize, lengths: &mut Column) {
-        self.dot(&*self, lengths);
-        sqrt_lanes(lengths, len);
+    pub fn normalize(&mut self, len: usize, squared: &mut Column) {
+        self.dot(&*self, squared);
         for i in 0..BATCH_SIZE {
-            let l = lengths[i];
-            // `l > 0.0 && l.is_finite()`, as `Vec3::try_normalize` asks (NaN fails both); lanes past `len` fail.
-            // Non-short-circuit `&` and products computed before the choice: written with `&&` and the products
-            // inside it, the loop compiled to a branch per lane instead of SIMD.
-            let usable = (i < len) & (l > 0.0) & (l < f32::INFINITY);
-            let inv = 1.0 / l;
+            let d = squared[i];
+            // `0 < d < inf`, as `Vec3::try_normalize` asks (NaN fails both); lanes past `len` fail. Non-short-circuit
+            // `&` and products computed before the choice: written with `&&` and the products inside it, the loop
+            // compiled to a branch per lane instead of SIMD.
+            let usable = (i < len) & (d > 0.0) & (d < f32::INFINITY);
+            let inv = float::inv_sqrt(d);
             let (x, y, z) = (self.x[i] * inv, self.y[i] * inv, self.z[i] * inv);
             self.x[i] = if usable { x } else { 0.0 };
             self.y[i] = if usable { y } else { 0.0 };

@@ -58,10 +58,14 @@ impl Vec3 {
     }
 
     /// Unit vector in the same direction, or `None` when the length is zero or not finite.
+    ///
+    /// `self` times [`float::inv_sqrt`] of its squared length: every normalisation in the core, scalar or lane by
+    /// lane, computes exactly this. The squared length is zero or infinite exactly where the length is (a
+    /// square root neither underflows nor overflows).
     #[inline]
     pub fn try_normalize(self) -> Option<Self> {
-        let len = self.length();
-        if len > 0.0 && len.is_finite() { Some(self * (1.0 / len)) } else { None }
+        let squared = self.dot(self);
+        if squared > 0.0 && squared < f32::INFINITY { Some(self * float::inv_sqrt(squared)) } else { None }
     }
 
     /// The coordinate axis with the smallest absolute dot product with `self` (X for the zero vector): crossed
