@@ -5,8 +5,8 @@ mod common;
 use common::ScreenSpace;
 use rasterm_core::math::{Vec3, Vec4};
 use rasterm_core::mesh::{Attributes, Indices, Mesh};
-use rasterm_core::pipeline::{DepthTest, DrawState, Fragment, Shader, draw};
-use rasterm_core::target::{DepthBuffer, Rgb888, Target, depth_to_u16};
+use rasterm_core::pipeline::{DepthTest, DrawState, DrawStats, EdgeArithmetic, Fragment, Shader, draw};
+use rasterm_core::target::{DepthBuffer, NoColor, Rgb888, Target, depth_to_u16};
 
 /// Colours each triangle by its first vertex's index, so the winner of each pixel is visible.
 struct ByTriangle(ScreenSpace);
@@ -122,4 +122,110 @@ fn stored_depth_never_goes_below_zero() {
         let depth = depth_of_triangle(&positions);
         assert!(depth.iter().all(|&z| (0.0..=1.0).contains(&z)), "{positions:?}: {depth:?}");
     }
+}
+
+/// Draws `mesh` (screen-space positions) into a `width x height` frame in bands of `band` rows, each band into its
+/// own rows of `depth` and, when `colour`, of a colour buffer; returns the draws' summed counts.
+fn draw_in_bands<T>(
+    colour: bool,
+    mesh: &Mesh<'_>,
+    state: &DrawState,
+    depth: &mut [T],
+    size: (u32, u32),
+    band: u32,
+) -> DrawStats
+where
+    for<'a> &'a mut [T]: DepthBuffer,
+{
+    let (width, height) = size;
+    let shader = ScreenSpace { width: width as f32, height: height as f32 };
+    let mut color = vec![0u32; depth.len()];
+    let mut stats = DrawStats::default();
+    let values = band as usize * width as usize;
+    for (i, (d, c)) in depth.chunks_mut(values).zip(color.chunks_mut(values)).enumerate() {
+        let start = i as u32 * band;
+        let rows = start..start + (d.len() / width as usize) as u32;
+        stats += if colour {
+            let mut target = Target::band(Rgb888(c), d, width, height, rows).unwrap();
+            draw(&mut target, mesh, &shader, state).unwrap()
+        } else {
+            let mut target = Target::band(NoColor, d, width, height, rows).unwrap();
+            draw(&mut target, mesh, &shader, state).unwrap()
+        };
+    }
+    stats
+}
+
+/// A depth-only pass (a target without colour) stores exactly the depths a colour pass stores, and counts the same
+/// fragments: whether its rows are worked out several pixels at a time (edge values that fit `i32`) or pixel by
+/// pixel (larger ones, `f32` edges), in bands, over stored depths of every kind (NaN, negative, -0.0, infinite),
+/// with `f32` and `u16` depth, with the test on and off.
+#[test]
+fn depth_only_passes_store_what_colour_passes_store() {
+    let size = (61u32, 37u32);
+    let mut positions = Vec::new();
+    // Small and medium triangles scattered over the frame, overlapping, some past its edges, depths from -0.2 to
+    // 1.2; the frame's width is no multiple of the lanes, so groups of pixels reach past rows' ends.
+    let mut seed = 12_345u32;
+    let mut next = || {
+        seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+        (seed >> 8) as f32 / (1u32 << 24) as f32
+    };
+    for _ in 0..300 {
+        let (cx, cy, r) = (next() * 70.0 - 5.0, next() * 46.0 - 5.0, 1.0 + next() * next() * 30.0);
+        for _ in 0..3 {
+            positions.push(Vec3::new(cx + (next() - 0.5) * r, cy + (next() - 0.5) * r, next() * 1.4 - 0.2));
+        }
+    }
+    // The fuzzing case of `stored_depth_never_goes_below_zero`, whose depth rounds below zero at a pixel.
+    positions.extend([Vec3::new(12.5, 11.5, 1.248_072_9e-30), Vec3::new(5.5, 5.5, 0.0), Vec3::new(4.5, 2.5, 0.0)]);
+    // Triangles far larger than the frame: their edge values leave `i32`.
+    positions.extend([
+        Vec3::new(-9000.0, -7000.0, 0.25),
+        Vec3::new(9000.0, -100.0, 0.5),
+        Vec3::new(10.0, 9000.0, 0.05),
+        Vec3::new(-3000.0, 40.0, 0.3),
+        Vec3::new(30.0, -4000.0, 0.1),
+        Vec3::new(5000.0, 5000.0, 0.7),
+    ]);
+    let mesh = Mesh::new(&positions, Indices::Sequential).unwrap();
+    let pixels = (size.0 * size.1) as usize;
+    let cleared = vec![1.0f32; pixels];
+    let strewn: Vec<f32> = (0..pixels)
+        .map(|i| match i % 23 {
+            0 => f32::NAN,
+            5 => -0.5,
+            9 => -0.0,
+            13 => f32::INFINITY,
+            17 => 0.0,
+            _ => 0.6,
+        })
+        .collect();
+    let cleared16 = vec![u16::MAX; pixels];
+    let strewn16: Vec<u16> = (0..pixels).map(|i| [u16::MAX, 0, 30_000, 50_000][i % 4]).collect();
+    let mut stored_any = false;
+    for edges in [EdgeArithmetic::FixedPoint, EdgeArithmetic::Float] {
+        for depth_test in [DepthTest::Less, DepthTest::Off] {
+            let state = DrawState { edges, depth_test, ..common::both_sides() };
+            for band in [size.1, 5, 1] {
+                for initial in [&cleared, &strewn] {
+                    let (mut with, mut without) = (initial.clone(), initial.clone());
+                    let expected = draw_in_bands(true, &mesh, &state, &mut with, size, band);
+                    let stats = draw_in_bands(false, &mesh, &state, &mut without, size, band);
+                    let bits = |v: &[f32]| v.iter().map(|z| z.to_bits()).collect::<Vec<_>>();
+                    assert_eq!(bits(&without), bits(&with), "{edges:?}, {depth_test:?}, bands of {band}");
+                    assert_eq!(stats, expected, "{edges:?}, {depth_test:?}, bands of {band}");
+                    stored_any |= with != *initial;
+                }
+                for initial in [&cleared16, &strewn16] {
+                    let (mut with, mut without) = (initial.clone(), initial.clone());
+                    let expected = draw_in_bands(true, &mesh, &state, &mut with, size, band);
+                    let stats = draw_in_bands(false, &mesh, &state, &mut without, size, band);
+                    assert_eq!(without, with, "u16, {edges:?}, {depth_test:?}, bands of {band}");
+                    assert_eq!(stats, expected, "u16, {edges:?}, {depth_test:?}, bands of {band}");
+                }
+            }
+        }
+    }
+    assert!(stored_any, "the draws stored depths");
 }

@@ -23,6 +23,42 @@ pub(crate) trait Edges: Copy {
     fn covered(&self, at: &Self::At) -> bool;
     /// The three values as non-negative weights: barycentric coordinates times twice the area.
     fn weights(&self, at: &Self::At) -> [f32; 3];
+    /// The functions as [`EdgeLanes`] over the pixel centres `x0..=x1` by `y0..=y1`, when that computes exactly
+    /// what [`Self::at`], [`Self::step`], [`Self::covered`] and [`Self::weights`] do there; `None` otherwise.
+    #[inline(always)]
+    fn lanes(&self, _x0: i32, _x1: i32, _y0: i32, _y1: i32) -> Option<EdgeLanes> {
+        None
+    }
+}
+
+/// Edge functions as `i32`, for working out several pixels of a row at once (SIMD lanes): the values of
+/// [`FixedEdges`] over a box where every one of them fits, with room to add back the bias.
+///
+/// The arithmetic wraps: a value is exact wherever the true one fits, whatever the intermediate terms (sums and
+/// products modulo 2^32), so only the box's values are checked, and a lane past the box's edge, which may wrap,
+/// must be masked off by the caller.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct EdgeLanes {
+    /// The (biased) values at the box's top-left pixel centre.
+    pub origin: [i32; 3],
+    pub step_x: [i32; 3],
+    pub step_y: [i32; 3],
+    /// The fill-rule bias folded into the values (0 or -1).
+    pub bias: [i32; 3],
+}
+
+impl EdgeLanes {
+    /// Whether the centre with values `v` is covered: [`Edges::covered`].
+    #[inline(always)]
+    pub fn covered(v0: i32, v1: i32, v2: i32) -> bool {
+        (v0 | v1 | v2) >= 0
+    }
+
+    /// The weights of the second and third vertex at values `v`: [`Edges::weights`]`[1..]`.
+    #[inline(always)]
+    pub fn weights(&self, v1: i32, v2: i32) -> [f32; 2] {
+        [v1.wrapping_sub(self.bias[1]) as f32, v2.wrapping_sub(self.bias[2]) as f32]
+    }
 }
 
 /// Exact edge functions in units of `2^-(S+1)` pixel, stepped incrementally.
@@ -59,6 +95,26 @@ impl Edges for FixedEdges {
     fn weights(&self, e: &[i64; 3]) -> [f32; 3] {
         // Unbiased: >= 0 and summing to the doubled area, so the weights are a convex combination.
         [(e[0] - self.bias[0]) as f32, (e[1] - self.bias[1]) as f32, (e[2] - self.bias[2]) as f32]
+    }
+
+    /// A linear function is largest and smallest over a box at its corners: when those values fit `i32` (below its
+    /// maximum, so the unbiased value `v + 1` fits too), all do, and `i32` comparisons and conversions to `f32` give
+    /// what the `i64` ones give.
+    #[inline(always)]
+    fn lanes(&self, x0: i32, x1: i32, y0: i32, y1: i32) -> Option<EdgeLanes> {
+        let fits = |v: i64| (i64::from(i32::MIN)..i64::from(i32::MAX)).contains(&v);
+        let corners = [self.at(x0, y0), self.at(x1, y0), self.at(x0, y1), self.at(x1, y1)];
+        if !corners.iter().all(|c| c.iter().all(|&v| fits(v))) {
+            return None;
+        }
+        // Truncating casts: modulo 2^32, which is all the wrapping arithmetic of the lanes needs.
+        let wrap = |v: [i64; 3]| v.map(|v| v as i32);
+        Some(EdgeLanes {
+            origin: wrap(corners[0]),
+            step_x: wrap(self.step_x),
+            step_y: wrap(self.step_y),
+            bias: wrap(self.bias),
+        })
     }
 }
 
@@ -151,6 +207,14 @@ impl Edges for DynamicEdges {
             (Self::Fixed(e), DynamicAt::Fixed(v)) => e.weights(v),
             (Self::Float(e), DynamicAt::Float(v)) => e.weights(v),
             _ => [0.0; 3],
+        }
+    }
+
+    #[inline(always)]
+    fn lanes(&self, x0: i32, x1: i32, y0: i32, y1: i32) -> Option<EdgeLanes> {
+        match self {
+            Self::Fixed(e) => e.lanes(x0, x1, y0, y1),
+            Self::Float(e) => e.lanes(x0, x1, y0, y1),
         }
     }
 }

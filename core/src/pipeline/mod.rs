@@ -13,7 +13,8 @@
 //!    loop (or must be clipped); a triangle with non-finite varyings is skipped.
 //! 5. **Fragment**: depth test ([`DepthTest`]), interpolation ([`Interpolation`]), [`Shader::fragment`], write;
 //!    or, for a [`Shader::BATCHED`] shader, up to [`BATCH_SIZE`] fragments at a time through
-//!    [`Shader::shade_batch`].
+//!    [`Shader::shade_batch`]; or, into a target that stores no colour (a depth-only pass), the depth test alone,
+//!    [`DEPTH_LANES`](crate::target::DEPTH_LANES) pixels of a row at a time.
 //!
 //! # Clipping
 //! Near plane `z >= 0`, far plane `z <= w`, and a guard band of ±[`GUARD_BAND`] pixels in x and y; see the

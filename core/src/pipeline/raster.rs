@@ -12,12 +12,12 @@
 
 use super::batch::{BATCH_SIZE, FragmentBatch};
 use super::depth_stage::DepthStage;
-use super::edges::{Edges, FixedEdges, FloatEdges};
+use super::edges::{EdgeLanes, Edges, FixedEdges, FloatEdges};
 use super::interpolator::Interpolator;
 use super::{Cull, Fragment, Shader, Varyings, Winding};
 use crate::camera::Viewport;
 use crate::math::{Vec3, Vec4, float};
-use crate::target::{ColorBuffer, DepthBuffer, Target};
+use crate::target::{ColorBuffer, DEPTH_LANES, DepthBuffer, Target};
 
 /// A vertex position in screen space, snapped to the sub-pixel grid (and kept unsnapped for `f32` edges).
 #[derive(Clone, Copy, Debug)]
@@ -292,10 +292,15 @@ impl<E: Edges> Coverage<E> {
         C: ColorBuffer,
         D: DepthBuffer,
     {
-        if S::BATCHED {
+        let f = &self.frame;
+        if !C::STORES_COLOR {
+            // Depth only: nothing to shade. Several pixels at a time where the edge values fit `i32`.
+            if let Some(lanes) = self.edges.lanes(f.x0, f.x1, f.y0, f.y1) {
+                return self.fill_depth(lanes, &stages.depth, target);
+            }
+        } else if S::BATCHED {
             return self.fill_batched(stages, face, varyings, target);
         }
-        let f = &self.frame;
         let edges = &self.edges;
         let setup = stages.interpolator.setup(f.inv_w, f.inv_area);
         let [v0, v1, v2] = f.order.map(|i| varyings[i]);
@@ -317,11 +322,14 @@ impl<E: Edges> Coverage<E> {
                 let z = f.z0 + ef[1] * f.dz1 + ef[2] * f.dz2;
                 let index = base + x as usize;
                 if stages.depth.test(&mut target.depth, index, z) {
-                    let (w1, w2) = stages.interpolator.weights(&setup, ef);
-                    let var = v0.interpolate(&var_d1, w1, &var_d2, w2);
-                    let fragment = Fragment { x: x as u32, y: y as u32, depth: z, front_facing: f.front_facing };
-                    let color = stages.shader.fragment(&fragment, face, &var);
-                    target.color.write(index, color);
+                    // A constant: a target without colour compiles without the fragment stage.
+                    if C::STORES_COLOR {
+                        let (w1, w2) = stages.interpolator.weights(&setup, ef);
+                        let var = v0.interpolate(&var_d1, w1, &var_d2, w2);
+                        let fragment = Fragment { x: x as u32, y: y as u32, depth: z, front_facing: f.front_facing };
+                        let color = stages.shader.fragment(&fragment, face, &var);
+                        target.color.write(index, color);
+                    }
                     shaded += 1;
                 }
                 e = edges.step(e);
@@ -329,6 +337,52 @@ impl<E: Edges> Coverage<E> {
             }
         }
         shaded
+    }
+
+    /// [`Coverage::fill`] into a target that stores no colour, with the edge functions as `lanes`: the depth test
+    /// alone, [`DEPTH_LANES`] pixels of a row at a time across the bounding box, with coverage, weights and depth
+    /// worked out per lane exactly as the pixel walk works them out per pixel (the same depths reach the same
+    /// pixels). The lanes are one branch-free loop, which the compiler widens to SIMD.
+    #[inline(always)]
+    fn fill_depth<Z, C, D>(&self, lanes: EdgeLanes, depth: &Z, target: &mut Target<C, D>) -> u64
+    where
+        Z: DepthStage,
+        C: ColorBuffer,
+        D: DepthBuffer,
+    {
+        const N: usize = DEPTH_LANES;
+        let f = &self.frame;
+        let width = target.width() as usize;
+        let row0 = target.rows().start as i32;
+        let count = f.x1 - f.x0 + 1;
+        // Lane j of a group lies j pixels right of its first: its values are the first's plus j steps.
+        let offsets: [[i32; N]; 3] =
+            core::array::from_fn(|k| core::array::from_fn(|j| lanes.step_x[k].wrapping_mul(j as i32)));
+        let group_step = lanes.step_x.map(|s| s.wrapping_mul(N as i32));
+        let mut row = lanes.origin;
+        let mut passed = 0u64;
+        for y in f.y0..=f.y1 {
+            let first = (y - row0) as usize * width + f.x0 as usize;
+            let mut e = row;
+            let mut x = 0;
+            while x < count {
+                let (mut z, mut covered) = ([0.0; N], [false; N]);
+                for j in 0..N {
+                    let v0 = e[0].wrapping_add(offsets[0][j]);
+                    let v1 = e[1].wrapping_add(offsets[1][j]);
+                    let v2 = e[2].wrapping_add(offsets[2][j]);
+                    let [w1, w2] = lanes.weights(v1, v2);
+                    // Lanes past the box's last column may have wrapped: never covered.
+                    covered[j] = EdgeLanes::covered(v0, v1, v2) & (x + (j as i32) < count);
+                    z[j] = f.z0 + w1 * f.dz1 + w2 * f.dz2;
+                }
+                passed += u64::from(depth.test_lanes(&mut target.depth, first + x as usize, &z, &covered));
+                e = [0, 1, 2].map(|k| e[k].wrapping_add(group_step[k]));
+                x += N as i32;
+            }
+            row = [0, 1, 2].map(|k| row[k].wrapping_add(lanes.step_y[k]));
+        }
+        passed
     }
 
     /// [`Coverage::fill`] for a [`Shader::BATCHED`] shader: the same fragments, in the same order, depth-tested

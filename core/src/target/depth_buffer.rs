@@ -4,12 +4,25 @@
 //! fragment is kept when its depth is strictly smaller than the stored one, so of two surfaces at exactly the same
 //! depth, the one drawn first stays. Clearing sets every value to the far plane (1.0).
 
+use crate::math::float;
+
+/// Consecutive pixels of a row that [`DepthBuffer::test_and_set_lanes`] tests at once: eight `f32`s, one AVX
+/// register (two SSE ones).
+pub const DEPTH_LANES: usize = 8;
+
 /// A depth buffer: one value per pixel, row-major, `width` values per row.
 pub trait DepthBuffer {
     /// Number of pixels stored, or `None` for a buffer that stores nothing.
     fn pixel_count(&self) -> Option<usize>;
     /// If `z` is nearer than the stored depth of pixel `index` (`z < stored`), stores it and returns true.
     fn test_and_set(&mut self, index: usize, z: f32) -> bool;
+    /// [`Self::test_and_set`] for pixel `start + i` with depth `z[i]`, for each `i` where `covered[i]`; returns how
+    /// many passed. The pixels need not be in one row (the depth-only pass lets a group reach past a row's end,
+    /// uncovered).
+    #[inline(always)]
+    fn test_and_set_lanes(&mut self, start: usize, z: &[f32; DEPTH_LANES], covered: &[bool; DEPTH_LANES]) -> u32 {
+        one_by_one(self, start, z, covered)
+    }
     /// Resets every value to the far plane.
     fn clear(&mut self);
 }
@@ -33,9 +46,53 @@ impl DepthBuffer for &mut [f32] {
             _ => false,
         }
     }
+    /// Branch-free over a group whose stored depths are all non-negative numbers (sign bit clear, not NaN), as
+    /// every depth this library stores is, so that it widens to SIMD; any other group goes pixel by pixel.
+    ///
+    /// The new depths are the minimum of the stored ones and, per lane, the passing depth or `+inf`: over such
+    /// depths that is exactly the test's result, and it compiles to plain stores. (Choosing between the new and the
+    /// stored value compiled to masked stores, slow on some x86 processors.)
+    #[inline(always)]
+    fn test_and_set_lanes(&mut self, start: usize, z: &[f32; DEPTH_LANES], covered: &[bool; DEPTH_LANES]) -> u32 {
+        let group = self.get_mut(start..start + DEPTH_LANES).and_then(|s| <&mut [f32; DEPTH_LANES]>::try_from(s).ok());
+        let ordinary =
+            |g: &[f32; DEPTH_LANES]| g.iter().fold(true, |a, d| a & (d.to_bits() <= f32::INFINITY.to_bits()));
+        let Some(stored) = group.filter(|g| ordinary(g)) else {
+            return one_by_one(self, start, z, covered);
+        };
+        let mut candidate = [0.0; DEPTH_LANES];
+        let mut passed = 0;
+        for i in 0..DEPTH_LANES {
+            let pass = covered[i] & (z[i] < stored[i]);
+            let value = if z[i] < 0.0 { 0.0 } else { z[i] };
+            candidate[i] = if pass { value } else { f32::INFINITY };
+            passed += u32::from(pass);
+        }
+        for i in 0..DEPTH_LANES {
+            stored[i] = float::min_num(stored[i], candidate[i]);
+        }
+        passed
+    }
     fn clear(&mut self) {
         self.fill(1.0);
     }
+}
+
+/// [`DepthBuffer::test_and_set_lanes`] as a loop of [`DepthBuffer::test_and_set`].
+#[inline(always)]
+fn one_by_one<D: DepthBuffer + ?Sized>(
+    depth: &mut D,
+    start: usize,
+    z: &[f32; DEPTH_LANES],
+    covered: &[bool; DEPTH_LANES],
+) -> u32 {
+    let mut passed = 0;
+    for i in 0..DEPTH_LANES {
+        if covered[i] && depth.test_and_set(start + i, z[i]) {
+            passed += 1;
+        }
+    }
+    passed
 }
 
 /// Quantizes NDC depth in `[0, 1]` to 16 bits, rounding to nearest (values outside saturate, NaN gives 0).
