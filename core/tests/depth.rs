@@ -6,7 +6,7 @@ use common::ScreenSpace;
 use rasterm_core::math::{Vec3, Vec4};
 use rasterm_core::mesh::{Attributes, Indices, Mesh};
 use rasterm_core::pipeline::{DepthTest, DrawState, DrawStats, EdgeArithmetic, Fragment, Shader, draw};
-use rasterm_core::target::{DepthBuffer, NoColor, Rgb888, Target, depth_to_u16};
+use rasterm_core::target::{DepthBuffer, Rgb888, Target, depth_to_u16};
 
 /// Colours each triangle by its first vertex's index, so the winner of each pixel is visible.
 struct ByTriangle(ScreenSpace);
@@ -124,42 +124,62 @@ fn stored_depth_never_goes_below_zero() {
     }
 }
 
+/// [`ScreenSpace`] without its fragment stage: a depth-only shader.
+struct DepthOnly(ScreenSpace);
+
+impl Shader for DepthOnly {
+    type Varyings = ();
+    type Face = ();
+    const ATTRIBUTES: Attributes = Attributes::NONE;
+    const FRAGMENT_STAGE: bool = false;
+    fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+        self.0.position(mesh, i)
+    }
+    fn varyings(&self, _: &Mesh<'_>, _: usize) {}
+    fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
+    fn fragment(&self, _: &Fragment, _: &(), _: &()) -> Vec3 {
+        unreachable!("a depth-only shader's fragment stage never runs")
+    }
+}
+
 /// Draws `mesh` (screen-space positions) into a `width x height` frame in bands of `band` rows, each band into its
-/// own rows of `depth` and, when `colour`, of a colour buffer; returns the draws' summed counts.
+/// own rows of `depth` and of a colour buffer cleared to 0, with [`ScreenSpace`] or, when `depth_only`, with
+/// [`DepthOnly`]; returns the draws' summed counts and the colours.
 fn draw_in_bands<T>(
-    colour: bool,
+    depth_only: bool,
     mesh: &Mesh<'_>,
     state: &DrawState,
     depth: &mut [T],
     size: (u32, u32),
     band: u32,
-) -> DrawStats
+) -> (DrawStats, Vec<u32>)
 where
     for<'a> &'a mut [T]: DepthBuffer,
 {
     let (width, height) = size;
-    let shader = ScreenSpace { width: width as f32, height: height as f32 };
+    let (w, h) = (width as f32, height as f32);
+    let (shader, depth_only_shader) =
+        (ScreenSpace { width: w, height: h }, DepthOnly(ScreenSpace { width: w, height: h }));
     let mut color = vec![0u32; depth.len()];
     let mut stats = DrawStats::default();
     let values = band as usize * width as usize;
     for (i, (d, c)) in depth.chunks_mut(values).zip(color.chunks_mut(values)).enumerate() {
         let start = i as u32 * band;
         let rows = start..start + (d.len() / width as usize) as u32;
-        stats += if colour {
-            let mut target = Target::band(Rgb888(c), d, width, height, rows).unwrap();
-            draw(&mut target, mesh, &shader, state).unwrap()
+        let mut target = Target::band(Rgb888(c), d, width, height, rows).unwrap();
+        stats += if depth_only {
+            draw(&mut target, mesh, &depth_only_shader, state).unwrap()
         } else {
-            let mut target = Target::band(NoColor, d, width, height, rows).unwrap();
             draw(&mut target, mesh, &shader, state).unwrap()
         };
     }
-    stats
+    (stats, color)
 }
 
-/// A depth-only pass (a target without colour) stores exactly the depths a colour pass stores, and counts the same
-/// fragments: whether its rows are worked out several pixels at a time (edge values that fit `i32`) or pixel by
-/// pixel (larger ones, `f32` edges), in bands, over stored depths of every kind (NaN, negative, -0.0, infinite),
-/// with `f32` and `u16` depth, with the test on and off.
+/// A depth-only shader stores exactly the depths a shading one stores, counts the same fragments and writes no
+/// colour: whether its rows are worked out several pixels at a time (edge values that fit `i32`) or pixel by pixel
+/// (larger ones, `f32` edges), in bands, over stored depths of every kind (NaN, negative, -0.0, infinite), with
+/// `f32` and `u16` depth, with the test on and off.
 #[test]
 fn depth_only_passes_store_what_colour_passes_store() {
     let size = (61u32, 37u32);
@@ -209,20 +229,22 @@ fn depth_only_passes_store_what_colour_passes_store() {
             let state = DrawState { edges, depth_test, ..common::both_sides() };
             for band in [size.1, 5, 1] {
                 for initial in [&cleared, &strewn] {
-                    let (mut with, mut without) = (initial.clone(), initial.clone());
-                    let expected = draw_in_bands(true, &mesh, &state, &mut with, size, band);
-                    let stats = draw_in_bands(false, &mesh, &state, &mut without, size, band);
+                    let (mut shaded, mut depth_only) = (initial.clone(), initial.clone());
+                    let (expected, colours) = draw_in_bands(false, &mesh, &state, &mut shaded, size, band);
+                    let (stats, untouched) = draw_in_bands(true, &mesh, &state, &mut depth_only, size, band);
                     let bits = |v: &[f32]| v.iter().map(|z| z.to_bits()).collect::<Vec<_>>();
-                    assert_eq!(bits(&without), bits(&with), "{edges:?}, {depth_test:?}, bands of {band}");
+                    assert_eq!(bits(&depth_only), bits(&shaded), "{edges:?}, {depth_test:?}, bands of {band}");
                     assert_eq!(stats, expected, "{edges:?}, {depth_test:?}, bands of {band}");
-                    stored_any |= with != *initial;
+                    assert!(untouched.iter().all(|&c| c == 0), "a depth-only shader wrote colour");
+                    stored_any |= shaded != *initial && colours.iter().any(|&c| c != 0);
                 }
                 for initial in [&cleared16, &strewn16] {
-                    let (mut with, mut without) = (initial.clone(), initial.clone());
-                    let expected = draw_in_bands(true, &mesh, &state, &mut with, size, band);
-                    let stats = draw_in_bands(false, &mesh, &state, &mut without, size, band);
-                    assert_eq!(without, with, "u16, {edges:?}, {depth_test:?}, bands of {band}");
+                    let (mut shaded, mut depth_only) = (initial.clone(), initial.clone());
+                    let (expected, _) = draw_in_bands(false, &mesh, &state, &mut shaded, size, band);
+                    let (stats, untouched) = draw_in_bands(true, &mesh, &state, &mut depth_only, size, band);
+                    assert_eq!(depth_only, shaded, "u16, {edges:?}, {depth_test:?}, bands of {band}");
                     assert_eq!(stats, expected, "u16, {edges:?}, {depth_test:?}, bands of {band}");
+                    assert!(untouched.iter().all(|&c| c == 0), "a depth-only shader wrote colour");
                 }
             }
         }

@@ -194,6 +194,7 @@ impl Shader for CasterShader {
     type Varyings = ();
     type Face = ();
     const ATTRIBUTES: Attributes = Attributes::NONE;
+    const FRAGMENT_STAGE: bool = false;
 
     #[inline(always)]
     fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {

@@ -13,7 +13,7 @@
 //!    loop (or must be clipped); a triangle with non-finite varyings is skipped.
 //! 5. **Fragment**: depth test ([`DepthTest`]), interpolation ([`Interpolation`]), [`Shader::fragment`], write;
 //!    or, for a [`Shader::BATCHED`] shader, up to [`BATCH_SIZE`] fragments at a time through
-//!    [`Shader::shade_batch`]; or, into a target that stores no colour (a depth-only pass), the depth test alone,
+//!    [`Shader::shade_batch`]; or, for a depth-only shader (no [`Shader::FRAGMENT_STAGE`]), the depth test alone,
 //!    [`DEPTH_LANES`](crate::target::DEPTH_LANES) pixels of a row at a time.
 //!
 //! # Clipping

@@ -293,7 +293,7 @@ impl<E: Edges> Coverage<E> {
         D: DepthBuffer,
     {
         let f = &self.frame;
-        if !C::STORES_COLOR {
+        if !S::FRAGMENT_STAGE {
             // Depth only: nothing to shade. Several pixels at a time where the edge values fit `i32`.
             if let Some(lanes) = self.edges.lanes(f.x0, f.x1, f.y0, f.y1) {
                 return self.fill_depth(lanes, &stages.depth, target);
@@ -322,8 +322,8 @@ impl<E: Edges> Coverage<E> {
                 let z = f.z0 + ef[1] * f.dz1 + ef[2] * f.dz2;
                 let index = base + x as usize;
                 if stages.depth.test(&mut target.depth, index, z) {
-                    // A constant: a target without colour compiles without the fragment stage.
-                    if C::STORES_COLOR {
+                    // A constant: a depth-only shader compiles without the fragment stage.
+                    if S::FRAGMENT_STAGE {
                         let (w1, w2) = stages.interpolator.weights(&setup, ef);
                         let var = v0.interpolate(&var_d1, w1, &var_d2, w2);
                         let fragment = Fragment { x: x as u32, y: y as u32, depth: z, front_facing: f.front_facing };
@@ -339,7 +339,7 @@ impl<E: Edges> Coverage<E> {
         shaded
     }
 
-    /// [`Coverage::fill`] into a target that stores no colour, with the edge functions as `lanes`: the depth test
+    /// [`Coverage::fill`] for a depth-only shader, with the edge functions as `lanes`: the depth test
     /// alone, [`DEPTH_LANES`] pixels of a row at a time across the bounding box, with coverage, weights and depth
     /// worked out per lane exactly as the pixel walk works them out per pixel (the same depths reach the same
     /// pixels). The lanes are one branch-free loop, which the compiler widens to SIMD.

@@ -55,6 +55,11 @@ pub trait Shader {
     /// than [`Shader::fragment`] per pixel. A constant, so the pixel loop is chosen at compile time.
     const BATCHED: bool = false;
 
+    /// False for a depth-only shader (a shadow map's caster pass, a depth pre-pass): it has no fragment stage, so a
+    /// draw with it runs the depth test alone, [`DEPTH_LANES`](crate::target::DEPTH_LANES) pixels of a row at a
+    /// time, and writes no colour; [`Shader::fragment`] is never called. A constant, like [`Shader::BATCHED`].
+    const FRAGMENT_STAGE: bool = true;
+
     /// Fragment stage for a batch: the colours of `batch`'s fragments into `colors[..batch.len()]`. Called only
     /// when [`Shader::BATCHED`] is set; by default it calls [`Shader::fragment`] for each.
     #[inline(always)]

@@ -8,9 +8,6 @@ use crate::math::Vec3;
 /// Implement it to render into your own format. Writes always come with an index below the length the target
 /// was checked against, so an implementation may index directly.
 pub trait ColorBuffer {
-    /// False for a buffer that keeps no colour ([`NoColor`]): a draw into it then runs no fragment stage, only the
-    /// depth test (a depth-only pass, such as a shadow map's).
-    const STORES_COLOR: bool = true;
     /// Number of pixels stored, or `None` for a buffer that stores nothing (and fits any size).
     fn pixel_count(&self) -> Option<usize>;
     /// Stores the shaded colour of pixel `index`.
@@ -62,7 +59,6 @@ impl ColorBuffer for Rgb565<'_> {
 pub struct NoColor;
 
 impl ColorBuffer for NoColor {
-    const STORES_COLOR: bool = false;
     fn pixel_count(&self) -> Option<usize> {
         None
     }
