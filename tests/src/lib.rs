@@ -5,3 +5,9 @@
 //! harness in `tests/tests/snapshot/`; re-bless their goldens with `UPDATE_SNAPSHOTS=1 cargo test -p rasterm-tests`.
 //! `stability.rs` holds the hard cases that need the program crate; `firmware_checksum.rs` computes the checksums
 //! the firmware must match under QEMU.
+
+/// The README's Rust code, compiled and run as a doctest (`cargo test --doc -p rasterm-tests`), so that the
+/// example of using the core cannot drift from the core's interface.
+#[cfg(doctest)]
+#[doc = include_str!("../../README.md")]
+pub struct ReadmeExamples;
