@@ -5,7 +5,9 @@ mod common;
 use common::ScreenSpace;
 use rasterm_core::math::{Vec3, Vec4};
 use rasterm_core::mesh::{Attributes, Indices, Mesh};
-use rasterm_core::pipeline::{DepthTest, DrawState, DrawStats, EdgeArithmetic, Fragment, Shader, draw};
+use rasterm_core::pipeline::{
+    DepthTest, DrawState, DrawStats, EdgeArithmetic, Fragment, Shader, draw, draw_unspecialised,
+};
 use rasterm_core::target::{DepthBuffer, Rgb888, Target, depth_to_u16};
 
 /// Colours each triangle by its first vertex's index, so the winner of each pixel is visible.
@@ -142,11 +144,22 @@ impl Shader for DepthOnly {
     }
 }
 
+/// How [`draw_in_bands`] draws.
+#[derive(Clone, Copy, Debug)]
+enum Pass {
+    /// [`ScreenSpace`], with [`draw`].
+    Shaded,
+    /// [`DepthOnly`], with [`draw`]: the depth stage chosen per draw.
+    DepthOnly,
+    /// [`DepthOnly`], with [`draw_unspecialised`]: the depth stage chosen per pixel.
+    DepthOnlyUnspecialised,
+}
+
 /// Draws `mesh` (screen-space positions) into a `width x height` frame in bands of `band` rows, each band into its
-/// own rows of `depth` and of a colour buffer cleared to 0, with [`ScreenSpace`] or, when `depth_only`, with
-/// [`DepthOnly`]; returns the draws' summed counts and the colours.
+/// own rows of `depth` and of a colour buffer cleared to 0, as `pass` says; returns the draws' summed counts and
+/// the colours.
 fn draw_in_bands<T>(
-    depth_only: bool,
+    pass: Pass,
     mesh: &Mesh<'_>,
     state: &DrawState,
     depth: &mut [T],
@@ -167,11 +180,12 @@ where
         let start = i as u32 * band;
         let rows = start..start + (d.len() / width as usize) as u32;
         let mut target = Target::band(Rgb888(c), d, width, height, rows).unwrap();
-        stats += if depth_only {
-            draw(&mut target, mesh, &depth_only_shader, state).unwrap()
-        } else {
-            draw(&mut target, mesh, &shader, state).unwrap()
-        };
+        stats += match pass {
+            Pass::Shaded => draw(&mut target, mesh, &shader, state),
+            Pass::DepthOnly => draw(&mut target, mesh, &depth_only_shader, state),
+            Pass::DepthOnlyUnspecialised => draw_unspecialised(&mut target, mesh, &depth_only_shader, state),
+        }
+        .unwrap();
     }
     (stats, color)
 }
@@ -179,7 +193,7 @@ where
 /// A depth-only shader stores exactly the depths a shading one stores, counts the same fragments and writes no
 /// colour: whether its rows are worked out several pixels at a time (edge values that fit `i32`) or pixel by pixel
 /// (larger ones, `f32` edges), in bands, over stored depths of every kind (NaN, negative, -0.0, infinite), with
-/// `f32` and `u16` depth, with the test on and off.
+/// `f32` and `u16` depth, with the test on and off, with the depth stage chosen per draw and per pixel.
 #[test]
 fn depth_only_passes_store_what_colour_passes_store() {
     let size = (61u32, 37u32);
@@ -229,22 +243,30 @@ fn depth_only_passes_store_what_colour_passes_store() {
             let state = DrawState { edges, depth_test, ..common::both_sides() };
             for band in [size.1, 5, 1] {
                 for initial in [&cleared, &strewn] {
-                    let (mut shaded, mut depth_only) = (initial.clone(), initial.clone());
-                    let (expected, colours) = draw_in_bands(false, &mesh, &state, &mut shaded, size, band);
-                    let (stats, untouched) = draw_in_bands(true, &mesh, &state, &mut depth_only, size, band);
-                    let bits = |v: &[f32]| v.iter().map(|z| z.to_bits()).collect::<Vec<_>>();
-                    assert_eq!(bits(&depth_only), bits(&shaded), "{edges:?}, {depth_test:?}, bands of {band}");
-                    assert_eq!(stats, expected, "{edges:?}, {depth_test:?}, bands of {band}");
-                    assert!(untouched.iter().all(|&c| c == 0), "a depth-only shader wrote colour");
+                    let mut shaded = initial.clone();
+                    let (expected, colours) = draw_in_bands(Pass::Shaded, &mesh, &state, &mut shaded, size, band);
                     stored_any |= shaded != *initial && colours.iter().any(|&c| c != 0);
+                    for pass in [Pass::DepthOnly, Pass::DepthOnlyUnspecialised] {
+                        let mut depth_only = initial.clone();
+                        let (stats, untouched) = draw_in_bands(pass, &mesh, &state, &mut depth_only, size, band);
+                        let bits = |v: &[f32]| v.iter().map(|z| z.to_bits()).collect::<Vec<_>>();
+                        let case = format!("{pass:?}, {edges:?}, {depth_test:?}, bands of {band}");
+                        assert_eq!(bits(&depth_only), bits(&shaded), "{case}");
+                        assert_eq!(stats, expected, "{case}");
+                        assert!(untouched.iter().all(|&c| c == 0), "a depth-only shader wrote colour");
+                    }
                 }
                 for initial in [&cleared16, &strewn16] {
-                    let (mut shaded, mut depth_only) = (initial.clone(), initial.clone());
-                    let (expected, _) = draw_in_bands(false, &mesh, &state, &mut shaded, size, band);
-                    let (stats, untouched) = draw_in_bands(true, &mesh, &state, &mut depth_only, size, band);
-                    assert_eq!(depth_only, shaded, "u16, {edges:?}, {depth_test:?}, bands of {band}");
-                    assert_eq!(stats, expected, "u16, {edges:?}, {depth_test:?}, bands of {band}");
-                    assert!(untouched.iter().all(|&c| c == 0), "a depth-only shader wrote colour");
+                    let mut shaded = initial.clone();
+                    let (expected, _) = draw_in_bands(Pass::Shaded, &mesh, &state, &mut shaded, size, band);
+                    for pass in [Pass::DepthOnly, Pass::DepthOnlyUnspecialised] {
+                        let mut depth_only = initial.clone();
+                        let (stats, untouched) = draw_in_bands(pass, &mesh, &state, &mut depth_only, size, band);
+                        let case = format!("u16, {pass:?}, {edges:?}, {depth_test:?}, bands of {band}");
+                        assert_eq!(depth_only, shaded, "{case}");
+                        assert_eq!(stats, expected, "{case}");
+                        assert!(untouched.iter().all(|&c| c == 0), "a depth-only shader wrote colour");
+                    }
                 }
             }
         }

@@ -8,13 +8,23 @@ pub(crate) trait DepthStage: Copy {
     /// True when the fragment at `index` with depth `z` is to be shaded.
     fn test<D: DepthBuffer>(&self, depth: &mut D, index: usize, z: f32) -> bool;
     /// [`Self::test`] for the covered ones of [`DEPTH_LANES`] consecutive pixels from `start`: how many survive.
+    /// By default pixel by pixel.
+    #[inline(always)]
     fn test_lanes<D: DepthBuffer>(
         &self,
         depth: &mut D,
         start: usize,
         z: &[f32; DEPTH_LANES],
         covered: &[bool; DEPTH_LANES],
-    ) -> u32;
+    ) -> u32 {
+        let mut passed = 0;
+        for i in 0..DEPTH_LANES {
+            if covered[i] && self.test(depth, start + i, z[i]) {
+                passed += 1;
+            }
+        }
+        passed
+    }
 }
 
 /// [`DepthTest::Less`].
@@ -47,19 +57,9 @@ impl DepthStage for DepthOff {
     fn test<D: DepthBuffer>(&self, _: &mut D, _: usize, _: f32) -> bool {
         true
     }
-    #[inline(always)]
-    fn test_lanes<D: DepthBuffer>(
-        &self,
-        _: &mut D,
-        _: usize,
-        _: &[f32; DEPTH_LANES],
-        covered: &[bool; DEPTH_LANES],
-    ) -> u32 {
-        covered.iter().map(|&c| u32::from(c)).sum()
-    }
 }
 
-/// Either, decided per pixel: the general path.
+/// Either, decided per pixel (its lanes too, by [`DepthStage::test_lanes`]'s default): the general path.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct DynamicDepth(pub DepthTest);
 
@@ -69,19 +69,6 @@ impl DepthStage for DynamicDepth {
         match self.0 {
             DepthTest::Less => DepthLess.test(depth, index, z),
             DepthTest::Off => DepthOff.test(depth, index, z),
-        }
-    }
-    #[inline(always)]
-    fn test_lanes<D: DepthBuffer>(
-        &self,
-        depth: &mut D,
-        start: usize,
-        z: &[f32; DEPTH_LANES],
-        covered: &[bool; DEPTH_LANES],
-    ) -> u32 {
-        match self.0 {
-            DepthTest::Less => DepthLess.test_lanes(depth, start, z, covered),
-            DepthTest::Off => DepthOff.test_lanes(depth, start, z, covered),
         }
     }
 }
