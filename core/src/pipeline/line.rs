@@ -1,11 +1,12 @@
 //! Wireframe: the edges of a mesh's triangles as one-pixel lines, clipped like triangles.
 
 use super::clip::ClipVolume;
+use super::depth_stage::{DepthStage, DynamicDepth};
 use super::{Cull, DepthTest, DrawState, DrawStats, Winding};
 use crate::camera::Viewport;
 use crate::math::{Mat4, Vec3, Vec4, float};
 use crate::mesh::Mesh;
-use crate::target::{ColorBuffer, DepthBuffer, Target};
+use crate::target::{ColorBuffer, DepthBuffer, Target, clamp_depth};
 
 /// How wireframe lines look.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -27,8 +28,10 @@ impl Default for LineStyle {
 /// Edges are clipped in homogeneous space against the near and far planes and the guard band. Each line lights one
 /// pixel per column (if mostly horizontal) or per row (if mostly vertical), from the pixel containing one end point
 /// to the pixel containing the other: in each column (row), the pixel containing the line at that column's (row's)
-/// centre. Each pixel is computed from frame coordinates alone, so bands give the same pixels as a whole frame. An
-/// edge shared by two triangles is drawn from its lower-numbered vertex, so both draws light the same pixels.
+/// centre. A pixel's depth is that of the line's point at the centre's column (row), or of the nearer end point
+/// where that lies beyond the line, never extrapolated past the ends. Each pixel is computed from frame
+/// coordinates alone, so bands give the same pixels as a whole frame. An edge shared by two triangles is drawn
+/// from its lower-numbered vertex, so both draws light the same pixels.
 ///
 /// `state` supplies the depth test (with [`LineStyle::depth_bias`]) and face culling: the edges of a culled
 /// triangle (judged when all its vertices are in front of the camera) are not drawn. In the returned statistics a
@@ -169,7 +172,8 @@ impl Pen {
         slope: f32,
         to_xy: impl Fn(i32, i32) -> (i32, i32),
     ) -> u64 {
-        let z_slope = (b.z - a.z) / (b.x - a.x);
+        let (length, dz) = (b.x - a.x, b.z - a.z);
+        let depth_test = DynamicDepth(self.depth_test);
         let width = target.width() as usize;
         let mut written = 0;
         for major in lo..hi {
@@ -179,9 +183,11 @@ impl Pen {
             if x < 0 || x >= self.width || y < self.row0 || y >= self.row1 {
                 continue;
             }
-            let z = a.z + along * z_slope - self.style.depth_bias;
+            // The end pixels' centres can lie up to half a pixel beyond the ends: their depth is the end's.
+            let t = float::clamp(along / length, 0.0, 1.0);
+            let z = clamp_depth(a.z + t * dz - self.style.depth_bias);
             let index = (y - self.row0) as usize * width + x as usize;
-            if self.depth_test == DepthTest::Off || target.depth.test_and_set(index, z) {
+            if depth_test.test(&mut target.depth, index, z) {
                 target.color.write(index, self.style.color);
                 written += 1;
             }

@@ -17,7 +17,7 @@ use super::interpolator::Interpolator;
 use super::{Cull, Fragment, Shader, Varyings, Winding};
 use crate::camera::Viewport;
 use crate::math::{Vec3, Vec4, float};
-use crate::target::{ColorBuffer, DEPTH_LANES, DepthBuffer, Target};
+use crate::target::{ColorBuffer, DEPTH_LANES, DepthBuffer, Target, clamp_depth};
 
 /// A vertex position in screen space, snapped to the sub-pixel grid (and kept unsnapped for `f32` edges).
 #[derive(Clone, Copy, Debug)]
@@ -259,6 +259,12 @@ impl Frame {
             inv_area,
         }
     }
+
+    /// The depth of the fragment whose edge functions 1 and 2 are `w1` and `w2`, as every fill tests and stores it.
+    #[inline(always)]
+    fn depth(&self, w1: f32, w2: f32) -> f32 {
+        clamp_depth(self.z0 + w1 * self.dz1 + w2 * self.dz2)
+    }
 }
 
 /// A triangle that reaches the pixel loop: its edge functions and its geometric interpolants (depth, `1/w`).
@@ -319,7 +325,7 @@ impl<E: Edges> Coverage<E> {
             let base = (y - row0) as usize * width;
             while x <= f.x1 && edges.covered(&e) {
                 let ef = edges.weights(&e);
-                let z = f.z0 + ef[1] * f.dz1 + ef[2] * f.dz2;
+                let z = f.depth(ef[1], ef[2]);
                 let index = base + x as usize;
                 if stages.depth.test(&mut target.depth, index, z) {
                     // A constant: a depth-only shader compiles without the fragment stage.
@@ -374,7 +380,7 @@ impl<E: Edges> Coverage<E> {
                     let [w1, w2] = lanes.weights(v1, v2);
                     // Lanes past the box's last column may have wrapped: never covered.
                     covered[j] = EdgeLanes::covered(v0, v1, v2) & (x + (j as i32) < count);
-                    z[j] = f.z0 + w1 * f.dz1 + w2 * f.dz2;
+                    z[j] = f.depth(w1, w2);
                 }
                 passed += u64::from(depth.test_lanes(&mut target.depth, first + x as usize, &z, &covered));
                 e = [0, 1, 2].map(|k| e[k].wrapping_add(group_step[k]));
@@ -435,7 +441,7 @@ impl<E: Edges> Coverage<E> {
             let base = (y - row0) as usize * width;
             while x <= f.x1 && edges.covered(&e) {
                 let ef = edges.weights(&e);
-                let z = f.z0 + ef[1] * f.dz1 + ef[2] * f.dz2;
+                let z = f.depth(ef[1], ef[2]);
                 let index = base + x as usize;
                 if stages.depth.test(&mut target.depth, index, z) {
                     let fractions = stages.interpolator.fractions(&setup, ef);

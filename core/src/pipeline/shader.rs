@@ -12,7 +12,8 @@ pub struct Fragment {
     pub x: u32,
     /// Row in the frame (0 at the top), not in the band.
     pub y: u32,
-    /// NDC depth in `[0, 1]`, 0 at the near plane.
+    /// NDC depth in `[0, 1]`, 0 at the near plane: the depth it was tested with (see
+    /// [`clamp_depth`](crate::target::clamp_depth)).
     pub depth: f32,
     /// Whether the triangle faces the camera (see [`super::DrawState::front_face`]).
     pub front_facing: bool,

@@ -3,6 +3,10 @@
 //! Depth is NDC depth in `[0, 1]`, 0 at the near plane (see [`crate::camera`]). The comparison is **less**: a
 //! fragment is kept when its depth is strictly smaller than the stored one, so of two surfaces at exactly the same
 //! depth, the one drawn first stays. Clearing sets every value to the far plane (1.0).
+//!
+//! Every depth a buffer is given has been through [`clamp_depth`], one rule for every draw: triangles, lines,
+//! depth-only passes, bands and lane groups alike. A buffer only compares and stores; it never changes a depth, so
+//! a caller's own buffer stores exactly what the library's buffers store.
 
 use crate::math::float;
 
@@ -15,6 +19,8 @@ pub trait DepthBuffer {
     /// Number of pixels stored, or `None` for a buffer that stores nothing.
     fn pixel_count(&self) -> Option<usize>;
     /// If `z` is nearer than the stored depth of pixel `index` (`z < stored`), stores it and returns true.
+    ///
+    /// `z` is always in `[0, 1]` and never NaN or `-0`: the pipeline passes every depth through [`clamp_depth`].
     fn test_and_set(&mut self, index: usize, z: f32) -> bool;
     /// [`Self::test_and_set`] for pixel `start + i` with depth `z[i]`, for each `i` where `covered[i]`; returns how
     /// many passed. The pixels need not be in one row (the depth-only pass lets a group reach past a row's end,
@@ -27,11 +33,7 @@ pub trait DepthBuffer {
     fn clear(&mut self);
 }
 
-/// `f32` depth: NDC depth as interpolated, clamped below at 0.
-///
-/// Interpolated depth can round a hair past its vertices' range (-9.4e-38 between vertices at 0 and 1e-30);
-/// like Direct3D, which clamps depth to the viewport's depth range, a negative depth is stored as 0. A depth above
-/// 1 needs no clamp: it never passes against a buffer cleared to 1. NaN fails the test.
+/// `f32` depth: the depth as given, in `[0, 1]` (see [`clamp_depth`]).
 impl DepthBuffer for &mut [f32] {
     fn pixel_count(&self) -> Option<usize> {
         Some(self.len())
@@ -40,14 +42,15 @@ impl DepthBuffer for &mut [f32] {
     fn test_and_set(&mut self, index: usize, z: f32) -> bool {
         match self.get_mut(index) {
             Some(d) if z < *d => {
-                *d = clamped(z);
+                *d = z;
                 true
             }
             _ => false,
         }
     }
     /// Branch-free over a group whose stored depths are all non-negative numbers (sign bit clear, not NaN), as
-    /// every depth this library stores is, so that it widens to SIMD; any other group goes pixel by pixel.
+    /// every depth this library stores is, so that it widens to SIMD; any other group (a caller may fill the buffer
+    /// with anything) goes pixel by pixel.
     ///
     /// The new depths are the minimum of the stored ones and, per lane, the passing depth or `+inf`: over such
     /// depths that is exactly the test's result, and it compiles to plain stores. (Choosing between the new and the
@@ -64,9 +67,7 @@ impl DepthBuffer for &mut [f32] {
         let mut passed = 0;
         for i in 0..DEPTH_LANES {
             let pass = covered[i] & (z[i] < stored[i]);
-            // Clamped before the choice, not inside it: inside, the loop compiled 3.6 times slower (caster pass).
-            let value = clamped(z[i]);
-            candidate[i] = if pass { value } else { f32::INFINITY };
+            candidate[i] = if pass { z[i] } else { f32::INFINITY };
             passed += u32::from(pass);
         }
         for i in 0..DEPTH_LANES {
@@ -79,10 +80,20 @@ impl DepthBuffer for &mut [f32] {
     }
 }
 
-/// The `f32` depth stored for a passing `z`: a negative one as 0.
+/// The depth a fragment is tested and stored with: its interpolated NDC depth `z` clamped to `[0, 1]`, NaN as 1
+/// and `-0` as `+0`.
+///
+/// Interpolation in `f32` can round a hair past the vertices' range (-9.4e-38 between vertices at 0 and 1e-30),
+/// and a line's depth bias can take it below the near plane. Like Direct3D, which clamps a fragment's depth to the
+/// viewport's depth range before the depth test, the pipeline clamps every depth here, once, before the test and
+/// whatever the buffer: so every depth format, band, lane group and depth-only pass stores the same depth, and a
+/// fragment's [`Fragment::depth`](crate::pipeline::Fragment::depth) is the depth it was tested with. NaN becomes
+/// the far plane, which never passes the less test against a cleared buffer; `-0` becomes `+0`, so stored depths
+/// keep their sign bit clear. (The minimum first: NaN is not below 1, so it becomes 1; then `-0` is not above 0.)
+#[must_use]
 #[inline(always)]
-fn clamped(z: f32) -> f32 {
-    if z < 0.0 { 0.0 } else { z }
+pub fn clamp_depth(z: f32) -> f32 {
+    float::max(float::min(z, 1.0), 0.0)
 }
 
 /// [`DepthBuffer::test_and_set_lanes`] as a loop of [`DepthBuffer::test_and_set`].

@@ -26,7 +26,7 @@ mod supersample;
 use core::ops::Range;
 
 pub use color_buffer::{ColorBuffer, NoColor, Rgb565, Rgb888};
-pub use depth_buffer::{DEPTH_LANES, DepthBuffer, NoDepth, depth_to_u16};
+pub use depth_buffer::{DEPTH_LANES, DepthBuffer, NoDepth, clamp_depth, depth_to_u16};
 pub use supersample::downsample_rgb888;
 
 use crate::math::Vec3;

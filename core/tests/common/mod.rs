@@ -4,7 +4,7 @@
 use rasterm_core::math::{Vec3, Vec4};
 use rasterm_core::mesh::{Attributes, Indices, Mesh};
 use rasterm_core::pipeline::{DrawState, DrawStats, Fragment, Shader, draw};
-use rasterm_core::target::{ColorBuffer, NoDepth, Target};
+use rasterm_core::target::{ColorBuffer, DepthBuffer, NoDepth, Target, depth_to_u16};
 
 /// Counts how many times each pixel is written.
 pub struct Count<'a>(pub &'a mut [u32]);
@@ -272,5 +272,80 @@ impl ColorBuffer for ExactColor<'_> {
     }
     fn fill(&mut self, c: Vec3) {
         self.0.fill([c.x.to_bits(), c.y.to_bits(), c.z.to_bits()]);
+    }
+}
+
+/// A caller's own `f32` depth buffer, the simplest one can write: it stores the depth it is given when that is
+/// nearer, through the trait's default lane method (pixel by pixel), and panics on an index outside it. Bands and
+/// frames drawn into it must store exactly what the library's `&mut [f32]` stores: the depth rule is the
+/// pipeline's, not the buffer's.
+pub struct PlainDepth<'a>(pub &'a mut [f32]);
+
+impl DepthBuffer for PlainDepth<'_> {
+    fn pixel_count(&self) -> Option<usize> {
+        Some(self.0.len())
+    }
+    fn test_and_set(&mut self, index: usize, z: f32) -> bool {
+        let stored = &mut self.0[index];
+        let nearer = z < *stored;
+        if nearer {
+            *stored = z;
+        }
+        nearer
+    }
+    fn clear(&mut self) {
+        self.0.fill(1.0);
+    }
+}
+
+/// [`PlainDepth`] in 16 bits: the depth it is given, quantized with `depth_to_u16`.
+pub struct PlainDepth16<'a>(pub &'a mut [u16]);
+
+impl DepthBuffer for PlainDepth16<'_> {
+    fn pixel_count(&self) -> Option<usize> {
+        Some(self.0.len())
+    }
+    fn test_and_set(&mut self, index: usize, z: f32) -> bool {
+        let (q, stored) = (depth_to_u16(z), &mut self.0[index]);
+        let nearer = q < *stored;
+        if nearer {
+            *stored = q;
+        }
+        nearer
+    }
+    fn clear(&mut self) {
+        self.0.fill(u16::MAX);
+    }
+}
+
+/// The bits of each value, so that comparisons tell `-0.0` from `0.0` and match NaN with NaN.
+pub fn bits(depth: &[f32]) -> Vec<u32> {
+    depth.iter().map(|d| d.to_bits()).collect()
+}
+
+/// A depth value of either format, compared by its bits.
+pub trait DepthBits: Copy + core::fmt::Debug {
+    fn bits(self) -> u32;
+}
+
+impl DepthBits for f32 {
+    fn bits(self) -> u32 {
+        self.to_bits()
+    }
+}
+
+impl DepthBits for u16 {
+    fn bits(self) -> u32 {
+        self.into()
+    }
+}
+
+/// Panics at the first pixel where `actual` and `expected` (rows of a frame `width` pixels wide, the first being
+/// row `first_row`) differ in their bits, naming it.
+pub fn assert_same_depths<T: DepthBits>(what: &str, actual: &[T], expected: &[T], width: usize, first_row: usize) {
+    assert_eq!(actual.len(), expected.len(), "{what}: lengths");
+    if let Some(i) = (0..actual.len()).find(|&i| actual[i].bits() != expected[i].bits()) {
+        let (x, y) = (i % width, first_row + i / width);
+        panic!("{what}: depth at ({x}, {y}) is {:?}, expected {:?}", actual[i], expected[i]);
     }
 }
