@@ -1,9 +1,10 @@
 //! "Only the effects a scene calls for": every combination of effects rendered through the specialised pipelines
-//! and through the general one must give identical pixels (and identical statistics).
+//! and through the general one must give identical pixels, depths and statistics. The general path draws into a
+//! caller's own depth buffer (`PlainDepth`), the specialised ones into the library's `&mut [f32]`.
 
 mod common;
 
-use common::{ExactColor, Torus, checker_texels};
+use common::{ExactColor, PlainDepth, Torus, assert_same_depths, checker_texels};
 use rasterm_core::camera::{look_at, orthographic, perspective};
 use rasterm_core::math::{Mat4, Vec3};
 use rasterm_core::mesh::{Indices, Mesh};
@@ -17,25 +18,31 @@ use rasterm_core::texture::{FilterMode, Texture, WrapMode};
 const W: u32 = 48;
 const H: u32 = 40;
 
+/// The exact colours, the depths and the statistics of one draw.
+type Rendered = (Vec<[u32; 3]>, Vec<f32>, DrawStats);
+
 fn render(
     mesh: &Mesh<'_>,
     transforms: &Transforms,
     effects: &Effects<'_>,
     state: &DrawState,
     specialised: bool,
-) -> (Vec<[u32; 3]>, DrawStats) {
+) -> Rendered {
     // Exact f32 colours: a difference in the last bit counts.
     let mut color = vec![[0u32; 3]; (W * H) as usize];
     let mut depth = vec![0f32; (W * H) as usize];
-    let mut target = Target::new(ExactColor(&mut color), &mut depth[..], W, H).unwrap();
-    target.clear(Vec3::new(0.1, 0.2, 0.3));
+    let background = Vec3::new(0.1, 0.2, 0.3);
     let stats = if specialised {
+        let mut target = Target::new(ExactColor(&mut color), &mut depth[..], W, H).unwrap();
+        target.clear(background);
         draw_mesh(&mut target, mesh, transforms, effects, state)
     } else {
+        let mut target = Target::new(ExactColor(&mut color), PlainDepth(&mut depth), W, H).unwrap();
+        target.clear(background);
         draw_mesh_unspecialised(&mut target, mesh, transforms, effects, state)
     }
     .unwrap();
-    (color, stats)
+    (color, depth, stats)
 }
 
 #[test]
@@ -104,12 +111,14 @@ fn specialised_pipelines_equal_the_general_one_for_every_combination() {
                                 texture: texture_mode.map(|(filter, wrap)| TextureBinding { texture, filter, wrap }),
                             };
                             let state = DrawState { interpolation, depth_test, cull, edges, ..DrawState::default() };
-                            let (fast, fast_stats) = render(mesh, &transforms, &effects, &state, true);
-                            let (general, general_stats) = render(mesh, &transforms, &effects, &state, false);
+                            let (fast, fast_depth, fast_stats) = render(mesh, &transforms, &effects, &state, true);
+                            let (general, general_depth, general_stats) =
+                                render(mesh, &transforms, &effects, &state, false);
                             let variant = effects.resolve(mesh, &transforms, &state).unwrap();
                             assert_eq!(fast_stats, general_stats, "{variant}");
                             let differing = fast.iter().zip(&general).filter(|(a, b)| a != b).count();
                             assert_eq!(differing, 0, "{variant}: {differing} pixels differ");
+                            assert_same_depths(&variant.to_string(), &general_depth, &fast_depth, W as usize, 0);
                             assert!(fast_stats.fragments > 100, "{variant}: the scene must cover pixels");
                             combinations += 1;
                             clipped += u64::from(fast_stats.clipped > 0);

@@ -1,67 +1,170 @@
-//! Strip rendering: a frame drawn as bands of rows, each into the same small buffers, equals the whole frame
-//! bit for bit.
+//! Strip rendering: a frame drawn as bands of rows equals the frame drawn whole, bit for bit: colours, depths and
+//! fragment counts.
+//!
+//! Every band of every split is checked. The bands are drawn into buffers of the caller's own (`PlainDepth`,
+//! `PlainDepth16`: they store what they are given, pixel by pixel) and compared with the frame drawn into the
+//! library's `&mut [f32]` and `&mut [u16]` (lane-wise where they can be), so neither where a band starts nor which
+//! buffer stores the depths may change a pixel. The scenes reach depths outside `[0, 1]`: the near plane cuts the
+//! torus, and wireframe lines carry depth biases past both ends of the range. Every draw path is covered: the
+//! specialised and general shading pipelines with the depth test on and off, wireframe lines, depth-only passes,
+//! and the batched fragment path of mapped surfaces (maps, a point light, a shadowed sun).
 
 mod common;
 
-use common::{ExactColor, Torus, checker_texels};
+use common::{ExactColor, PlainDepth, PlainDepth16, Torus, Transformed, assert_same_depths, checker_texels};
 use rasterm_core::camera::{look_at, perspective};
-use rasterm_core::math::{Mat4, Vec3};
-use rasterm_core::pipeline::{DrawState, DrawStats, EdgeArithmetic, LineStyle, draw_wireframe};
-use rasterm_core::shading::{Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh};
-use rasterm_core::target::{ColorBuffer, DepthBuffer, Rgb565, Target};
+use rasterm_core::effects::{
+    Bounds, LightSource, NormalMap, NormalSpace, SceneLights, ShadowBias, ShadowMap, ShadowView, SurfaceDraw,
+    SurfaceMaterial, clear_shadow_depth, draw_shadow_caster, draw_surface, draw_surface_unspecialised,
+};
+use rasterm_core::math::{Mat4, Vec3, Vec4};
+use rasterm_core::mesh::{Mesh, compute_tangents};
+use rasterm_core::pipeline::{
+    DepthTest, DrawState, DrawStats, EdgeArithmetic, Fragment, LineStyle, Shader, draw, draw_wireframe,
+};
+use rasterm_core::shading::{
+    Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh, draw_mesh_unspecialised,
+};
+use rasterm_core::target::{DEPTH_LANES, DepthBuffer, NoColor, Rgb565, Target};
 use rasterm_core::texture::{FilterMode, Texture, WrapMode};
 
-const W: u32 = 61;
-const H: u32 = 47;
+const W: u32 = 37;
+const H: u32 = 23;
+const BACKGROUND: Vec3 = Vec3::new(0.05, 0.1, 0.15);
 
-struct Scene<'a> {
-    torus: &'a Torus,
-    transforms: Transforms,
-    effects: Effects<'a>,
-    state: DrawState,
+/// The torus seen at an angle, so close that the near plane cuts it.
+fn transforms() -> Transforms {
+    let model = Mat4::from_axis_angle(Vec3::new(1.0, 0.3, 0.0), 1.1);
+    let view = look_at(Vec3::new(0.3, 0.5, 1.6), Vec3::ZERO, Vec3::Y).unwrap();
+    Transforms::new(model, view, perspective(1.2, W as f32 / H as f32, 0.5, 10.0).unwrap())
 }
 
-impl Scene<'_> {
-    fn draw<C: ColorBuffer, D: DepthBuffer>(&self, target: &mut Target<C, D>) -> DrawStats {
-        target.clear(Vec3::new(0.05, 0.1, 0.15));
-        let mesh = self.torus.mesh();
-        let mut stats = draw_mesh(target, &mesh, &self.transforms, &self.effects, &self.state).unwrap();
-        let style = LineStyle { color: Vec3::new(1.0, 1.0, 0.0), depth_bias: 1e-3 };
-        stats += draw_wireframe(target, &mesh, &self.transforms.clip_from_object, &style, &self.state);
-        stats
+/// Lines 0.35 nearer than their edges (those near the near plane go below depth 0), then lines 2 farther (all of
+/// them beyond depth 1: drawn only with the depth test off).
+const WIREFRAMES: [LineStyle; 2] = [
+    LineStyle { color: Vec3::new(1.0, 1.0, 0.0), depth_bias: 0.35 },
+    LineStyle { color: Vec3::new(0.0, 1.0, 1.0), depth_bias: -2.0 },
+];
+
+/// The depth buffer of a frame or band: the library's (lane-wise where it can be) or a caller's own (pixel by
+/// pixel). One type, so that each scene's draw is compiled once, not once per buffer type.
+enum AnyDepth<'a> {
+    F32(&'a mut [f32]),
+    U16(&'a mut [u16]),
+    Plain(PlainDepth<'a>),
+    Plain16(PlainDepth16<'a>),
+}
+
+impl DepthBuffer for AnyDepth<'_> {
+    fn pixel_count(&self) -> Option<usize> {
+        match self {
+            Self::F32(d) => d.pixel_count(),
+            Self::U16(d) => d.pixel_count(),
+            Self::Plain(d) => d.pixel_count(),
+            Self::Plain16(d) => d.pixel_count(),
+        }
+    }
+    fn test_and_set(&mut self, index: usize, z: f32) -> bool {
+        match self {
+            Self::F32(d) => d.test_and_set(index, z),
+            Self::U16(d) => d.test_and_set(index, z),
+            Self::Plain(d) => d.test_and_set(index, z),
+            Self::Plain16(d) => d.test_and_set(index, z),
+        }
+    }
+    fn test_and_set_lanes(&mut self, start: usize, z: &[f32; DEPTH_LANES], covered: &[bool; DEPTH_LANES]) -> u32 {
+        match self {
+            Self::F32(d) => d.test_and_set_lanes(start, z, covered),
+            Self::U16(d) => d.test_and_set_lanes(start, z, covered),
+            Self::Plain(d) => d.test_and_set_lanes(start, z, covered),
+            Self::Plain16(d) => d.test_and_set_lanes(start, z, covered),
+        }
+    }
+    fn clear(&mut self) {
+        match self {
+            Self::F32(d) => d.clear(),
+            Self::U16(d) => d.clear(),
+            Self::Plain(d) => d.clear(),
+            Self::Plain16(d) => d.clear(),
+        }
     }
 }
 
-/// Renders the scene whole and in bands of `band` rows (f32 depth, exact colours) and compares.
-fn assert_bands_equal_frame(scene: &Scene<'_>, band: u32) {
+/// What a scene is drawn into: exact colours and any depth buffer.
+type Frame<'c, 'd> = Target<ExactColor<'c>, AnyDepth<'d>>;
+
+/// Draws a scene (`draw` clears a target, draws and returns the fragments drawn) whole into the library's buffers, then every band `y0..y1` of the frame into the
+/// caller's own, and compares each band with the frame's rows; checks that the bands of every height add up to
+/// the frame's fragments. Returns the frame's `f32` depths.
+fn assert_every_band_equals_the_frame(name: &str, draw: impl Fn(&mut Frame<'_, '_>) -> u64) -> Vec<f32> {
     let n = (W * H) as usize;
-    let (mut whole, mut whole_depth) = (vec![[0u32; 3]; n], vec![0f32; n]);
-    let full_stats = scene.draw(&mut Target::new(ExactColor(&mut whole), &mut whole_depth[..], W, H).unwrap());
+    let (mut color, mut depth) = (vec![[0u32; 3]; n], vec![0f32; n]);
+    let frame = draw(&mut Target::new(ExactColor(&mut color), AnyDepth::F32(&mut depth), W, H).unwrap());
+    let (mut color16, mut depth16) = (vec![[0u32; 3]; n], vec![0u16; n]);
+    let frame16 = draw(&mut Target::new(ExactColor(&mut color16), AnyDepth::U16(&mut depth16), W, H).unwrap());
 
-    let mut assembled = Vec::with_capacity(n);
-    let (mut color, mut depth) = (vec![[0u32; 3]; (W * band) as usize], vec![0f32; (W * band) as usize]);
-    let mut fragments = 0;
-    for y0 in (0..H).step_by(band as usize) {
-        let y1 = (y0 + band).min(H);
-        let len = (W * (y1 - y0)) as usize;
-        let mut target = Target::band(ExactColor(&mut color[..len]), &mut depth[..len], W, H, y0..y1).unwrap();
-        fragments += scene.draw(&mut target).fragments;
-        assembled.extend_from_slice(&color[..len]);
+    // fragments[y0][y1] and fragments16[y0][y1]: the band y0..y1's.
+    let mut fragments = vec![vec![0; H as usize + 1]; H as usize];
+    let mut fragments16 = fragments.clone();
+    for y0 in 0..H {
+        for y1 in y0 + 1..=H {
+            let rows = (y0 * W) as usize..(y1 * W) as usize;
+            let what = format!("{name}, band {y0}..{y1}");
+            let (mut band_color, mut band_depth) = (vec![[0u32; 3]; rows.len()], vec![0f32; rows.len()]);
+            let plain = AnyDepth::Plain(PlainDepth(&mut band_depth));
+            fragments[y0 as usize][y1 as usize] =
+                draw(&mut Target::band(ExactColor(&mut band_color), plain, W, H, y0..y1).unwrap());
+            assert_same_colors(&what, &band_color, &color[rows.clone()], y0);
+            assert_same_depths(&what, &band_depth, &depth[rows.clone()], W as usize, y0 as usize);
+
+            let (mut band_color, mut band_depth) = (vec![[0u32; 3]; rows.len()], vec![0u16; rows.len()]);
+            let plain = AnyDepth::Plain16(PlainDepth16(&mut band_depth));
+            fragments16[y0 as usize][y1 as usize] =
+                draw(&mut Target::band(ExactColor(&mut band_color), plain, W, H, y0..y1).unwrap());
+            let what = format!("{what}, u16 depth");
+            assert_same_colors(&what, &band_color, &color16[rows.clone()], y0);
+            assert_same_depths(&what, &band_depth, &depth16[rows], W as usize, y0 as usize);
+        }
     }
-    let differing = whole.iter().zip(&assembled).filter(|(a, b)| a != b).count();
-    assert_eq!(differing, 0, "bands of {band} rows: {differing} pixels differ");
-    assert_eq!(fragments, full_stats.fragments, "bands of {band} rows shade the same fragments");
+    for height in 1..=H {
+        let split = |counts: &[Vec<u64>]| -> u64 {
+            (0..H).step_by(height as usize).map(|y0| counts[y0 as usize][(y0 + height).min(H) as usize]).sum()
+        };
+        assert_eq!(split(&fragments), frame, "{name}: bands of {height} rows, fragments");
+        assert_eq!(split(&fragments16), frame16, "{name}: bands of {height} rows, fragments with u16 depth");
+    }
+    assert!(frame > 0, "{name}: something is drawn");
+    depth
+}
+
+/// Panics at the first pixel where a band whose first row is `y0` differs from the frame's rows.
+fn assert_same_colors(what: &str, band: &[[u32; 3]], frame: &[[u32; 3]], y0: u32) {
+    if let Some(i) = (0..band.len()).find(|&i| band[i] != frame[i]) {
+        let (x, y) = (i % W as usize, y0 as usize + i / W as usize);
+        panic!("{what}: pixel ({x}, {y}) has colour bits {:x?}, the whole frame {:x?}", band[i], frame[i]);
+    }
+}
+
+/// Draws the [`WIREFRAMES`] of `mesh` over `target`.
+fn wireframes(target: &mut Frame<'_, '_>, mesh: &Mesh<'_>, clip_from_object: &Mat4, state: &DrawState) -> u64 {
+    WIREFRAMES.iter().map(|style| draw_wireframe(target, mesh, clip_from_object, style, state).fragments).sum()
 }
 
 #[test]
-fn bands_of_1_7_16_rows_equal_the_whole_frame() {
-    let torus = Torus::new(1.0, 0.45, 40, 20);
+fn every_band_of_a_shaded_frame_with_its_wireframe_equals_the_frame() {
+    let torus = Torus::new(1.0, 0.4, 24, 12);
     let texels = checker_texels();
     let texture = Texture::new(&texels, 8, 8).unwrap();
     let lights = [Light::directional(Vec3::new(0.3, 1.0, 0.6), Vec3::ONE)];
-    let view = look_at(Vec3::new(0.2, 0.9, 1.9), Vec3::ZERO, Vec3::Y).unwrap();
-    let projection = perspective(1.2, W as f32 / H as f32, 0.5, 20.0).unwrap();
-    let transforms = Transforms::new(Mat4::from_axis_angle(Vec3::X, 0.7), view, projection);
+    let clipped = draw(
+        &mut Target::new(NoColor, &mut vec![1.0; (W * H) as usize][..], W, H).unwrap(),
+        &torus.mesh(),
+        &Transformed { clip_from_object: transforms().clip_from_object },
+        &DrawState::default(),
+    )
+    .unwrap()
+    .clipped;
+    assert!(clipped > 0, "the near plane cuts the torus");
     for (shading, filter) in [
         (ShadingModel::Phong, Some(FilterMode::Bilinear)),
         (ShadingModel::Gouraud, Some(FilterMode::Nearest)),
@@ -74,13 +177,110 @@ fn bands_of_1_7_16_rows_equal_the_whole_frame() {
             lighting: Lighting { ambient: Vec3::splat(0.1), lights: &lights },
             texture: filter.map(|filter| TextureBinding { texture, filter, wrap: WrapMode::Repeat }),
         };
-        // Float edge functions too: they are evaluated from frame coordinates as well.
         for edges in [EdgeArithmetic::FixedPoint, EdgeArithmetic::Float] {
-            let scene =
-                Scene { torus: &torus, transforms, effects, state: DrawState { edges, ..DrawState::default() } };
-            for band in [1, 7, 16] {
-                assert_bands_equal_frame(&scene, band);
+            for depth_test in [DepthTest::Less, DepthTest::Off] {
+                for general in [false, true] {
+                    let state = DrawState { edges, depth_test, ..DrawState::default() };
+                    let name = format!("{shading:?}, {edges:?}, {depth_test:?}, general {general}");
+                    let depth = assert_every_band_equals_the_frame(&name, |target| {
+                        target.clear(BACKGROUND);
+                        let (mesh, transforms) = (torus.mesh(), transforms());
+                        let stats = if general {
+                            draw_mesh_unspecialised(target, &mesh, &transforms, &effects, &state)
+                        } else {
+                            draw_mesh(target, &mesh, &transforms, &effects, &state)
+                        };
+                        let stats = stats.unwrap();
+                        stats.fragments + wireframes(target, &mesh, &transforms.clip_from_object, &state)
+                    });
+                    match depth_test {
+                        // Lines biased past the near plane store exactly 0 (and never -0 or below).
+                        DepthTest::Less => assert!(depth.iter().any(|&z| z.to_bits() == 0), "{name}"),
+                        DepthTest::Off => assert!(depth.iter().all(|&z| z == 1.0), "{name}: nothing stored"),
+                    }
+                }
             }
+        }
+    }
+}
+
+/// [`Transformed`] without its fragment stage: a depth-only shader.
+struct DepthOnly(Transformed);
+
+impl Shader for DepthOnly {
+    type Varyings = ();
+    type Face = ();
+    const ATTRIBUTES: rasterm_core::mesh::Attributes = rasterm_core::mesh::Attributes::NONE;
+    const FRAGMENT_STAGE: bool = false;
+    fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+        self.0.position(mesh, i)
+    }
+    fn varyings(&self, _: &Mesh<'_>, _: usize) {}
+    fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
+    fn fragment(&self, _: &Fragment, _: &(), _: &()) -> Vec3 {
+        unreachable!("a depth-only shader's fragment stage never runs")
+    }
+}
+
+#[test]
+fn every_band_of_a_depth_only_pass_equals_the_frame() {
+    let torus = Torus::new(1.0, 0.4, 24, 12);
+    for edges in [EdgeArithmetic::FixedPoint, EdgeArithmetic::Float] {
+        for depth_test in [DepthTest::Less, DepthTest::Off] {
+            let state = DrawState { edges, depth_test, ..DrawState::default() };
+            let shader = DepthOnly(Transformed { clip_from_object: transforms().clip_from_object });
+            // Lane-wise into the library's `f32` buffer where the edge values fit `i32`, pixel by pixel otherwise.
+            assert_every_band_equals_the_frame(&format!("depth only, {edges:?}, {depth_test:?}"), |target| {
+                target.clear(BACKGROUND);
+                draw(target, &torus.mesh(), &shader, &state).unwrap().fragments
+            });
+        }
+    }
+}
+
+#[test]
+fn every_band_of_a_mapped_surface_with_shadows_equals_the_frame() {
+    let torus = Torus::new(1.0, 0.4, 24, 12);
+    let mut tangents = vec![Vec4::ZERO; torus.positions.len()];
+    compute_tangents(&torus.mesh(), &mut tangents).unwrap();
+    let checker = checker_texels();
+    let bumps: Vec<u32> = (0..64).map(|i| if i % 3 == 0 { 0x60A0F0 } else { 0x8080FF }).collect();
+    let material = SurfaceMaterial {
+        color: Vec3::new(0.9, 0.8, 0.7),
+        specular: Vec3::splat(0.4),
+        shininess: 24.0,
+        diffuse: Some(Texture::new(&checker, 8, 8).unwrap()),
+        normal_map: Some(NormalMap { texture: Texture::new(&bumps, 8, 8).unwrap(), space: NormalSpace::Tangent }),
+        specular_map: Some(Texture::new(&checker, 8, 8).unwrap()),
+        glow_map: Some(Texture::new(&bumps, 8, 8).unwrap()),
+        ..SurfaceMaterial::plain(Vec3::ONE)
+    };
+    let object = SurfaceDraw { mesh: torus.mesh(), tangents: Some(&tangents), transforms: transforms(), material };
+
+    // The torus casts its own shadow from the sun.
+    let mut sun = LightSource::directional(Vec3::new(0.5, 1.0, 0.8), Vec3::new(0.9, 0.85, 0.8));
+    let view = ShadowView::fit(sun.kind, Bounds { centre: Vec3::ZERO, radius: 1.5 }, 64).unwrap();
+    let mut map = vec![0.0; 64 * 64];
+    clear_shadow_depth(&mut map);
+    let cast = draw_shadow_caster(&view, &mut map, &object.mesh, &object.transforms.model).unwrap();
+    assert!(cast.fragments > 0);
+    sun.shadow = Some(ShadowMap::new(view, &map, ShadowBias::DEFAULT, 1).unwrap());
+    let lamp = LightSource::point(Vec3::new(0.0, 2.0, 1.0), Vec3::new(0.5, 0.4, 0.3));
+    let lights = [sun, lamp];
+    let lights = SceneLights { ambient: Vec3::splat(0.08), lights: &lights };
+    for edges in [EdgeArithmetic::FixedPoint, EdgeArithmetic::Float] {
+        for general in [false, true] {
+            let state = DrawState { edges, ..DrawState::default() };
+            assert_every_band_equals_the_frame(&format!("mapped surface, {edges:?}, general {general}"), |target| {
+                target.clear(BACKGROUND);
+                let drawn = if general {
+                    draw_surface_unspecialised(target, &object, &lights, &state)
+                } else {
+                    draw_surface(target, &object, &lights, &state)
+                };
+                let (_, stats) = drawn.unwrap();
+                stats.fragments + wireframes(target, &object.mesh, &object.transforms.clip_from_object, &state)
+            });
         }
     }
 }
@@ -106,16 +306,20 @@ fn a_320x240_rgb565_frame_in_16_row_bands_uses_20_kib() {
         draw_mesh(target, &mesh, &transforms, &effects, &DrawState::default()).unwrap()
     };
     let (mut whole, mut whole_depth) = (vec![0u16; (BW * BH) as usize], vec![0u16; (BW * BH) as usize]);
-    render(&mut Target::new(Rgb565(&mut whole), &mut whole_depth[..], BW, BH).unwrap());
+    let full: DrawStats = render(&mut Target::new(Rgb565(&mut whole), &mut whole_depth[..], BW, BH).unwrap());
 
     let mut color = [0u16; (BW * 16) as usize];
     let mut depth = [0u16; (BW * 16) as usize];
     assert_eq!(core::mem::size_of_val(&color) + core::mem::size_of_val(&depth), 20 * 1024);
-    let mut assembled = Vec::new();
+    let (mut assembled, mut assembled_depth, mut fragments) = (Vec::new(), Vec::new(), 0);
     for y0 in (0..BH).step_by(16) {
-        render(&mut Target::band(Rgb565(&mut color), &mut depth[..], BW, BH, y0..y0 + 16).unwrap());
+        fragments +=
+            render(&mut Target::band(Rgb565(&mut color), &mut depth[..], BW, BH, y0..y0 + 16).unwrap()).fragments;
         assembled.extend_from_slice(&color);
+        assembled_depth.extend_from_slice(&depth);
     }
     assert!(whole == assembled, "bands differ from the whole frame");
+    assert_same_depths("16-row bands", &assembled_depth, &whole_depth, BW as usize, 0);
+    assert_eq!(fragments, full.fragments);
     assert!(whole.iter().filter(|&&p| p != 0).count() > 10_000, "the torus is drawn");
 }
