@@ -6,7 +6,8 @@
 //! - `corpus/raster/`: scenes found by decoding pseudo-random bytes exactly as the target does and keeping those
 //!   that shade at least one pixel, one per kind (shading model, texture, depth test, band, wireframe, clipping).
 //!   A candidate that breaks an invariant is not a seed: it is saved to `artifacts/raster/seed-panic-*` and
-//!   reported, for `cargo +nightly fuzz run raster artifacts/raster/seed-panic-...` to reproduce.
+//!   reported, for `cargo +nightly fuzz run raster artifacts/raster/seed-panic-...` to reproduce, and the
+//!   generator exits with status 1 once it has written the seeds (CI fails on it).
 //!
 //! Deterministic: the same files every run. Corpora are not committed (see `.gitignore`).
 
@@ -160,10 +161,12 @@ impl Rng {
     }
 }
 
-fn raster_seeds(dir: &Path, panics: &Path) -> usize {
+/// Writes the `raster` seeds into `dir` and the candidates that broke an invariant into `panics`; returns how many
+/// of each.
+fn raster_seeds(dir: &Path, panics: &Path) -> (usize, usize) {
     let mut rng = Rng(0x5EED_0F7A_57E2);
     let mut kinds = BTreeSet::new();
-    let mut written = 0;
+    let (mut written, mut broken) = (0, 0);
     for _ in 0..2_000_000 {
         let len = 96 + (rng.next() % 320) as usize;
         let bytes: Vec<u8> = (0..len).map(|_| rng.next() as u8).collect();
@@ -179,6 +182,7 @@ fn raster_seeds(dir: &Path, panics: &Path) -> usize {
                 eprintln!("a random candidate broke an invariant: saved as {}", panics.join(&name).display());
                 fs::create_dir_all(panics).expect("creating artifacts/raster");
                 write(panics, &name, &bytes);
+                broken += 1;
                 continue;
             }
         };
@@ -189,7 +193,7 @@ fn raster_seeds(dir: &Path, panics: &Path) -> usize {
         write(dir, &format!("scene-{kind:03x}-{}px", stats.fragments), &bytes);
         written += 1;
     }
-    written
+    (written, broken)
 }
 
 fn main() {
@@ -200,6 +204,10 @@ fn main() {
     // The checks print panics of candidates they catch; keep the output to the summary.
     std::panic::set_hook(Box::new(|info| eprintln!("{info}")));
     let o = obj_seeds(&obj);
-    let r = raster_seeds(&raster, &Path::new(env!("CARGO_MANIFEST_DIR")).join("artifacts").join("raster"));
+    let (r, broken) = raster_seeds(&raster, &Path::new(env!("CARGO_MANIFEST_DIR")).join("artifacts").join("raster"));
     println!("wrote {o} seeds to {} and {r} to {}", obj.display(), raster.display());
+    if broken > 0 {
+        eprintln!("{broken} random candidates broke an invariant (saved in artifacts/raster/seed-panic-*)");
+        std::process::exit(1);
+    }
 }

@@ -1,26 +1,26 @@
 //! The `raster` target: a small arbitrary scene through `rasterm_core::shading::draw_mesh`,
-//! `draw_mesh_unspecialised` and `pipeline::draw_wireframe`, checking the core's documented invariants.
+//! `draw_mesh_unspecialised`, `pipeline::draw_wireframe` and depth-only `pipeline::draw` passes, with `f32` and
+//! `u16` depth, whole and in bands, checking the core's documented invariants.
 //!
 //! [`Input`] decodes (with `arbitrary`) into a camera, a model matrix, a frame of 1..=64 x 1..=64 pixels with an
 //! optional band of rows, a `DrawState` (sub-pixel bits mostly 0..=8, sometimes above; fixed-point or `f32` edge
-//! arithmetic), a few vertices with
-//! normals, UVs and colours, `u16`/`u32` indices (some out of range), an optional tiny texture, a shading model,
-//! a material, lights and a wireframe style. Every float may be anything: small values, NaN, infinities, huge,
+//! arithmetic), a few vertices with normals, UVs and colours, `u16`/`u32` indices (some out of range), an optional
+//! tiny texture, a shading model, a material, lights and a wireframe style. Every float may be anything: small values, NaN, infinities, huge,
 //! tiny or raw bit patterns. [`run`] draws it and panics when an invariant fails; docs/fuzzing.md lists them.
 
 use arbitrary::{Arbitrary, Result, Unstructured};
 use rasterm_core::camera::{look_at, orthographic, perspective};
 use rasterm_core::color::pack_rgb888;
-use rasterm_core::math::{Mat4, Vec2, Vec3};
-use rasterm_core::mesh::{Indices, Mesh};
+use rasterm_core::math::{Mat4, Vec2, Vec3, Vec4};
+use rasterm_core::mesh::{Attributes, Indices, Mesh};
 use rasterm_core::pipeline::{
-    Cull, DepthTest, DrawError, DrawState, DrawStats, EdgeArithmetic, Interpolation, LineStyle, MAX_SUBPIXEL_BITS,
-    Winding, draw_wireframe,
+    Cull, DepthTest, DrawError, DrawState, DrawStats, EdgeArithmetic, Fragment, Interpolation, LineStyle,
+    MAX_SUBPIXEL_BITS, Shader, Winding, draw, draw_unspecialised, draw_wireframe,
 };
 use rasterm_core::shading::{
     Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh, draw_mesh_unspecialised,
 };
-use rasterm_core::target::{ColorBuffer, DepthBuffer, Rgb888, Target};
+use rasterm_core::target::{ColorBuffer, DepthBuffer, NoColor, Rgb888, Target, depth_to_u16};
 use rasterm_core::texture::{FilterMode, Texture, WrapMode};
 
 const MAX_VERTICES: usize = 24;
@@ -279,7 +279,14 @@ impl ColorBuffer for CheckedColor<'_> {
     }
 }
 
-/// `f32` depth like `&mut [f32]`, panicking on an index outside the buffer.
+/// The depth buffers' contract: the pipeline hands a buffer only depths in `[0, 1]`, never NaN or `-0`
+/// (`rasterm_core::target::clamp_depth`), whatever the draw.
+fn check_given_depth(z: f32) {
+    assert!(z.to_bits() <= 1f32.to_bits(), "a depth buffer was given {z:e} ({:#010x}), not in [0, 1]", z.to_bits());
+}
+
+/// `f32` depth as a caller would write it (it stores what it is given), panicking on an index outside the buffer
+/// and on a depth outside the contract.
 struct CheckedDepth<'a>(&'a mut [f32]);
 
 impl DepthBuffer for CheckedDepth<'_> {
@@ -289,6 +296,7 @@ impl DepthBuffer for CheckedDepth<'_> {
     fn test_and_set(&mut self, index: usize, z: f32) -> bool {
         let len = self.0.len();
         assert!(index < len, "depth test at index {index} outside a buffer of {len} pixels");
+        check_given_depth(z);
         let d = &mut self.0[index];
         if z < *d {
             *d = z;
@@ -299,6 +307,50 @@ impl DepthBuffer for CheckedDepth<'_> {
     }
     fn clear(&mut self) {
         self.0.fill(1.0);
+    }
+}
+
+/// [`CheckedDepth`] in 16 bits, quantized as `&mut [u16]` quantizes.
+struct CheckedDepth16<'a>(&'a mut [u16]);
+
+impl DepthBuffer for CheckedDepth16<'_> {
+    fn pixel_count(&self) -> Option<usize> {
+        Some(self.0.len())
+    }
+    fn test_and_set(&mut self, index: usize, z: f32) -> bool {
+        let len = self.0.len();
+        assert!(index < len, "depth test at index {index} outside a buffer of {len} pixels");
+        check_given_depth(z);
+        let (q, d) = (depth_to_u16(z), &mut self.0[index]);
+        if q < *d {
+            *d = q;
+            true
+        } else {
+            false
+        }
+    }
+    fn clear(&mut self) {
+        self.0.fill(u16::MAX);
+    }
+}
+
+/// The mesh's positions through `clip_from_object`, nothing else: with `FRAGMENT` false a depth-only shader (the
+/// pipeline's lane-wise depth pass), with it true a shader that writes one colour (the ordinary pixel loop).
+struct Positions<const FRAGMENT: bool>(Mat4);
+
+impl<const FRAGMENT: bool> Shader for Positions<FRAGMENT> {
+    type Varyings = ();
+    type Face = ();
+    const ATTRIBUTES: Attributes = Attributes::NONE;
+    const FRAGMENT_STAGE: bool = FRAGMENT;
+    fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+        self.0.project_point(mesh.position(i))
+    }
+    fn varyings(&self, _: &Mesh<'_>, _: usize) {}
+    fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
+    fn fragment(&self, _: &Fragment, _: &(), _: &()) -> Vec3 {
+        assert!(FRAGMENT, "a depth-only shader's fragment stage ran");
+        Vec3::ONE
     }
 }
 
@@ -552,13 +604,21 @@ pub fn run(input: Input) -> Option<DrawStats> {
         check_stats("draw_wireframe", &stats, triangles);
         check_line_fragments("draw_wireframe", &stats, width.into(), height.into());
         line_stats = stats;
-        if state.depth_test == DepthTest::Off {
-            check_depth_range("draw_wireframe", &depth, DepthTest::Off);
-        }
+        check_depth_range("draw_wireframe", &depth, state.depth_test);
     }
 
-    // 4. Bands: the chosen band and the rows above and below it partition the frame. Each band's pixels and depth
-    //    equal the frame's rows bit for bit, writes stay inside the band, and the fragments add up to the frame's.
+    // 4. The same frame with 16-bit depth, for its bands to equal.
+    //    (Its depth tests differ from the f32 frame's where two depths quantize alike: nothing to compare there.)
+    let (mut color16, mut depth16) = (vec![0u32; w * h], vec![0u16; w * h]);
+    let frame16 = {
+        let mut target = Target::new(Rgb888(&mut color16), &mut depth16[..], width, height).expect("a valid frame");
+        let draws = (&transforms, &effects, &state);
+        draw_band(&mut target, (&mesh, triangles), draws, style.as_ref(), "the frame, u16 depth")
+    };
+
+    // 5. Bands: the chosen band and the rows above and below it partition the frame. Each band, drawn into
+    //    buffers of the caller's own (which check every index and every depth given), equals the frame's rows bit
+    //    for bit, pixels and depths, in either depth format; and the fragments add up to the frame's.
     let (start, end) = match input.band {
         None => (0, height),
         Some((s, l)) => {
@@ -567,51 +627,127 @@ pub fn run(input: Input) -> Option<DrawStats> {
         }
     };
     let bands = [(0, start), (start, end), (end, height)];
-    let (mut fill_fragments, mut line_fragments) = (0, 0);
+    let (mut fragments, mut fragments16) = ((0, 0), (0, 0));
     for (y0, y1) in bands {
         if y0 >= y1 {
             continue;
         }
         let rows = (y1 - y0) as usize;
-        let mut band_color = vec![0u32; w * rows];
-        let mut band_depth = vec![0f32; w * rows];
+        let frame_rows = y0 as usize * w..y1 as usize * w;
+        let draws = (&transforms, &effects, &state);
+        let (mut band_color, mut band_depth) = (vec![0u32; w * rows], vec![0f32; w * rows]);
         let mut target =
             Target::band(CheckedColor(&mut band_color), CheckedDepth(&mut band_depth), width, height, y0..y1)
                 .expect("a valid band");
-        target.clear(CLEAR);
         let what = format!("band {y0}..{y1}");
-        let stats =
-            draw_mesh(&mut target, &mesh, &transforms, &effects, &state).expect("the frame's draw was accepted");
-        check_stats(&what, &stats, triangles);
-        check_fill_fragments(&what, &stats, (w * rows) as u64);
-        fill_fragments += stats.fragments;
-        if let Some(style) = &style {
-            let stats = draw_wireframe(&mut target, &mesh, &transforms.clip_from_object, style, &state);
-            check_stats(&what, &stats, triangles);
-            check_line_fragments(&what, &stats, width.into(), rows as u64);
-            line_fragments += stats.fragments;
-        }
-        let frame_rows = y0 as usize * w..y1 as usize * w;
-        if let Some(i) = (0..w * rows).find(|&i| band_color[i] != color[frame_rows.start + i]) {
-            panic!(
-                "{what}: pixel ({}, {}) = {:#08x}, the whole frame has {:#08x}",
-                i % w,
-                y0 as usize + i / w,
-                band_color[i],
-                color[frame_rows.start + i]
-            );
-        }
-        if let Some(i) = (0..w * rows).find(|&i| band_depth[i].to_bits() != depth[frame_rows.start + i].to_bits()) {
-            panic!(
-                "{what}: depth ({}, {}) = {:e}, the whole frame has {:e}",
-                i % w,
-                y0 as usize + i / w,
-                band_depth[i],
-                depth[frame_rows.start + i]
-            );
-        }
+        let (f, l) = draw_band(&mut target, (&mesh, triangles), draws, style.as_ref(), &what);
+        fragments = (fragments.0 + f, fragments.1 + l);
+        compare_pixels(&what, &band_color, &color[frame_rows.clone()], w, y0);
+        compare_depths(&what, &bits(&band_depth), &bits(&depth[frame_rows.clone()]), w, y0);
+
+        let (mut band_color, mut band_depth) = (vec![0u32; w * rows], vec![0u16; w * rows]);
+        let mut target =
+            Target::band(CheckedColor(&mut band_color), CheckedDepth16(&mut band_depth), width, height, y0..y1)
+                .expect("a valid band");
+        let what = format!("band {y0}..{y1}, u16 depth");
+        let (f, l) = draw_band(&mut target, (&mesh, triangles), draws, style.as_ref(), &what);
+        fragments16 = (fragments16.0 + f, fragments16.1 + l);
+        compare_pixels(&what, &band_color, &color16[frame_rows.clone()], w, y0);
+        let widen = |d: &[u16]| d.iter().map(|&q| u32::from(q)).collect::<Vec<_>>();
+        compare_depths(&what, &widen(&band_depth), &widen(&depth16[frame_rows]), w, y0);
     }
-    assert_eq!(fill_fragments, full_stats.fragments, "band fragments do not add up to the frame's");
-    assert_eq!(line_fragments, line_stats.fragments, "band line fragments do not add up to the frame's");
+    assert_eq!(fragments, (full_stats.fragments, line_stats.fragments), "the bands' fragments add up to the frame's");
+    assert_eq!(fragments16, frame16, "u16 bands: fragments add up to the frame's");
+
+    // 6. Depth-only passes of the same positions and state: the lane-wise pass, the general pixel loop's and every
+    //    band's store the depths of a shaded pass bit for bit, and count its fragments.
+    check_depth_only(&mesh, &transforms.clip_from_object, &state, (width, height), &bands);
     Some(full_stats)
+}
+
+/// `draw_mesh` then, if there is a `style`, `draw_wireframe` into `target` (cleared first), with their statistics
+/// checked; returns their fragments.
+fn draw_band<C: ColorBuffer, D: DepthBuffer>(
+    target: &mut Target<C, D>,
+    (mesh, triangles): (&Mesh<'_>, u64),
+    (transforms, effects, state): (&Transforms, &Effects<'_>, &DrawState),
+    style: Option<&LineStyle>,
+    what: &str,
+) -> (u64, u64) {
+    target.clear(CLEAR);
+    let (width, rows) = (u64::from(target.width()), target.rows().len() as u64);
+    let stats = draw_mesh(target, mesh, transforms, effects, state).expect("the frame's draw was accepted");
+    check_stats(what, &stats, triangles);
+    check_fill_fragments(what, &stats, width * rows);
+    let Some(style) = style else { return (stats.fragments, 0) };
+    let lines = draw_wireframe(target, mesh, &transforms.clip_from_object, style, state);
+    check_stats(what, &lines, triangles);
+    check_line_fragments(what, &lines, width, rows);
+    (stats.fragments, lines.fragments)
+}
+
+/// Panics at the first pixel where a band (whose first row is `y0`) differs from the frame's rows.
+fn compare_pixels(what: &str, band: &[u32], frame: &[u32], width: usize, y0: u32) {
+    if let Some(i) = (0..band.len()).find(|&i| band[i] != frame[i]) {
+        let (x, y) = (i % width, y0 as usize + i / width);
+        panic!("{what}: pixel ({x}, {y}) = {:#08x}, the whole frame has {:#08x}", band[i], frame[i]);
+    }
+}
+
+/// Panics at the first pixel where a band's depth bits differ from the frame's rows'.
+fn compare_depths(what: &str, band: &[u32], frame: &[u32], width: usize, y0: u32) {
+    if let Some(i) = (0..band.len()).find(|&i| band[i] != frame[i]) {
+        let (x, y) = (i % width, y0 as usize + i / width);
+        panic!("{what}: depth ({x}, {y}) has bits {:#010x}, the whole frame has {:#010x}", band[i], frame[i]);
+    }
+}
+
+/// Step 6 of [`run`].
+fn check_depth_only(
+    mesh: &Mesh<'_>,
+    clip_from_object: &Mat4,
+    state: &DrawState,
+    size: (u32, u32),
+    bands: &[(u32, u32)],
+) {
+    let (width, height) = size;
+    let n = (width * height) as usize;
+    let depth_only = Positions::<false>(*clip_from_object);
+    let (mut colors, mut shaded) = (vec![0u32; n], vec![0f32; n]);
+    let mut target = Target::new(CheckedColor(&mut colors), &mut shaded[..], width, height).expect("a valid frame");
+    target.clear(CLEAR);
+    let expected = match draw(&mut target, mesh, &Positions::<true>(*clip_from_object), state) {
+        Ok(stats) => stats,
+        Err(e) => {
+            assert!(matches!(e, DrawError::SubpixelBits(_)), "a shader that reads no attribute was refused: {e:?}");
+            let mut depth = vec![1f32; n];
+            let mut target = Target::new(NoColor, &mut depth[..], width, height).expect("a valid frame");
+            assert_eq!(draw(&mut target, mesh, &depth_only, state), Err(e), "the depth-only pass refuses alike");
+            return;
+        }
+    };
+    let mut depth = vec![0f32; n];
+    let mut target = Target::new(NoColor, &mut depth[..], width, height).expect("a valid frame");
+    target.clear(CLEAR);
+    let stats = draw(&mut target, mesh, &depth_only, state).expect("the shaded pass was accepted");
+    assert_eq!(stats, expected, "depth-only pass: statistics");
+    compare_depths("depth-only pass", &bits(&depth), &bits(&shaded), width as usize, 0);
+
+    let mut target = Target::new(NoColor, CheckedDepth(&mut depth), width, height).expect("a valid frame");
+    target.clear(CLEAR);
+    let stats = draw_unspecialised(&mut target, mesh, &depth_only, state).expect("the shaded pass was accepted");
+    assert_eq!(stats, expected, "depth-only pass, general pixel loop: statistics");
+    compare_depths("depth-only pass, general pixel loop", &bits(&depth), &bits(&shaded), width as usize, 0);
+
+    let mut fragments = 0;
+    for &(y0, y1) in bands.iter().filter(|(y0, y1)| y0 < y1) {
+        let rows = y0 as usize * width as usize..y1 as usize * width as usize;
+        let mut band = vec![0f32; rows.len()];
+        let mut target = Target::band(NoColor, CheckedDepth(&mut band), width, height, y0..y1).expect("a valid band");
+        target.clear(CLEAR);
+        fragments += draw(&mut target, mesh, &depth_only, state).expect("the shaded pass was accepted").fragments;
+        let what = format!("depth-only pass, band {y0}..{y1}");
+        compare_depths(&what, &bits(&band), &bits(&shaded[rows]), width as usize, y0);
+    }
+    assert_eq!(fragments, expected.fragments, "depth-only bands: fragments add up to the frame's");
 }
