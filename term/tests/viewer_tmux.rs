@@ -178,6 +178,8 @@ impl Tmux {
         assert_eq!(self.format("alternate_on"), "0", "still on the alternate screen");
         assert_eq!(self.format("cursor_flag"), "1", "cursor left hidden");
         assert_eq!(self.format("mouse_any_flag"), "0", "mouse reporting left on");
+        assert_eq!(self.format("mouse_button_flag"), "0", "mouse button reporting left on");
+        assert_eq!(self.format("mouse_standard_flag"), "0", "mouse reporting left on");
         assert_eq!(self.format("mouse_sgr_flag"), "0", "SGR mouse reporting left on");
         assert_eq!(self.format("wrap_flag"), "1", "line wrapping left off");
         assert!(tty_same, "the tty settings differ after the viewer exited (raw mode left on?)");
@@ -236,7 +238,9 @@ fn draws_turns_shows_the_hud_and_quits_cleanly() {
     assert!(first.contains("\x1b[38;2;"), "no truecolor escapes in the picture:\n{first}");
     assert_eq!(tmux.format("alternate_on"), "1", "the viewer should draw on the alternate screen");
     assert_eq!(tmux.format("cursor_flag"), "0", "the viewer should hide the cursor");
-    assert_eq!(tmux.format("mouse_any_flag"), "1", "the viewer should ask for mouse reports");
+    assert_eq!(tmux.format("mouse_button_flag"), "1", "the viewer should ask for mouse presses and drags");
+    assert_eq!(tmux.format("mouse_sgr_flag"), "1", "the viewer should ask for SGR mouse reports");
+    assert_eq!(tmux.format("mouse_all_flag"), "0", "reports of every motion would flood a slow link");
 
     tmux.send_keys("Right");
     tmux.wait_for("the picture to change after Right", || (tmux.screen_escaped() != first).then_some(()));
@@ -270,6 +274,36 @@ fn sigterm_restores_the_terminal() {
     // The viewer treats SIGTERM as a request to quit; 128 + 15 would be the conventional alternative.
     assert_eq!(status, 143, "exit status after SIGTERM should be 128 + 15");
     tmux.assert_restored(tty_same);
+}
+
+/// True when process `pid` has ended (gone, or a zombie waiting for its parent).
+fn process_gone(pid: u32) -> bool {
+    match std::fs::read_to_string(format!("/proc/{pid}/stat")) {
+        Err(_) => true,
+        // The state follows the command name, which is in parentheses and may contain spaces.
+        Ok(stat) => stat.rsplit_once(')').is_some_and(|(_, rest)| rest.trim_start().starts_with('Z')),
+    }
+}
+
+#[test]
+fn closing_the_pane_ends_the_viewer_within_a_second() {
+    if !tmux_wanted() {
+        return;
+    }
+    for turntable in [false, true] {
+        let tmux = Tmux::start(if turntable { "close-turning" } else { "close-idle" }, 100, 32);
+        let first = tmux.wait_for_picture();
+        let pid = tmux.viewer_pid();
+        if turntable {
+            tmux.send_keys("Space");
+            tmux.wait_for("the turntable to turn", || (tmux.screen_escaped() != first).then_some(()));
+        }
+        let closed = Instant::now();
+        tmux.run(&["kill-session", "-t", SESSION.trim_end_matches(':')]);
+        let took = tmux.wait_for("the viewer to end", || process_gone(pid).then(|| closed.elapsed()));
+        eprintln!("turntable {turntable}: the viewer ended {took:?} after its pane closed");
+        assert!(took < Duration::from_secs(1), "turntable {turntable}: took {took:?} to end");
+    }
 }
 
 #[test]

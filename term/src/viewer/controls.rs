@@ -1,6 +1,6 @@
 //! Keys and mouse gestures, and what they do.
 
-use crossterm::event::{Event, KeyCode, KeyEvent, KeyEventKind, KeyModifiers, MouseButton, MouseEvent, MouseEventKind};
+use super::input_decoder::{Input, Key, MouseKind};
 
 use crate::scene_render::SceneEffect;
 
@@ -65,50 +65,39 @@ pub const HELP: &[&str] = &[
     "q / Esc / Ctrl-C      quit",
 ];
 
-/// The action for an input event, if any. Only key presses count (some platforms also report releases).
-pub fn action_for(event: &Event) -> Option<Action> {
-    match event {
-        Event::Key(key) => key_action(key),
-        Event::Mouse(mouse) => mouse_action(mouse),
-        Event::Resize(cols, rows) => Some(Action::Resize(*cols, *rows)),
-        _ => None,
+/// The action for an input event, if any.
+pub fn action_for(input: &Input) -> Option<Action> {
+    match *input {
+        Input::Key(key) => key_action(key),
+        Input::Mouse { kind, column, row } => Some(match kind {
+            MouseKind::ScrollUp => Action::Zoom(-1.0),
+            MouseKind::ScrollDown => Action::Zoom(1.0),
+            MouseKind::Press => Action::DragStart(column, row),
+            MouseKind::Release => Action::DragEnd,
+            MouseKind::Drag => Action::DragTo(column, row),
+        }),
     }
 }
 
-fn key_action(key: &KeyEvent) -> Option<Action> {
-    if key.kind != KeyEventKind::Press {
-        return None;
-    }
+fn key_action(key: Key) -> Option<Action> {
     let rotate = |yaw, pitch| Some(Action::Rotate { yaw, pitch });
-    match key.code {
-        KeyCode::Char('c') if key.modifiers.contains(KeyModifiers::CONTROL) => Some(Action::Quit),
-        KeyCode::Left | KeyCode::Char('a' | 'h') => rotate(-1.0, 0.0),
-        KeyCode::Right | KeyCode::Char('d' | 'l') => rotate(1.0, 0.0),
-        KeyCode::Up | KeyCode::Char('w' | 'k') => rotate(0.0, -1.0),
-        KeyCode::Down | KeyCode::Char('s' | 'j') => rotate(0.0, 1.0),
-        KeyCode::Char('+' | '=') => Some(Action::Zoom(-1.0)),
-        KeyCode::Char('-' | '_') => Some(Action::Zoom(1.0)),
-        KeyCode::Char('r') => Some(Action::Reset),
-        KeyCode::Char('p') => Some(Action::ToggleProjection),
-        KeyCode::Char('m') => Some(Action::CycleShading),
-        KeyCode::Char(c @ '1'..='5') => SceneEffect::from_key(c).map(Action::ToggleEffect),
-        KeyCode::Char('t') => Some(Action::ToggleTexture),
-        KeyCode::Char('x') => Some(Action::ToggleWireframe),
-        KeyCode::Char(' ') => Some(Action::ToggleTurntable),
-        KeyCode::Char('i') => Some(Action::ToggleHud),
-        KeyCode::Char('?') => Some(Action::ToggleHelp),
-        KeyCode::Char('q') | KeyCode::Esc => Some(Action::Quit),
-        _ => None,
-    }
-}
-
-fn mouse_action(mouse: &MouseEvent) -> Option<Action> {
-    match mouse.kind {
-        MouseEventKind::ScrollUp => Some(Action::Zoom(-1.0)),
-        MouseEventKind::ScrollDown => Some(Action::Zoom(1.0)),
-        MouseEventKind::Down(MouseButton::Left) => Some(Action::DragStart(mouse.column, mouse.row)),
-        MouseEventKind::Up(MouseButton::Left) => Some(Action::DragEnd),
-        MouseEventKind::Drag(MouseButton::Left) => Some(Action::DragTo(mouse.column, mouse.row)),
-        _ => None,
+    match key {
+        Key::CtrlC | Key::Esc | Key::Char('q') => Some(Action::Quit),
+        Key::Left | Key::Char('a' | 'h') => rotate(-1.0, 0.0),
+        Key::Right | Key::Char('d' | 'l') => rotate(1.0, 0.0),
+        Key::Up | Key::Char('w' | 'k') => rotate(0.0, -1.0),
+        Key::Down | Key::Char('s' | 'j') => rotate(0.0, 1.0),
+        Key::Char('+' | '=') => Some(Action::Zoom(-1.0)),
+        Key::Char('-' | '_') => Some(Action::Zoom(1.0)),
+        Key::Char('r') => Some(Action::Reset),
+        Key::Char('p') => Some(Action::ToggleProjection),
+        Key::Char('m') => Some(Action::CycleShading),
+        Key::Char(c @ '1'..='5') => SceneEffect::from_key(c).map(Action::ToggleEffect),
+        Key::Char('t') => Some(Action::ToggleTexture),
+        Key::Char('x') => Some(Action::ToggleWireframe),
+        Key::Char(' ') => Some(Action::ToggleTurntable),
+        Key::Char('i') => Some(Action::ToggleHud),
+        Key::Char('?') => Some(Action::ToggleHelp),
+        Key::Char(_) => None,
     }
 }

@@ -11,14 +11,18 @@
 
 mod controls;
 mod frame_writer;
+mod input_decoder;
 mod overlay;
 mod state;
 mod terminal_session;
+mod tty;
 
 pub use controls::{Action, HELP, action_for};
 pub use frame_writer::{FrameWriter, WriterStats};
+pub use input_decoder::{ESCAPE_WAIT, Input, InputDecoder, Key, MouseKind};
 pub use state::{Effect, ViewerCamera, ViewerState};
 pub use terminal_session::{TerminalSession, restore};
+pub use tty::{Gone, Tty, Woken, write_until, write_while};
 
 use std::fmt;
 use std::io::{self, IsTerminal};
@@ -26,7 +30,6 @@ use std::path::PathBuf;
 use std::sync::atomic::Ordering;
 use std::time::{Duration, Instant};
 
-use crossterm::{event, terminal};
 use rasterm_core::math::Vec3;
 use rasterm_core::pipeline::DrawStats;
 use rasterm_core::target::{Rgb888, Target};
@@ -48,8 +51,10 @@ pub const MIN_COLUMNS: u16 = 16;
 pub const MIN_ROWS: u16 = 4;
 /// Frame interval while the turntable runs.
 const TURNTABLE_FRAME: Duration = Duration::from_millis(33);
-/// How long to sleep between checks for a signal when idle (ten wake-ups a second cost no measurable CPU).
-const IDLE_POLL: Duration = Duration::from_millis(100);
+/// The longest wait for input when idle (a signal or input ends it at once).
+const IDLE_POLL: Duration = Duration::from_millis(500);
+/// How long the writer may go on with the frame it is writing once the viewer is leaving.
+const FINISH_TIME: Duration = Duration::from_millis(250);
 
 /// Colours: detected or chosen.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -167,7 +172,7 @@ pub fn run(options: &ViewerOptions) -> Result<ViewerExit, ViewerError> {
         ColorChoice::Fixed(mode) => mode,
     };
     let session = TerminalSession::enter().map_err(terminal_error)?;
-    let writer = FrameWriter::start(io::stdout());
+    let writer = FrameWriter::start(session.tty.output_clone().map_err(terminal_error)?);
     let mut viewer = Viewer {
         content,
         name,
@@ -176,14 +181,14 @@ pub fn run(options: &ViewerOptions) -> Result<ViewerExit, ViewerError> {
         cell_mode: options.cell_mode,
         colors,
         cell_aspect: options.cell_aspect,
-        size: terminal::size().map_err(terminal_error)?,
+        size: session.tty.size().map_err(terminal_error)?,
         last_stats: DrawStats::default(),
         last_report: None,
         render_time: Duration::ZERO,
         frame_times: FrameClock::default(),
     };
     let result = viewer.run_loop(&session, &writer);
-    writer.finish();
+    writer.finish(Instant::now() + FINISH_TIME);
     drop(session);
     result
 }
@@ -276,10 +281,11 @@ impl Viewer {
     fn run_loop(&mut self, session: &TerminalSession, writer: &FrameWriter) -> Result<ViewerExit, ViewerError> {
         let mut dirty = true;
         let mut last_spin = Instant::now();
+        let (mut decoder, mut inputs, mut actions) = (InputDecoder::new(), Vec::new(), Vec::new());
+        let mut buffer = [0u8; 4096];
         loop {
-            let signal = session.stop.load(Ordering::SeqCst);
-            if signal != 0 {
-                return Ok(ViewerExit::Signal(i32::try_from(signal).unwrap_or(0)));
+            if let Some(signal) = session.stop_signal() {
+                return Ok(ViewerExit::Signal(signal));
             }
             if writer.failed() {
                 return Ok(ViewerExit::TerminalGone);
@@ -295,29 +301,38 @@ impl Viewer {
                 writer.send(grid);
                 dirty = false;
             }
-            let timeout = if self.state.turntable { TURNTABLE_FRAME } else { IDLE_POLL };
-            if !event::poll(timeout).map_err(terminal_error)? {
-                continue;
+            let mut timeout = if self.state.turntable { TURNTABLE_FRAME } else { IDLE_POLL };
+            if decoder.is_waiting() {
+                timeout = timeout.min(ESCAPE_WAIT);
             }
-            // Take everything that is waiting, so a burst of resizes or key repeats makes one frame.
-            loop {
-                let input = event::read().map_err(terminal_error)?;
-                if let Some(action) = action_for(&input) {
-                    if let Action::Resize(cols, rows) = action {
-                        self.size = (cols, rows);
-                        writer.invalidate();
-                    }
-                    match self.state.apply(action) {
-                        Effect::Quit => return Ok(ViewerExit::Quit),
-                        Effect::Redraw => dirty = true,
-                        Effect::None => {}
-                    }
-                    if matches!(action, Action::ToggleTurntable) {
-                        last_spin = Instant::now();
-                    }
+            match session.tty.wait(timeout) {
+                Err(Gone(_)) => return Ok(ViewerExit::TerminalGone),
+                Ok(Woken::Input) => match session.tty.read(&mut buffer) {
+                    Ok(n) => decoder.push(&buffer[..n], &mut inputs),
+                    Err(Gone(_)) => return Ok(ViewerExit::TerminalGone),
+                },
+                // A lone Escape that nothing followed within the wait is the key.
+                Ok(Woken::Timeout) if decoder.is_waiting() => decoder.flush(&mut inputs),
+                Ok(_) => {}
+            }
+            if session.resized.swap(false, Ordering::SeqCst) {
+                let (cols, rows) = session.tty.size().map_err(terminal_error)?;
+                actions.push(Action::Resize(cols, rows));
+            }
+            // Everything that arrived together makes one frame: a burst of resizes or key repeats.
+            actions.extend(inputs.drain(..).filter_map(|input| action_for(&input)));
+            for action in actions.drain(..) {
+                if let Action::Resize(cols, rows) = action {
+                    self.size = (cols, rows);
+                    writer.invalidate();
                 }
-                if !event::poll(Duration::ZERO).map_err(terminal_error)? {
-                    break;
+                match self.state.apply(action) {
+                    Effect::Quit => return Ok(ViewerExit::Quit),
+                    Effect::Redraw => dirty = true,
+                    Effect::None => {}
+                }
+                if matches!(action, Action::ToggleTurntable) {
+                    last_spin = Instant::now();
                 }
             }
         }

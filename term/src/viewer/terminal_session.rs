@@ -1,49 +1,95 @@
 //! Taking over the terminal (raw mode, alternate screen, hidden cursor, mouse reports) and always giving it back:
-//! on return, on error, on panic, and on SIGINT, SIGTERM and SIGHUP.
+//! on return, on error, on panic, and on SIGINT, SIGTERM and SIGHUP, which also end the viewer.
+//!
+//! Giving it back never blocks for long: the escape sequences go through the [`Tty`]'s non-blocking output with a
+//! deadline (a terminal behind a stalled SSH link cannot hold the process), and the terminal's own settings are
+//! put back as they were found.
 
-use std::io::{self, Write};
-use std::sync::Arc;
+use std::fs::File;
+use std::io;
+use std::os::unix::net::UnixStream;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::{Arc, Mutex, PoisonError};
+use std::time::{Duration, Instant};
 
-use crossterm::{cursor, event, execute, terminal};
+use rustix::termios::{OptionalActions, Termios, tcgetattr, tcsetattr};
+use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM, SIGWINCH};
 
-/// Set while the terminal is taken over, so that restoring twice (guard and panic hook) does nothing the second
-/// time.
-static ACTIVE: AtomicBool = AtomicBool::new(false);
+use super::tty::{Tty, write_until};
+
+/// Alternate screen, hidden cursor, mouse reports of presses, releases and drags (not of every motion, which
+/// would send bytes up an SSH link whenever the pointer crosses the window) in the SGR form, no line wrap.
+const ENTER: &[u8] = b"\x1b[?1049h\x1b[?25l\x1b[?1000h\x1b[?1002h\x1b[?1006h\x1b[?7l";
+/// Default attributes, the end of a synchronized update that may have been cut short, then every mode of
+/// [`ENTER`] undone.
+const LEAVE: &[u8] = b"\x1b[0m\x1b[?2026l\x1b[?7h\x1b[?1006l\x1b[?1002l\x1b[?1000l\x1b[?25h\x1b[?1049l";
+/// The longest the escape sequences of [`ENTER`] and [`LEAVE`] may take to write.
+const SEQUENCE_TIME: Duration = Duration::from_millis(300);
+
+/// What giving the terminal back needs; present while it is taken over, so restoring twice (guard and panic
+/// hook) does nothing the second time.
+struct Saved {
+    output: File,
+    input: File,
+    settings: Termios,
+}
+
+static SAVED: Mutex<Option<Saved>> = Mutex::new(None);
 
 /// The terminal in the viewer's state; restored when dropped.
 pub struct TerminalSession {
-    /// The number of a SIGINT, SIGTERM or SIGHUP received (0: none); the main loop checks it and leaves
-    /// cleanly.
+    /// The terminal's input and output.
+    pub tty: Tty,
+    /// The number of a SIGINT, SIGTERM or SIGHUP received (0: none); the main loop checks it and leaves.
     pub stop: Arc<AtomicUsize>,
+    /// Set by SIGWINCH: the window changed size.
+    pub resized: Arc<AtomicBool>,
     signals: Vec<signal_hook::SigId>,
 }
 
 impl TerminalSession {
-    /// Enters raw mode and the alternate screen, hides the cursor, enables mouse reports, installs the panic hook
-    /// and the signal handlers.
+    /// Installs the panic hook and the signal handlers, then enters raw mode and the alternate screen, hides the
+    /// cursor and enables mouse reports.
     ///
     /// # Errors
-    /// The terminal refused a mode change (it is restored before returning).
+    /// The terminal could not be opened or refused a mode change (it is restored before returning).
     pub fn enter() -> io::Result<Self> {
         install_panic_hook();
+        let (wake, wake_write) = UnixStream::pair()?;
+        wake_write.set_nonblocking(true)?;
         let stop = Arc::new(AtomicUsize::new(0));
+        let resized = Arc::new(AtomicBool::new(false));
         let mut signals = Vec::new();
-        for signal in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM, signal_hook::consts::SIGHUP] {
+        // Each handler sets its flag first, then wakes the main loop's `poll` through the pipe.
+        for signal in [SIGINT, SIGTERM, SIGHUP] {
             let number = usize::try_from(signal).unwrap_or(0);
             signals.push(signal_hook::flag::register_usize(signal, Arc::clone(&stop), number)?);
         }
-        let session = Self { stop, signals };
-        ACTIVE.store(true, Ordering::SeqCst);
-        terminal::enable_raw_mode()?;
-        execute!(
-            io::stdout(),
-            terminal::EnterAlternateScreen,
-            cursor::Hide,
-            event::EnableMouseCapture,
-            terminal::DisableLineWrap
-        )?;
+        signals.push(signal_hook::flag::register(SIGWINCH, Arc::clone(&resized))?);
+        for signal in [SIGINT, SIGTERM, SIGHUP, SIGWINCH] {
+            signals.push(signal_hook::low_level::pipe::register(signal, wake_write.try_clone()?)?);
+        }
+        let session = Self { tty: Tty::open(wake)?, stop, resized, signals };
+        let input = session.tty.input_file()?;
+        let settings = tcgetattr(&input)?;
+        *SAVED.lock().unwrap_or_else(PoisonError::into_inner) =
+            Some(Saved { output: session.tty.output_clone()?, input, settings: settings.clone() });
+        let mut raw = settings;
+        raw.make_raw();
+        tcsetattr(session.tty.input_fd(), OptionalActions::Now, &raw)?;
+        let written = write_until(session.tty.output(), ENTER, Instant::now() + SEQUENCE_TIME)?;
+        if written < ENTER.len() {
+            return Err(io::Error::new(io::ErrorKind::TimedOut, "the terminal took no output"));
+        }
         Ok(session)
+    }
+
+    /// The signal that asked the viewer to stop, if one did.
+    pub fn stop_signal(&self) -> Option<i32> {
+        match self.stop.load(Ordering::SeqCst) {
+            0 => None,
+            n => Some(i32::try_from(n).unwrap_or(0)),
+        }
     }
 }
 
@@ -56,23 +102,14 @@ impl Drop for TerminalSession {
     }
 }
 
-/// Gives the terminal back: leaves the alternate screen, shows the cursor, stops mouse reports, leaves raw
-/// mode. Does nothing if the terminal is not taken over; never fails (a terminal that went away cannot be
-/// restored anyway).
+/// Gives the terminal back: default attributes, primary screen, cursor shown, no mouse reports, line wrap, and
+/// the terminal's settings as they were. Does nothing if the terminal is not taken over; never fails and never
+/// takes much more than 300 ms (a terminal that went away cannot be restored anyway).
 pub fn restore() {
-    if ACTIVE.swap(false, Ordering::SeqCst) {
-        let mut out = io::stdout();
-        // Reset attributes, end a synchronized update that may have been cut short, then undo the modes.
-        let _ = out.write_all(b"\x1b[0m\x1b[?2026l");
-        let _ = execute!(
-            out,
-            terminal::EnableLineWrap,
-            event::DisableMouseCapture,
-            cursor::Show,
-            terminal::LeaveAlternateScreen
-        );
-        let _ = terminal::disable_raw_mode();
-        let _ = out.flush();
+    let saved = SAVED.lock().unwrap_or_else(PoisonError::into_inner).take();
+    if let Some(saved) = saved {
+        let _ = write_until(&saved.output, LEAVE, Instant::now() + SEQUENCE_TIME);
+        let _ = tcsetattr(&saved.input, OptionalActions::Now, &saved.settings);
     }
 }
 
