@@ -2,6 +2,8 @@
 
 #![allow(dead_code)] // Each test file uses its own subset.
 
+pub mod tmux;
+
 use std::fs;
 use std::path::{Path, PathBuf};
 

@@ -1,0 +1,618 @@
+//! The viewer over a real SSH connection through a slow link, as a person working over SSH uses it.
+//!
+//! The test starts, on loopback only, everything it needs and stops all of it, passed or failed:
+//!
+//! - an `sshd` of its own on 127.0.0.1 and a free port, with its own configuration file, a host key and a user key
+//!   made for the run (no PAM, no passwords); nothing of the machine's own SSH set-up is read or changed;
+//! - a relay (threads of this test) between client and server that carries each direction at 1 Mbit/s and delays
+//!   it by 40 ms (80 ms round trip), holding at most half a second of data before the sender has to wait;
+//! - tmux (`common/tmux.rs`) running `ssh -tt` into the viewer, and a copy of everything the client writes to the
+//!   pane, timestamped as it arrives, so a frame is complete on the client's screen when its closing
+//!   synchronized-output mark (`ESC [?2026l`) arrives.
+//!
+//! It prints what it measures (run it with `--nocapture`; the figures are in docs/terminal.md): time to the first
+//! picture, key-to-first-change, key-to-complete-frame and key-to-last-frame latencies, turntable frames per
+//! second and bytes per second, bytes while idle, and how long the remote viewer takes to end once the client is
+//! killed. It asserts behaviour only, never timings: nothing sent while idle, `q` ends with status 0 and gives the
+//! terminal back, and a dropped connection ends the remote viewer.
+//!
+//! sshd, ssh and tmux are required in CI (`CI` set): there, without them this test fails. Elsewhere a machine
+//! without them skips it with a notice.
+
+mod common;
+
+use std::ffi::OsStr;
+use std::fs::{self, File, OpenOptions};
+use std::io::{ErrorKind, Read, Write};
+use std::net::{Shutdown, SocketAddr, TcpListener, TcpStream};
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Mutex, PoisonError, mpsc};
+use std::thread::{self, JoinHandle};
+use std::time::{Duration, Instant};
+
+use common::tmux::{SESSION, Tmux, process_gone, shell_quote, tmux_wanted};
+use rustix::event::{PollFd, PollFlags, Timespec, poll};
+
+/// Where Debian's OpenSSH server is.
+const SSHD: &str = "/usr/sbin/sshd";
+/// The link's rate in each direction: 1 Mbit/s.
+const RATE_BYTES_PER_SECOND: f64 = 125_000.0;
+/// The link's delay in each direction.
+const DELAY: Duration = Duration::from_millis(40);
+/// The most data in flight on the link in one direction, in time at the link's rate (62.5 KB), before the
+/// sender waits.
+const QUEUE: Duration = Duration::from_millis(500);
+/// The largest piece the relay reads and sends at once (a TCP segment on Ethernet).
+const SEGMENT: usize = 1448;
+/// The terminal's size in cells.
+const COLUMNS: u16 = 120;
+/// The terminal's height in cells.
+const ROWS: u16 = 40;
+/// Silence on the client's screen for this long means the viewer has sent everything for now.
+const QUIET: Duration = Duration::from_millis(600);
+/// The longest any one wait may take before the test fails.
+const TIMEOUT: Duration = Duration::from_secs(20);
+/// The keys pressed, one at a time, each once the screen is quiet.
+const KEYS: [&str; 8] = ["Right", "Right", "Up", "Left", "Down", "Right", "Up", "Left"];
+/// How long the idle viewer is watched for bytes.
+const IDLE_WATCH: Duration = Duration::from_secs(2);
+/// How long the turntable runs before it is measured, and how long it is measured.
+const TURNTABLE_WARM_UP: Duration = Duration::from_secs(1);
+const TURNTABLE_WATCH: Duration = Duration::from_secs(3);
+/// How long the remote viewer may take to end once the client is killed (sshd notices, closes the terminal, the
+/// viewer sees the hangup); the viewer's own part is held to one second by `viewer_lifecycle.rs`.
+const DROP_END_WITHIN: Duration = Duration::from_secs(5);
+
+/// True when sshd, ssh and tmux are installed; false (after saying so) when one is not and this is not CI.
+///
+/// # Panics
+/// When one is missing in CI (the `CI` variable is set).
+fn ssh_wanted() -> bool {
+    let ssh = Command::new("ssh").arg("-V").stderr(Stdio::null()).status().is_ok_and(|s| s.success());
+    let sshd = Path::new(SSHD).exists();
+    if ssh && sshd {
+        return tmux_wanted();
+    }
+    assert!(
+        std::env::var_os("CI").is_none(),
+        "ssh or sshd is not installed: CI must install them (`apt-get install openssh-client openssh-server`)"
+    );
+    eprintln!("SKIPPED: the SSH test needs {SSHD} and ssh (apt-get install openssh-server openssh-client)");
+    false
+}
+
+/// Runs `command`, failing the test with its output if it fails.
+fn run(command: &mut Command) -> String {
+    let output = command.output().unwrap_or_else(|e| panic!("{command:?}: {e}"));
+    let text = |b: &[u8]| String::from_utf8_lossy(b).into_owned();
+    assert!(output.status.success(), "{command:?} failed ({}): {}", output.status, text(&output.stderr));
+    text(&output.stdout)
+}
+
+/// A port on 127.0.0.1 that nothing listens on (free when this returns; sshd takes it a moment later).
+fn free_port() -> u16 {
+    let listener = TcpListener::bind("127.0.0.1:0").expect("bind a free port");
+    listener.local_addr().expect("its address").port()
+}
+
+/// An `sshd` of the test's own: its keys, configuration and log in a temporary directory; killed on drop.
+struct SshServer {
+    child: Child,
+    address: SocketAddr,
+    dir: tempfile::TempDir,
+    user: String,
+}
+
+impl SshServer {
+    fn start() -> Self {
+        let dir = tempfile::tempdir().expect("temporary directory");
+        let path = |name: &str| dir.path().join(name);
+        for key in ["host_key", "user_key"] {
+            run(Command::new("ssh-keygen")
+                .args(["-q", "-t", "ed25519", "-N", "", "-C", "rasterm-test", "-f"])
+                .arg(path(key)));
+        }
+        fs::copy(path("user_key.pub"), path("authorized_keys")).expect("authorized_keys");
+        // sshd running as root insists on its (empty) privilege separation directory, which the Debian service
+        // makes at boot; a machine that never started the service lacks it.
+        if rustix::process::geteuid().is_root() && !Path::new("/run/sshd").exists() {
+            fs::create_dir_all("/run/sshd").expect("make /run/sshd");
+        }
+        let address = SocketAddr::from(([127, 0, 0, 1], free_port()));
+        let config = format!(
+            "ListenAddress {address}\n\
+             HostKey {host_key}\n\
+             PidFile {pid}\n\
+             AuthorizedKeysFile {authorized}\n\
+             AuthenticationMethods publickey\n\
+             PubkeyAuthentication yes\n\
+             PasswordAuthentication no\n\
+             KbdInteractiveAuthentication no\n\
+             UsePAM no\n\
+             StrictModes no\n\
+             PermitRootLogin prohibit-password\n\
+             PermitUserEnvironment no\n\
+             X11Forwarding no\n\
+             AllowTcpForwarding no\n\
+             LogLevel ERROR\n",
+            host_key = path("host_key").display(),
+            pid = path("sshd.pid").display(),
+            authorized = path("authorized_keys").display(),
+        );
+        fs::write(path("sshd_config"), config).expect("write sshd_config");
+        let log = File::create(path("sshd.log")).expect("sshd.log");
+        // `-D`: stay in the foreground (so this is the process to kill); `-e`: log to the log file.
+        let child = Command::new(SSHD)
+            .args(["-D", "-e", "-f"])
+            .arg(path("sshd_config"))
+            .stdin(Stdio::null())
+            .stdout(Stdio::null())
+            .stderr(log)
+            .spawn()
+            .expect("start sshd");
+        let user = run(Command::new("id").arg("-un")).trim().to_owned();
+        let mut server = Self { child, address, dir, user };
+        let start = Instant::now();
+        while TcpStream::connect(server.address).is_err() {
+            if let Ok(Some(status)) = server.child.try_wait() {
+                panic!("sshd exited ({status}): {}", server.log());
+            }
+            assert!(start.elapsed() < TIMEOUT, "sshd did not listen within {TIMEOUT:?}: {}", server.log());
+            thread::sleep(Duration::from_millis(20));
+        }
+        server
+    }
+
+    fn log(&self) -> String {
+        fs::read_to_string(self.dir.path().join("sshd.log")).unwrap_or_default()
+    }
+
+    /// The `ssh` arguments that log in through `port` (the relay's) and run `remote` there: the test's key and
+    /// known-hosts file only, no configuration file, never a question.
+    fn client_args(&self, port: u16, remote: &str) -> Vec<String> {
+        let path = |name: &str| self.dir.path().join(name).display().to_string();
+        let mut args: Vec<String> = ["-tt", "-F", "/dev/null", "-i"].map(String::from).to_vec();
+        args.push(path("user_key"));
+        for option in [
+            "IdentitiesOnly=yes".to_owned(),
+            "BatchMode=yes".to_owned(),
+            "StrictHostKeyChecking=no".to_owned(),
+            format!("UserKnownHostsFile={}", path("known_hosts")),
+            "GlobalKnownHostsFile=/dev/null".to_owned(),
+            "LogLevel=ERROR".to_owned(),
+        ] {
+            args.extend(["-o".to_owned(), option]);
+        }
+        args.extend(["-p".to_owned(), port.to_string(), format!("{}@127.0.0.1", self.user), remote.to_owned()]);
+        args
+    }
+}
+
+impl Drop for SshServer {
+    fn drop(&mut self) {
+        // The listener; each connection's own sshd ends with its connection (the relay closes them all first).
+        let _ = self.child.kill();
+        let _ = self.child.wait();
+    }
+}
+
+/// Bytes delivered by the relay, with when.
+#[derive(Default)]
+struct LinkLog {
+    /// Server to client.
+    down: Vec<(Instant, usize)>,
+    /// Client to server.
+    up: Vec<(Instant, usize)>,
+}
+
+impl LinkLog {
+    fn bytes(deliveries: &[(Instant, usize)], from: Instant, to: Instant) -> usize {
+        deliveries.iter().filter(|(t, _)| (from..to).contains(t)).map(|(_, n)| n).sum()
+    }
+}
+
+/// Which way a pump carries data.
+#[derive(Clone, Copy)]
+enum Direction {
+    Up,
+    Down,
+}
+
+/// The slow link: a listener on 127.0.0.1 whose every connection is carried to `upstream` at
+/// [`RATE_BYTES_PER_SECOND`] after [`DELAY`], each way.
+struct Relay {
+    port: u16,
+    stop: Arc<AtomicBool>,
+    log: Arc<Mutex<LinkLog>>,
+    sockets: Arc<Mutex<Vec<TcpStream>>>,
+    threads: Arc<Mutex<Vec<JoinHandle<()>>>>,
+    accept: Option<JoinHandle<()>>,
+}
+
+impl Relay {
+    fn start(upstream: SocketAddr) -> Self {
+        let listener = TcpListener::bind("127.0.0.1:0").expect("bind the relay");
+        listener.set_nonblocking(true).expect("non-blocking listener");
+        let port = listener.local_addr().expect("relay address").port();
+        let stop = Arc::new(AtomicBool::new(false));
+        let log = Arc::new(Mutex::new(LinkLog::default()));
+        let sockets = Arc::new(Mutex::new(Vec::new()));
+        let threads = Arc::new(Mutex::new(Vec::new()));
+        let (s, l, so, th) = (Arc::clone(&stop), Arc::clone(&log), Arc::clone(&sockets), Arc::clone(&threads));
+        let accept = thread::spawn(move || {
+            let start = Instant::now();
+            // Bounded: the test never lasts ten minutes.
+            while !s.load(Ordering::SeqCst) && start.elapsed() < Duration::from_secs(600) {
+                match listener.accept() {
+                    Ok((client, _)) => {
+                        client.set_nonblocking(false).expect("blocking client socket");
+                        let server = TcpStream::connect(upstream).expect("connect to sshd");
+                        for socket in [&client, &server] {
+                            socket.set_nodelay(true).expect("nodelay");
+                            lock(&so).push(socket.try_clone().expect("clone a socket"));
+                        }
+                        let up = pump(&client, &server, Direction::Up, &l, &s);
+                        let down = pump(&server, &client, Direction::Down, &l, &s);
+                        lock(&th).extend(up.into_iter().chain(down));
+                    }
+                    Err(e) if e.kind() == ErrorKind::WouldBlock => thread::sleep(Duration::from_millis(10)),
+                    Err(e) => panic!("relay accept: {e}"),
+                }
+            }
+        });
+        Self { port, stop, log, sockets, threads, accept: Some(accept) }
+    }
+
+    /// Bytes carried down (server to client) and up between `from` and `to`.
+    fn bytes(&self, from: Instant, to: Instant) -> (usize, usize) {
+        let log = lock(&self.log);
+        (LinkLog::bytes(&log.down, from, to), LinkLog::bytes(&log.up, from, to))
+    }
+}
+
+impl Drop for Relay {
+    fn drop(&mut self) {
+        self.stop.store(true, Ordering::SeqCst);
+        for socket in lock(&self.sockets).drain(..) {
+            let _ = socket.shutdown(Shutdown::Both);
+        }
+        if let Some(accept) = self.accept.take() {
+            let _ = accept.join();
+        }
+        for thread in lock(&self.threads).drain(..) {
+            let _ = thread.join();
+        }
+    }
+}
+
+fn lock<T>(mutex: &Mutex<T>) -> std::sync::MutexGuard<'_, T> {
+    mutex.lock().unwrap_or_else(PoisonError::into_inner)
+}
+
+/// Carries `from` to `to` as the link would: a piece read at time `t` leaves when the link has sent everything
+/// before it (at the link's rate) and arrives [`DELAY`] later. The reader waits while more than [`QUEUE`] is in
+/// flight, so a sender faster than the link is held back as TCP would hold it. The end of `from` is passed on as
+/// the end of `to`.
+fn pump(
+    from: &TcpStream,
+    to: &TcpStream,
+    direction: Direction,
+    log: &Arc<Mutex<LinkLog>>,
+    stop: &Arc<AtomicBool>,
+) -> [JoinHandle<()>; 2] {
+    let (mut from, mut to) = (from.try_clone().expect("clone"), to.try_clone().expect("clone"));
+    from.set_read_timeout(Some(Duration::from_millis(100))).expect("read timeout");
+    let (sender, receiver) = mpsc::channel::<Option<(Instant, Vec<u8>)>>();
+    let stop_reading = Arc::clone(stop);
+    let reader = thread::spawn(move || {
+        let mut buffer = [0u8; SEGMENT];
+        let mut link_free_at = Instant::now();
+        while !stop_reading.load(Ordering::SeqCst) {
+            let n = match from.read(&mut buffer) {
+                Ok(0) => break,
+                Ok(n) => n,
+                Err(e) if matches!(e.kind(), ErrorKind::WouldBlock | ErrorKind::TimedOut | ErrorKind::Interrupted) => {
+                    continue;
+                }
+                Err(_) => break,
+            };
+            let now = Instant::now();
+            let departs = link_free_at.max(now) + Duration::from_secs_f64(n as f64 / RATE_BYTES_PER_SECOND);
+            link_free_at = departs;
+            if sender.send(Some((departs + DELAY, buffer[..n].to_vec()))).is_err() {
+                return;
+            }
+            if let Some(ahead) = departs.checked_duration_since(now + QUEUE) {
+                thread::sleep(ahead);
+            }
+        }
+        let _ = sender.send(None);
+    });
+    let log = Arc::clone(log);
+    let writer = thread::spawn(move || {
+        while let Ok(Some((arrives, bytes))) = receiver.recv() {
+            if let Some(wait) = arrives.checked_duration_since(Instant::now()) {
+                thread::sleep(wait);
+            }
+            if to.write_all(&bytes).is_err() {
+                break;
+            }
+            let mut log = lock(&log);
+            let entry = (Instant::now(), bytes.len());
+            match direction {
+                Direction::Up => log.up.push(entry),
+                Direction::Down => log.down.push(entry),
+            }
+        }
+        let _ = to.shutdown(Shutdown::Write);
+    });
+    [reader, writer]
+}
+
+/// Everything the client writes to the pane, as it arrives: `tmux pipe-pane` into a FIFO that a thread reads.
+struct PaneStream {
+    received: Arc<Mutex<Received>>,
+    stop: Arc<AtomicBool>,
+    thread: Option<JoinHandle<()>>,
+}
+
+#[derive(Default)]
+struct Received {
+    bytes: Vec<u8>,
+    /// For each read: the length of `bytes` after it, and when it arrived.
+    arrivals: Vec<(usize, Instant)>,
+}
+
+impl Received {
+    /// When the byte at `offset` arrived.
+    fn arrival_of(&self, offset: usize) -> Instant {
+        let at = self.arrivals.partition_point(|(end, _)| *end <= offset);
+        self.arrivals[at].1
+    }
+
+    /// When each frame's closing mark arrived, in order.
+    fn frame_ends(&self) -> Vec<Instant> {
+        const SYNC_END: &[u8] = b"\x1b[?2026l";
+        self.bytes
+            .windows(SYNC_END.len())
+            .enumerate()
+            .filter(|(_, w)| *w == SYNC_END)
+            .map(|(at, _)| self.arrival_of(at + SYNC_END.len() - 1))
+            .collect()
+    }
+
+    /// The first byte to arrive at or after `from`.
+    fn first_arrival_since(&self, from: Instant) -> Option<Instant> {
+        self.arrivals.iter().map(|(_, t)| *t).find(|t| *t >= from)
+    }
+
+    fn bytes_between(&self, from: Instant, to: Instant) -> usize {
+        let mut before = 0;
+        let mut total = 0;
+        for &(end, t) in &self.arrivals {
+            if (from..to).contains(&t) {
+                total += end - before;
+            }
+            before = end;
+        }
+        total
+    }
+}
+
+impl PaneStream {
+    fn start(tmux: &Tmux) -> Self {
+        let fifo = tmux.dir().join("pane.fifo");
+        run(Command::new("mkfifo").arg(&fifo));
+        // Read and write: opening never waits for the writer, and the end never comes while the test holds it.
+        let mut file = OpenOptions::new().read(true).write(true).open(&fifo).expect("open the FIFO");
+        tmux.pipe_output(&format!("exec cat > {}", shell_quote(&fifo)));
+        let received = Arc::new(Mutex::new(Received::default()));
+        let stop = Arc::new(AtomicBool::new(false));
+        let (r, s) = (Arc::clone(&received), Arc::clone(&stop));
+        let thread = thread::spawn(move || {
+            let mut buffer = [0u8; 65536];
+            let start = Instant::now();
+            while !s.load(Ordering::SeqCst) && start.elapsed() < Duration::from_secs(600) {
+                let mut fds = [PollFd::new(&file, PollFlags::IN)];
+                let timeout = Timespec { tv_sec: 0, tv_nsec: 20_000_000 };
+                if poll(&mut fds, Some(&timeout)).unwrap_or(0) == 0 {
+                    continue;
+                }
+                let Ok(n) = file.read(&mut buffer) else { break };
+                let now = Instant::now();
+                let mut received = lock(&r);
+                received.bytes.extend_from_slice(&buffer[..n]);
+                let end = received.bytes.len();
+                received.arrivals.push((end, now));
+            }
+        });
+        Self { received, stop, thread: Some(thread) }
+    }
+
+    /// Waits until frames have arrived since `from` and the screen has then been quiet for [`QUIET`].
+    ///
+    /// # Panics
+    /// After [`TIMEOUT`].
+    fn wait_until_quiet(&self, from: Instant, what: &str) {
+        let start = Instant::now();
+        loop {
+            {
+                let received = lock(&self.received);
+                let framed = received.frame_ends().iter().any(|t| *t >= from);
+                let last = received.arrivals.last().map(|(_, t)| *t);
+                if framed && last.is_some_and(|t| t.elapsed() >= QUIET) {
+                    return;
+                }
+            }
+            assert!(start.elapsed() < TIMEOUT, "timed out after {TIMEOUT:?} waiting for {what}");
+            thread::sleep(Duration::from_millis(20));
+        }
+    }
+
+    fn with<T>(&self, f: impl FnOnce(&Received) -> T) -> T {
+        f(&lock(&self.received))
+    }
+}
+
+impl Drop for PaneStream {
+    fn drop(&mut self) {
+        self.stop.store(true, Ordering::SeqCst);
+        if let Some(thread) = self.thread.take() {
+            let _ = thread.join();
+        }
+    }
+}
+
+/// The client in tmux, through the relay, running the viewer on the server; its output recorded.
+struct Session {
+    tmux: Tmux,
+    stream: PaneStream,
+    started: Instant,
+    remote_pid_file: PathBuf,
+    /// Holds the remote pid file; removed on drop.
+    _dir: tempfile::TempDir,
+}
+
+impl Session {
+    fn start(test: &str, server: &SshServer, relay: &Relay) -> Self {
+        let dir = tempfile::tempdir().expect("temporary directory");
+        let remote_pid_file = dir.path().join("viewer.pid");
+        // The remote shell records the viewer's process id (`exec` keeps it), so the test can watch it.
+        let remote = format!(
+            "echo $$ > {}; exec {} --color truecolor",
+            shell_quote(&remote_pid_file),
+            shell_quote(Path::new(env!("CARGO_BIN_EXE_rasterm")))
+        );
+        let args = server.client_args(relay.port, &remote);
+        let args: Vec<&OsStr> = args.iter().map(OsStr::new).collect();
+        let tmux = Tmux::prepare(test, COLUMNS, ROWS, Path::new("ssh"), &args);
+        let stream = PaneStream::start(&tmux);
+        let started = Instant::now();
+        tmux.go();
+        Self { tmux, stream, started, remote_pid_file, _dir: dir }
+    }
+
+    fn remote_viewer_pid(&self) -> u32 {
+        self.tmux.wait_for("the remote viewer's process id", || {
+            fs::read_to_string(&self.remote_pid_file).ok().and_then(|s| s.trim().parse().ok())
+        })
+    }
+}
+
+fn ms(d: Duration) -> f64 {
+    d.as_secs_f64() * 1e3
+}
+
+/// Median and largest of `values`, in milliseconds.
+fn median_max(values: &[Duration]) -> String {
+    let mut sorted = values.to_vec();
+    sorted.sort();
+    let median = sorted[sorted.len() / 2];
+    format!("median {:.0} ms, max {:.0} ms", ms(median), ms(*sorted.last().unwrap_or(&Duration::ZERO)))
+}
+
+#[test]
+fn the_viewer_over_a_slow_ssh_link() {
+    if !ssh_wanted() {
+        return;
+    }
+    let server = SshServer::start();
+    let relay = Relay::start(server.address);
+    let mut report = vec![format!(
+        "viewer over SSH, {COLUMNS}x{ROWS} cells, half-block truecolor; link {} Mbit/s and {} ms each way",
+        RATE_BYTES_PER_SECOND * 8.0 / 1e6,
+        DELAY.as_millis()
+    )];
+
+    let session = Session::start("ssh", &server, &relay);
+    let (tmux, stream) = (&session.tmux, &session.stream);
+    stream.wait_until_quiet(session.started, "the first picture");
+    let first = stream.with(|r| r.frame_ends()[0]) - session.started;
+    let screen = tmux.screen();
+    assert!(screen.contains('▀'), "no picture on the client's screen:\n{screen}\nsshd: {}", server.log());
+    report.push(format!("first picture: {:.0} ms after the client started (login included)", ms(first)));
+
+    // Idle: nothing at all on the link.
+    let idle_from = Instant::now();
+    thread::sleep(IDLE_WATCH);
+    let (down, up) = relay.bytes(idle_from, Instant::now());
+    report.push(format!("idle for {} s: {down} bytes down, {up} bytes up", IDLE_WATCH.as_secs()));
+    assert_eq!(down, 0, "the idle viewer sent {down} bytes in {IDLE_WATCH:?}");
+
+    let (mut first_change, mut complete, mut last_frame, mut key_bytes) = (vec![], vec![], vec![], vec![]);
+    for key in KEYS {
+        let pressed = Instant::now();
+        tmux.send_keys(key);
+        stream.wait_until_quiet(pressed, &format!("the frame after {key}"));
+        let (change, ends, bytes) = stream.with(|r| {
+            let ends: Vec<Instant> = r.frame_ends().into_iter().filter(|t| *t >= pressed).collect();
+            (r.first_arrival_since(pressed), ends, r.bytes_between(pressed, Instant::now()))
+        });
+        first_change.push(change.expect("a byte after the key") - pressed);
+        complete.push(ends[0] - pressed);
+        last_frame.push(*ends.last().unwrap_or(&ends[0]) - pressed);
+        key_bytes.push(bytes);
+    }
+    key_bytes.sort_unstable();
+    report.push(format!("key to first change: {} ({} keys)", median_max(&first_change), KEYS.len()));
+    report.push(format!("key to complete frame: {}", median_max(&complete)));
+    report.push(format!("key to last frame: {}", median_max(&last_frame)));
+    report.push(format!("bytes to the screen per key: median {}", key_bytes[key_bytes.len() / 2]));
+
+    tmux.send_keys("Space");
+    thread::sleep(TURNTABLE_WARM_UP);
+    let watch_from = Instant::now();
+    thread::sleep(TURNTABLE_WATCH);
+    let watch_to = Instant::now();
+    let (frames, screen_bytes) = stream.with(|r| {
+        let frames = r.frame_ends().iter().filter(|t| (watch_from..watch_to).contains(*t)).count();
+        (frames, r.bytes_between(watch_from, watch_to))
+    });
+    let (link_down, link_up) = relay.bytes(watch_from, watch_to);
+    let seconds = (watch_to - watch_from).as_secs_f64();
+    report.push(format!(
+        "turntable: {:.1} frames/s on the client's screen; {:.0} bytes/s of frames, {:.0} bytes/s down and {:.0} up \
+         on the link (SSH included; the link carries {:.0})",
+        frames as f64 / seconds,
+        screen_bytes as f64 / seconds,
+        link_down as f64 / seconds,
+        link_up as f64 / seconds,
+        RATE_BYTES_PER_SECOND
+    ));
+    let stopped = Instant::now();
+    tmux.send_keys("Space");
+    stream.wait_until_quiet(stopped, "the turntable to stop");
+
+    let viewer = session.remote_viewer_pid();
+    tmux.send_keys("q");
+    let (status, tty_same) = tmux.wait_for_exit();
+    assert_eq!(status, 0, "ssh (the remote viewer) exited with {status} after q");
+    tmux.assert_restored(tty_same);
+    tmux.wait_for("the remote viewer to end after q", || process_gone(viewer).then_some(()));
+    report.push("q: the remote viewer exited with status 0 and the terminal was given back".to_owned());
+    drop(session);
+
+    // A dropped connection, while the turntable fills the link: the client is killed; the remote viewer must end.
+    let session = Session::start("ssh-drop", &server, &relay);
+    session.stream.wait_until_quiet(session.started, "the first picture");
+    let viewer = session.remote_viewer_pid();
+    session.tmux.send_keys("Space");
+    thread::sleep(TURNTABLE_WARM_UP);
+    let client = session.tmux.program_pid();
+    run(Command::new("kill").args(["-KILL", &client.to_string()]));
+    let killed = Instant::now();
+    while !process_gone(viewer) && killed.elapsed() < DROP_END_WITHIN {
+        thread::sleep(Duration::from_millis(10));
+    }
+    let ended = killed.elapsed();
+    assert!(process_gone(viewer), "the remote viewer ({viewer}) still runs {DROP_END_WITHIN:?} after the client died");
+    report.push(format!(
+        "dropped connection (client killed mid-turntable): the remote viewer ended after {:.0} ms",
+        ms(ended)
+    ));
+    let _ = session.tmux.run(&["kill-session", "-t", SESSION.trim_end_matches(':')]);
+
+    eprintln!("{}", report.join("\n"));
+}
