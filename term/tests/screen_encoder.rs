@@ -7,7 +7,7 @@ use std::num::NonZeroU16;
 use proptest::prelude::*;
 use proptest::test_runner::Config as ProptestConfig;
 use rasterm::screen::encoder::{CLEAR_SCREEN, SYNC_BEGIN, SYNC_END};
-use rasterm::screen::{Cell, CellGrid, CellMode, Color, ColorMode, Encoder, PixelFrame, naive_full_frame};
+use rasterm::screen::{Cell, CellGrid, CellMode, Color, ColorMode, Encoder, PixelFrame, Tolerance, naive_full_frame};
 
 // ---------------------------------------------------------------------------------------------------------
 // The oracle.
@@ -190,6 +190,51 @@ proptest! {
     #[test]
     fn deltas_reproduce_frames_no_color(frames in frame_sequence(ColorMode::None)) {
         check_sequence(&frames);
+    }
+}
+
+proptest! {
+    #![proptest_config(config(1000))]
+
+    /// Within a tolerance, the screen shows exactly what the encoder says it shows, and each of its cells is
+    /// within the tolerance of the frame's; then steps limited in bytes, each drawing at least one cell, reach
+    /// the last frame exactly.
+    #[test]
+    fn tolerant_frames_then_limited_steps_end_exact(
+        frames in frame_sequence(ColorMode::TrueColor),
+        delta_e in 0.0f32..0.3,
+        limit in 1usize..300,
+    ) {
+        let tolerance = Tolerance::new(delta_e);
+        let mut encoder = Encoder::new();
+        let mut parser = terminal(frames[0].width, frames[0].height);
+        for frame in &frames {
+            let mut bytes = Vec::new();
+            encoder.encode_within(frame, tolerance, &mut bytes);
+            assert_well_formed(&bytes);
+            parser.process(&bytes);
+            let shown = encoder.shown().expect("a frame was encoded").clone();
+            assert_screen_shows(&parser, &shown);
+            for (i, (shown, wanted)) in shown.cells.iter().zip(&frame.cells).enumerate() {
+                prop_assert!(tolerance.accepts(shown, wanted), "cell {i}: {shown:?} for {wanted:?}");
+            }
+        }
+        let last = frames.last().expect("at least one frame");
+        // One cell, its cursor move and colours, and a frame's opening and closing bytes.
+        let slack = 160;
+        for step in 1..=last.cells.len() + 1 {
+            let mut bytes = Vec::new();
+            let complete = encoder.encode_limited(last, limit, &mut bytes);
+            assert_well_formed(&bytes);
+            prop_assert!(bytes.len() <= limit + slack, "{} bytes for a limit of {limit}", bytes.len());
+            parser.process(&bytes);
+            assert_screen_shows(&parser, encoder.shown().expect("shown"));
+            if complete {
+                assert_screen_shows(&parser, last);
+                return Ok(());
+            }
+            prop_assert!(step <= last.cells.len(), "no progress after {step} steps");
+        }
     }
 }
 

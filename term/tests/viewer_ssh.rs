@@ -13,8 +13,9 @@
 //! It prints what it measures (run it with `--nocapture`; the figures are in docs/terminal.md): time to the first
 //! picture, key-to-first-change, key-to-complete-frame and key-to-last-frame latencies, turntable frames per
 //! second and bytes per second, bytes while idle, and how long the remote viewer takes to end once the client is
-//! killed. It asserts behaviour only, never timings: nothing sent while idle, `q` ends with status 0 and gives the
-//! terminal back, and a dropped connection ends the remote viewer.
+//! killed. It asserts behaviour only, never timings: nothing sent while idle, the picture at rest after the keys
+//! is exact (the same as the viewer's own without SSH, which the writer may approximate while the picture moves),
+//! `q` ends with status 0 and gives the terminal back, and a dropped connection ends the remote viewer.
 //!
 //! sshd, ssh and tmux are required in CI (`CI` set): there, without them this test fails. Elsewhere a machine
 //! without them skips it with a notice.
@@ -501,6 +502,22 @@ impl Session {
     }
 }
 
+/// The screen of the viewer run locally in tmux (no SSH, same size and colours) after `keys`, once steady.
+fn exact_screen_after(keys: &[&str]) -> String {
+    let args = [OsStr::new("--color"), OsStr::new("truecolor")];
+    let tmux = Tmux::prepare("ssh-reference", COLUMNS, ROWS, Path::new(env!("CARGO_BIN_EXE_rasterm")), &args);
+    tmux.go();
+    let mut screen = tmux.wait_for_picture();
+    for key in keys {
+        tmux.send_keys(key);
+        screen = tmux.wait_for(&format!("the local picture after {key}"), || {
+            let now = tmux.screen_escaped();
+            (now != screen).then_some(now)
+        });
+    }
+    tmux.wait_for_picture()
+}
+
 fn ms(d: Duration) -> f64 {
     d.as_secs_f64() * 1e3
 }
@@ -542,24 +559,37 @@ fn the_viewer_over_a_slow_ssh_link() {
     assert_eq!(down, 0, "the idle viewer sent {down} bytes in {IDLE_WATCH:?}");
 
     let (mut first_change, mut complete, mut last_frame, mut key_bytes) = (vec![], vec![], vec![], vec![]);
+    let mut first_frame_bytes = vec![];
     for key in KEYS {
         let pressed = Instant::now();
         tmux.send_keys(key);
         stream.wait_until_quiet(pressed, &format!("the frame after {key}"));
-        let (change, ends, bytes) = stream.with(|r| {
+        let (change, ends, bytes, first_bytes) = stream.with(|r| {
             let ends: Vec<Instant> = r.frame_ends().into_iter().filter(|t| *t >= pressed).collect();
-            (r.first_arrival_since(pressed), ends, r.bytes_between(pressed, Instant::now()))
+            let first_bytes = r.bytes_between(pressed, ends[0] + Duration::from_nanos(1));
+            (r.first_arrival_since(pressed), ends, r.bytes_between(pressed, Instant::now()), first_bytes)
         });
+        first_frame_bytes.push(first_bytes);
         first_change.push(change.expect("a byte after the key") - pressed);
         complete.push(ends[0] - pressed);
         last_frame.push(*ends.last().unwrap_or(&ends[0]) - pressed);
         key_bytes.push(bytes);
     }
+    // At rest the client's screen is exact: the same, cell for cell and colour for colour, as the viewer's own
+    // screen after the same keys without SSH.
+    let reference = exact_screen_after(&KEYS);
+    assert_eq!(tmux.screen_escaped(), reference, "the picture at rest over SSH differs from the exact one");
+    report.push("at rest after the keys: the client's screen equals the viewer's without SSH".to_owned());
     key_bytes.sort_unstable();
+    first_frame_bytes.sort_unstable();
     report.push(format!("key to first change: {} ({} keys)", median_max(&first_change), KEYS.len()));
     report.push(format!("key to complete frame: {}", median_max(&complete)));
     report.push(format!("key to last frame: {}", median_max(&last_frame)));
-    report.push(format!("bytes to the screen per key: median {}", key_bytes[key_bytes.len() / 2]));
+    report.push(format!(
+        "bytes to the screen per key: median {} in all, {} up to the end of the first frame",
+        key_bytes[key_bytes.len() / 2],
+        first_frame_bytes[first_frame_bytes.len() / 2]
+    ));
 
     tmux.send_keys("Space");
     thread::sleep(TURNTABLE_WARM_UP);

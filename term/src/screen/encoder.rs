@@ -5,6 +5,7 @@ use super::cell::Cell;
 use super::cell_grid::CellGrid;
 use super::cursor_move::CursorMove;
 use super::sgr::{MAX_SGR_LEN, Pen, SGR_RESET, sgr_change_len, write_sgr_change};
+use super::tolerance::Tolerance;
 
 /// Begin synchronized output (DEC private mode 2026): the terminal holds the screen until [`SYNC_END`].
 pub const SYNC_BEGIN: &[u8] = b"\x1b[?2026h";
@@ -59,24 +60,53 @@ impl Encoder {
     /// # Panics
     /// If `next.cells.len() != next.width * next.height`.
     pub fn encode(&mut self, next: &CellGrid, out: &mut Vec<u8>) {
+        self.encode_within(next, Tolerance::EXACT, out);
+    }
+
+    /// As [`Encoder::encode`], but a shown cell that `tolerance` accepts for the wanted one is left as it is, and
+    /// a cell that is sent goes out as [`Tolerance::cheaper`] makes it; the encoder remembers what was shown, so a
+    /// later exact frame sends the difference.
+    ///
+    /// # Panics
+    /// If `next.cells.len() != next.width * next.height`.
+    pub fn encode_within(&mut self, next: &CellGrid, tolerance: Tolerance, out: &mut Vec<u8>) {
+        self.encode_frame(next, tolerance, usize::MAX, out);
+    }
+
+    /// As [`Encoder::encode`], but stops drawing cells once `out` has grown by `limit` bytes (it may go over by
+    /// one cell and the frame's closing bytes, and always draws at least one changed cell); the cells not drawn
+    /// stay as they were, and a later frame draws them. Returns true when every changed cell was drawn.
+    ///
+    /// # Panics
+    /// If `next.cells.len() != next.width * next.height`.
+    pub fn encode_limited(&mut self, next: &CellGrid, limit: usize, out: &mut Vec<u8>) -> bool {
+        self.encode_frame(next, Tolerance::EXACT, limit, out)
+    }
+
+    fn encode_frame(&mut self, next: &CellGrid, tolerance: Tolerance, limit: usize, out: &mut Vec<u8>) -> bool {
         assert_eq!(next.cells.len(), next.width * next.height, "malformed {}x{} grid", next.width, next.height);
-        let mut frame = FrameWriter { out, pen: Pen::DEFAULT, cursor: None, started: false, width: next.width };
+        let end = out.len().saturating_add(limit);
+        let mut frame =
+            FrameWriter { out, pen: Pen::DEFAULT, cursor: None, started: false, width: next.width, end, drawn: false };
         if !self.valid || !self.shown.same_size(next) {
             frame.begin();
             frame.out.extend_from_slice(SGR_RESET);
             frame.out.extend_from_slice(CLEAR_SCREEN);
             self.shown.reset(next.width, next.height, Cell::BLANK);
         }
+        let mut complete = true;
         if next.width > 0 {
             let rows = self.shown.cells.chunks_exact_mut(next.width).zip(next.rows());
             for (row, (shown, wanted)) in rows.enumerate() {
-                if shown != wanted {
-                    frame.draw_row_changes(row, shown, wanted);
+                if shown != wanted && !frame.draw_row_changes(row, shown, wanted, tolerance) {
+                    complete = false;
+                    break;
                 }
             }
         }
         frame.finish();
         self.valid = true;
+        complete
     }
 }
 
@@ -88,6 +118,9 @@ struct FrameWriter<'a> {
     cursor: Option<(usize, usize)>,
     started: bool,
     width: usize,
+    /// No cell is started once `out` is this long and one cell was drawn (so every frame makes progress).
+    end: usize,
+    drawn: bool,
 }
 
 impl FrameWriter<'_> {
@@ -105,22 +138,29 @@ impl FrameWriter<'_> {
         }
     }
 
-    /// Draws the cells of `wanted` that differ from `shown` (one row), updating `shown` to match.
-    fn draw_row_changes(&mut self, row: usize, shown: &mut [Cell], wanted: &[Cell]) {
+    /// Draws the cells of `wanted` that `tolerance` does not accept from `shown` (one row), updating `shown` to
+    /// what the row then shows.
+    /// Returns false if it stopped at the byte limit before the end of the row.
+    fn draw_row_changes(&mut self, row: usize, shown: &mut [Cell], wanted: &[Cell], tolerance: Tolerance) -> bool {
         self.begin();
-        for (col, (old, new)) in shown.iter_mut().zip(wanted).enumerate() {
-            if old != new {
-                self.go_to(row, col, wanted);
-                self.put(new);
-                *old = *new;
+        for col in 0..wanted.len() {
+            if !tolerance.accepts(&shown[col], &wanted[col]) {
+                if self.drawn && self.out.len() >= self.end {
+                    return false;
+                }
+                let cell = tolerance.cheaper(&wanted[col]);
+                self.go_to(row, col, shown, wanted);
+                self.put(&cell);
+                shown[col] = cell;
             }
         }
+        true
     }
 
-    /// Puts the cursor on `(row, col)` by the cheapest means, given that `cells` (the wanted row) is what the
-    /// row shows left of `col` wherever nothing was drawn yet.
+    /// Puts the cursor on `(row, col)` by the cheapest means. Cells left of `col` may be re-sent on the way
+    /// (from `wanted`, which `shown` then records).
     #[inline]
-    fn go_to(&mut self, row: usize, col: usize, cells: &[Cell]) {
+    fn go_to(&mut self, row: usize, col: usize, shown: &mut [Cell], wanted: &[Cell]) {
         let Some((at_row, at_col)) = self.cursor else {
             CursorMove::Position { row, col }.write(self.out);
             self.cursor = Some((row, col));
@@ -131,11 +171,12 @@ impl FrameWriter<'_> {
         }
         let jump = CursorMove::cheapest(self.cursor, row, col);
         if at_row == row && at_col < col {
-            let target = Pen::of(&cells[col]);
+            let target = Pen::of(&wanted[col]);
             let budget = jump.len() + sgr_change_len(self.pen, target);
-            if resend_cost(&cells[at_col..col], self.pen, target, budget).is_some() {
-                for cell in &cells[at_col..col] {
+            if resend_cost(&wanted[at_col..col], self.pen, target, budget).is_some() {
+                for (shown, cell) in shown[at_col..col].iter_mut().zip(&wanted[at_col..col]) {
                     self.put(cell);
+                    *shown = *cell;
                 }
                 return;
             }
@@ -149,6 +190,7 @@ impl FrameWriter<'_> {
     fn put(&mut self, cell: &Cell) {
         // One reservation per cell keeps the pushes below free of reallocation.
         self.out.reserve(MAX_SGR_LEN + 4);
+        self.drawn = true;
         let pen = Pen::of(cell);
         write_sgr_change(self.out, self.pen, pen);
         self.pen = pen;

@@ -22,6 +22,7 @@ pub mod palette;
 pub mod palette_lut;
 pub mod pixel_frame;
 mod sgr;
+pub mod tolerance;
 
 pub use cell::Cell;
 pub use cell_grid::CellGrid;
@@ -31,3 +32,4 @@ pub use color_mode::{ColorMode, TermEnv};
 pub use encoder::Encoder;
 pub use naive_frame::naive_full_frame;
 pub use pixel_frame::PixelFrame;
+pub use tolerance::Tolerance;

@@ -76,6 +76,8 @@ pub fn action_for(input: &Input) -> Option<Action> {
             MouseKind::Release => Action::DragEnd,
             MouseKind::Drag => Action::DragTo(column, row),
         }),
+        // The frame writer's business, not the user's.
+        Input::StatusOk => None,
     }
 }
 

@@ -4,6 +4,12 @@
 //! that is still waiting is replaced by the newer one, so a slow link never builds a queue of stale frames. The
 //! encoder lives here, so a dropped grid is never encoded and every delta is against what was really sent.
 //!
+//! On a slow link the writer paces itself by the terminal's answers ([`LinkMeter`]): at most a few frames in
+//! flight, and a moving frame made to fit the link's share of a frame time by leaving cells that look nearly
+//! right as they are ([`Tolerance`], the smallest of [`TOLERANCES`] that fits). Once no new frame has come for
+//! [`REFINE_AFTER`], the writer sends the exact cells, from the top, in steps of the same size until the picture
+//! is exact.
+//!
 //! Writing goes through the terminal's non-blocking handle ([`write_while`]), so a frame stuck on a slow link
 //! never holds the viewer: asked to finish, the writer completes the frame it is writing if it can by the
 //! deadline, and otherwise leaves it.
@@ -13,8 +19,15 @@ use std::sync::{Arc, Condvar, Mutex, MutexGuard, PoisonError};
 use std::thread;
 use std::time::{Duration, Instant};
 
+use super::link_meter::{LinkMeter, STATUS_REQUEST};
 use super::tty::write_while;
-use crate::screen::{CellGrid, Encoder};
+use crate::screen::{CellGrid, Encoder, Tolerance};
+
+/// The tolerances (Oklab ΔE) a moving frame may be sent with, tried in order until one fits the budget; the
+/// bytes each gives on a turntable are in docs/terminal.md.
+pub const TOLERANCES: [f32; 10] = [0.0, 0.01, 0.02, 0.035, 0.05, 0.08, 0.12, 0.2, 0.3, 0.5];
+/// How long no new frame must come before an inexact picture is made exact.
+pub const REFINE_AFTER: Duration = Duration::from_millis(100);
 
 /// What the writer last did, for the viewer's HUD.
 #[derive(Clone, Copy, Debug, Default)]
@@ -27,6 +40,10 @@ pub struct WriterStats {
     pub frames: u64,
     /// Frames replaced by a newer one before they were written.
     pub dropped: u64,
+    /// The tolerance the last frame was sent with (0: exact).
+    pub tolerance: f32,
+    /// The link's rate in bytes per second, once the terminal's answers have measured it.
+    pub link_rate: Option<f64>,
 }
 
 #[derive(Default)]
@@ -36,6 +53,8 @@ struct Mailbox {
     invalidate: bool,
     /// Asked to stop: write nothing new, and stop writing the current frame at this instant.
     quit_at: Option<Instant>,
+    /// When the terminal's answers to status requests arrived, not yet given to the meter.
+    answers: Vec<Instant>,
     /// Writing failed (the terminal went away); the thread has stopped.
     failed: bool,
     /// The thread has ended.
@@ -80,6 +99,12 @@ impl FrameWriter {
         self.shared.1.notify_all();
     }
 
+    /// Records the terminal's answer to a status request, which arrived at `at`.
+    pub fn answered(&self, at: Instant) {
+        lock(&self.shared).answers.push(at);
+        self.shared.1.notify_all();
+    }
+
     /// Makes the next frame a full redraw.
     pub fn invalidate(&self) {
         lock(&self.shared).invalidate = true;
@@ -110,36 +135,58 @@ impl FrameWriter {
     }
 }
 
+/// What the writer does next.
+enum Job {
+    /// A new frame, and whether it must be a full redraw.
+    Frame(CellGrid, bool),
+    /// A step towards the exact picture of the last frame: exact cells, as many as the budget takes.
+    Refine,
+    /// A bare status request, to measure the round trip.
+    Probe,
+}
+
+/// The writer's state between jobs.
+struct Writer {
+    encoder: Encoder,
+    /// Where tolerances are tried.
+    trial: Encoder,
+    meter: LinkMeter,
+    /// The last frame, while the terminal shows it inexactly.
+    inexact: Option<CellGrid>,
+    /// When the last new frame came.
+    last_frame: Instant,
+    bytes: Vec<u8>,
+}
+
 fn write_loop(out: &File, shared: &Shared) {
-    let mut encoder = Encoder::new();
-    let mut bytes = Vec::new();
-    loop {
-        let (grid, invalidate) = {
-            let mut mailbox = lock(shared);
-            while mailbox.pending.is_none() && mailbox.quit_at.is_none() {
-                mailbox = shared.1.wait(mailbox).unwrap_or_else(PoisonError::into_inner);
-            }
-            if mailbox.quit_at.is_some() {
-                return;
-            }
-            let Some(grid) = mailbox.pending.take() else { return };
-            (grid, std::mem::take(&mut mailbox.invalidate))
-        };
-        if invalidate {
-            encoder.invalidate();
-        }
-        bytes.clear();
+    let mut writer = Writer {
+        encoder: Encoder::new(),
+        trial: Encoder::new(),
+        meter: LinkMeter::new(),
+        inexact: None,
+        last_frame: Instant::now(),
+        bytes: Vec::new(),
+    };
+    while let Some(job) = writer.next_job(shared) {
         let start = Instant::now();
-        encoder.encode(&grid, &mut bytes);
+        let tolerance = writer.encode(job);
         let encode_time = start.elapsed();
+        if writer.bytes.is_empty() {
+            continue;
+        }
         let go_on = || lock(shared).quit_at.is_none_or(|at| Instant::now() < at);
-        let result = write_while(out, &bytes, go_on);
+        let result = write_while(out, &writer.bytes, go_on);
+        writer.meter.written(writer.bytes.len(), Instant::now());
         let mut mailbox = lock(shared);
         match result {
-            Ok(n) if n == bytes.len() => {
-                mailbox.stats.bytes = bytes.len();
-                mailbox.stats.encode_time = encode_time;
-                mailbox.stats.frames += 1;
+            Ok(n) if n == writer.bytes.len() => {
+                if let Some(tolerance) = tolerance {
+                    mailbox.stats.bytes = writer.bytes.len();
+                    mailbox.stats.encode_time = encode_time;
+                    mailbox.stats.frames += 1;
+                    mailbox.stats.tolerance = tolerance.delta_e();
+                }
+                mailbox.stats.link_rate = writer.meter.rate();
             }
             // Left unfinished: the viewer is stopping.
             Ok(_) => return,
@@ -148,5 +195,106 @@ fn write_loop(out: &File, shared: &Shared) {
                 return;
             }
         }
+    }
+}
+
+impl Writer {
+    /// Waits for the next job: a new frame or a refinement step when the meter lets a write go, or a probe;
+    /// `None` when asked to stop.
+    fn next_job(&mut self, shared: &Shared) -> Option<Job> {
+        let mut mailbox = lock(shared);
+        loop {
+            if mailbox.quit_at.is_some() {
+                return None;
+            }
+            for at in mailbox.answers.drain(..) {
+                self.meter.answered(at);
+            }
+            let now = Instant::now();
+            self.meter.expire(now);
+            if self.meter.may_write() {
+                if let Some(grid) = mailbox.pending.take() {
+                    return Some(Job::Frame(grid, std::mem::take(&mut mailbox.invalidate)));
+                }
+                if self.inexact.is_some() && now >= self.last_frame + REFINE_AFTER {
+                    return Some(Job::Refine);
+                }
+                if self.meter.wants_probe() {
+                    return Some(Job::Probe);
+                }
+            }
+            let refine_at = self.inexact.as_ref().map(|_| self.last_frame + REFINE_AFTER);
+            let wake = [refine_at, self.meter.next_expiry()].into_iter().flatten().min();
+            mailbox = match wake {
+                Some(at) => {
+                    let wait = at.saturating_duration_since(now).max(Duration::from_millis(1));
+                    shared.1.wait_timeout(mailbox, wait).unwrap_or_else(PoisonError::into_inner).0
+                }
+                None => shared.1.wait(mailbox).unwrap_or_else(PoisonError::into_inner),
+            };
+        }
+    }
+
+    /// Encodes `job` into `self.bytes` (empty when nothing changed), followed by a status request; returns the
+    /// tolerance a frame or refinement step was sent with.
+    fn encode(&mut self, job: Job) -> Option<Tolerance> {
+        self.bytes.clear();
+        let tolerance = match job {
+            Job::Probe => None,
+            Job::Frame(grid, invalidate) => {
+                if invalidate {
+                    self.encoder.invalidate();
+                }
+                self.last_frame = Instant::now();
+                let tolerance = self.encode_within_budget(&grid);
+                self.inexact = (tolerance != Tolerance::EXACT).then_some(grid);
+                Some(tolerance)
+            }
+            Job::Refine => {
+                // Exact cells, from the top, as many as the budget takes: each cell is sent once more at most.
+                let grid = self.inexact.take()?;
+                let limit = self.meter.budget().unwrap_or(usize::MAX);
+                if !self.encoder.encode_limited(&grid, limit, &mut self.bytes) {
+                    self.inexact = Some(grid);
+                }
+                Some(Tolerance::EXACT)
+            }
+        };
+        if !self.bytes.is_empty() || tolerance.is_none() {
+            self.bytes.extend_from_slice(STATUS_REQUEST);
+        }
+        tolerance
+    }
+
+    /// Encodes `grid` with the smallest of [`TOLERANCES`] whose bytes fit the meter's budget (the largest that
+    /// still sends something if none does); exactly when there is no budget.
+    fn encode_within_budget(&mut self, grid: &CellGrid) -> Tolerance {
+        let Some(budget) = self.meter.budget() else {
+            self.encoder.encode(grid, &mut self.bytes);
+            return Tolerance::EXACT;
+        };
+        let mut chosen = Tolerance::EXACT;
+        for delta_e in TOLERANCES {
+            let tolerance = Tolerance::new(delta_e);
+            self.try_encode(grid, tolerance);
+            if self.bytes.is_empty() && tolerance != Tolerance::EXACT {
+                // All that is left is within this tolerance: the step before, over the budget, is the one to take.
+                self.try_encode(grid, chosen);
+                break;
+            }
+            chosen = tolerance;
+            if self.bytes.len() <= budget {
+                break;
+            }
+        }
+        std::mem::swap(&mut self.encoder, &mut self.trial);
+        chosen
+    }
+
+    /// Encodes `grid` with `tolerance` into `self.bytes` on a copy of the encoder (`self.trial`).
+    fn try_encode(&mut self, grid: &CellGrid, tolerance: Tolerance) {
+        self.trial.clone_from(&self.encoder);
+        self.bytes.clear();
+        self.trial.encode_within(grid, tolerance, &mut self.bytes);
     }
 }

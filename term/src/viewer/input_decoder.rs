@@ -65,6 +65,9 @@ pub enum Input {
         /// Row, 0 at the top.
         row: u16,
     },
+    /// The terminal's answer to a status request (`ESC [ 0 n` after `ESC [ 5 n`): it has shown everything written
+    /// before the request.
+    StatusOk,
 }
 
 /// Turns input bytes, in pieces of any size, into [`Input`]s.
@@ -181,6 +184,9 @@ fn decode_csi(bytes: &[u8]) -> Step {
     if let Some(sgr) = params.strip_prefix(b"<") {
         return mouse(sgr, last).map_or(Step::Skip(used), |input| Step::Event(input, used));
     }
+    if (params, last) == (&b"0"[..], b'n') {
+        return Step::Event(Input::StatusOk, used);
+    }
     match cursor_key(last) {
         Some(key) => Step::Event(Input::Key(key), used),
         None => Step::Skip(used),
@@ -274,6 +280,13 @@ mod tests {
                 mouse(MouseKind::ScrollDown, 1, 2),
             ]
         );
+    }
+
+    #[test]
+    fn the_status_answer_is_an_event_and_other_reports_are_not() {
+        let (events, waiting) = decoded(&[b"\x1b[0n", b"\x1b[3n\x1b[12;40Rq\x1b[", b"0n"]);
+        assert_eq!(events, [Input::StatusOk, key(Key::Char('q')), Input::StatusOk]);
+        assert!(!waiting);
     }
 
     #[test]

@@ -12,14 +12,16 @@
 mod controls;
 mod frame_writer;
 mod input_decoder;
+mod link_meter;
 mod overlay;
 mod state;
 mod terminal_session;
 mod tty;
 
 pub use controls::{Action, HELP, action_for};
-pub use frame_writer::{FrameWriter, WriterStats};
+pub use frame_writer::{FrameWriter, REFINE_AFTER, TOLERANCES, WriterStats};
 pub use input_decoder::{ESCAPE_WAIT, Input, InputDecoder, Key, MouseKind};
+pub use link_meter::LinkMeter;
 pub use state::{Effect, ViewerCamera, ViewerState};
 pub use terminal_session::{TerminalSession, restore};
 pub use tty::{Gone, Tty, Woken, write_until, write_while};
@@ -320,7 +322,12 @@ impl Viewer {
                 actions.push(Action::Resize(cols, rows));
             }
             // Everything that arrived together makes one frame: a burst of resizes or key repeats.
-            actions.extend(inputs.drain(..).filter_map(|input| action_for(&input)));
+            for input in inputs.drain(..) {
+                if input == Input::StatusOk {
+                    writer.answered(Instant::now());
+                }
+                actions.extend(action_for(&input));
+            }
             for action in actions.drain(..) {
                 if let Action::Resize(cols, rows) = action {
                     self.size = (cols, rows);
@@ -406,6 +413,10 @@ impl Viewer {
                 written.encode_time.as_secs_f64() * 1e3
             ),
             format!("{} bytes last frame   {} frames sent, {} dropped", written.bytes, written.frames, written.dropped),
+            match written.link_rate {
+                Some(rate) => format!("link {:.0} KB/s   last frame within ΔE {:.3}", rate / 1e3, written.tolerance),
+                None => "link: fast or not measured (every frame exact)".to_owned(),
+            },
             format!(
                 "triangles {} in, {} drawn, {} culled, {} clipped",
                 s.triangles_in, s.rasterized, s.culled, s.clipped
