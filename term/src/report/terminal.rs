@@ -174,7 +174,7 @@ fn mean(values: &[usize]) -> f64 {
 }
 
 /// The turntable frames of one terminal size and colour mode, as the viewer would make them.
-struct Turntable<'a> {
+pub(super) struct Turntable<'a> {
     scene: &'a Scene,
     camera: OrbitCamera,
     appearance: Appearance,
@@ -190,13 +190,18 @@ struct Turntable<'a> {
 
 impl<'a> Turntable<'a> {
     /// `frames` frames per turn at `cols` x `rows` cells.
-    fn new(scene: &'a Scene, (cols, rows): (u16, u16), colors: ColorMode, frames: usize) -> Self {
+    fn new(scene: &'a Scene, size: (u16, u16), colors: ColorMode, frames: usize) -> Self {
+        Self::with_step(scene, size, colors, std::f32::consts::TAU / frames.max(1) as f32)
+    }
+
+    /// Frames `step` radians apart at `cols` x `rows` cells.
+    pub(super) fn with_step(scene: &'a Scene, (cols, rows): (u16, u16), colors: ColorMode, step: f32) -> Self {
         let (width, height) = CellMode::HalfBlock.pixel_size(usize::from(cols), usize::from(rows));
         Self {
             scene,
             camera: OrbitCamera::default(),
             appearance: Appearance::default(),
-            step: std::f32::consts::TAU / frames.max(1) as f32,
+            step,
             colors,
             width,
             height,
@@ -208,7 +213,7 @@ impl<'a> Turntable<'a> {
     }
 
     /// Renders the current view into cells, then turns the camera one step; returns the cells and the render time.
-    fn next_frame(&mut self) -> Result<(CellGrid, Duration), ReportError> {
+    pub(super) fn next_frame(&mut self) -> Result<(CellGrid, Duration), ReportError> {
         let too_big = |e: rasterm_core::target::TargetError| ReportError::Setup(e.to_string());
         let mut target =
             Target::new(Rgb888(&mut self.pixels), &mut self.depth[..], self.width as u32, self.height as u32)
@@ -347,6 +352,9 @@ pub fn run(report: &TerminalReport, out: &mut dyn Write) -> Result<Vec<Measureme
         encode.iter().filter(|&&ok| ok).count(),
         encode.len()
     )?;
+    let key_presses = if report.quick { 6 } else { 36 };
+    let rows = super::moving_frames::measure(&scene, report.frames, key_presses)?;
+    super::moving_frames::write_table(out, &rows, report.frames, key_presses)?;
     Ok(results)
 }
 
