@@ -128,6 +128,10 @@ struct ViewerArgs {
     /// Height of a terminal cell divided by its width.
     #[arg(long, default_value_t = 2.0, allow_negative_numbers = true, value_parser = parse_cell_aspect)]
     cell_aspect: f32,
+    /// Write every frame exact, as fast as the terminal takes it: no status requests, and no moving picture sent
+    /// within a colour tolerance on a slow link.
+    #[arg(long)]
+    no_pacing: bool,
 }
 
 /// Options of `rasterm render`.
@@ -546,6 +550,7 @@ fn view(args: &ViewerArgs, matches: &ArgMatches) -> Result<ExitCode, String> {
         cell_mode: args.mode,
         color: args.color,
         cell_aspect: args.cell_aspect,
+        pacing: !args.no_pacing,
     };
     match rasterm::viewer::run(&options).map_err(|e| e.to_string())? {
         // Killed by a signal: exit as the shell expects, 128 + the signal number.

@@ -10,12 +10,14 @@
 //!   pane, timestamped as it arrives, so a frame is complete on the client's screen when its closing
 //!   synchronized-output mark (`ESC [?2026l`) arrives.
 //!
-//! It prints what it measures (run it with `--nocapture`; the figures are in docs/terminal.md): time to the first
-//! picture, key-to-first-change, key-to-complete-frame and key-to-last-frame latencies, turntable frames per
-//! second and bytes per second, bytes while idle, and how long the remote viewer takes to end once the client is
-//! killed. It asserts behaviour only, never timings: nothing sent while idle, the picture at rest after the keys
-//! is exact (the same as the viewer's own without SSH, which the writer may approximate while the picture moves),
-//! `q` ends with status 0 and gives the terminal back, and a dropped connection ends the remote viewer.
+//! It runs two sessions of the viewer as it is and two with `--no-pacing` (every frame exact, written as fast as
+//! the terminal takes it), taking turns, and prints what it measures side by side (run it with `--nocapture`; the
+//! figures are in docs/terminal.md): time to the first picture, key-to-first-change, key-to-complete-frame and
+//! key-to-last-frame latencies, bytes per key, turntable frames per second and bytes per second; then how long
+//! the remote viewer takes to end once the client is killed. It asserts behaviour only, never timings: nothing
+//! sent while idle, the picture at rest after the keys is exact (the same as the viewer's own without SSH, which
+//! the writer may approximate while the picture moves), `q` ends with status 0 and gives the terminal back, and
+//! a dropped connection ends the remote viewer.
 //!
 //! sshd, ssh and tmux are required in CI (`CI` set): there, without them this test fails. Elsewhere a machine
 //! without them skips it with a notice.
@@ -55,6 +57,8 @@ const ROWS: u16 = 40;
 const QUIET: Duration = Duration::from_millis(600);
 /// The longest any one wait may take before the test fails.
 const TIMEOUT: Duration = Duration::from_secs(20);
+/// Sessions of each writer (paced and `--no-pacing`), taking turns.
+const ROUNDS: usize = 2;
 /// The keys pressed, one at a time, each once the screen is quiet.
 const KEYS: [&str; 8] = ["Right", "Right", "Up", "Left", "Down", "Right", "Up", "Left"];
 /// How long the idle viewer is watched for bytes.
@@ -477,14 +481,16 @@ struct Session {
 }
 
 impl Session {
-    fn start(test: &str, server: &SshServer, relay: &Relay) -> Self {
+    /// Starts the client; the remote viewer runs with `--no-pacing` unless `pacing`.
+    fn start(test: &str, server: &SshServer, relay: &Relay, pacing: bool) -> Self {
         let dir = tempfile::tempdir().expect("temporary directory");
         let remote_pid_file = dir.path().join("viewer.pid");
         // The remote shell records the viewer's process id (`exec` keeps it), so the test can watch it.
         let remote = format!(
-            "echo $$ > {}; exec {} --color truecolor",
+            "echo $$ > {}; exec {} --color truecolor{}",
             shell_quote(&remote_pid_file),
-            shell_quote(Path::new(env!("CARGO_BIN_EXE_rasterm")))
+            shell_quote(Path::new(env!("CARGO_BIN_EXE_rasterm"))),
+            if pacing { "" } else { " --no-pacing" }
         );
         let args = server.client_args(relay.port, &remote);
         let args: Vec<&OsStr> = args.iter().map(OsStr::new).collect();
@@ -518,78 +524,54 @@ fn exact_screen_after(keys: &[&str]) -> String {
     tmux.wait_for_picture()
 }
 
-fn ms(d: Duration) -> f64 {
-    d.as_secs_f64() * 1e3
+/// What one session measured.
+struct Figures {
+    first_picture: Duration,
+    first_change: Vec<Duration>,
+    complete: Vec<Duration>,
+    last_frame: Vec<Duration>,
+    key_bytes: Vec<usize>,
+    first_frame_bytes: Vec<usize>,
+    turntable_fps: f64,
+    screen_bytes_per_second: f64,
+    link_down_per_second: f64,
+    link_up_per_second: f64,
 }
 
-/// Median and largest of `values`, in milliseconds.
-fn median_max(values: &[Duration]) -> String {
-    let mut sorted = values.to_vec();
-    sorted.sort();
-    let median = sorted[sorted.len() / 2];
-    format!("median {:.0} ms, max {:.0} ms", ms(median), ms(*sorted.last().unwrap_or(&Duration::ZERO)))
-}
-
-#[test]
-fn the_viewer_over_a_slow_ssh_link() {
-    if !ssh_wanted() {
-        return;
-    }
-    let server = SshServer::start();
-    let relay = Relay::start(server.address);
-    let mut report = vec![format!(
-        "viewer over SSH, {COLUMNS}x{ROWS} cells, half-block truecolor; link {} Mbit/s and {} ms each way",
-        RATE_BYTES_PER_SECOND * 8.0 / 1e6,
-        DELAY.as_millis()
-    )];
-
-    let session = Session::start("ssh", &server, &relay);
+/// One session through the link: the first picture, idle, [`KEYS`], the picture at rest compared with
+/// `reference`, the turntable, `q`. Asserts the behaviour; returns the timings.
+fn session(test: &str, server: &SshServer, relay: &Relay, pacing: bool, reference: &str) -> Figures {
+    let session = Session::start(test, server, relay, pacing);
     let (tmux, stream) = (&session.tmux, &session.stream);
     stream.wait_until_quiet(session.started, "the first picture");
-    let first = stream.with(|r| r.frame_ends()[0]) - session.started;
+    let first_picture = stream.with(|r| r.frame_ends()[0]) - session.started;
     let screen = tmux.screen();
     assert!(screen.contains('▀'), "no picture on the client's screen:\n{screen}\nsshd: {}", server.log());
-    report.push(format!("first picture: {:.0} ms after the client started (login included)", ms(first)));
 
     // Idle: nothing at all on the link.
     let idle_from = Instant::now();
     thread::sleep(IDLE_WATCH);
     let (down, up) = relay.bytes(idle_from, Instant::now());
-    report.push(format!("idle for {} s: {down} bytes down, {up} bytes up", IDLE_WATCH.as_secs()));
-    assert_eq!(down, 0, "the idle viewer sent {down} bytes in {IDLE_WATCH:?}");
+    assert_eq!((down, up), (0, 0), "the idle viewer's link carried bytes (down, up) in {IDLE_WATCH:?}");
 
-    let (mut first_change, mut complete, mut last_frame, mut key_bytes) = (vec![], vec![], vec![], vec![]);
-    let mut first_frame_bytes = vec![];
+    let (mut first_change, mut complete, mut last_frame) = (vec![], vec![], vec![]);
+    let (mut key_bytes, mut first_frame_bytes) = (vec![], vec![]);
     for key in KEYS {
         let pressed = Instant::now();
         tmux.send_keys(key);
         stream.wait_until_quiet(pressed, &format!("the frame after {key}"));
-        let (change, ends, bytes, first_bytes) = stream.with(|r| {
+        stream.with(|r| {
             let ends: Vec<Instant> = r.frame_ends().into_iter().filter(|t| *t >= pressed).collect();
-            let first_bytes = r.bytes_between(pressed, ends[0] + Duration::from_nanos(1));
-            (r.first_arrival_since(pressed), ends, r.bytes_between(pressed, Instant::now()), first_bytes)
+            first_change.push(r.first_arrival_since(pressed).expect("a byte after the key") - pressed);
+            complete.push(ends[0] - pressed);
+            last_frame.push(*ends.last().unwrap_or(&ends[0]) - pressed);
+            key_bytes.push(r.bytes_between(pressed, Instant::now()));
+            first_frame_bytes.push(r.bytes_between(pressed, ends[0] + Duration::from_nanos(1)));
         });
-        first_frame_bytes.push(first_bytes);
-        first_change.push(change.expect("a byte after the key") - pressed);
-        complete.push(ends[0] - pressed);
-        last_frame.push(*ends.last().unwrap_or(&ends[0]) - pressed);
-        key_bytes.push(bytes);
     }
     // At rest the client's screen is exact: the same, cell for cell and colour for colour, as the viewer's own
     // screen after the same keys without SSH.
-    let reference = exact_screen_after(&KEYS);
     assert_eq!(tmux.screen_escaped(), reference, "the picture at rest over SSH differs from the exact one");
-    report.push("at rest after the keys: the client's screen equals the viewer's without SSH".to_owned());
-    key_bytes.sort_unstable();
-    first_frame_bytes.sort_unstable();
-    report.push(format!("key to first change: {} ({} keys)", median_max(&first_change), KEYS.len()));
-    report.push(format!("key to complete frame: {}", median_max(&complete)));
-    report.push(format!("key to last frame: {}", median_max(&last_frame)));
-    report.push(format!(
-        "bytes to the screen per key: median {} in all, {} up to the end of the first frame",
-        key_bytes[key_bytes.len() / 2],
-        first_frame_bytes[first_frame_bytes.len() / 2]
-    ));
 
     tmux.send_keys("Space");
     thread::sleep(TURNTABLE_WARM_UP);
@@ -602,15 +584,6 @@ fn the_viewer_over_a_slow_ssh_link() {
     });
     let (link_down, link_up) = relay.bytes(watch_from, watch_to);
     let seconds = (watch_to - watch_from).as_secs_f64();
-    report.push(format!(
-        "turntable: {:.1} frames/s on the client's screen; {:.0} bytes/s of frames, {:.0} bytes/s down and {:.0} up \
-         on the link (SSH included; the link carries {:.0})",
-        frames as f64 / seconds,
-        screen_bytes as f64 / seconds,
-        link_down as f64 / seconds,
-        link_up as f64 / seconds,
-        RATE_BYTES_PER_SECOND
-    ));
     let stopped = Instant::now();
     tmux.send_keys("Space");
     stream.wait_until_quiet(stopped, "the turntable to stop");
@@ -621,11 +594,90 @@ fn the_viewer_over_a_slow_ssh_link() {
     assert_eq!(status, 0, "ssh (the remote viewer) exited with {status} after q");
     tmux.assert_restored(tty_same);
     tmux.wait_for("the remote viewer to end after q", || process_gone(viewer).then_some(()));
-    report.push("q: the remote viewer exited with status 0 and the terminal was given back".to_owned());
-    drop(session);
+    Figures {
+        first_picture,
+        first_change,
+        complete,
+        last_frame,
+        key_bytes,
+        first_frame_bytes,
+        turntable_fps: frames as f64 / seconds,
+        screen_bytes_per_second: screen_bytes as f64 / seconds,
+        link_down_per_second: link_down as f64 / seconds,
+        link_up_per_second: link_up as f64 / seconds,
+    }
+}
+
+fn median<T: Copy + PartialOrd>(values: &[T]) -> T {
+    let mut sorted = values.to_vec();
+    sorted.sort_by(|a, b| a.partial_cmp(b).unwrap_or(std::cmp::Ordering::Equal));
+    sorted[sorted.len() / 2]
+}
+
+/// One line of the comparison: each session's figure, the medians' ratio and how many pairs agree that the paced
+/// writer is better (`lower`: a smaller figure is better).
+fn compare(what: &str, runs: &[(bool, f64)], lower: bool, unit: &str) -> String {
+    let of = |pacing: bool| runs.iter().filter(|r| r.0 == pacing).map(|r| r.1).collect::<Vec<f64>>();
+    let (paced, unpaced) = (of(true), of(false));
+    let better = paced.iter().zip(&unpaced).filter(|(p, u)| if lower { p < u } else { p > u }).count();
+    let list = |v: &[f64]| v.iter().map(|x| format!("{x:.1}")).collect::<Vec<_>>().join(", ");
+    format!(
+        "| {what} | {} {unit} | {} {unit} | {:.2} | {better} of {} |",
+        list(&paced),
+        list(&unpaced),
+        median(&unpaced) / median(&paced),
+        paced.len().min(unpaced.len())
+    )
+}
+
+#[test]
+fn the_viewer_over_a_slow_ssh_link() {
+    if !ssh_wanted() {
+        return;
+    }
+    let server = SshServer::start();
+    let relay = Relay::start(server.address);
+    let reference = exact_screen_after(&KEYS);
+
+    // The link-aware writer and the writer without pacing (`--no-pacing`), taking turns.
+    let mut runs = Vec::new();
+    for round in 0..ROUNDS {
+        for pacing in [true, false] {
+            let name = format!("ssh-{}-{round}", if pacing { "paced" } else { "unpaced" });
+            runs.push((pacing, session(&name, &server, &relay, pacing, &reference)));
+        }
+    }
+    let figure = |f: &dyn Fn(&Figures) -> f64| runs.iter().map(|(p, r)| (*p, f(r))).collect::<Vec<_>>();
+    let ms = |d: Duration| d.as_secs_f64() * 1e3;
+    let mut report = vec![
+        format!(
+            "viewer over SSH, {COLUMNS}x{ROWS} cells, half-block truecolor; link {} Mbit/s and {} ms each way; {ROUNDS} \
+             sessions of each writer, taking turns; key figures are medians over {} keys",
+            RATE_BYTES_PER_SECOND * 8.0 / 1e6,
+            DELAY.as_millis(),
+            KEYS.len()
+        ),
+        String::new(),
+        "| figure | paced (each session) | --no-pacing (each session) | no-pacing / paced | pairs where paced is better |"
+            .to_owned(),
+        "|---|---:|---:|---:|---:|".to_owned(),
+        compare("first picture (login included)", &figure(&|f| ms(f.first_picture)), true, "ms"),
+        compare("key to first change", &figure(&|f| ms(median(&f.first_change))), true, "ms"),
+        compare("key to complete frame", &figure(&|f| ms(median(&f.complete))), true, "ms"),
+        compare("key to complete frame, max", &figure(&|f| ms(*f.complete.iter().max().unwrap())), true, "ms"),
+        compare("key to last frame (exact)", &figure(&|f| ms(median(&f.last_frame))), true, "ms"),
+        compare("bytes per key", &figure(&|f| median(&f.key_bytes) as f64), true, "B"),
+        compare("bytes to the end of the first frame", &figure(&|f| median(&f.first_frame_bytes) as f64), true, "B"),
+        compare("turntable frames/s on the client", &figure(&|f| f.turntable_fps), false, ""),
+        compare("turntable bytes/s of frames", &figure(&|f| f.screen_bytes_per_second), true, "B/s"),
+        compare("turntable bytes/s on the link, down", &figure(&|f| f.link_down_per_second), true, "B/s"),
+        compare("turntable bytes/s on the link, up", &figure(&|f| f.link_up_per_second), true, "B/s"),
+        String::new(),
+        "every session: 0 bytes while idle, the picture at rest exact, q exits 0 and gives the terminal back".to_owned(),
+    ];
 
     // A dropped connection, while the turntable fills the link: the client is killed; the remote viewer must end.
-    let session = Session::start("ssh-drop", &server, &relay);
+    let session = Session::start("ssh-drop", &server, &relay, true);
     session.stream.wait_until_quiet(session.started, "the first picture");
     let viewer = session.remote_viewer_pid();
     session.tmux.send_keys("Space");

@@ -74,12 +74,13 @@ pub struct FrameWriter {
 }
 
 impl FrameWriter {
-    /// Starts the writer thread, writing to `out`, a non-blocking handle to the terminal.
-    pub fn start(out: File) -> Self {
+    /// Starts the writer thread, writing to `out`, a non-blocking handle to the terminal; `pacing` off, every
+    /// frame is exact and no status request is sent.
+    pub fn start(out: File, pacing: bool) -> Self {
         let shared = Arc::new((Mutex::new(Mailbox::default()), Condvar::new()));
         let thread_shared = Arc::clone(&shared);
         let spawned = thread::Builder::new().name("rasterm-writer".into()).spawn(move || {
-            write_loop(&out, &thread_shared);
+            write_loop(&out, &thread_shared, pacing);
             lock(&thread_shared).done = true;
             thread_shared.1.notify_all();
         });
@@ -156,9 +157,11 @@ struct Writer {
     /// When the last new frame came.
     last_frame: Instant,
     bytes: Vec<u8>,
+    /// Status requests and tolerances on; off, the meter never hears of a write and every frame is exact.
+    pacing: bool,
 }
 
-fn write_loop(out: &File, shared: &Shared) {
+fn write_loop(out: &File, shared: &Shared, pacing: bool) {
     let mut writer = Writer {
         encoder: Encoder::new(),
         trial: Encoder::new(),
@@ -166,6 +169,7 @@ fn write_loop(out: &File, shared: &Shared) {
         inexact: None,
         last_frame: Instant::now(),
         bytes: Vec::new(),
+        pacing,
     };
     while let Some(job) = writer.next_job(shared) {
         let start = Instant::now();
@@ -176,7 +180,9 @@ fn write_loop(out: &File, shared: &Shared) {
         }
         let go_on = || lock(shared).quit_at.is_none_or(|at| Instant::now() < at);
         let result = write_while(out, &writer.bytes, go_on);
-        writer.meter.written(writer.bytes.len(), Instant::now());
+        if writer.pacing {
+            writer.meter.written(writer.bytes.len(), Instant::now());
+        }
         let mut mailbox = lock(shared);
         match result {
             Ok(n) if n == writer.bytes.len() => {
@@ -260,7 +266,7 @@ impl Writer {
                 Some(Tolerance::EXACT)
             }
         };
-        if !self.bytes.is_empty() || tolerance.is_none() {
+        if self.pacing && (!self.bytes.is_empty() || tolerance.is_none()) {
             self.bytes.extend_from_slice(STATUS_REQUEST);
         }
         tolerance

@@ -21,7 +21,7 @@ mod tty;
 pub use controls::{Action, HELP, action_for};
 pub use frame_writer::{FrameWriter, REFINE_AFTER, TOLERANCES, WriterStats};
 pub use input_decoder::{ESCAPE_WAIT, Input, InputDecoder, Key, MouseKind};
-pub use link_meter::LinkMeter;
+pub use link_meter::{ANSWER_TIMEOUT, FRAME_LINK_TIME, LinkMeter, MAX_IN_FLIGHT, MIN_LINK_TIME, STATUS_REQUEST};
 pub use state::{Effect, ViewerCamera, ViewerState};
 pub use terminal_session::{TerminalSession, restore};
 pub use tty::{Gone, Tty, Woken, write_until, write_while};
@@ -101,6 +101,9 @@ pub struct ViewerOptions {
     pub color: ColorChoice,
     /// Cell height over cell width.
     pub cell_aspect: f32,
+    /// Pace the writer by the terminal's answers and send a moving picture within a tolerance on a slow link
+    /// ([`FrameWriter`]); off, every frame is exact and written as fast as the terminal takes it.
+    pub pacing: bool,
 }
 
 /// Why the viewer stopped with an error.
@@ -174,7 +177,7 @@ pub fn run(options: &ViewerOptions) -> Result<ViewerExit, ViewerError> {
         ColorChoice::Fixed(mode) => mode,
     };
     let session = TerminalSession::enter().map_err(terminal_error)?;
-    let writer = FrameWriter::start(session.tty.output_clone().map_err(terminal_error)?);
+    let writer = FrameWriter::start(session.tty.output_clone().map_err(terminal_error)?, options.pacing);
     let mut viewer = Viewer {
         content,
         name,
