@@ -205,6 +205,16 @@ fn closing_a_turning_viewers_terminal_ends_it_within_a_second() {
     closing_the_terminal_ends_the_viewer(true);
 }
 
+/// Sends SIGTERM and checks that the viewer ends by itself (status 128 + 15, not killed) within [`END_WITHIN`].
+fn terminate_within_a_second(viewer: &mut Viewer) {
+    let sent = Instant::now();
+    viewer.signal("-TERM");
+    let (status, took) = viewer.wait_for_end(sent);
+    eprintln!("ended {took:?} after SIGTERM, {status}");
+    assert!(took < END_WITHIN, "took {took:?} to end after SIGTERM");
+    assert_eq!(status.code(), Some(128 + 15), "ended by itself, not killed: {status}");
+}
+
 #[test]
 fn sigterm_ends_the_viewer_within_a_second_and_restores_the_terminal() {
     let Pty { master, slave } = Pty::open(100, 30);
@@ -213,12 +223,7 @@ fn sigterm_ends_the_viewer_within_a_second_and_restores_the_terminal() {
     let screen = Screen::start(master);
     screen.wait_for_picture();
     assert!(!tcgetattr(&slave).unwrap().local_modes.contains(LocalModes::ICANON), "the viewer sets raw mode");
-    let sent = Instant::now();
-    viewer.signal("-TERM");
-    let (status, took) = viewer.wait_for_end(sent);
-    eprintln!("ended {took:?} after SIGTERM, {status}");
-    assert!(took < END_WITHIN, "took {took:?} to end after SIGTERM");
-    assert_eq!(status.code(), Some(128 + 15), "{status}");
+    terminate_within_a_second(&mut viewer);
     let after = tcgetattr(&slave).expect("tcgetattr");
     assert_eq!(after.local_modes, before.local_modes, "the terminal's local modes are restored");
     assert_eq!(after.input_modes, before.input_modes, "the terminal's input modes are restored");
@@ -242,12 +247,7 @@ fn sigterm_ends_a_viewer_whose_frame_cannot_be_written() {
     // Give it time to render and to get stuck writing.
     thread::sleep(Duration::from_millis(500));
     assert!(viewer.child.try_wait().unwrap().is_none(), "the viewer is running");
-    let sent = Instant::now();
-    viewer.signal("-TERM");
-    let (status, took) = viewer.wait_for_end(sent);
-    eprintln!("ended {took:?} after SIGTERM with its write stuck, {status}");
-    assert!(took < END_WITHIN, "took {took:?} to end after SIGTERM");
-    assert_eq!(status.code(), Some(128 + 15), "ended by itself, not killed: {status}");
+    terminate_within_a_second(&mut viewer);
     let after = tcgetattr(&slave).expect("tcgetattr");
     assert_eq!(after.local_modes, before.local_modes, "the terminal's local modes are restored");
     drop(master);

@@ -21,8 +21,8 @@ impl Tolerance {
     /// Only identical cells are alike.
     pub const EXACT: Tolerance = Tolerance(0.0);
 
-    /// A tolerance of `delta_e` (Oklab distance; 0.02 is about the smallest difference people notice between
-    /// two flat patches side by side). Negative or NaN is [`Self::EXACT`].
+    /// A tolerance of `delta_e` (Oklab distance; white to black is 1, one 8-bit step of a mid grey about
+    /// 0.0035). Negative or NaN is [`Self::EXACT`].
     pub fn new(delta_e: f32) -> Self {
         if delta_e > 0.0 { Self(delta_e) } else { Self::EXACT }
     }

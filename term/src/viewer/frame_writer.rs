@@ -140,8 +140,8 @@ impl FrameWriter {
 enum Job {
     /// A new frame, and whether it must be a full redraw.
     Frame(CellGrid, bool),
-    /// A step towards the exact picture of the last frame: exact cells, as many as the budget takes.
-    Refine,
+    /// A step towards the exact picture of the last frame (given): exact cells, as many as the budget takes.
+    Refine(CellGrid),
     /// A bare status request, to measure the round trip.
     Probe,
 }
@@ -222,8 +222,10 @@ impl Writer {
                 if let Some(grid) = mailbox.pending.take() {
                     return Some(Job::Frame(grid, std::mem::take(&mut mailbox.invalidate)));
                 }
-                if self.inexact.is_some() && now >= self.last_frame + REFINE_AFTER {
-                    return Some(Job::Refine);
+                if now >= self.last_frame + REFINE_AFTER
+                    && let Some(grid) = self.inexact.take()
+                {
+                    return Some(Job::Refine(grid));
                 }
                 if self.meter.wants_probe() {
                     return Some(Job::Probe);
@@ -256,9 +258,8 @@ impl Writer {
                 self.inexact = (tolerance != Tolerance::EXACT).then_some(grid);
                 Some(tolerance)
             }
-            Job::Refine => {
+            Job::Refine(grid) => {
                 // Exact cells, from the top, as many as the budget takes: each cell is sent once more at most.
-                let grid = self.inexact.take()?;
                 let limit = self.meter.budget().unwrap_or(usize::MAX);
                 if !self.encoder.encode_limited(&grid, limit, &mut self.bytes) {
                     self.inexact = Some(grid);

@@ -1,10 +1,10 @@
 //! How fast the link to the terminal really is, measured from the terminal's answers, and how many bytes a moving
 //! frame may therefore take.
 //!
-//! Writing to a terminal only shows how fast the local buffers fill: over SSH, the pty, sshd and TCP hold
-//! megabytes before a write waits. So each frame ends with a status request (`ESC [ 5 n`, ECMA-48 DSR), which the
-//! terminal answers (`ESC [ 0 n`) once it has shown everything before it. From when each frame was written and
-//! when its answer came back the meter knows:
+//! Writing to a terminal only shows how fast the local buffers fill: over SSH, the pty, sshd and TCP buffer many
+//! frames before a write waits (OpenSSH's session channel window alone is 2 MB by default). So each frame ends
+//! with a status request (`ESC [ 5 n`, ECMA-48 DSR), which the terminal answers (`ESC [ 0 n`) once it has shown
+//! everything before it. From when each frame was written and when its answer came back the meter knows:
 //!
 //! - the round trip: the shortest time from a write to its answer (a bare request, sent once when nothing is in
 //!   flight, measures it cleanly);
