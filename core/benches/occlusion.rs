@@ -1,16 +1,16 @@
 //! Ambient occlusion benchmarks: [`AmbientOcclusion::apply`] on whole 800x800 frames rendered here first.
 //!
-//! Run with `cargo bench -p rasterm-core --bench occlusion`. Only the occlusion pass is timed: each iteration
+//! Run with `cargo bench -p rastty-core --bench occlusion`. Only the occlusion pass is timed: each iteration
 //! starts from a fresh copy of the rendered colour (the copy is not timed).
 
 use divan::{Bencher, black_box};
-use rasterm_core::camera::{look_at, perspective};
-use rasterm_core::effects::AmbientOcclusion;
-use rasterm_core::math::{Mat4, Vec3};
-use rasterm_core::mesh::{Indices, Mesh};
-use rasterm_core::pipeline::DrawState;
-use rasterm_core::shading::{Effects, Light, Lighting, Material, ShadingModel, Transforms, draw_mesh};
-use rasterm_core::target::{Rgb888, Target};
+use rastty_core::camera::{look_at, perspective};
+use rastty_core::effects::AmbientOcclusion;
+use rastty_core::math::{Mat4, Vec3};
+use rastty_core::mesh::{Indices, Mesh};
+use rastty_core::pipeline::DrawState;
+use rastty_core::shading::{Effects, Light, Lighting, Material, ShadingModel, Transforms, draw_mesh};
+use rastty_core::target::{Rgb888, Target};
 
 fn main() {
     divan::main();

@@ -1,18 +1,18 @@
 //! Rendering benchmarks: whole meshes at typical sizes, and large-triangle fill rate.
 //!
-//! Run with `cargo bench -p rasterm-core --bench render`. Meshes are generated here, so the figures need nothing
+//! Run with `cargo bench -p rastty-core --bench render`. Meshes are generated here, so the figures need nothing
 //! outside the repository.
 
 use divan::{Bencher, black_box};
-use rasterm_core::camera::{look_at, perspective};
-use rasterm_core::math::{Mat4, Vec2, Vec3};
-use rasterm_core::mesh::{Indices, Mesh};
-use rasterm_core::pipeline::DrawState;
-use rasterm_core::shading::{
+use rastty_core::camera::{look_at, perspective};
+use rastty_core::math::{Mat4, Vec2, Vec3};
+use rastty_core::mesh::{Indices, Mesh};
+use rastty_core::pipeline::DrawState;
+use rastty_core::shading::{
     Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh, draw_mesh_unspecialised,
 };
-use rasterm_core::target::{Rgb888, Target};
-use rasterm_core::texture::{FilterMode, Texture, WrapMode};
+use rastty_core::target::{Rgb888, Target};
+use rastty_core::texture::{FilterMode, Texture, WrapMode};
 
 fn main() {
     divan::main();
@@ -210,7 +210,7 @@ mod fill_rate {
 /// Texture sampling alone, 1024 samples along a diagonal.
 mod sampling {
     use super::*;
-    use rasterm_core::texture::{Bilinear, Nearest, Repeat};
+    use rastty_core::texture::{Bilinear, Nearest, Repeat};
 
     #[divan::bench]
     fn bilinear_repeat(bencher: Bencher) {
@@ -252,15 +252,15 @@ enum Maps {
 }
 
 fn surface(bencher: Bencher, maps: Maps) {
-    use rasterm_core::effects::{
+    use rastty_core::effects::{
         Bounds, LightSource, NormalMap, NormalSpace, SceneLights, ShadowBias, ShadowMap, ShadowView, SurfaceDraw,
         SurfaceMaterial, clear_shadow_depth, draw_shadow_caster, draw_surface,
     };
-    use rasterm_core::math::Vec4;
+    use rastty_core::math::Vec4;
     let sphere = Sphere::new(35, 36);
     let mesh = sphere.mesh();
     let mut tangents = vec![Vec4::ZERO; sphere.positions.len()];
-    rasterm_core::mesh::compute_tangents(&mesh, &mut tangents).unwrap();
+    rastty_core::mesh::compute_tangents(&mesh, &mut tangents).unwrap();
     let texels = checker(1024);
     let bumps: Vec<u32> = texels.iter().map(|t| if *t == 0xE0C090 { 0xA080F0 } else { 0x8080FF }).collect();
     let (diffuse, normal) = (Texture::new(&texels, 1024, 1024).unwrap(), Texture::new(&bumps, 1024, 1024).unwrap());

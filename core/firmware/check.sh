@@ -10,7 +10,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 firmware=$root/core/firmware
-elf=$firmware/target/thumbv7em-none-eabihf/release/rasterm-firmware
+elf=$firmware/target/thumbv7em-none-eabihf/release/rastty-firmware
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 
@@ -30,7 +30,7 @@ fi
 
 echo "check.sh: computing the host's checksums"
 status=0
-(cd "$root" && cargo test --locked -p rasterm-tests --test firmware_checksum \
+(cd "$root" && cargo test --locked -p rastty-tests --test firmware_checksum \
     the_firmware_scene_gives_two_distinct_checksums -- --exact --nocapture) \
     >"$out/host.txt" 2>&1 || status=$?
 if [ "$status" -ne 0 ]; then

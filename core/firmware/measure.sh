@@ -9,7 +9,7 @@
 # Usage: core/firmware/measure.sh [--no-build]
 set -euo pipefail
 cd "$(dirname "$0")"
-elf=target/thumbv7em-none-eabihf/release/rasterm-firmware
+elf=target/thumbv7em-none-eabihf/release/rastty-firmware
 if [ "${1:-}" != --no-build ]; then
     cargo build --release --locked
 fi
@@ -36,9 +36,9 @@ seq "$text_start" 2 $((text_start + text_size - 2)) | awk '{ printf "%x\n", $1 }
     arm-none-eabi-addr2line -a -i -e "$elf" | awk -F: '
     function crate(f) {
         if (f ~ /\/library\/core\//) return "Rust core library (formatting...)"
-        if (f ~ /\/core\/src\//) return "rasterm-core"
-        if (f ~ /\/firmware\/scene\//) return "rasterm-firmware-scene"
-        if (f ~ /\/firmware\/src\//) return "rasterm-firmware"
+        if (f ~ /\/core\/src\//) return "rastty-core"
+        if (f ~ /\/firmware\/scene\//) return "rastty-firmware-scene"
+        if (f ~ /\/firmware\/src\//) return "rastty-firmware"
         if (f ~ /\/libm-/) return "libm"
         if (f ~ /compiler.builtins/) return "compiler-builtins (f64 soft-float, memcpy, u64 division)"
         if (f ~ /\/cortex-m/) return "cortex-m, cortex-m-rt, cortex-m-semihosting"
@@ -57,11 +57,11 @@ echo "== arm-none-eabi-nm -S -t d -C $elf: bytes of .rodata by symbol"
 read -r rodata_start rodata_size < <(arm-none-eabi-size -A "$elf" | awk '$1 == ".rodata" { print $3, $2 }')
 arm-none-eabi-nm -S -t d -C "$elf" | awk -v start="$rodata_start" -v size="$rodata_size" '
     NF >= 4 && $1 + 0 >= start && $1 + 0 < start + size {
-        if ($4 ~ /^rasterm_firmware_scene::spot::/) model += $2
+        if ($4 ~ /^rastty_firmware_scene::spot::/) model += $2
         else if ($4 ~ /^libm::/) libm += $2
     }
     END {
-        printf "%8d  the model arrays (rasterm_firmware_scene::spot)\n", model
+        printf "%8d  the model arrays (rastty_firmware_scene::spot)\n", model
         printf "%8d  libm tables\n", libm
         printf "%8d  the rest: unnamed constants (strings, panic locations, lookup tables) of every crate, padding\n",
             size - model - libm

@@ -52,7 +52,7 @@ impl core::fmt::Display for CameraError {
 ///
 /// # Examples
 /// ```
-/// use rasterm_core::{camera::look_at, math::Vec3};
+/// use rastty_core::{camera::look_at, math::Vec3};
 /// let view = look_at(Vec3::new(0.0, 0.0, 5.0), Vec3::ZERO, Vec3::Y).unwrap();
 /// // The target ends up straight ahead, 5 units down -z.
 /// assert_eq!(view.transform_point(Vec3::ZERO), Vec3::new(0.0, 0.0, -5.0));
@@ -134,7 +134,7 @@ impl Projection {
 ///
 /// # Examples
 /// ```
-/// use rasterm_core::{camera::perspective, math::Vec3};
+/// use rastty_core::{camera::perspective, math::Vec3};
 /// let p = perspective(1.0, 1.5, 0.1, 100.0).unwrap();
 /// let near = p.project_point(Vec3::new(0.0, 0.0, -0.1));
 /// assert!((near.z / near.w).abs() < 1e-6);

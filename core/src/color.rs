@@ -15,7 +15,7 @@ use crate::math::{Vec3, float};
 ///
 /// # Examples
 /// ```
-/// use rasterm_core::{color::pack_rgb888, math::Vec3};
+/// use rastty_core::{color::pack_rgb888, math::Vec3};
 /// assert_eq!(pack_rgb888(Vec3::new(1.0, 0.5, 0.0)), 0x00FF8000);
 /// ```
 #[inline(always)]
@@ -36,7 +36,7 @@ pub fn unpack_rgb888(p: u32) -> Vec3 {
 ///
 /// # Examples
 /// ```
-/// use rasterm_core::{color::pack_rgb565, math::Vec3};
+/// use rastty_core::{color::pack_rgb565, math::Vec3};
 /// assert_eq!(pack_rgb565(Vec3::new(1.0, 0.0, 1.0)), 0xF81F);
 /// ```
 #[inline(always)]

@@ -1,4 +1,4 @@
-//! rasterm-core: a software rasterizer for any machine, from a desktop to a microcontroller.
+//! rastty-core: a software rasterizer for any machine, from a desktop to a microcontroller.
 //!
 //! `#![no_std]`, no allocation, no `unsafe`, one dependency (`libm`). It renders into buffers the caller owns —
 //! a whole frame or one band of rows at a time — and computes the same pixels on every target, because all
@@ -23,12 +23,12 @@
 //!
 //! # Example
 //! ```
-//! use rasterm_core::camera::{look_at, perspective};
-//! use rasterm_core::math::{Mat4, Vec3};
-//! use rasterm_core::mesh::{Indices, Mesh};
-//! use rasterm_core::pipeline::DrawState;
-//! use rasterm_core::shading::{draw_mesh, Effects, Light, Lighting, Material, ShadingModel, Transforms};
-//! use rasterm_core::target::{Rgb888, Target};
+//! use rastty_core::camera::{look_at, perspective};
+//! use rastty_core::math::{Mat4, Vec3};
+//! use rastty_core::mesh::{Indices, Mesh};
+//! use rastty_core::pipeline::DrawState;
+//! use rastty_core::shading::{draw_mesh, Effects, Light, Lighting, Material, ShadingModel, Transforms};
+//! use rastty_core::target::{Rgb888, Target};
 //!
 //! // One triangle facing the camera.
 //! let positions = [Vec3::new(-1.0, -1.0, 0.0), Vec3::new(1.0, -1.0, 0.0), Vec3::new(0.0, 1.0, 0.0)];

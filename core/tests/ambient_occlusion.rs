@@ -4,12 +4,12 @@
 //! with the exact error; orthographic cameras work as perspective ones do; a scene scaled up or down darkens the
 //! same; wide frames darken alike across the strips the work is split into.
 
-use rasterm_core::camera::{look_at, orthographic, perspective};
-use rasterm_core::effects::{AmbientOcclusion, OcclusionError};
-use rasterm_core::math::{Mat4, Vec3, Vec4};
-use rasterm_core::mesh::{Attributes, Indices, Mesh};
-use rasterm_core::pipeline::{Cull, DrawState, Fragment, Shader, draw};
-use rasterm_core::target::{NoColor, Target};
+use rastty_core::camera::{look_at, orthographic, perspective};
+use rastty_core::effects::{AmbientOcclusion, OcclusionError};
+use rastty_core::math::{Mat4, Vec3, Vec4};
+use rastty_core::mesh::{Attributes, Indices, Mesh};
+use rastty_core::pipeline::{Cull, DrawState, Fragment, Shader, draw};
+use rastty_core::target::{NoColor, Target};
 
 /// The colour of every drawn pixel before occlusion: 200 in each channel, so a factor shows as `channel / 200`.
 const SURFACE: u32 = 0x00C8_C8C8;

@@ -10,7 +10,7 @@ const CAMERA: PinholeCamera = PinholeCamera { fovy: 1.2, near: 1.0, far: 50.0, w
 /// Renders and ray-casts `tris`, asserting that the reference is robust (no pixel centre within 0.01 px of an
 /// edge) and that the two agree on every pixel.
 #[track_caller]
-fn assert_matches_ray_cast(tris: &[[[f32; 3]; 3]]) -> rasterm_core::pipeline::DrawStats {
+fn assert_matches_ray_cast(tris: &[[[f32; 3]; 3]]) -> rastty_core::pipeline::DrawStats {
     let (reference, fragile) = CAMERA.robust_ray_cast(tris);
     assert_eq!(
         fragile,

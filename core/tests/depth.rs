@@ -3,12 +3,12 @@
 mod common;
 
 use common::ScreenSpace;
-use rasterm_core::math::{Vec3, Vec4};
-use rasterm_core::mesh::{Attributes, Indices, Mesh};
-use rasterm_core::pipeline::{
+use rastty_core::math::{Vec3, Vec4};
+use rastty_core::mesh::{Attributes, Indices, Mesh};
+use rastty_core::pipeline::{
     DepthTest, DrawState, DrawStats, EdgeArithmetic, Fragment, Shader, draw, draw_unspecialised,
 };
-use rasterm_core::target::{DepthBuffer, Rgb888, Target, depth_to_u16};
+use rastty_core::target::{DepthBuffer, Rgb888, Target, depth_to_u16};
 
 /// Colours each triangle by its first vertex's index, so the winner of each pixel is visible.
 struct ByTriangle(ScreenSpace);
@@ -94,7 +94,7 @@ fn depth_of_triangle(positions: &[Vec3; 3]) -> Vec<f32> {
     let mut color = vec![0u32; 16 * 16];
     let mut depth = vec![1f32; 16 * 16];
     let mut target = Target::new(Rgb888(&mut color), &mut depth[..], 16, 16).unwrap();
-    let state = DrawState { cull: rasterm_core::pipeline::Cull::None, ..DrawState::default() };
+    let state = DrawState { cull: rastty_core::pipeline::Cull::None, ..DrawState::default() };
     draw(&mut target, &mesh, &ScreenSpace { width: 16.0, height: 16.0 }, &state).unwrap();
     depth
 }

@@ -7,18 +7,18 @@
 mod common;
 
 use common::{ExactColor, PlainDepth, Torus, assert_same_depths, checker_texels};
-use rasterm_core::camera::{look_at, perspective};
-use rasterm_core::effects::{
+use rastty_core::camera::{look_at, perspective};
+use rastty_core::effects::{
     Bounds, LightSource, NormalMap, NormalSource, NormalSpace, SceneLights, ShadowBias, ShadowMap, ShadowView,
     SpecularSource, SurfaceDraw, SurfaceMaterial, SurfaceVariant, clear_shadow_depth, draw_surface,
     draw_surface_unspecialised,
 };
-use rasterm_core::math::{Mat4, Vec3, Vec4};
-use rasterm_core::mesh::{Mesh, compute_tangents};
-use rasterm_core::pipeline::{DrawState, DrawStats};
-use rasterm_core::shading::{Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh};
-use rasterm_core::target::Target;
-use rasterm_core::texture::{FilterMode, Texture, WrapMode};
+use rastty_core::math::{Mat4, Vec3, Vec4};
+use rastty_core::mesh::{Mesh, compute_tangents};
+use rastty_core::pipeline::{DrawState, DrawStats};
+use rastty_core::shading::{Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh};
+use rastty_core::target::Target;
+use rastty_core::texture::{FilterMode, Texture, WrapMode};
 
 const W: u32 = 64;
 const H: u32 = 48;
@@ -314,7 +314,7 @@ fn a_tangent_space_map_without_tangents_is_refused() {
     let mesh: Mesh<'_> = f.torus.mesh();
     for tangents in [None, Some(&f.tangents[1..])] {
         let result = SurfaceVariant::resolve(&mesh, tangents, &transforms(), &material, [], &DrawState::default());
-        let expected = rasterm_core::effects::SurfaceError::Tangents {
+        let expected = rastty_core::effects::SurfaceError::Tangents {
             expected: mesh.vertex_count(),
             actual: tangents.map_or(0, <[Vec4]>::len),
         };

@@ -3,7 +3,7 @@
 mod common;
 
 use common::{assert_pattern, both_sides, coverage};
-use rasterm_core::pipeline::{Cull, DrawState, Winding};
+use rastty_core::pipeline::{Cull, DrawState, Winding};
 
 #[test]
 fn right_triangle_covers_centres_strictly_inside_and_on_top_left_edges() {
@@ -108,7 +108,7 @@ fn pixels_outside_the_frame_are_never_visited() {
 
 #[test]
 fn float_edges_follow_the_same_fill_rule_on_exact_inputs() {
-    use rasterm_core::pipeline::EdgeArithmetic;
+    use rastty_core::pipeline::EdgeArithmetic;
     // Corners on pixel corners and edges through centres are exact in f32 too: the same pixels as fixed point.
     let float = DrawState { edges: EdgeArithmetic::Float, ..both_sides() };
     let rect = [[(0.0, 0.5), (0.0, 2.5), (4.0, 2.5)], [(0.0, 0.5), (4.0, 2.5), (4.0, 0.5)]];

@@ -7,8 +7,8 @@
 //! [1, 4) (both exponent parities) stands for all normal inputs, which the test also checks bit for bit on every
 //! exponent for a stride of mantissas; subnormal inputs are all checked directly.
 
-use rasterm_core::math::Vec3;
-use rasterm_core::math::float::inv_sqrt;
+use rastty_core::math::Vec3;
+use rastty_core::math::float::inv_sqrt;
 
 /// `1 / sqrt(x)` rounded to the nearest `f32` (computed in `f64`: its 53 bits round correctly to 24 except at a
 /// tie, which the square root of a 24-bit number never is).

@@ -1,8 +1,8 @@
 //! Vectors, matrices, quaternions, cameras and colour packing.
 
-use rasterm_core::camera::{CameraError, Viewport, look_at, orthographic, perspective};
-use rasterm_core::color::{pack_rgb565, pack_rgb888, rgb565_to_rgb888, unpack_rgb565, unpack_rgb888};
-use rasterm_core::math::{Mat3, Mat4, Quat, Vec3, Vec4};
+use rastty_core::camera::{CameraError, Viewport, look_at, orthographic, perspective};
+use rastty_core::color::{pack_rgb565, pack_rgb888, rgb565_to_rgb888, unpack_rgb565, unpack_rgb888};
+use rastty_core::math::{Mat3, Mat4, Quat, Vec3, Vec4};
 
 fn close(a: Vec3, b: Vec3, eps: f32) -> bool {
     (a - b).length() <= eps

@@ -4,15 +4,15 @@
 mod common;
 
 use common::{Count, ScreenSpace, Torus, coverage};
-use rasterm_core::camera::{look_at, perspective};
-use rasterm_core::math::{Mat4, Vec2, Vec3};
-use rasterm_core::mesh::{Attributes, Indices, Mesh, MeshError};
-use rasterm_core::pipeline::{DrawError, DrawState, DrawStats, draw};
-use rasterm_core::shading::{
+use rastty_core::camera::{look_at, perspective};
+use rastty_core::math::{Mat4, Vec2, Vec3};
+use rastty_core::mesh::{Attributes, Indices, Mesh, MeshError};
+use rastty_core::pipeline::{DrawError, DrawState, DrawStats, draw};
+use rastty_core::shading::{
     Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh, draw_mesh_unspecialised,
 };
-use rasterm_core::target::{MAX_DIMENSION, NoColor, NoDepth, Rgb888, Target, TargetError};
-use rasterm_core::texture::{FilterMode, Texture, WrapMode};
+use rastty_core::target::{MAX_DIMENSION, NoColor, NoDepth, Rgb888, Target, TargetError};
+use rastty_core::texture::{FilterMode, Texture, WrapMode};
 
 fn quad_positions() -> Vec<Vec3> {
     // Two triangles side by side on an 8x4 frame, plus a spare vertex.
@@ -25,7 +25,7 @@ fn render(positions: &[Vec3], indices: &[u32]) -> (Vec<u32>, DrawStats) {
     let mesh = Mesh::new(positions, Indices::U32(indices)).unwrap();
     let mut counts = vec![0u32; 32];
     let mut target = Target::new(Count(&mut counts), NoDepth, 8, 4).unwrap();
-    let state = DrawState { cull: rasterm_core::pipeline::Cull::None, ..DrawState::default() };
+    let state = DrawState { cull: rastty_core::pipeline::Cull::None, ..DrawState::default() };
     let stats = draw(&mut target, &mesh, &ScreenSpace { width: 8.0, height: 4.0 }, &state).unwrap();
     (counts, stats)
 }
@@ -86,7 +86,7 @@ fn non_finite_attributes_skip_triangles_only_where_used() {
         let lights = [Light::directional(Vec3::new(1.0, 1.0, 1.0), Vec3::splat(0.7))];
         let lighting = Lighting { ambient: Vec3::splat(0.3), lights: &lights };
         let effects = Effects { shading, material: Material::default(), lighting, texture };
-        let state = DrawState { cull: rasterm_core::pipeline::Cull::None, ..DrawState::default() };
+        let state = DrawState { cull: rastty_core::pipeline::Cull::None, ..DrawState::default() };
         let [(color, stats), (general_color, general_stats)] = [false, true].map(|general| {
             let mut color = vec![0u32; 48 * 48];
             let mut depth = vec![0f32; 48 * 48];
@@ -177,16 +177,16 @@ fn malformed_meshes_and_states_are_refused() {
     let nine_bits = DrawState { subpixel_bits: 9, ..DrawState::default() };
     assert_eq!(draw(&mut target, &mesh, &shader, &nine_bits).unwrap_err(), DrawError::SubpixelBits(9));
     struct NeedsUv;
-    impl rasterm_core::pipeline::Shader for NeedsUv {
+    impl rastty_core::pipeline::Shader for NeedsUv {
         type Varyings = ();
         type Face = ();
         const ATTRIBUTES: Attributes = Attributes { normals: false, uvs: true, colors: false };
-        fn position(&self, m: &Mesh<'_>, i: usize) -> rasterm_core::math::Vec4 {
+        fn position(&self, m: &Mesh<'_>, i: usize) -> rastty_core::math::Vec4 {
             m.position(i).extend(1.0)
         }
         fn varyings(&self, _: &Mesh<'_>, _: usize) {}
         fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
-        fn fragment(&self, _: &rasterm_core::pipeline::Fragment, _: &(), _: &()) -> Vec3 {
+        fn fragment(&self, _: &rastty_core::pipeline::Fragment, _: &(), _: &()) -> Vec3 {
             Vec3::ONE
         }
     }

@@ -4,16 +4,16 @@
 //! The scene is a ground square at `y = 0` and a unit cube standing on it, seen from straight above through an
 //! orthographic camera, so that each pixel is a known point of the ground: 32 pixels per world unit.
 
-use rasterm_core::camera::{look_at, orthographic};
-use rasterm_core::effects::{
+use rastty_core::camera::{look_at, orthographic};
+use rastty_core::effects::{
     Bounds, LightSource, SceneLights, ShadowBias, ShadowError, ShadowMap, ShadowView, SurfaceDraw, SurfaceMaterial,
     clear_shadow_depth, draw_shadow_caster, draw_shadow_caster_band, draw_surface,
 };
-use rasterm_core::math::{Mat4, Vec3};
-use rasterm_core::mesh::{Indices, Mesh};
-use rasterm_core::pipeline::DrawState;
-use rasterm_core::shading::Transforms;
-use rasterm_core::target::{Rgb888, Target};
+use rastty_core::math::{Mat4, Vec3};
+use rastty_core::mesh::{Indices, Mesh};
+use rastty_core::pipeline::DrawState;
+use rastty_core::shading::Transforms;
+use rastty_core::target::{Rgb888, Target};
 
 const SIZE: u32 = 128;
 /// Pixels per world unit: the view spans `[-2, 2]` in x and z.

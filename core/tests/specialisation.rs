@@ -5,15 +5,15 @@
 mod common;
 
 use common::{ExactColor, PlainDepth, Torus, assert_same_depths, checker_texels};
-use rasterm_core::camera::{look_at, orthographic, perspective};
-use rasterm_core::math::{Mat4, Vec3};
-use rasterm_core::mesh::{Indices, Mesh};
-use rasterm_core::pipeline::{Cull, DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation};
-use rasterm_core::shading::{
+use rastty_core::camera::{look_at, orthographic, perspective};
+use rastty_core::math::{Mat4, Vec3};
+use rastty_core::mesh::{Indices, Mesh};
+use rastty_core::pipeline::{Cull, DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation};
+use rastty_core::shading::{
     Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh, draw_mesh_unspecialised,
 };
-use rasterm_core::target::Target;
-use rasterm_core::texture::{FilterMode, Texture, WrapMode};
+use rastty_core::target::Target;
+use rastty_core::texture::{FilterMode, Texture, WrapMode};
 
 const W: u32 = 48;
 const H: u32 = 40;
@@ -182,7 +182,7 @@ fn resolve_keeps_only_what_the_scene_uses() {
     );
     // A mirroring model matrix flips the front face.
     let v = effects(ShadingModel::Flat, Vec3::ZERO).resolve(&full, &mirrored, &state).unwrap();
-    assert_eq!(v.state.front_face, rasterm_core::pipeline::Winding::Clockwise);
+    assert_eq!(v.state.front_face, rastty_core::pipeline::Winding::Clockwise);
     // Normals are required where they are used.
     let positions_only = Mesh::new(&torus.positions, Indices::U16(&torus.indices)).unwrap();
     assert!(effects(ShadingModel::Gouraud, Vec3::ZERO).resolve(&positions_only, &persp, &state).is_err());

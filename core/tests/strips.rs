@@ -12,21 +12,21 @@
 mod common;
 
 use common::{ExactColor, PlainDepth, PlainDepth16, Torus, Transformed, assert_same_depths, checker_texels};
-use rasterm_core::camera::{look_at, perspective};
-use rasterm_core::effects::{
+use rastty_core::camera::{look_at, perspective};
+use rastty_core::effects::{
     Bounds, LightSource, NormalMap, NormalSpace, SceneLights, ShadowBias, ShadowMap, ShadowView, SurfaceDraw,
     SurfaceMaterial, clear_shadow_depth, draw_shadow_caster, draw_surface, draw_surface_unspecialised,
 };
-use rasterm_core::math::{Mat4, Vec3, Vec4};
-use rasterm_core::mesh::{Mesh, compute_tangents};
-use rasterm_core::pipeline::{
+use rastty_core::math::{Mat4, Vec3, Vec4};
+use rastty_core::mesh::{Mesh, compute_tangents};
+use rastty_core::pipeline::{
     DepthTest, DrawState, DrawStats, EdgeArithmetic, Fragment, LineStyle, Shader, draw, draw_wireframe,
 };
-use rasterm_core::shading::{
+use rastty_core::shading::{
     Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh, draw_mesh_unspecialised,
 };
-use rasterm_core::target::{DEPTH_LANES, DepthBuffer, NoColor, Rgb565, Target};
-use rasterm_core::texture::{FilterMode, Texture, WrapMode};
+use rastty_core::target::{DEPTH_LANES, DepthBuffer, NoColor, Rgb565, Target};
+use rastty_core::texture::{FilterMode, Texture, WrapMode};
 
 const W: u32 = 37;
 const H: u32 = 23;
@@ -210,7 +210,7 @@ struct DepthOnly(Transformed);
 impl Shader for DepthOnly {
     type Varyings = ();
     type Face = ();
-    const ATTRIBUTES: rasterm_core::mesh::Attributes = rasterm_core::mesh::Attributes::NONE;
+    const ATTRIBUTES: rastty_core::mesh::Attributes = rastty_core::mesh::Attributes::NONE;
     const FRAGMENT_STAGE: bool = false;
     fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
         self.0.position(mesh, i)

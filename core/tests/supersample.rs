@@ -3,10 +3,10 @@
 mod common;
 
 use common::ScreenSpace;
-use rasterm_core::math::Vec3;
-use rasterm_core::mesh::{Indices, Mesh};
-use rasterm_core::pipeline::{Cull, DrawState, draw};
-use rasterm_core::target::{NoDepth, Rgb888, Target, TargetError, downsample_rgb888};
+use rastty_core::math::Vec3;
+use rastty_core::mesh::{Indices, Mesh};
+use rastty_core::pipeline::{Cull, DrawState, draw};
+use rastty_core::target::{NoDepth, Rgb888, Target, TargetError, downsample_rgb888};
 
 /// A white rectangle from x = 0 to x = 1.5 (pixels of the final 2x1 image) on black, rendered at `k` times the
 /// resolution and averaged: pixel 0 is white, pixel 1 is exactly half covered.

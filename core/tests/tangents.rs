@@ -1,8 +1,8 @@
 //! Tangent frames for normal mapping: along increasing `u`, perpendicular to the normal, handedness from the
 //! texture mapping, and finite for degenerate input.
 
-use rasterm_core::math::{Vec2, Vec3, Vec4};
-use rasterm_core::mesh::{Indices, Mesh, TangentError, compute_tangents};
+use rastty_core::math::{Vec2, Vec3, Vec4};
+use rastty_core::mesh::{Indices, Mesh, TangentError, compute_tangents};
 
 fn tangents(positions: &[Vec3], normals: &[Vec3], uvs: &[Vec2], indices: &[u16]) -> Vec<Vec4> {
     let mesh = Mesh::new(positions, Indices::U16(indices)).unwrap().with_normals(normals).unwrap();

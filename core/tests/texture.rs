@@ -1,8 +1,8 @@
 //! Texture sampling: orientation, filters, and every wrap case including non-finite coordinates.
 
-use rasterm_core::color::{pack_rgb888, unpack_rgb888};
-use rasterm_core::math::{Vec2, Vec3};
-use rasterm_core::texture::{Bilinear, Clamp, Filter, MAX_INTERLEAVED, Nearest, Repeat, Texture, TextureError, Wrap};
+use rastty_core::color::{pack_rgb888, unpack_rgb888};
+use rastty_core::math::{Vec2, Vec3};
+use rastty_core::texture::{Bilinear, Clamp, Filter, MAX_INTERLEAVED, Nearest, Repeat, Texture, TextureError, Wrap};
 
 /// 4x2 texels; texel (x, y) = 0x00_XY_00_00 style values so the index is readable: red = 16 * x + y.
 fn texels() -> Vec<u32> {

@@ -3,10 +3,10 @@
 
 use std::cell::Cell;
 
-use rasterm_core::math::{Vec3, Vec4};
-use rasterm_core::mesh::{Attributes, Indices, Mesh};
-use rasterm_core::pipeline::{Cull, DrawState, Fragment, Shader, draw};
-use rasterm_core::target::{NoColor, NoDepth, Target};
+use rastty_core::math::{Vec3, Vec4};
+use rastty_core::mesh::{Attributes, Indices, Mesh};
+use rastty_core::pipeline::{Cull, DrawState, Fragment, Shader, draw};
+use rastty_core::target::{NoColor, NoDepth, Target};
 
 /// Counts position and varyings runs; positions are already in clip space, all of them inside the frame.
 #[derive(Default)]

@@ -4,12 +4,12 @@ mod common;
 
 use common::{Count, PlainDepth, PlainDepth16, ascii, assert_pattern, assert_same_depths};
 use core::ops::Range;
-use rasterm_core::camera::{look_at, orthographic, perspective};
-use rasterm_core::math::{Mat4, Vec3};
-use rasterm_core::mesh::{Indices, Mesh};
-use rasterm_core::pipeline::{Cull, DepthTest, DrawState, LineStyle, Winding, draw_wireframe};
+use rastty_core::camera::{look_at, orthographic, perspective};
+use rastty_core::math::{Mat4, Vec3};
+use rastty_core::mesh::{Indices, Mesh};
+use rastty_core::pipeline::{Cull, DepthTest, DrawState, LineStyle, Winding, draw_wireframe};
 
-use rasterm_core::target::{DepthBuffer, NoDepth, Rgb888, Target};
+use rastty_core::target::{DepthBuffer, NoDepth, Rgb888, Target};
 
 /// Screen pixels (x right, y down) of a `w x h` frame to clip space.
 fn screen(w: f32, h: f32) -> Mat4 {

@@ -16,8 +16,8 @@ use std::fs;
 use std::path::Path;
 
 use arbitrary::{Arbitrary, Unstructured};
-use rasterm_fuzz::obj_load::encode;
-use rasterm_fuzz::raster::{Input, run};
+use rastty_fuzz::obj_load::encode;
+use rastty_fuzz::raster::{Input, run};
 
 const MTL: &str = "\
 # two materials, one textured
@@ -142,7 +142,7 @@ fn obj_seeds(dir: &Path) -> usize {
     ];
     for (name, config, obj, mtl, tex) in seeds {
         let data = encode(config, obj.as_bytes(), mtl.as_bytes(), tex);
-        assert!(rasterm_fuzz::obj_load::run(&data), "seed {name} does not load");
+        assert!(rastty_fuzz::obj_load::run(&data), "seed {name} does not load");
         write(dir, name, &data);
     }
     seeds.len()

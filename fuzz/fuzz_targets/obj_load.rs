@@ -5,5 +5,5 @@
 use libfuzzer_sys::fuzz_target;
 
 fuzz_target!(|data: &[u8]| {
-    rasterm_fuzz::obj_load::run(data);
+    rastty_fuzz::obj_load::run(data);
 });

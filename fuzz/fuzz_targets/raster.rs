@@ -4,6 +4,6 @@
 
 use libfuzzer_sys::fuzz_target;
 
-fuzz_target!(|input: rasterm_fuzz::raster::Input| {
-    rasterm_fuzz::raster::run(input);
+fuzz_target!(|input: rastty_fuzz::raster::Input| {
+    rastty_fuzz::raster::run(input);
 });

@@ -1,4 +1,4 @@
-//! The `obj_load` target: arbitrary bytes as OBJ text through `rasterm::model::load_obj_bytes`, with an
+//! The `obj_load` target: arbitrary bytes as OBJ text through `rastty::model::load_obj_bytes`, with an
 //! `Embedded` resolver offering an MTL library and textures cut from the same input; a model that loads is checked
 //! for consistency and rendered once.
 //!
@@ -17,9 +17,9 @@
 //! The config byte picks the shading mode (bits 0..3), the wireframe (bit 3), textures on/off (bit 4) and an
 //! orthographic lens (bit 5).
 
-use rasterm::model::{COORDINATE_LIMIT, Embedded, MAX_TEXTURE_SIDE, Model, load_obj_bytes};
-use rasterm::scene::{Appearance, Lens, OrbitCamera, Scene, ShadingMode};
-use rasterm_core::target::{Rgb888, Target};
+use rastty::model::{COORDINATE_LIMIT, Embedded, MAX_TEXTURE_SIDE, Model, load_obj_bytes};
+use rastty::scene::{Appearance, Lens, OrbitCamera, Scene, ShadingMode};
+use rastty_core::target::{Rgb888, Target};
 
 const WIDTH: u32 = 32;
 const HEIGHT: u32 = 24;

@@ -1,4 +1,4 @@
-//! The `raster` target: a small arbitrary scene through `rasterm_core::shading::draw_mesh`,
+//! The `raster` target: a small arbitrary scene through `rastty_core::shading::draw_mesh`,
 //! `draw_mesh_unspecialised`, `pipeline::draw_wireframe` and depth-only `pipeline::draw` passes, with `f32` and
 //! `u16` depth, whole and in bands, checking the core's documented invariants.
 //!
@@ -9,19 +9,19 @@
 //! tiny or raw bit patterns. [`run`] draws it and panics when an invariant fails; docs/fuzzing.md lists them.
 
 use arbitrary::{Arbitrary, Result, Unstructured};
-use rasterm_core::camera::{look_at, orthographic, perspective};
-use rasterm_core::color::pack_rgb888;
-use rasterm_core::math::{Mat4, Vec2, Vec3, Vec4};
-use rasterm_core::mesh::{Attributes, Indices, Mesh};
-use rasterm_core::pipeline::{
+use rastty_core::camera::{look_at, orthographic, perspective};
+use rastty_core::color::pack_rgb888;
+use rastty_core::math::{Mat4, Vec2, Vec3, Vec4};
+use rastty_core::mesh::{Attributes, Indices, Mesh};
+use rastty_core::pipeline::{
     Cull, DepthTest, DrawError, DrawState, DrawStats, EdgeArithmetic, Fragment, Interpolation, LineStyle,
     MAX_SUBPIXEL_BITS, Shader, Winding, draw, draw_unspecialised, draw_wireframe,
 };
-use rasterm_core::shading::{
+use rastty_core::shading::{
     Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh, draw_mesh_unspecialised,
 };
-use rasterm_core::target::{ColorBuffer, DepthBuffer, NoColor, Rgb888, Target, depth_to_u16};
-use rasterm_core::texture::{FilterMode, Texture, WrapMode};
+use rastty_core::target::{ColorBuffer, DepthBuffer, NoColor, Rgb888, Target, depth_to_u16};
+use rastty_core::texture::{FilterMode, Texture, WrapMode};
 
 const MAX_VERTICES: usize = 24;
 const MAX_TRIANGLES: usize = 16;
@@ -280,7 +280,7 @@ impl ColorBuffer for CheckedColor<'_> {
 }
 
 /// The depth buffers' contract: the pipeline hands a buffer only depths in `[0, 1]`, never NaN or `-0`
-/// (`rasterm_core::target::clamp_depth`), whatever the draw.
+/// (`rastty_core::target::clamp_depth`), whatever the draw.
 fn check_given_depth(z: f32) {
     assert!(z.to_bits() <= 1f32.to_bits(), "a depth buffer was given {z:e} ({:#010x}), not in [0, 1]", z.to_bits());
 }

@@ -1,13 +1,13 @@
 //! Frame-encoder timing for a 200x60-cell terminal (a 200x120-pixel half-block frame).
 //!
-//! `cargo bench -p rasterm --bench screen_encode`. Before the timings it prints the byte counts of the
+//! `cargo bench -p rastty --bench screen_encode`. Before the timings it prints the byte counts of the
 //! benchmarked frames next to the naive full frame, and how long the 256-colour lookup table took to build.
 
 use std::hint::black_box;
 use std::time::Instant;
 
-use rasterm::screen::palette_lut::{nearest_ansi16, nearest_xterm256};
-use rasterm::screen::{CellGrid, CellMode, ColorMode, Encoder, PixelFrame, naive_full_frame};
+use rastty::screen::palette_lut::{nearest_ansi16, nearest_xterm256};
+use rastty::screen::{CellGrid, CellMode, ColorMode, Encoder, PixelFrame, naive_full_frame};
 
 const COLS: usize = 200;
 const ROWS: usize = 60;

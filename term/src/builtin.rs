@@ -1,5 +1,5 @@
 //! The built-in model: Spot the cow by Keenan Crane (public domain; see `assets/spot/NOTICE.md`), compiled into
-//! the binary so that `rasterm` with no arguments has something to show.
+//! the binary so that `rastty` with no arguments has something to show.
 
 use std::path::Path;
 

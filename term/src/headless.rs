@@ -1,12 +1,12 @@
-//! `rasterm render`: a model to a PNG file, without a terminal.
+//! `rastty render`: a model to a PNG file, without a terminal.
 
 use std::fmt;
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
-use rasterm_core::math::Vec3;
-use rasterm_core::pipeline::DrawStats;
-use rasterm_core::target::{MAX_DIMENSION, Rgb888, Target, downsample_rgb888};
+use rastty_core::math::Vec3;
+use rastty_core::pipeline::DrawStats;
+use rastty_core::target::{MAX_DIMENSION, Rgb888, Target, downsample_rgb888};
 
 use crate::builtin::{BUILTIN_NAME, builtin_model};
 use crate::model::{LoadError, TextureImage, load_obj};
@@ -98,7 +98,7 @@ pub struct RenderedImage {
 
 /// Renders a scene to pixels with square pixels, anti-aliased with `supersample x supersample` samples per pixel
 /// when `supersample > 1` (rendered that much larger and averaged with
-/// [`rasterm_core::target::downsample_rgb888`]).
+/// [`rastty_core::target::downsample_rgb888`]).
 ///
 /// # Errors
 /// [`HeadlessError::Render`] for a degenerate camera; [`HeadlessError::Size`] when the (supersampled) size is
@@ -169,7 +169,7 @@ pub fn render_supersampled<T, E>(
     Ok(SampledFrame { pixels, value, render_time: start.elapsed() })
 }
 
-/// What `rasterm render` needs.
+/// What `rastty render` needs.
 #[derive(Clone, Debug)]
 pub struct RenderRequest {
     /// The model.
@@ -188,7 +188,7 @@ pub struct RenderRequest {
     pub output: PathBuf,
 }
 
-/// What `rasterm render` did.
+/// What `rastty render` did.
 #[derive(Debug)]
 pub struct RenderReport {
     /// The model's name.
@@ -201,7 +201,7 @@ pub struct RenderReport {
     pub variants: Vec<String>,
 }
 
-/// Why `rasterm render` failed.
+/// Why `rastty render` failed.
 #[derive(Debug)]
 pub enum HeadlessError {
     /// The model could not be loaded.

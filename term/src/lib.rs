@@ -1,4 +1,4 @@
-//! rasterm: load models, render them with `rasterm-core`, and show them in a terminal or write PNG files.
+//! rastty: load models, render them with `rastty-core`, and show them in a terminal or write PNG files.
 //!
 //! | module | holds |
 //! |---|---|
@@ -8,10 +8,10 @@
 //! | [`scene`] | camera, lights and shading choices; drawing a model into a core target |
 //! | [`scene_file`] | TOML scene files: camera, lights, placed and textured meshes; parsed, checked and loaded |
 //! | [`scene_render`] | drawing scene files: a plan of passes (shadow maps, forward draws, ambient occlusion), explained and run |
-//! | [`headless`] | `rasterm render`: a scene to a PNG file |
+//! | [`headless`] | `rastty render`: a scene to a PNG file |
 //! | [`png_file`] | writing PNG files safely |
 //! | [`reference`](mod@reference) | a slow `f64` reference renderer (16x16 samples per pixel, coverage and shading in `f64`): the truth to measure against |
-//! | [`report`] | `rasterm report`: measured figures as Markdown (terminal frame bytes and times; every quality knob's time and error) |
+//! | [`report`] | `rastty report`: measured figures as Markdown (terminal frame bytes and times; every quality knob's time and error) |
 //! | [`screen`] | terminal cells, colour modes and the frame-diff encoder |
 //! | [`viewer`] | the interactive terminal viewer |
 

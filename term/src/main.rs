@@ -1,7 +1,7 @@
-//! The `rasterm` command: a terminal viewer (`rasterm [MODEL.obj | SCENE.toml]`), a headless renderer
-//! (`rasterm render`) and measurement reports (`rasterm report`).
+//! The `rastty` command: a terminal viewer (`rastty [MODEL.obj | SCENE.toml]`), a headless renderer
+//! (`rastty render`) and measurement reports (`rastty report`).
 //!
-//! Argument parsing only; the work is in the `rasterm` library.
+//! Argument parsing only; the work is in the `rastty` library.
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -9,21 +9,21 @@ use std::str::FromStr;
 
 use clap::parser::ValueSource;
 use clap::{ArgMatches, Args, CommandFactory, FromArgMatches, Parser, Subcommand};
-use rasterm::escaped::{Escaped, path_text};
-use rasterm::headless::{ModelSource, RenderRequest, TextureChoice, parse_size, render_to_png};
-use rasterm::png_file::write_png;
-use rasterm::report::terminal::{DEFAULT_FRAMES, TerminalReport};
-use rasterm::report::{effects, frames};
-use rasterm::scene::{Appearance, Lens, OrbitCamera, ShadingMode, parse_hex_color};
-use rasterm::scene_file::SceneData;
-use rasterm::scene_render::{EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, render_scene_image};
-use rasterm::screen::{CellMode, ColorMode};
-use rasterm::viewer::{ColorChoice, ViewerExit, ViewerOptions, ViewerSubject};
-use rasterm_core::math::Vec3;
+use rastty::escaped::{Escaped, path_text};
+use rastty::headless::{ModelSource, RenderRequest, TextureChoice, parse_size, render_to_png};
+use rastty::png_file::write_png;
+use rastty::report::terminal::{DEFAULT_FRAMES, TerminalReport};
+use rastty::report::{effects, frames};
+use rastty::scene::{Appearance, Lens, OrbitCamera, ShadingMode, parse_hex_color};
+use rastty::scene_file::SceneData;
+use rastty::scene_render::{EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, render_scene_image};
+use rastty::screen::{CellMode, ColorMode};
+use rastty::viewer::{ColorChoice, ViewerExit, ViewerOptions, ViewerSubject};
+use rastty_core::math::Vec3;
 
 /// Render 3D models in the terminal, or to PNG files.
 #[derive(Parser, Debug)]
-#[command(name = "rasterm", version, args_conflicts_with_subcommands = true)]
+#[command(name = "rastty", version, args_conflicts_with_subcommands = true)]
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
@@ -40,7 +40,7 @@ enum Command {
     Report(ReportCommand),
 }
 
-/// The reports of `rasterm report`.
+/// The reports of `rastty report`.
 #[derive(Subcommand, Debug)]
 enum ReportCommand {
     /// Bytes and times of terminal frames for a turntable of the built-in model.
@@ -55,7 +55,7 @@ enum ReportCommand {
     Frames(FramesReportArgs),
 }
 
-/// Options of `rasterm report frames`.
+/// Options of `rastty report frames`.
 #[derive(Args, Debug)]
 struct FramesReportArgs {
     /// The scene file to measure.
@@ -74,7 +74,7 @@ struct FramesReportArgs {
     quick: bool,
 }
 
-/// Options of `rasterm report effects`.
+/// Options of `rastty report effects`.
 #[derive(Args, Debug)]
 struct EffectsReportArgs {
     /// The scene file to measure (default: assets/scenes/spot_lamp.toml, which uses every effect).
@@ -90,7 +90,7 @@ struct EffectsReportArgs {
     quick: bool,
 }
 
-/// Options of `rasterm report accuracy`.
+/// Options of `rastty report accuracy`.
 #[derive(Args, Debug)]
 struct AccuracyReportArgs {
     /// Directory to write accuracy.md and accuracy.png into.
@@ -101,7 +101,7 @@ struct AccuracyReportArgs {
     quick: bool,
 }
 
-/// Options of `rasterm report terminal`.
+/// Options of `rastty report terminal`.
 #[derive(Args, Debug)]
 struct TerminalReportArgs {
     /// Frames per full turn of the turntable.
@@ -134,7 +134,7 @@ struct ViewerArgs {
     no_pacing: bool,
 }
 
-/// Options of `rasterm render`.
+/// Options of `rastty render`.
 #[derive(Args, Debug)]
 struct RenderArgs {
     /// OBJ file or scene file (.toml) to render (default: the built-in model).
@@ -281,13 +281,13 @@ fn refuse_scene_options(args: &SceneArgs) -> Result<(), String> {
 
 /// Loads a scene file and prints its warnings and its meshes'.
 fn load_scene_file(path: &Path) -> Result<PreparedScene, String> {
-    let data: SceneData = rasterm::scene_file::load(path).map_err(|e| e.to_string())?;
+    let data: SceneData = rastty::scene_file::load(path).map_err(|e| e.to_string())?;
     for warning in &data.warnings {
-        eprintln!("rasterm: warning: {}", Escaped(warning));
+        eprintln!("rastty: warning: {}", Escaped(warning));
     }
     for object in &data.objects {
         for warning in &object.model.warnings {
-            eprintln!("rasterm: warning: {}", Escaped(warning));
+            eprintln!("rastty: warning: {}", Escaped(warning));
         }
     }
     PreparedScene::new(data).map_err(|e| format!("{}: {e}", path_text(path)))
@@ -354,7 +354,7 @@ fn main() -> ExitCode {
         None => view(&cli.viewer, &matches),
     };
     result.unwrap_or_else(|message| {
-        eprintln!("rasterm: error: {}", Escaped(&message));
+        eprintln!("rastty: error: {}", Escaped(&message));
         ExitCode::FAILURE
     })
 }
@@ -383,7 +383,7 @@ fn render(args: &RenderArgs, matches: &ArgMatches) -> Result<(), String> {
     };
     let report = render_to_png(&request).map_err(|e| e.to_string())?;
     for warning in &report.warnings {
-        eprintln!("rasterm: warning: {}", Escaped(warning));
+        eprintln!("rastty: warning: {}", Escaped(warning));
     }
     if args.stats {
         let s = &report.image.stats;
@@ -403,7 +403,7 @@ fn render(args: &RenderArgs, matches: &ArgMatches) -> Result<(), String> {
     Ok(())
 }
 
-/// `rasterm render SCENE.toml`: `--explain` alone prints the plan without rendering; with `-o` the frame is
+/// `rastty render SCENE.toml`: `--explain` alone prints the plan without rendering; with `-o` the frame is
 /// rendered (and the plan printed first when `--explain` is given too).
 fn render_scene(args: &RenderArgs, path: &Path, matches: &ArgMatches) -> Result<(), String> {
     refuse_model_options(matches)?;
@@ -415,7 +415,7 @@ fn render_scene(args: &RenderArgs, path: &Path, matches: &ArgMatches) -> Result<
         background: args.scene.background,
     };
     let camera = scene.data().camera;
-    let in_file = |e: rasterm::scene_render::SceneRenderError| format!("{}: {e}", path_text(path));
+    let in_file = |e: rastty::scene_render::SceneRenderError| format!("{}: {e}", path_text(path));
     let Some(output) = &args.output else {
         if args.stats {
             return Err("--stats needs -o OUT.png: --explain alone plans the frame without rendering it".into());
@@ -479,7 +479,7 @@ fn render_scene(args: &RenderArgs, path: &Path, matches: &ArgMatches) -> Result<
 }
 
 fn accuracy_report(args: &AccuracyReportArgs) -> Result<(), String> {
-    use rasterm::report::accuracy::{AccuracyOptions, measure};
+    use rastty::report::accuracy::{AccuracyOptions, measure};
     let options = if args.quick {
         AccuracyOptions::quick(args.output.clone())
     } else {
@@ -488,13 +488,13 @@ fn accuracy_report(args: &AccuracyReportArgs) -> Result<(), String> {
     let report = measure(&options)?;
     let written = report.write()?;
     print!("{}", written.markdown);
-    eprintln!("rasterm: wrote {} and {}", path_text(&written.markdown_path), path_text(&written.chart_path));
+    eprintln!("rastty: wrote {} and {}", path_text(&written.markdown_path), path_text(&written.chart_path));
     Ok(())
 }
 
 fn terminal_report(args: &TerminalReportArgs) -> Result<(), String> {
     let report = if args.quick { TerminalReport::quick() } else { TerminalReport::new(args.frames as usize) };
-    rasterm::report::terminal::run(&report, &mut std::io::stdout().lock()).map(|_| ()).map_err(|e| e.to_string())
+    rastty::report::terminal::run(&report, &mut std::io::stdout().lock()).map(|_| ()).map_err(|e| e.to_string())
 }
 
 fn effects_report(args: &EffectsReportArgs) -> Result<(), String> {
@@ -552,7 +552,7 @@ fn view(args: &ViewerArgs, matches: &ArgMatches) -> Result<ExitCode, String> {
         cell_aspect: args.cell_aspect,
         pacing: !args.no_pacing,
     };
-    match rasterm::viewer::run(&options).map_err(|e| e.to_string())? {
+    match rastty::viewer::run(&options).map_err(|e| e.to_string())? {
         // Killed by a signal: exit as the shell expects, 128 + the signal number.
         ViewerExit::Signal(signal) => Ok(ExitCode::from(128u8.saturating_add(u8::try_from(signal).unwrap_or(0)))),
         ViewerExit::Quit | ViewerExit::TerminalGone => Ok(ExitCode::SUCCESS),

@@ -1,6 +1,6 @@
-//! The `rasterm` binary on bad input.
+//! The `rastty` binary on bad input.
 //!
-//! The contract: bad input gets one line on stderr, `rasterm: error: ...`, naming the problem (the file, the line
+//! The contract: bad input gets one line on stderr, `rastty: error: ...`, naming the problem (the file, the line
 //! where known, the value) and a non-zero exit status; usage errors exit with 2 through clap; never a panic; never a
 //! partial or temporary output file left behind, and an existing output file is not clobbered by a failed render.
 //! Every run happens in a fresh temporary directory with relative paths, so messages and leftovers are checked
@@ -38,7 +38,7 @@ impl Run {
         assert!(!stderr.contains("panicked"), "a panic: {stderr}");
     }
 
-    /// A run-time error: exit status 1 and stderr holding exactly one `rasterm: error:` line and otherwise only
+    /// A run-time error: exit status 1 and stderr holding exactly one `rastty: error:` line and otherwise only
     /// warnings. Returns the error message without its prefix.
     fn expect_error(&self) -> String {
         self.assert_no_panic();
@@ -46,10 +46,10 @@ impl Run {
         assert_eq!(self.code, Some(1), "exit status; stderr: {stderr}");
         let mut errors = Vec::new();
         for line in stderr.trim().lines() {
-            if let Some(message) = line.strip_prefix("rasterm: error: ") {
+            if let Some(message) = line.strip_prefix("rastty: error: ") {
                 errors.push(message.to_string());
             } else {
-                assert!(line.starts_with("rasterm: warning: "), "unexpected line {line:?} in stderr: {stderr:?}");
+                assert!(line.starts_with("rastty: warning: "), "unexpected line {line:?} in stderr: {stderr:?}");
             }
         }
         assert_eq!(errors.len(), 1, "not exactly one error line: {stderr:?}");
@@ -78,22 +78,22 @@ impl Run {
             .trim()
             .lines()
             .map(|line| {
-                let warning = line.strip_prefix("rasterm: warning: ");
+                let warning = line.strip_prefix("rastty: warning: ");
                 warning.unwrap_or_else(|| panic!("unexpected line {line:?} in stderr: {stderr:?}")).to_string()
             })
             .collect()
     }
 }
 
-/// Runs `rasterm ARGS` in `dir`, with stdin empty and stdout and stderr piped.
-fn rasterm<S: AsRef<OsStr>>(dir: &Path, args: impl IntoIterator<Item = S>) -> Run {
-    let output = Command::new(env!("CARGO_BIN_EXE_rasterm"))
+/// Runs `rastty ARGS` in `dir`, with stdin empty and stdout and stderr piped.
+fn rastty<S: AsRef<OsStr>>(dir: &Path, args: impl IntoIterator<Item = S>) -> Run {
+    let output = Command::new(env!("CARGO_BIN_EXE_rastty"))
         .args(args)
         .current_dir(dir)
         .env_remove("CLICOLOR_FORCE")
         .stdin(Stdio::null())
         .output()
-        .expect("the rasterm binary runs");
+        .expect("the rastty binary runs");
     Run { code: output.status.code(), stdout: output.stdout, stderr: output.stderr }
 }
 
@@ -135,7 +135,7 @@ const TRIANGLE: &str = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1
 /// Runs a model that fails to load and checks the one error line, and that no output appeared.
 fn load_failure(file: &str, obj: &str) -> String {
     let dir = dir_with(&[(file, obj.as_bytes())]);
-    let message = rasterm(dir.path(), ["render", file, "-o", "out.png"]).expect_error();
+    let message = rastty(dir.path(), ["render", file, "-o", "out.png"]).expect_error();
     assert_holds_only(dir.path(), &[file]);
     message
 }
@@ -146,7 +146,7 @@ fn load_failure(file: &str, obj: &str) -> String {
 #[test]
 fn missing_model_names_the_file_and_the_os_reason() {
     let dir = dir_with(&[]);
-    let message = rasterm(dir.path(), ["render", "missing.obj", "-o", "out.png"]).expect_error();
+    let message = rastty(dir.path(), ["render", "missing.obj", "-o", "out.png"]).expect_error();
     let reason = os_reason(&dir.path().join("missing.obj"));
     assert_eq!(message, format!("missing.obj: cannot read the file: {reason}"));
     assert_holds_only(dir.path(), &[]);
@@ -156,7 +156,7 @@ fn missing_model_names_the_file_and_the_os_reason() {
 fn directory_as_model_names_it_and_the_os_reason() {
     let dir = dir_with(&[]);
     fs::create_dir(dir.path().join("models")).unwrap();
-    let message = rasterm(dir.path(), ["render", "models", "-o", "out.png"]).expect_error();
+    let message = rastty(dir.path(), ["render", "models", "-o", "out.png"]).expect_error();
     let reason = os_reason(&dir.path().join("models"));
     assert_eq!(message, format!("models: cannot read the file: {reason}"));
     assert_holds_only(dir.path(), &["models"]);
@@ -210,7 +210,7 @@ fn missing_or_corrupt_texture_is_a_warning_and_the_png_is_untextured() {
     let render = |output: &str, extra: &[&str]| {
         let mut args = vec!["render", "tri.obj", "--size", "40x30", "-o", output];
         args.extend_from_slice(extra);
-        rasterm(dir.path(), args).expect_success()
+        rastty(dir.path(), args).expect_success()
     };
 
     assert_eq!(render("plain.png", &["--no-texture"]), Vec::<String>::new());
@@ -242,7 +242,7 @@ fn missing_or_corrupt_texture_is_a_warning_and_the_png_is_untextured() {
 #[test]
 fn output_in_a_missing_directory_names_the_path() {
     let dir = dir_with(&[("tri.obj", TRIANGLE.as_bytes())]);
-    let message = rasterm(dir.path(), ["render", "tri.obj", "-o", "nodir/out.png"]).expect_error();
+    let message = rastty(dir.path(), ["render", "tri.obj", "-o", "nodir/out.png"]).expect_error();
     assert!(message.starts_with("cannot write nodir/out.png: "), "{message}");
     let reason = os_reason(&dir.path().join("nodir/out.png"));
     assert!(message.ends_with(&reason), "{message}");
@@ -254,7 +254,7 @@ fn output_that_is_a_directory_names_the_path_and_leaves_no_temporary_file() {
     let dir = dir_with(&[("tri.obj", TRIANGLE.as_bytes())]);
     fs::create_dir(dir.path().join("images")).unwrap();
     for output in ["images", "images/"] {
-        let message = rasterm(dir.path(), ["render", "tri.obj", "-o", output]).expect_error();
+        let message = rastty(dir.path(), ["render", "tri.obj", "-o", output]).expect_error();
         assert!(message.starts_with(&format!("cannot write {output}: ")), "{message}");
         // The temporary file (`.images.tmp-PID`, beside the target) is gone.
         assert_holds_only(dir.path(), &["tri.obj", "images"]);
@@ -273,11 +273,11 @@ fn failed_render_does_not_clobber_an_existing_output() {
         &["render", "-o", "out.png", "--near", "10", "--far", "1"],
     ];
     for args in failures {
-        rasterm(dir.path(), args).expect_error();
+        rastty(dir.path(), args).expect_error();
         assert_eq!(fs::read(dir.path().join("out.png")).unwrap(), old, "after {args:?}");
         assert_holds_only(dir.path(), &["out.png", "points.obj"]);
     }
-    rasterm(dir.path(), ["render", "-o", "out.png", "--size", "0x0"]).expect_usage_error("0x0");
+    rastty(dir.path(), ["render", "-o", "out.png", "--size", "0x0"]).expect_usage_error("0x0");
     assert_eq!(fs::read(dir.path().join("out.png")).unwrap(), old);
     assert_holds_only(dir.path(), &["out.png", "points.obj"]);
 }
@@ -286,7 +286,7 @@ fn failed_render_does_not_clobber_an_existing_output() {
 fn bad_clipping_planes_are_a_one_line_error() {
     let dir = dir_with(&[("tri.obj", TRIANGLE.as_bytes())]);
     let message =
-        rasterm(dir.path(), ["render", "tri.obj", "-o", "out.png", "--near", "10", "--far", "1"]).expect_error();
+        rastty(dir.path(), ["render", "tri.obj", "-o", "out.png", "--near", "10", "--far", "1"]).expect_error();
     assert!(message.contains("near") && message.contains("far"), "{message}");
     assert_holds_only(dir.path(), &["tri.obj"]);
 }
@@ -298,7 +298,7 @@ fn bad_clipping_planes_are_a_one_line_error() {
 fn nonsense_sizes_are_usage_errors_naming_the_value() {
     let dir = dir_with(&[]);
     for size in ["0x0", "100000x100000", "abc", "10x", "x10", "8193x1", "1x0", ""] {
-        let first = rasterm(dir.path(), ["render", "-o", "out.png", "--size", size]).expect_usage_error(size);
+        let first = rastty(dir.path(), ["render", "-o", "out.png", "--size", size]).expect_usage_error(size);
         assert!(first.contains("--size"), "{first}");
         assert_holds_only(dir.path(), &[]);
     }
@@ -322,13 +322,13 @@ fn bad_options_are_usage_errors_naming_the_value() {
         ("--shading", "shiny"),
     ];
     for (option, value) in cases {
-        let first = rasterm(dir.path(), ["render", "-o", "out.png", option, value]).expect_usage_error(value);
+        let first = rastty(dir.path(), ["render", "-o", "out.png", option, value]).expect_usage_error(value);
         assert!(first.contains(&format!("'{value}' for '{option}")), "{first}");
         assert_holds_only(dir.path(), &[]);
     }
     // The viewer's own options, refused before it looks at the terminal.
     for (option, value) in [("--mode", "braille"), ("--color", "rainbow"), ("--cell-aspect", "-2")] {
-        let first = rasterm(dir.path(), [option, value]).expect_usage_error(value);
+        let first = rastty(dir.path(), [option, value]).expect_usage_error(value);
         assert!(first.contains(&format!("'{value}' for '{option}")), "{first}");
     }
 }
@@ -344,29 +344,29 @@ fn control_characters_in_file_names_are_escaped() {
         assert!(!run.stdout.contains(&0x1b), "raw ESC in stdout: {:?}", run.stdout_text());
     };
 
-    let run = rasterm(dir.path(), ["render", "evil\x1b[31m.obj", "-o", "out.png"]);
+    let run = rastty(dir.path(), ["render", "evil\x1b[31m.obj", "-o", "out.png"]);
     let message = run.expect_error();
     no_control(&run);
     assert!(message.starts_with(r"evil\u{1b}[31m.obj: cannot read the file: "), "{message}");
 
     // A newline in the name does not split the message: `expect_error` sees one line.
-    let message = rasterm(dir.path(), ["render", "two\nlines.obj", "-o", "out.png"]).expect_error();
+    let message = rastty(dir.path(), ["render", "two\nlines.obj", "-o", "out.png"]).expect_error();
     assert!(message.starts_with(r"two\nlines.obj: "), "{message}");
 
-    let run = rasterm(dir.path(), ["render", "tri.obj", "-o", "nodir/e\x1b[2Jvil.png"]);
+    let run = rastty(dir.path(), ["render", "tri.obj", "-o", "nodir/e\x1b[2Jvil.png"]);
     let message = run.expect_error();
     no_control(&run);
     assert!(message.starts_with(r"cannot write nodir/e\u{1b}[2Jvil.png: "), "{message}");
 
     let run =
-        rasterm(dir.path(), ["render", "tri.obj", "--size", "8x6", "-o", "out.png", "--texture", "t\x1b]0;x\x07.png"]);
+        rastty(dir.path(), ["render", "tri.obj", "--size", "8x6", "-o", "out.png", "--texture", "t\x1b]0;x\x07.png"]);
     let warnings = run.expect_success();
     no_control(&run);
     assert_eq!(warnings.len(), 1, "{warnings:?}");
     assert!(warnings[0].starts_with(r"t\u{1b}]0;x\u{7}.png: cannot read the file: "), "{warnings:?}");
 
     fs::write(dir.path().join("e\x1bvil.obj"), TRIANGLE).unwrap();
-    let run = rasterm(dir.path(), ["render", "e\x1bvil.obj", "--size", "8x6", "-o", "out.png", "--stats"]);
+    let run = rastty(dir.path(), ["render", "e\x1bvil.obj", "--size", "8x6", "-o", "out.png", "--stats"]);
     run.expect_success();
     no_control(&run);
     assert!(run.stdout_text().starts_with(r"model: e\u{1b}vil.obj "), "{}", run.stdout_text());
@@ -378,7 +378,7 @@ fn control_characters_in_file_names_are_escaped() {
 fn control_characters_in_option_values_are_escaped() {
     let dir = dir_with(&[]);
     for value in ["a\rb", "a\nb", "a\u{9b}31mb", "a\x1b[31mb"] {
-        let run = rasterm(dir.path(), ["render", "-o", "out.png", "--size", value]);
+        let run = rastty(dir.path(), ["render", "-o", "out.png", "--size", value]);
         run.assert_no_panic();
         assert_eq!(run.code, Some(2));
         let first = run.stderr_text().lines().next().unwrap_or_default().to_string();
@@ -395,10 +395,10 @@ fn control_characters_in_option_values_are_escaped() {
 fn viewer_refuses_a_pipe_and_points_at_render() {
     let dir = dir_with(&[("tri.obj", TRIANGLE.as_bytes())]);
     for args in [&[][..], &["tri.obj"][..], &["missing.obj"][..]] {
-        let run = rasterm(dir.path(), args);
+        let run = rastty(dir.path(), args);
         let message = run.expect_error();
         assert!(message.contains("not a terminal"), "{message}");
-        assert!(message.contains("`rasterm render -o FILE.png`"), "{message}");
+        assert!(message.contains("`rastty render -o FILE.png`"), "{message}");
         // `expect_error` checked that stdout is empty: no escape sequence (alternate screen, cursor) was written.
         assert!(run.stdout.is_empty());
     }
@@ -411,7 +411,7 @@ fn viewer_refuses_a_pipe_and_points_at_render() {
 #[test]
 fn render_without_a_model_writes_an_800x600_png_of_the_built_in_model() {
     let dir = dir_with(&[]);
-    let run = rasterm(dir.path(), ["render", "-o", "out.png"]);
+    let run = rastty(dir.path(), ["render", "-o", "out.png"]);
     assert_eq!(run.expect_success(), Vec::<String>::new());
     assert!(run.stdout.is_empty(), "{}", run.stdout_text());
     let path = dir.path().join("out.png");
@@ -430,7 +430,7 @@ fn render_without_a_model_writes_an_800x600_png_of_the_built_in_model() {
 #[test]
 fn stats_prints_model_triangles_fragments_pipeline_and_render_lines() {
     let dir = dir_with(&[("tri.obj", TRIANGLE.as_bytes())]);
-    let run = rasterm(dir.path(), ["render", "tri.obj", "--size", "64x48", "-o", "out.png", "--stats"]);
+    let run = rastty(dir.path(), ["render", "tri.obj", "--size", "64x48", "-o", "out.png", "--stats"]);
     assert_eq!(run.expect_success(), Vec::<String>::new());
     let stdout = run.stdout_text();
     let lines: Vec<&str> = stdout.lines().collect();

@@ -7,11 +7,11 @@ use std::path::{Path, PathBuf};
 
 use image::{DynamicImage, ImageFormat};
 use proptest::prelude::*;
-use rasterm::model::{
+use rastty::model::{
     COORDINATE_LIMIT, DEFAULT_DIFFUSE, Element, Embedded, FALLBACK_NORMAL, LoadError, LoadErrorKind, Model, NoFiles,
     TextureImage, load_obj, load_obj_bytes,
 };
-use rasterm_core::math::{Vec2, Vec3};
+use rastty_core::math::{Vec2, Vec3};
 
 // ---------------------------------------------------------------------------------------------------------------
 // Helpers

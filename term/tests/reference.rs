@@ -1,21 +1,21 @@
 //! The reference renderer against closed-form answers: coverage of an edge through a pixel, exact interior
 //! colours, depth order, the near-plane cut, perspective-correct texture coordinates, bilinear sampling, Blinn-Phong
-//! lighting; and against rasterm itself (the same scene from a model, within 8-bit rounding).
+//! lighting; and against rastty itself (the same scene from a model, within 8-bit rounding).
 //!
-//! `cargo test --release -p rasterm --test reference -- --ignored --nocapture` also renders the built-in model at
-//! 320x240, writes `/tmp/reference.png` and `/tmp/rasterm_default.png`, and prints the time and the PSNR.
+//! `cargo test --release -p rastty --test reference -- --ignored --nocapture` also renders the built-in model at
+//! 320x240, writes `/tmp/reference.png` and `/tmp/rastty_default.png`, and prints the time and the PSNR.
 
-use rasterm::model::{DEFAULT_DIFFUSE, Material as ModelMaterial, Model, Part, TextureImage};
-use rasterm::reference::{
+use rastty::model::{DEFAULT_DIFFUSE, Material as ModelMaterial, Model, Part, TextureImage};
+use rastty::reference::{
     Camera, Light, Lighting, Material, Object, Projection, ReferenceError, ReferenceImage, Renderer, SAMPLES_PER_AXIS,
     Scene, Shading, render,
 };
-use rasterm::scene::{Appearance, OrbitCamera, ShadingMode};
-use rasterm_core::camera::CameraError;
-use rasterm_core::math::{Vec2, Vec3};
-use rasterm_core::pipeline::Cull;
-use rasterm_core::target::{Rgb888, Target};
-use rasterm_core::texture::WrapMode;
+use rastty::scene::{Appearance, OrbitCamera, ShadingMode};
+use rastty_core::camera::CameraError;
+use rastty_core::math::{Vec2, Vec3};
+use rastty_core::pipeline::Cull;
+use rastty_core::target::{Rgb888, Target};
+use rastty_core::texture::WrapMode;
 
 // ---------------------------------------------------------------------------------------------------------------
 // Helpers
@@ -290,7 +290,7 @@ fn culling_follows_the_screen_winding_and_mirroring() {
         assert_eq!(drawn(&o).unwrap().coverage[0] == 1.0, want, "{cull:?}");
     }
     // Mirrored in x (and moved back into view): the winding on screen flips, and so does which side is the front,
-    // as in rasterm.
+    // as in rastty.
     let mut mirrored = Object { cull: Cull::Back, ..ccw.clone() };
     mirrored.model = [[-1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [2.0, 0.0, 0.0, 1.0]];
     assert_eq!(drawn(&mirrored).unwrap().coverage[0], 1.0);
@@ -482,7 +482,7 @@ fn bad_scenes_are_errors() {
 }
 
 // ---------------------------------------------------------------------------------------------------------------
-// Against rasterm
+// Against rastty
 
 /// A quad in the xy plane facing +z, with normals, texture coordinates and a texture (a 4x4 checker of two
 /// greys 8 levels apart: bilinear filtering shows, but varies little across a pixel).
@@ -508,25 +508,25 @@ fn one_quad_model() -> Model {
     }
 }
 
-/// rasterm's picture of `model` (one sample per pixel), as `0x00RRGGBB` pixels.
-fn rasterm_pixels(model: Model, (w, h): (u32, u32), camera: &OrbitCamera, appearance: &Appearance) -> Vec<u32> {
+/// rastty's picture of `model` (one sample per pixel), as `0x00RRGGBB` pixels.
+fn rastty_pixels(model: Model, (w, h): (u32, u32), camera: &OrbitCamera, appearance: &Appearance) -> Vec<u32> {
     let mut pixels = vec![0u32; w as usize * h as usize];
     let mut depth = vec![0f32; pixels.len()];
     let mut target = Target::new(Rgb888(&mut pixels), &mut depth[..], w, h).unwrap();
-    rasterm::scene::Scene::new(model).render(&mut target, camera, appearance, w as f32 / h as f32).unwrap();
+    rastty::scene::Scene::new(model).render(&mut target, camera, appearance, w as f32 / h as f32).unwrap();
     pixels
 }
 
-/// rasterm's image and the reference of the same scene.
+/// rastty's image and the reference of the same scene.
 fn both(model: Model, size: (u32, u32), camera: &OrbitCamera, appearance: &Appearance) -> (Vec<u32>, ReferenceImage) {
     let reference = Scene::from_model(&model, camera, appearance, size, f64::from(size.0) / f64::from(size.1));
     let reference = render(&reference.unwrap()).unwrap();
-    (rasterm_pixels(model, size, camera, appearance), reference)
+    (rastty_pixels(model, size, camera, appearance), reference)
 }
 
-/// Compares rasterm's pixels with the reference: at every pixel centre the reference's probe and rasterm agree on
-/// coverage (except in pixels the reference finds partly covered, where rasterm's fill rule and sub-pixel snapping
-/// may decide a centre near an edge the other way) and on colour within `centre_levels` (8-bit rounding, rasterm's
+/// Compares rastty's pixels with the reference: at every pixel centre the reference's probe and rastty agree on
+/// coverage (except in pixels the reference finds partly covered, where rastty's fill rule and sub-pixel snapping
+/// may decide a centre near an edge the other way) and on colour within `centre_levels` (8-bit rounding, rastty's
 /// f32 and 8-bit texture filter). Returns how many centres were compared and the largest difference, in levels.
 fn agree(
     model: Model,
@@ -538,8 +538,8 @@ fn agree(
     let scene = Scene::from_model(&model, camera, appearance, size, f64::from(size.0) / f64::from(size.1)).unwrap();
     let renderer = Renderer::new(&scene).unwrap();
     let reference = renderer.render();
-    let pixels = rasterm_pixels(model, size, camera, appearance);
-    let background = rasterm_core::color::pack_rgb888(appearance.background);
+    let pixels = rastty_pixels(model, size, camera, appearance);
+    let background = rastty_core::color::pack_rgb888(appearance.background);
     let (mut compared, mut worst) = (0, 0.0f64);
     for y in 0..size.1 {
         for x in 0..size.0 {
@@ -563,8 +563,8 @@ fn agree(
 }
 
 #[test]
-fn from_model_draws_what_rasterm_draws() {
-    let ortho = OrbitCamera::new(-20.0, 35.0, 3.5, rasterm::scene::Lens::Orthographic { fov_degrees: 30.0 });
+fn from_model_draws_what_rastty_draws() {
+    let ortho = OrbitCamera::new(-20.0, 35.0, 3.5, rastty::scene::Lens::Orthographic { fov_degrees: 30.0 });
     for shading in [ShadingMode::Phong, ShadingMode::Unlit] {
         for camera in [OrbitCamera::default(), ortho] {
             let appearance = Appearance { shading, ..Appearance::default() };
@@ -584,8 +584,8 @@ fn from_model_draws_what_rasterm_draws() {
 }
 
 #[test]
-fn from_model_draws_the_builtin_model_as_rasterm_does() {
-    let model = rasterm::builtin::builtin_model().unwrap();
+fn from_model_draws_the_builtin_model_as_rastty_does() {
+    let model = rastty::builtin::builtin_model().unwrap();
     let (compared, worst) = agree(model, (40, 30), &OrbitCamera::default(), &Appearance::default(), 2.0);
     assert!(compared > 150, "{compared}");
     println!("{compared} pixel centres within {worst:.2} levels");
@@ -594,16 +594,16 @@ fn from_model_draws_the_builtin_model_as_rasterm_does() {
 #[test]
 #[ignore = "slow in debug builds: run with --release -- --ignored"]
 fn builtin_model_320x240() {
-    let model = rasterm::builtin::builtin_model().unwrap();
+    let model = rastty::builtin::builtin_model().unwrap();
     let (camera, appearance, size) = (OrbitCamera::default(), Appearance::default(), (320, 240));
     let (compared, worst) = agree(model.clone(), size, &camera, &appearance, 2.0);
-    println!("single samples at pixel centres: {compared} within {worst:.2} levels of rasterm");
+    println!("single samples at pixel centres: {compared} within {worst:.2} levels of rastty");
     let scene = Scene::from_model(&model, &camera, &appearance, size, 320.0 / 240.0).unwrap();
     let triangles: usize = scene.objects.iter().map(|o| o.indices.len() / 3).sum();
     let start = std::time::Instant::now();
     let reference = render(&scene).unwrap();
     let elapsed = start.elapsed();
-    let pixels = rasterm_pixels(model, size, &camera, &appearance);
+    let pixels = rastty_pixels(model, size, &camera, &appearance);
     let psnr = reference.psnr_rgb888(&pixels).unwrap();
     // Fully covered pixels only (no edge in them): shading and texture differences without anti-aliasing.
     let inside: Vec<usize> = (0..pixels.len()).filter(|&p| reference.coverage[p] == 1.0).collect();
@@ -615,19 +615,19 @@ fn builtin_model_320x240() {
         coverage: vec![1.0; inside.len()],
     };
     let interior_psnr = interior.psnr_rgb888(&inside.iter().map(|&p| pixels[p]).collect::<Vec<_>>()).unwrap();
-    // Pixel centres rasterm decided differently (it leaves exactly the background where it draws nothing).
-    let background = rasterm_core::color::pack_rgb888(appearance.background);
+    // Pixel centres rastty decided differently (it leaves exactly the background where it draws nothing).
+    let background = rastty_core::color::pack_rgb888(appearance.background);
     let disagree = (0..pixels.len()).filter(|&p| reference.centre_covered[p] != (pixels[p] != background)).count();
     let centres = reference.centre_covered.iter().filter(|&&c| c).count();
     let covered: f64 = reference.coverage.iter().sum();
     println!(
         "reference: {triangles} triangles, 320x240 x 256 samples in {:.2} s\n\
-         PSNR against rasterm: {psnr:.2} dB over the image, {interior_psnr:.2} dB over the {} fully covered pixels\n\
-         {centres} pixel centres covered ({disagree} decided differently by rasterm), {covered:.1} pixels of coverage",
+         PSNR against rastty: {psnr:.2} dB over the image, {interior_psnr:.2} dB over the {} fully covered pixels\n\
+         {centres} pixel centres covered ({disagree} decided differently by rastty), {covered:.1} pixels of coverage",
         elapsed.as_secs_f64(),
         inside.len(),
     );
-    rasterm::png_file::write_png(std::path::Path::new("/tmp/reference.png"), 320, 240, &reference.to_rgb888()).unwrap();
-    rasterm::png_file::write_png(std::path::Path::new("/tmp/rasterm_default.png"), 320, 240, &pixels).unwrap();
+    rastty::png_file::write_png(std::path::Path::new("/tmp/reference.png"), 320, 240, &reference.to_rgb888()).unwrap();
+    rastty::png_file::write_png(std::path::Path::new("/tmp/rastty_default.png"), 320, 240, &pixels).unwrap();
     assert!(psnr > 25.0, "{psnr}");
 }

@@ -1,18 +1,18 @@
-//! `rasterm report frames`: the report's rows and numbers on a small frame through the library, and its errors
+//! `rastty report frames`: the report's rows and numbers on a small frame through the library, and its errors
 //! through the binary. Timings are never compared.
 
 mod common;
 
 use std::path::PathBuf;
 
-use rasterm::report::effects::ShadowMaps;
-use rasterm::report::frames::{self, FramesReport, rows};
-use rasterm::scene_render::{EffectToggles, PreparedScene, SceneEffect};
+use rastty::report::effects::ShadowMaps;
+use rastty::report::frames::{self, FramesReport, rows};
+use rastty::scene_render::{EffectToggles, PreparedScene, SceneEffect};
 
 fn load(path: &PathBuf, text: Option<String>) -> PreparedScene {
     let data = match text {
-        Some(text) => rasterm::scene_file::parse(text, path).and_then(|file| file.load()),
-        None => rasterm::scene_file::load(path),
+        Some(text) => rastty::scene_file::parse(text, path).and_then(|file| file.load()),
+        None => rastty::scene_file::load(path),
     };
     PreparedScene::new(data.unwrap_or_else(|e| panic!("{e}"))).unwrap()
 }
@@ -50,7 +50,7 @@ fn the_report_has_every_row_and_every_number() {
         let mut out = Vec::new();
         let results = frames::run(&report, &scene, &mut out).unwrap();
         let text = String::from_utf8(out).unwrap();
-        let expected_threads = threads.unwrap_or_else(|| rasterm::scene_render::SceneRenderer::new().threads());
+        let expected_threads = threads.unwrap_or_else(|| rastty::scene_render::SceneRenderer::new().threads());
         assert!(text.contains(&format!("- threads: {expected_threads}\n")), "{text}");
         assert!(text.contains(&format!("- command: `{}`", report.command_line())), "{text}");
         assert!(text.contains("at 40x30"), "{text}");
@@ -97,17 +97,17 @@ fn a_scene_without_shadows_has_one_row() {
 #[test]
 fn command_lines_show_the_options_given() {
     let report = FramesReport::new("a.toml".into(), 30, None, frames::DEFAULT_SIZE);
-    assert_eq!(report.command_line(), "rasterm report frames a.toml --frames 30");
+    assert_eq!(report.command_line(), "rastty report frames a.toml --frames 30");
     let report = FramesReport::quick("a.toml".into(), Some(1), (200, 120));
-    assert_eq!(report.command_line(), "rasterm report frames a.toml --size 200x120 --quick --threads 1");
+    assert_eq!(report.command_line(), "rastty report frames a.toml --size 200x120 --quick --threads 1");
 }
 
 #[test]
 fn a_scene_that_does_not_load_is_an_error_naming_it() {
-    let out = common::rasterm_in_empty_dir(&["report", "frames", "missing.toml", "--quick"]);
+    let out = common::rastty_in_empty_dir(&["report", "frames", "missing.toml", "--quick"]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{stderr}");
-    assert!(stderr.starts_with("rasterm: error: missing.toml: "), "{stderr}");
+    assert!(stderr.starts_with("rastty: error: missing.toml: "), "{stderr}");
     assert!(out.stdout.is_empty());
 }
 
@@ -121,7 +121,7 @@ fn bad_options_are_usage_errors() {
         &["a.toml", "--size", "0x5"],
     ];
     for args in cases {
-        let out = common::rasterm_in_empty_dir(&[&["report", "frames"][..], args].concat());
+        let out = common::rastty_in_empty_dir(&[&["report", "frames"][..], args].concat());
         assert_eq!(out.status.code(), Some(2), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
     }
 }

@@ -1,4 +1,4 @@
-//! The `rasterm` binary on scene files: `render SCENE.toml -o`, `--explain`, and the errors.
+//! The `rastty` binary on scene files: `render SCENE.toml -o`, `--explain`, and the errors.
 
 mod common;
 
@@ -8,9 +8,9 @@ use std::path::Path;
 use std::process::{Command, Output};
 
 /// Runs the binary in `dir` with `args`.
-fn rasterm(dir: &Path, args: &[&str]) -> (Option<i32>, String, String) {
+fn rastty(dir: &Path, args: &[&str]) -> (Option<i32>, String, String) {
     let Output { status, stdout, stderr } =
-        Command::new(env!("CARGO_BIN_EXE_rasterm")).current_dir(dir).args(args).output().expect("run rasterm");
+        Command::new(env!("CARGO_BIN_EXE_rastty")).current_dir(dir).args(args).output().expect("run rastty");
     let stderr = String::from_utf8_lossy(&stderr).into_owned();
     assert!(!stderr.contains("panicked"), "a panic: {stderr}");
     (status.code(), String::from_utf8_lossy(&stdout).into_owned(), stderr)
@@ -20,7 +20,7 @@ fn rasterm(dir: &Path, args: &[&str]) -> (Option<i32>, String, String) {
 fn explain_prints_the_plan_and_renders_nothing() {
     let dir = tempfile::tempdir().unwrap();
     let scene = root().join("assets/scenes/spot_lamp.toml");
-    let (code, stdout, stderr) = rasterm(dir.path(), &["render", scene.to_str().unwrap(), "--explain"]);
+    let (code, stdout, stderr) = rastty(dir.path(), &["render", scene.to_str().unwrap(), "--explain"]);
     assert_eq!(code, Some(0), "{stderr}");
     assert!(stderr.is_empty(), "{stderr}");
     let lines: Vec<&str> = stdout.lines().collect();
@@ -30,7 +30,7 @@ fn explain_prints_the_plan_and_renders_nothing() {
     assert!(lines.last().unwrap().starts_with("  3. ambient occlusion"), "{stdout}");
     assert_eq!(fs::read_dir(dir.path()).unwrap().count(), 0, "--explain alone wrote a file");
 
-    let (code, stdout, _) = rasterm(
+    let (code, stdout, _) = rastty(
         dir.path(),
         &["render", scene.to_str().unwrap(), "--explain", "--without", "shadows", "--size", "64x64"],
     );
@@ -43,7 +43,7 @@ fn a_scene_renders_to_a_png_with_its_plan_and_stats() {
     let dir = tempfile::tempdir().unwrap();
     let scene = root().join("assets/scenes/spot_sun.toml");
     let args = ["render", scene.to_str().unwrap(), "-o", "sun.png", "--size", "80x60", "--explain", "--stats"];
-    let (code, stdout, stderr) = rasterm(dir.path(), &args);
+    let (code, stdout, stderr) = rastty(dir.path(), &args);
     assert_eq!(code, Some(0), "{stderr}");
     assert!(stdout.starts_with("frame 80x60"), "{stdout}");
     assert!(stdout.contains("\nshadow map of light 1: 512x512 texels, "), "{stdout}");
@@ -62,14 +62,14 @@ fn scene_file_errors_name_the_file_and_line_and_exit_non_zero() {
     )
     .unwrap();
     for args in [&["render", "bad.toml", "-o", "x.png"][..], &["render", "bad.toml", "--explain"], &["bad.toml"]] {
-        let (code, stdout, stderr) = rasterm(dir.path(), args);
+        let (code, stdout, stderr) = rastty(dir.path(), args);
         assert_eq!(code, Some(1), "{args:?}: {stderr}");
         assert!(stdout.is_empty());
         // The viewer refuses a non-terminal first; render reads the file.
         if args[0] == "render" {
             assert_eq!(
                 stderr.trim(),
-                "rasterm: error: bad.toml:4:7: camera.fov: must be between 0 and 180 degrees, got 200",
+                "rastty: error: bad.toml:4:7: camera.fov: must be between 0 and 180 degrees, got 200",
                 "{args:?}"
             );
         }
@@ -87,10 +87,10 @@ fn a_point_light_inside_the_scene_is_an_error_naming_the_light() {
          [[objects]]\nmesh = \"builtin:spot\"\n",
     )
     .unwrap();
-    let (code, _, stderr) = rasterm(dir.path(), &["render", "lamp.toml", "--explain"]);
+    let (code, _, stderr) = rastty(dir.path(), &["render", "lamp.toml", "--explain"]);
     assert_eq!(code, Some(1));
     assert!(
-        stderr.starts_with("rasterm: error: lamp.toml: light 1 (point at [0, 0.5, 0]): cannot cast shadows"),
+        stderr.starts_with("rastty: error: lamp.toml: light 1 (point at [0, 0.5, 0]): cannot cast shadows"),
         "{stderr}"
     );
 }
@@ -111,18 +111,18 @@ fn options_that_do_not_fit_are_errors() {
         (&["render", "--without", "shadows", "-o", "x.png"], "--without needs a scene file (.toml)"),
     ];
     for (args, message) in cases {
-        let (code, stdout, stderr) = rasterm(dir.path(), args);
+        let (code, stdout, stderr) = rastty(dir.path(), args);
         assert_eq!(code, Some(1), "{args:?}: {stderr}");
         assert!(stdout.is_empty(), "{args:?}: {stdout}");
-        assert!(stderr.starts_with(&format!("rasterm: error: {message}")), "{args:?}: {stderr}");
+        assert!(stderr.starts_with(&format!("rastty: error: {message}")), "{args:?}: {stderr}");
     }
     // Without --explain, -o is required (a usage error).
-    let (code, _, stderr) = rasterm(dir.path(), &["render", scene]);
+    let (code, _, stderr) = rastty(dir.path(), &["render", scene]);
     assert_eq!(code, Some(2), "{stderr}");
     assert!(stderr.contains("--output"), "{stderr}");
     // Scene options that do fit are taken.
     let (code, stdout, stderr) =
-        rasterm(dir.path(), &["render", scene, "--explain", "--wireframe", "--no-texture", "--background", "000000"]);
+        rastty(dir.path(), &["render", scene, "--explain", "--wireframe", "--no-texture", "--background", "000000"]);
     assert_eq!(code, Some(0), "{stderr}");
     assert!(stdout.contains("background #000000") && stdout.contains("with wireframe lines, diffuse textures off"));
 }

@@ -7,13 +7,13 @@ use common::{root, scenes_in};
 use std::fs;
 use std::path::Path;
 
-use rasterm::scene_file::{load, parse};
-use rasterm::scene_render::{
+use rastty::scene_file::{load, parse};
+use rastty::scene_render::{
     AMBIENT_OCCLUSION, EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError,
     SceneRenderer, render_scene_image,
 };
-use rasterm_core::math::Vec3;
-use rasterm_core::target::{Rgb888, Target};
+use rastty_core::math::Vec3;
+use rastty_core::target::{Rgb888, Target};
 
 fn prepared(path: &Path) -> PreparedScene {
     PreparedScene::new(load(path).unwrap_or_else(|e| panic!("{e}"))).unwrap_or_else(|e| panic!("{e}"))
@@ -37,7 +37,7 @@ fn without(effect: SceneEffect) -> PlanOptions {
 
 /// Checks that an image shows something: many colours, and most pixels not the background.
 fn assert_not_blank(name: &str, pixels: &[u32], background: Vec3) {
-    let background = rasterm_core::color::pack_rgb888(background);
+    let background = rastty_core::color::pack_rgb888(background);
     let drawn = pixels.iter().filter(|&&p| p != background).count();
     let mut colours: Vec<u32> = pixels.to_vec();
     colours.sort_unstable();
@@ -250,7 +250,7 @@ fn shadow_maps_are_kept_while_only_the_camera_moves() {
     let (w, h) = (160u32, 120u32);
     let (mut color, mut depth) = (vec![0u32; (w * h) as usize], vec![0f32; (w * h) as usize]);
     let mut renderer = SceneRenderer::new();
-    let mut frame = |camera: &rasterm::scene_file::SceneCamera| {
+    let mut frame = |camera: &rastty::scene_file::SceneCamera| {
         let plan = ScenePlan::new(&scene, camera, (w, h), &PlanOptions::default()).unwrap();
         let mut target = Target::new(Rgb888(&mut color), &mut depth[..], w, h).unwrap();
         let report = renderer.render(&scene, &plan, &mut target).unwrap();

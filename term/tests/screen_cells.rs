@@ -2,9 +2,9 @@
 
 use proptest::prelude::*;
 use proptest::test_runner::Config as ProptestConfig;
-use rasterm::screen::ascii_ramp::{ASCII_RAMP, ascii_cell};
-use rasterm::screen::half_block::UPPER_HALF_BLOCK;
-use rasterm::screen::{Cell, CellGrid, CellMode, Color, ColorMode, PixelFrame};
+use rastty::screen::ascii_ramp::{ASCII_RAMP, ascii_cell};
+use rastty::screen::half_block::UPPER_HALF_BLOCK;
+use rastty::screen::{Cell, CellGrid, CellMode, Color, ColorMode, PixelFrame};
 
 const MODES: [ColorMode; 4] = [ColorMode::TrueColor, ColorMode::Ansi256, ColorMode::Ansi16, ColorMode::None];
 

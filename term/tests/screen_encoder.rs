@@ -6,8 +6,8 @@ use std::num::NonZeroU16;
 
 use proptest::prelude::*;
 use proptest::test_runner::Config as ProptestConfig;
-use rasterm::screen::encoder::{CLEAR_SCREEN, SYNC_BEGIN, SYNC_END};
-use rasterm::screen::{Cell, CellGrid, CellMode, Color, ColorMode, Encoder, PixelFrame, Tolerance, naive_full_frame};
+use rastty::screen::encoder::{CLEAR_SCREEN, SYNC_BEGIN, SYNC_END};
+use rastty::screen::{Cell, CellGrid, CellMode, Color, ColorMode, Encoder, PixelFrame, Tolerance, naive_full_frame};
 
 // ---------------------------------------------------------------------------------------------------------
 // The oracle.

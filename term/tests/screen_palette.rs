@@ -4,11 +4,11 @@
 //! and the excess Oklab distance (ΔE of the table's pick minus ΔE of the exact pick), mean over all colours
 //! checked and maximum. The normal run checks a lattice of 86^3 colours (every channel value divisible
 //! by 3, both ends included); the ignored test checks all 2^24 colours:
-//! `cargo test -p rasterm --release --test screen_palette -- --ignored --nocapture`.
+//! `cargo test -p rastty --release --test screen_palette -- --ignored --nocapture`.
 
-use rasterm::screen::oklab::Oklab;
-use rasterm::screen::palette::{nearest_ansi16_exact, nearest_xterm256_exact, oklab_distance_to_entry};
-use rasterm::screen::palette_lut::{nearest_ansi16, nearest_xterm256};
+use rastty::screen::oklab::Oklab;
+use rastty::screen::palette::{nearest_ansi16_exact, nearest_xterm256_exact, oklab_distance_to_entry};
+use rastty::screen::palette_lut::{nearest_ansi16, nearest_xterm256};
 
 #[derive(Debug, Default)]
 struct LutError {
@@ -97,7 +97,7 @@ fn greys_and_primaries_quantise_sensibly() {
     assert_eq!(nearest_xterm256(128, 128, 128), 244); // grey 128 is ramp entry 232 + 12
     for v in 0..=255u8 {
         let index = nearest_xterm256(v, v, v);
-        let (r, g, b) = rasterm::screen::palette::xterm256_rgb(index);
+        let (r, g, b) = rastty::screen::palette::xterm256_rgb(index);
         assert!(r == g && g == b, "grey {v} became a tinted {index}");
     }
     assert_eq!(nearest_ansi16(0, 0, 0), 0);

@@ -1,6 +1,6 @@
 //! The viewer ends when its terminal goes away, and on SIGTERM, within one second, whatever it is doing.
 //!
-//! Each test gives the real `rasterm` binary a pseudo-terminal of its own (opened with `rustix`; no terminal of
+//! Each test gives the real `rastty` binary a pseudo-terminal of its own (opened with `rustix`; no terminal of
 //! the machine's is touched) as standard input, output and error, reads what it draws on a thread of its own, and
 //! then closes the terminal or signals the process. The pseudo-terminal is not the viewer's controlling terminal,
 //! so closing it sends no SIGHUP: the viewer must see the hangup on the terminal itself. (The tmux tests in
@@ -135,10 +135,10 @@ struct Viewer {
 }
 
 impl Viewer {
-    /// Starts `rasterm` (the built-in model) with the terminal's slave end as its standard streams.
+    /// Starts `rastty` (the built-in model) with the terminal's slave end as its standard streams.
     fn start(slave: &File) -> Self {
         let stdio = || Stdio::from(slave.as_fd().try_clone_to_owned().expect("dup the slave"));
-        let child = Command::new(env!("CARGO_BIN_EXE_rasterm"))
+        let child = Command::new(env!("CARGO_BIN_EXE_rastty"))
             .env("TERM", "xterm-256color")
             .env("COLORTERM", "truecolor")
             .env_remove("NO_COLOR")
@@ -146,7 +146,7 @@ impl Viewer {
             .stdout(stdio())
             .stderr(stdio())
             .spawn()
-            .expect("start rasterm");
+            .expect("start rastty");
         Self { child }
     }
 
@@ -158,10 +158,10 @@ impl Viewer {
     /// Waits for the process to end; returns its status and how long it took from `since`.
     fn wait_for_end(&mut self, since: Instant) -> (ExitStatus, Duration) {
         loop {
-            if let Some(status) = self.child.try_wait().expect("wait for rasterm") {
+            if let Some(status) = self.child.try_wait().expect("wait for rastty") {
                 return (status, since.elapsed());
             }
-            assert!(since.elapsed() < TIMEOUT, "rasterm still runs {TIMEOUT:?} later");
+            assert!(since.elapsed() < TIMEOUT, "rastty still runs {TIMEOUT:?} later");
             thread::sleep(Duration::from_millis(5));
         }
     }

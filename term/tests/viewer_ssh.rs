@@ -116,7 +116,7 @@ impl SshServer {
         let path = |name: &str| dir.path().join(name);
         for key in ["host_key", "user_key"] {
             run(Command::new("ssh-keygen")
-                .args(["-q", "-t", "ed25519", "-N", "", "-C", "rasterm-test", "-f"])
+                .args(["-q", "-t", "ed25519", "-N", "", "-C", "rastty-test", "-f"])
                 .arg(path(key)));
         }
         fs::copy(path("user_key.pub"), path("authorized_keys")).expect("authorized_keys");
@@ -489,7 +489,7 @@ impl Session {
         let remote = format!(
             "echo $$ > {}; exec {} --color truecolor{}",
             shell_quote(&remote_pid_file),
-            shell_quote(Path::new(env!("CARGO_BIN_EXE_rasterm"))),
+            shell_quote(Path::new(env!("CARGO_BIN_EXE_rastty"))),
             if pacing { "" } else { " --no-pacing" }
         );
         let args = server.client_args(relay.port, &remote);
@@ -511,7 +511,7 @@ impl Session {
 /// The screen of the viewer run locally in tmux (no SSH, same size and colours) after `keys`, once steady.
 fn exact_screen_after(keys: &[&str]) -> String {
     let args = [OsStr::new("--color"), OsStr::new("truecolor")];
-    let tmux = Tmux::prepare("ssh-reference", COLUMNS, ROWS, Path::new(env!("CARGO_BIN_EXE_rasterm")), &args);
+    let tmux = Tmux::prepare("ssh-reference", COLUMNS, ROWS, Path::new(env!("CARGO_BIN_EXE_rastty")), &args);
     tmux.go();
     let mut screen = tmux.wait_for_picture();
     for key in keys {

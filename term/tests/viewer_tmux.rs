@@ -1,4 +1,4 @@
-//! End-to-end tests of the terminal viewer: the real `rasterm` binary in a tmux pane.
+//! End-to-end tests of the terminal viewer: the real `rastty` binary in a tmux pane.
 //!
 //! Each test starts its own tmux server with the viewer in its one pane (`common/tmux.rs`), and kills it when the
 //! test ends, passed or failed.

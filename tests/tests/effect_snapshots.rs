@@ -4,11 +4,11 @@
 //! - `spot_lamp_all`: `assets/scenes/spot_lamp.toml` as written, every effect on (its floor has every map, the
 //!   point lamp casts shadows, ambient occlusion is on);
 //! - `spot_lamp_none`: the same with all five effects off;
-//! - `spot_lamp_without_EFFECT`: each effect alone left out (`rasterm render --without EFFECT`);
+//! - `spot_lamp_without_EFFECT`: each effect alone left out (`rastty render --without EFFECT`);
 //! - `spot_sun_all`: `assets/scenes/spot_sun.toml`, a directional light's shadow.
 //!
 //! The comparison and blessing are the harness's (`snapshot/`): no difference allowed, `NAME.actual.png` and
-//! `NAME.diff.png` written beside a golden that does not match, `UPDATE_SNAPSHOTS=1 cargo test -p rasterm-tests`
+//! `NAME.diff.png` written beside a golden that does not match, `UPDATE_SNAPSHOTS=1 cargo test -p rastty-tests`
 //! to re-bless. So that a re-blessing cannot quietly turn an effect into a no-op, each frame without an effect must
 //! also differ from the frame with every effect in a good number of pixels.
 
@@ -17,8 +17,8 @@ mod snapshot;
 use std::path::Path;
 use std::sync::LazyLock;
 
-use rasterm::scene_file::load;
-use rasterm::scene_render::{EffectToggles, PlanOptions, PreparedScene, SceneEffect, render_scene_image};
+use rastty::scene_file::load;
+use rastty::scene_render::{EffectToggles, PlanOptions, PreparedScene, SceneEffect, render_scene_image};
 
 use snapshot::{Image, Mode, Snapshot, TOLERANCE, compare, golden_dir};
 

@@ -4,11 +4,11 @@
 //! cover the frame top to bottom, the band buffers fit 16 KiB, and the strips add up to the frame rendered whole,
 //! both by the scene's specialised draw and by `draw_mesh`.
 //!
-//! Run `cargo test -p rasterm-tests --test firmware_checksum -- --nocapture` to see the lines.
+//! Run `cargo test -p rastty-tests --test firmware_checksum -- --nocapture` to see the lines.
 
-use rasterm_core::pipeline::DrawStats;
-use rasterm_core::target::{Rgb565, Target};
-use rasterm_firmware_scene::{
+use rastty_core::pipeline::DrawStats;
+use rastty_core::target::{Rgb565, Target};
+use rastty_firmware_scene::{
     BACKGROUND, BAND_BUFFER_BYTES, BAND_ROWS, BandBuffers, FRAMES, Fnv1a, FrameReport, HEIGHT, STRIPS, Scene, WIDTH,
     checksum_frame, render_frame, spot,
 };
@@ -105,7 +105,7 @@ fn the_model_arrays_are_spot() {
         assert!((n.length() - 1.0).abs() < 1e-5, "unit normals");
     }
     // The build script computes the normals with its own copy of the viewer's welding and area weighting (a
-    // build script cannot cheaply depend on `rasterm`): the two must agree bit for bit.
+    // build script cannot cheaply depend on `rastty`): the two must agree bit for bit.
     let indices: Vec<u32> = spot::INDICES.iter().map(|&i| u32::from(i)).collect();
-    assert!(rasterm::model::smooth_normals(&spot::POSITIONS, &indices) == spot::NORMALS, "the viewer's normals");
+    assert!(rastty::model::smooth_normals(&spot::POSITIONS, &indices) == spot::NORMALS, "the viewer's normals");
 }

@@ -5,15 +5,15 @@
 //! Every scene is rendered twice, as a whole frame (`Target::new`) and as 16-row bands (`Target::band` over one
 //! 16-row buffer, rows assembled), and both must match the golden `tests/snapshots/NAME.png`. A failure writes
 //! `NAME.actual.png` and `NAME.diff.png` (or `NAME.bands.actual.png` and `NAME.bands.diff.png` for the banded
-//! rendering) beside the golden. `UPDATE_SNAPSHOTS=1 cargo test -p rasterm-tests` re-blesses the goldens.
+//! rendering) beside the golden. `UPDATE_SNAPSHOTS=1 cargo test -p rastty-tests` re-blesses the goldens.
 
 mod snapshot;
 
 use std::sync::LazyLock;
 
-use rasterm::builtin::builtin_model;
-use rasterm::scene::{Appearance, Lens, OrbitCamera, Scene, ShadingMode};
-use rasterm_core::target::{Rgb888, Target};
+use rastty::builtin::builtin_model;
+use rastty::scene::{Appearance, Lens, OrbitCamera, Scene, ShadingMode};
+use rastty_core::target::{Rgb888, Target};
 
 use snapshot::{Comparison, Failure, Image, Mode, Passed, Snapshot, TOLERANCE, compare, golden_dir};
 
@@ -255,7 +255,7 @@ fn harness_fails_on_missing_golden_and_wrong_size_without_blessing() {
     let image = small_frame();
     match snapshot.check(&image, TOLERANCE, Mode::Compare) {
         Err(failure @ Failure::Missing { .. }) => {
-            assert!(failure.to_string().contains("UPDATE_SNAPSHOTS=1 cargo test -p rasterm-tests"), "{failure}");
+            assert!(failure.to_string().contains("UPDATE_SNAPSHOTS=1 cargo test -p rastty-tests"), "{failure}");
         }
         other => panic!("expected a missing golden, got {other:?}"),
     }

@@ -1,16 +1,16 @@
-//! Hard cases through the scene API, as the viewer and `rasterm render` use it: bands of 1, 7 and 16 rows on hard
+//! Hard cases through the scene API, as the viewer and `rastty render` use it: bands of 1, 7 and 16 rows on hard
 //! scenes, degenerate models, degenerate cameras, and rotation drift as the viewer applies rotations. Each test
 //! states the exact expected result. The core's own families are in `core/tests/stability/`.
 
 use std::sync::LazyLock;
 
-use rasterm::builtin::builtin_model;
-use rasterm::model::{NoFiles, load_obj_bytes};
-use rasterm::scene::{Appearance, Lens, OrbitCamera, RenderError, Scene, ShadingMode};
-use rasterm_core::camera::CameraError;
-use rasterm_core::color::pack_rgb888;
-use rasterm_core::math::Vec3;
-use rasterm_core::target::{Rgb888, Target};
+use rastty::builtin::builtin_model;
+use rastty::model::{NoFiles, load_obj_bytes};
+use rastty::scene::{Appearance, Lens, OrbitCamera, RenderError, Scene, ShadingMode};
+use rastty_core::camera::CameraError;
+use rastty_core::color::pack_rgb888;
+use rastty_core::math::Vec3;
+use rastty_core::target::{Rgb888, Target};
 
 static SPOT: LazyLock<Scene> = LazyLock::new(|| Scene::new(builtin_model().expect("the built-in model loads")));
 

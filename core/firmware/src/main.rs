@@ -1,4 +1,4 @@
-//! rasterm-core on a Cortex-M4: renders the shared scene (`rasterm-firmware-scene`: Spot the cow, Phong-lit,
+//! rastty-core on a Cortex-M4: renders the shared scene (`rastty-firmware-scene`: Spot the cow, Phong-lit,
 //! 320x240 RGB565, `u16` depth) in 12-row strips through 15,360 bytes of band buffers, folds every strip into an
 //! FNV-1a checksum, and prints, through semihosting, one line per frame that the host must reproduce exactly
 //! (`check.sh` compares them), then the instructions each frame took, the band buffers' RAM and the peak stack.
@@ -19,8 +19,8 @@ use core::panic::PanicInfo;
 
 use cortex_m_rt::{ExceptionFrame, entry, exception};
 use cortex_m_semihosting::{debug, hio};
-use rasterm_firmware_scene::{BAND_BUFFER_BYTES, BAND_ROWS, BandBuffers, FRAMES, HEIGHT, STRIPS, WIDTH};
-use rasterm_firmware_scene::{checksum_frame, spot};
+use rastty_firmware_scene::{BAND_BUFFER_BYTES, BAND_ROWS, BandBuffers, FRAMES, HEIGHT, STRIPS, WIDTH};
+use rastty_firmware_scene::{checksum_frame, spot};
 
 /// The band buffers, in `.bss`: the only frame memory.
 static mut BANDS: BandBuffers = BandBuffers::new();
@@ -35,7 +35,7 @@ fn main() -> ! {
 
     let _ = writeln!(
         out,
-        "rasterm-core on a Cortex-M4: Spot ({} vertices, {} triangles), {WIDTH}x{HEIGHT} RGB565 + u16 depth, \
+        "rastty-core on a Cortex-M4: Spot ({} vertices, {} triangles), {WIDTH}x{HEIGHT} RGB565 + u16 depth, \
          {STRIPS} strips of {BAND_ROWS} rows",
         spot::VERTEX_COUNT,
         spot::TRIANGLE_COUNT,

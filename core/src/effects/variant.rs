@@ -61,7 +61,7 @@ impl fmt::Display for SurfaceError {
 
 /// The stages and varyings one mapped draw runs: exactly what its mesh, material and lights call for.
 ///
-/// Its [`Display`](fmt::Display) form is the explanation `rasterm render --explain` prints, e.g.
+/// Its [`Display`](fmt::Display) form is the explanation `rastty render --explain` prints, e.g.
 /// `varyings normal+world+uv+tangent; albedo texture; normals tangent-space map; specular map; glow map;
 /// maps bilinear/repeat; lights 1 directional (1 with shadows, pcf 3x3); perspective-correct, depth less, cull back`.
 #[derive(Clone, Copy, Debug, PartialEq)]

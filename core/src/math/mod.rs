@@ -1,6 +1,6 @@
 //! Vectors, matrices and quaternions.
 //!
-//! Conventions used throughout rasterm: column vectors (`m * v`), matrices stored by columns, right-handed
+//! Conventions used throughout rastty: column vectors (`m * v`), matrices stored by columns, right-handed
 //! coordinates, angles in radians. All non-trivial float functions go through [`float`], which calls `libm`; code
 //! outside the core that computes anything a pixel depends on should use it too.
 

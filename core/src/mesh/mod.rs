@@ -79,7 +79,7 @@ impl core::fmt::Display for MeshError {
 ///
 /// # Examples
 /// ```
-/// use rasterm_core::{math::Vec3, mesh::{Indices, Mesh}};
+/// use rastty_core::{math::Vec3, mesh::{Indices, Mesh}};
 /// let positions = [Vec3::ZERO, Vec3::X, Vec3::Y];
 /// let normals = [Vec3::Z; 3];
 /// let mesh = Mesh::new(&positions, Indices::U16(&[0, 1, 2])).unwrap().with_normals(&normals).unwrap();

@@ -47,7 +47,7 @@ impl core::fmt::Display for DrawError {
 ///
 /// # Examples
 /// ```
-/// use rasterm_core::{math::{Vec3, Vec4}, mesh::{Attributes, Indices, Mesh}, pipeline::*, target::*};
+/// use rastty_core::{math::{Vec3, Vec4}, mesh::{Attributes, Indices, Mesh}, pipeline::*, target::*};
 ///
 /// /// Positions are already in clip space; every pixel is red.
 /// struct Red;

@@ -96,7 +96,7 @@ pub const MAX_SUBPIXEL_BITS: u8 = 8;
 ///
 /// # Examples
 /// ```
-/// use rasterm_core::pipeline::{Cull, DrawState};
+/// use rastty_core::pipeline::{Cull, DrawState};
 /// let state = DrawState { cull: Cull::None, ..DrawState::default() };
 /// assert_eq!(state.subpixel_bits, 8);
 /// ```

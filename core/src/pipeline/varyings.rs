@@ -60,7 +60,7 @@ impl Varyings for f32 {
 ///
 /// # Examples
 /// ```
-/// use rasterm_core::{impl_varyings, math::{Vec2, Vec3}};
+/// use rastty_core::{impl_varyings, math::{Vec2, Vec3}};
 /// #[derive(Clone, Copy)]
 /// struct MyVaryings {
 ///     normal: Vec3,

@@ -8,13 +8,13 @@
 //! For anti-aliasing, render `k` times larger and average with [`downsample_rgb888`].
 //!
 //! ```
-//! use rasterm_core::target::{Rgb565, Target};
+//! use rastty_core::target::{Rgb565, Target};
 //! // A 320x240 display drawn 16 rows at a time: 10 KiB of colour and 10 KiB of depth, not 300 KiB.
 //! let mut color = [0u16; 320 * 16];
 //! let mut depth = [0u16; 320 * 16];
 //! for y0 in (0..240).step_by(16) {
 //!     let mut band = Target::band(Rgb565(&mut color), &mut depth[..], 320, 240, y0..y0 + 16).unwrap();
-//!     band.clear(rasterm_core::math::Vec3::ZERO);
+//!     band.clear(rastty_core::math::Vec3::ZERO);
 //!     // ... draw the scene into `band`, then send its rows to the display.
 //! }
 //! ```

@@ -15,7 +15,7 @@ use super::TargetError;
 ///
 /// # Examples
 /// ```
-/// use rasterm_core::target::downsample_rgb888;
+/// use rastty_core::target::downsample_rgb888;
 /// // Two 2x2 blocks: all red, and half red half black.
 /// let samples = [0xFF0000, 0xFF0000, 0xFF0000, 0x000000, 0xFF0000, 0xFF0000, 0xFF0000, 0x000000];
 /// let mut pixels = [0u32; 2];

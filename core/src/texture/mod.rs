@@ -91,7 +91,7 @@ impl<'a> Texture<'a> {
     ///
     /// # Examples
     /// ```
-    /// use rasterm_core::{math::{Vec2, Vec3}, texture::{Nearest, Repeat, Texture}};
+    /// use rastty_core::{math::{Vec2, Vec3}, texture::{Nearest, Repeat, Texture}};
     /// // Two 2x1 maps: red, blue (the first) and white, black (the second), texel by texel.
     /// let texels = [0xFF0000, 0xFFFFFF, 0x0000FF, 0x000000];
     /// let second = Texture::interleaved(&texels, 2, 1, 2, 1).unwrap();
@@ -158,7 +158,7 @@ impl<'a> Texture<'a> {
     ///
     /// # Examples
     /// ```
-    /// use rasterm_core::{math::{Vec2, Vec3}, texture::{Nearest, Repeat, Texture}};
+    /// use rastty_core::{math::{Vec2, Vec3}, texture::{Nearest, Repeat, Texture}};
     /// // 2x1: red on the left, blue on the right.
     /// let texels = [0xFF0000, 0x0000FF];
     /// let t = Texture::new(&texels, 2, 1).unwrap();

@@ -1,10 +1,10 @@
 //! Helpers shared by the core's integration tests: screen-space triangles, a coverage-count target, ASCII art.
 #![allow(dead_code)]
 
-use rasterm_core::math::{Vec3, Vec4};
-use rasterm_core::mesh::{Attributes, Indices, Mesh};
-use rasterm_core::pipeline::{DrawState, DrawStats, Fragment, Shader, draw};
-use rasterm_core::target::{ColorBuffer, DepthBuffer, NoDepth, Target, depth_to_u16};
+use rastty_core::math::{Vec3, Vec4};
+use rastty_core::mesh::{Attributes, Indices, Mesh};
+use rastty_core::pipeline::{DrawState, DrawStats, Fragment, Shader, draw};
+use rastty_core::target::{ColorBuffer, DepthBuffer, NoDepth, Target, depth_to_u16};
 
 /// Counts how many times each pixel is written.
 pub struct Count<'a>(pub &'a mut [u32]);
@@ -69,7 +69,7 @@ pub fn coverage(width: u32, height: u32, tris: &[Tri], state: &DrawState) -> (Ve
 
 /// No culling: the tests choose windings freely.
 pub fn both_sides() -> DrawState {
-    DrawState { cull: rasterm_core::pipeline::Cull::None, ..DrawState::default() }
+    DrawState { cull: rastty_core::pipeline::Cull::None, ..DrawState::default() }
 }
 
 /// Counts as ASCII art: `.` for 0, `#` for 1, digits for more.
@@ -99,7 +99,7 @@ pub fn assert_pattern(counts: &[u32], width: u32, expected: &[&str]) {
 
 /// A shader drawing object-space positions through one matrix.
 pub struct Transformed {
-    pub clip_from_object: rasterm_core::math::Mat4,
+    pub clip_from_object: rastty_core::math::Mat4,
 }
 
 impl Shader for Transformed {
@@ -127,9 +127,9 @@ pub struct PinholeCamera {
 }
 
 impl PinholeCamera {
-    pub fn projection(&self) -> rasterm_core::math::Mat4 {
+    pub fn projection(&self) -> rastty_core::math::Mat4 {
         let aspect = self.width as f32 / self.height as f32;
-        rasterm_core::camera::perspective(self.fovy as f32, aspect, self.near as f32, self.far as f32).unwrap()
+        rastty_core::camera::perspective(self.fovy as f32, aspect, self.near as f32, self.far as f32).unwrap()
     }
 
     /// Renders view-space triangles (camera at the origin) through the core.
@@ -206,7 +206,7 @@ fn ray_triangle(dir: [f64; 3], tri: &[[f32; 3]; 3]) -> Option<f64> {
 pub struct Torus {
     pub positions: Vec<Vec3>,
     pub normals: Vec<Vec3>,
-    pub uvs: Vec<rasterm_core::math::Vec2>,
+    pub uvs: Vec<rastty_core::math::Vec2>,
     pub colors: Vec<Vec3>,
     pub indices: Vec<u16>,
 }
@@ -223,7 +223,7 @@ impl Torus {
                 let n = Vec3::new(a.cos() * b.cos(), a.sin() * b.cos(), b.sin());
                 t.positions.push(centre + n * minor);
                 t.normals.push(n);
-                t.uvs.push(rasterm_core::math::Vec2::new(u * 3.0, v));
+                t.uvs.push(rastty_core::math::Vec2::new(u * 3.0, v));
                 t.colors.push(Vec3::new(u, v, 1.0 - u));
             }
         }

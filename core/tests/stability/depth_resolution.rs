@@ -5,11 +5,11 @@
 //! distance step of about `q (f - n) d^2 / (f n)`. For `u16`, `q = 1/65535`; for `f32` near `z = 1`, one unit in
 //! the last place, `2^-24`, plus the rounding of the projection itself.
 
-use rasterm_core::camera::perspective;
-use rasterm_core::math::{Vec3, Vec4};
-use rasterm_core::mesh::{Attributes, Indices, Mesh};
-use rasterm_core::pipeline::{DrawState, Fragment, Shader, draw};
-use rasterm_core::target::{DepthBuffer, Target};
+use rastty_core::camera::perspective;
+use rastty_core::math::{Vec3, Vec4};
+use rastty_core::mesh::{Attributes, Indices, Mesh};
+use rastty_core::pipeline::{DrawState, Fragment, Shader, draw};
+use rastty_core::target::{DepthBuffer, Target};
 
 use super::common::Count;
 

@@ -71,12 +71,12 @@ fn a_huge_corner_behind_the_camera_clips_exactly() {
 /// here) is drawn by exactly one of front-face and back-face culling.
 #[test]
 fn a_band_equals_the_frame_when_a_corner_is_1e35_away() {
-    use rasterm_core::camera::{look_at, orthographic};
-    use rasterm_core::math::{Mat4, Vec3};
-    use rasterm_core::mesh::{Indices, Mesh};
-    use rasterm_core::pipeline::{Cull, DepthTest, DrawState};
-    use rasterm_core::shading::{Effects, Lighting, Material, ShadingModel, Transforms, draw_mesh};
-    use rasterm_core::target::{Rgb888, Target};
+    use rastty_core::camera::{look_at, orthographic};
+    use rastty_core::math::{Mat4, Vec3};
+    use rastty_core::mesh::{Indices, Mesh};
+    use rastty_core::pipeline::{Cull, DepthTest, DrawState};
+    use rastty_core::shading::{Effects, Lighting, Material, ShadingModel, Transforms, draw_mesh};
+    use rastty_core::target::{Rgb888, Target};
 
     let positions = [
         Vec3::new(-113.679_69, -11.734_375, -60.695_313),

@@ -4,11 +4,11 @@
 use std::cell::Cell;
 
 use super::Rng;
-use rasterm_core::math::{Mat4, Vec2, Vec3, Vec4};
-use rasterm_core::mesh::{Attributes, Indices, Mesh};
-use rasterm_core::pipeline::{Cull, DrawState, Fragment, Interpolation, Shader, draw};
-use rasterm_core::target::{NoColor, Target};
-use rasterm_core::texture::{Bilinear, Clamp, Nearest, Repeat, Texture};
+use rastty_core::math::{Mat4, Vec2, Vec3, Vec4};
+use rastty_core::mesh::{Attributes, Indices, Mesh};
+use rastty_core::pipeline::{Cull, DrawState, Fragment, Interpolation, Shader, draw};
+use rastty_core::target::{NoColor, Target};
+use rastty_core::texture::{Bilinear, Clamp, Nearest, Repeat, Texture};
 
 /// Interpolates four attributes (from the mesh's normals and UVs) and checks each fragment against the
 /// triangle's per-attribute range.
@@ -73,7 +73,7 @@ fn worst_excess(
     let mesh =
         Mesh::new(&positions, Indices::Sequential).unwrap().with_normals(&normals).unwrap().with_uvs(&uvs).unwrap();
     let shader = Checker { clip_from_object, worst: Cell::new(0.0), fragments: Cell::new(0) };
-    let mut target = Target::new(NoColor, rasterm_core::target::NoDepth, 512, 512).unwrap();
+    let mut target = Target::new(NoColor, rastty_core::target::NoDepth, 512, 512).unwrap();
     let state = DrawState { cull: Cull::None, interpolation, ..DrawState::default() };
     draw(&mut target, &mesh, &shader, &state).unwrap();
     (shader.worst.get(), shader.fragments.get())

@@ -3,10 +3,10 @@
 //! drawn alone equal to those rows of the whole frame.
 
 use proptest::prelude::*;
-use rasterm_core::math::{Vec3, Vec4};
-use rasterm_core::mesh::{Attributes, Indices, Mesh};
-use rasterm_core::pipeline::{Cull, DepthTest, DrawState, Fragment, Interpolation, Shader, draw};
-use rasterm_core::target::{ColorBuffer, Target};
+use rastty_core::math::{Vec3, Vec4};
+use rastty_core::mesh::{Attributes, Indices, Mesh};
+use rastty_core::pipeline::{Cull, DepthTest, DrawState, Fragment, Interpolation, Shader, draw};
+use rastty_core::target::{ColorBuffer, Target};
 
 const W: u32 = 16;
 const H: u32 = 12;
@@ -79,7 +79,7 @@ fn render(
     mesh: &Mesh<'_>,
     state: &DrawState,
     rows: core::ops::Range<u32>,
-) -> (Vec<Option<Vec3>>, rasterm_core::pipeline::DrawStats) {
+) -> (Vec<Option<Vec3>>, rastty_core::pipeline::DrawStats) {
     let n = (W * (rows.end - rows.start)) as usize;
     let (mut colors, mut depth) = (vec![None; n], vec![0f32; n]);
     let mut target = Target::band(Recorder(&mut colors), &mut depth[..], W, H, rows).unwrap();

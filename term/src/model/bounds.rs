@@ -1,6 +1,6 @@
 //! Axis-aligned bounding boxes, and the transform that fits one into the unit sphere.
 
-use rasterm_core::math::{Mat4, Vec3};
+use rastty_core::math::{Mat4, Vec3};
 
 /// An axis-aligned bounding box.
 #[derive(Clone, Copy, Debug, PartialEq)]

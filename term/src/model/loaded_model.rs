@@ -2,8 +2,8 @@
 
 use std::ops::Range;
 
-use rasterm_core::math::{Mat4, Vec2, Vec3};
-use rasterm_core::mesh::{Indices, Mesh};
+use rastty_core::math::{Mat4, Vec2, Vec3};
+use rastty_core::mesh::{Indices, Mesh};
 
 use super::bounds::Bounds;
 use super::material::Material;

@@ -1,6 +1,6 @@
 //! Surface materials from MTL files: a diffuse colour and an optional texture.
 
-use rasterm_core::math::Vec3;
+use rastty_core::math::Vec3;
 
 use super::texture_image::TextureImage;
 

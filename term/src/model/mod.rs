@@ -4,7 +4,7 @@
 //! `include_bytes!`), with a [`Resolver`] such as [`Embedded`] for its MTL and texture files. Both give a
 //! [`Model`]: one vertex array (positions, normals, optional texture coordinates), one `u32` index buffer cut into
 //! [`Part`]s by object, group and material, the [`Material`]s with their decoded [`TextureImage`]s, and the
-//! warnings met on the way. [`Model::part_mesh`] hands a part to the core as a [`rasterm_core::mesh::Mesh`], and
+//! warnings met on the way. [`Model::part_mesh`] hands a part to the core as a [`rastty_core::mesh::Mesh`], and
 //! [`Model::fit`] gives the transform that frames any model the same way.
 //!
 //! A bad OBJ file is a [`LoadError`] naming the file and the line; a missing or bad MTL library or texture is only
@@ -13,7 +13,7 @@
 //!
 //! # Example
 //! ```
-//! use rasterm::model::{Embedded, load_obj_bytes};
+//! use rastty::model::{Embedded, load_obj_bytes};
 //!
 //! let obj = b"mtllib cube.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nusemtl red\nf 1 2 3 4\n";
 //! let files: &[(&str, &[u8])] = &[("cube.mtl", b"newmtl red\nKd 1 0 0\n")];

@@ -4,7 +4,7 @@ use std::cell::RefCell;
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
-use rasterm_core::math::{Vec2, Vec3};
+use rastty_core::math::{Vec2, Vec3};
 
 use super::error::{LoadError, LoadErrorKind};
 use super::loaded_model::{Model, Part};

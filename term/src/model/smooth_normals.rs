@@ -2,7 +2,7 @@
 
 use std::collections::HashMap;
 
-use rasterm_core::math::Vec3;
+use rastty_core::math::Vec3;
 
 /// The normal given to a vertex whose faces' cross products sum to zero (only degenerate faces, or faces that
 /// cancel out): `+z`, finite and unit length.

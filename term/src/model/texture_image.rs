@@ -4,7 +4,7 @@ use std::io::Cursor;
 use std::path::Path;
 
 use image::{ImageFormat, ImageReader, Limits};
-use rasterm_core::texture::{Texture, TextureError};
+use rastty_core::texture::{Texture, TextureError};
 
 use super::error::{LoadError, LoadErrorKind};
 
@@ -12,7 +12,7 @@ use super::error::{LoadError, LoadErrorKind};
 pub const MAX_TEXTURE_SIDE: u32 = 16384;
 
 /// An owned texture: `width * height` texels, `0x00RRGGBB`, row-major with row 0 the top of the image (what
-/// [`rasterm_core::texture::Texture::new`] takes).
+/// [`rastty_core::texture::Texture::new`] takes).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TextureImage {
     /// Width in texels.

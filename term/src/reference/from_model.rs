@@ -1,14 +1,14 @@
-//! The reference scene of a rasterm model, camera and appearance: the picture [`crate::scene::Scene::draw`] draws.
+//! The reference scene of a rastty model, camera and appearance: the picture [`crate::scene::Scene::draw`] draws.
 
-use rasterm_core::pipeline::Cull;
-use rasterm_core::texture::WrapMode;
+use rastty_core::pipeline::Cull;
+use rastty_core::texture::WrapMode;
 
 use super::math::{self, Mat4};
 use super::{Camera, Light, Lighting, Material, Object, Projection, ReferenceError, Scene, Shading};
 use crate::model::{DEFAULT_DIFFUSE, Model};
 use crate::scene::{self, Appearance, Lens, OrbitCamera, ShadingMode};
 
-fn widen(v: rasterm_core::math::Vec3) -> [f64; 3] {
+fn widen(v: rastty_core::math::Vec3) -> [f64; 3] {
     [f64::from(v.x), f64::from(v.y), f64::from(v.z)]
 }
 
@@ -27,7 +27,7 @@ impl Scene {
     /// `appearance`, in a `width x height` image of physical aspect `aspect` (width over height, as passed to
     /// `draw`; `width / height` for a PNG).
     ///
-    /// Everything rasterm computes in `f32` is redone in `f64` from the same inputs: the fit transform, the
+    /// Everything rastty computes in `f32` is redone in `f64` from the same inputs: the fit transform, the
     /// orientation (the camera's quaternion, renormalised), the view and projection (near and far planes as
     /// [`OrbitCamera::planes`] gives them), lights, material and texture. Each part becomes one [`Object`] in
     /// drawing order, with back faces culled. [`ShadingMode::Unlit`] is drawn unlit; the three lit modes
@@ -36,7 +36,7 @@ impl Scene {
     ///
     /// # Errors
     /// [`ReferenceError::Unsupported`] for the depth and normals views and for wireframe lines;
-    /// [`ReferenceError::Camera`] when rasterm would refuse the camera.
+    /// [`ReferenceError::Camera`] when rastty would refuse the camera.
     pub fn from_model(
         model: &Model,
         camera: &OrbitCamera,
@@ -53,7 +53,7 @@ impl Scene {
         if appearance.wireframe {
             return Err(ReferenceError::Unsupported("wireframe lines"));
         }
-        // The same checks as rasterm's.
+        // The same checks as rastty's.
         let matrices = camera.matrices(aspect as f32).map_err(ReferenceError::Camera)?;
         let (near, far) = (f64::from(matrices.near), f64::from(matrices.far));
         let distance = f64::from(camera.distance);
@@ -85,7 +85,7 @@ impl Scene {
         // Old vertex index to the part's own, reset after each part.
         let mut remap = vec![u32::MAX; model.positions.len()];
         for (p, part) in model.parts.iter().enumerate() {
-            // rasterm skips a part whose arrays are inconsistent.
+            // rastty skips a part whose arrays are inconsistent.
             if model.part_mesh(p).is_none() {
                 continue;
             }

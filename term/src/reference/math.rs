@@ -148,7 +148,7 @@ pub(crate) fn is_finite(m: &Mat4) -> bool {
     m.iter().flatten().all(|v| v.is_finite())
 }
 
-/// The view matrix of a camera at `eye` looking at `target`: the core's [`rasterm_core::camera::look_at`] in
+/// The view matrix of a camera at `eye` looking at `target`: the core's [`rastty_core::camera::look_at`] in
 /// `f64`, with the same fallback when `up` is (nearly) parallel to the view direction. `None` when `eye == target`.
 pub(crate) fn look_at(eye: V3, target: V3, up: V3) -> Option<Mat4> {
     let forward = (target - eye).normalize_or_zero();
@@ -214,14 +214,14 @@ mod tests {
     use super::*;
 
     /// A core matrix widened, and the largest difference from `ours`.
-    fn max_difference(core: &rasterm_core::math::Mat4, ours: &Mat4) -> f64 {
+    fn max_difference(core: &rastty_core::math::Mat4, ours: &Mat4) -> f64 {
         let widened = core.cols.map(|c| [c.x, c.y, c.z, c.w].map(f64::from));
         widened.iter().flatten().zip(ours.iter().flatten()).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max)
     }
 
     #[test]
     fn look_at_matches_the_core() {
-        use rasterm_core::math::Vec3;
+        use rastty_core::math::Vec3;
         let cases = [
             ([0.0, 0.0, 5.0], [0.0, 0.0, 0.0], [0.0, 1.0, 0.0]),
             ([1.0, 2.0, 3.0], [-1.0, 0.5, 0.0], [0.0, 1.0, 0.0]),
@@ -229,7 +229,7 @@ mod tests {
         ];
         for (eye, target, up) in cases {
             let v3 = |a: [f64; 3]| Vec3::new(a[0] as f32, a[1] as f32, a[2] as f32);
-            let core = rasterm_core::camera::look_at(v3(eye), v3(target), v3(up)).unwrap();
+            let core = rastty_core::camera::look_at(v3(eye), v3(target), v3(up)).unwrap();
             let ours = look_at(V3::from_array(eye), V3::from_array(target), V3::from_array(up)).unwrap();
             assert!(max_difference(&core, &ours) < 1e-6, "{eye:?}");
         }
@@ -238,7 +238,7 @@ mod tests {
 
     #[test]
     fn quaternion_matches_the_core() {
-        use rasterm_core::math::{Quat, Vec3};
+        use rastty_core::math::{Quat, Vec3};
         let q = Quat::from_axis_angle(Vec3::X, 0.3) * Quat::from_axis_angle(Vec3::Y, 0.7);
         let core = q.to_mat4();
         let ours = quaternion_matrix([q.x, q.y, q.z, q.w].map(f64::from));

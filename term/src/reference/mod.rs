@@ -1,4 +1,4 @@
-//! A slow, high-precision reference renderer: the "truth" that rasterm's pictures are measured against.
+//! A slow, high-precision reference renderer: the "truth" that rastty's pictures are measured against.
 //!
 //! Everything is `f64`: transforms, projection, visibility, interpolation, shading and texture sampling. Each
 //! pixel is sampled on a regular [`SAMPLES_PER_AXIS`]² grid (sample `(k, l)` of pixel `(i, j)` at
@@ -21,29 +21,29 @@
 //!   (distance along the view axis) is within `[near, far]`. A triangle crossing the near plane (or passing
 //!   behind the eye) is therefore cut exactly at the plane, with no clipping polygon involved.
 //! - **Order**: the nearest hit wins; on an exact depth tie the triangle drawn first (the earlier object, then the
-//!   earlier triangle) wins, as rasterm's `less` depth test does.
+//!   earlier triangle) wins, as rastty's `less` depth test does.
 //! - **Facing**: counter-clockwise on screen is the front, flipped for a mirroring model matrix, and
-//!   [`Object::cull`] discards faces as rasterm's [`Cull`] does. Edge-on triangles cover nothing.
+//!   [`Object::cull`] discards faces as rastty's [`Cull`] does. Edge-on triangles cover nothing.
 //! - **Attributes**: the barycentric coordinates of the 3D hit point, which makes interpolation
 //!   perspective-correct by construction.
 //!
 //! # Shading
 //!
 //! The albedo is [`Material::color`] times the bilinearly sampled texture ([`sample_bilinear`]) when the object
-//! has one and has texture coordinates. [`Shading::Unlit`] draws the albedo; [`Shading::Lit`] is rasterm's
-//! per-pixel Blinn-Phong ([`rasterm_core::shading::PhongShader`]) in `f64`, with the interpolated vertex normal
+//! has one and has texture coordinates. [`Shading::Unlit`] draws the albedo; [`Shading::Lit`] is rastty's
+//! per-pixel Blinn-Phong ([`rastty_core::shading::PhongShader`]) in `f64`, with the interpolated vertex normal
 //! renormalised:
 //! `albedo * (ambient + sum c max(0, n.l)) + specular * sum over lights with n.l > 0 of c max(0, n.h)^shininess`,
 //! `h = normalize(l + v)`, `v = normalize(eye - p)`.
 //!
 //! # Use
 //!
-//! Build a [`Scene`] by hand, or from a rasterm model and camera with [`Scene::from_model`] (the same picture as
+//! Build a [`Scene`] by hand, or from a rastty model and camera with [`Scene::from_model`] (the same picture as
 //! [`crate::scene::Scene::draw`] draws), then call [`render`] for a [`ReferenceImage`], or make a [`Renderer`] to
 //! render and also [`Renderer::probe`] single points.
 //!
 //! ```
-//! use rasterm::reference::{Camera, Object, Projection, Scene, Shading, render};
+//! use rastty::reference::{Camera, Object, Projection, Scene, Shading, render};
 //!
 //! // An orthographic camera whose view box is the 4x4 image itself (view y = -screen y), and a triangle whose
 //! // right edge is the line x = 2.
@@ -72,9 +72,9 @@ mod texture;
 
 use std::fmt;
 
-use rasterm_core::camera::CameraError;
-use rasterm_core::pipeline::Cull;
-use rasterm_core::texture::WrapMode;
+use rastty_core::camera::CameraError;
+use rastty_core::pipeline::Cull;
+use rastty_core::texture::WrapMode;
 
 pub use image::ReferenceImage;
 pub use render::{Probe, Renderer, SAMPLES_PER_AXIS, render};
@@ -114,13 +114,13 @@ pub struct Camera {
     pub eye: [f64; 3],
     /// The point looked at.
     pub target: [f64; 3],
-    /// Roughly up on screen; replaced as [`rasterm_core::camera::look_at`] does when parallel to the view.
+    /// Roughly up on screen; replaced as [`rastty_core::camera::look_at`] does when parallel to the view.
     pub up: [f64; 3],
     /// The projection.
     pub projection: Projection,
 }
 
-/// How the camera projects (the same parameters as [`rasterm_core::camera::Projection`]).
+/// How the camera projects (the same parameters as [`rastty_core::camera::Projection`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Projection {
     /// Perspective.
@@ -241,7 +241,7 @@ pub struct Object {
 
 impl Object {
     /// An object of the given triangles: identity transform, default material, no normals, texture coordinates
-    /// or texture, repeat wrap, lit, back faces culled (rasterm's defaults).
+    /// or texture, repeat wrap, lit, back faces culled (rastty's defaults).
     pub fn new(positions: Vec<[f64; 3]>, indices: Vec<u32>) -> Self {
         Self {
             positions,
@@ -261,7 +261,7 @@ impl Object {
 /// Why a scene cannot be rendered.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ReferenceError {
-    /// The image is empty or larger than [`rasterm_core::target::MAX_DIMENSION`] on a side.
+    /// The image is empty or larger than [`rastty_core::target::MAX_DIMENSION`] on a side.
     Size {
         /// Width asked for.
         width: u32,

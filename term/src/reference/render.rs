@@ -2,9 +2,9 @@
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use rasterm_core::camera::CameraError;
-use rasterm_core::pipeline::Cull;
-use rasterm_core::target::MAX_DIMENSION;
+use rastty_core::camera::CameraError;
+use rastty_core::pipeline::Cull;
+use rastty_core::target::MAX_DIMENSION;
 
 use super::math::{self, V3};
 use super::texture::sample_bilinear;

@@ -1,6 +1,6 @@
 //! Bilinear texture sampling in `f64`, with the core's conventions but exact weights.
 
-use rasterm_core::texture::WrapMode;
+use rastty_core::texture::WrapMode;
 
 use super::math::V3;
 use crate::model::TextureImage;

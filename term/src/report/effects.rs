@@ -1,11 +1,11 @@
-//! `rasterm report effects`: what each effect of a scene file costs per frame.
+//! `rastty report effects`: what each effect of a scene file costs per frame.
 //!
 //! One scene ([`DEFAULT_SCENE`] unless another is given), its own camera, rendered by a [`SceneRenderer`] at each
 //! size of [`EffectsReport::sizes`] in every [`configuration`](configurations): no effect, each effect alone, and
 //! every effect. Shadows are measured twice, alone and with the rest:
 //!
 //! - **map drawn every frame** ([`ShadowMaps::Drawn`]): a fresh [`SceneRenderer`] for every frame, as
-//!   `rasterm render` makes one per image, so the map's buffer is allocated and the map drawn each time;
+//!   `rastty render` makes one per image, so the map's buffer is allocated and the map drawn each time;
 //! - **map kept** ([`ShadowMaps::Kept`]): one renderer for all frames, as the viewer keeps one while only the camera
 //!   moves: the warm-up frame draws the map and every measured frame reuses it.
 //!
@@ -23,7 +23,7 @@ use std::io::{self, Write};
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
-use rasterm_core::target::{Rgb888, Target};
+use rastty_core::target::{Rgb888, Target};
 
 use super::median;
 use crate::escaped::path_text;
@@ -127,7 +127,7 @@ impl EffectsReport {
 
     /// The command that prints this report.
     pub fn command_line(&self) -> String {
-        let mut line = "rasterm report effects".to_owned();
+        let mut line = "rastty report effects".to_owned();
         if self.scene_given {
             line.push(' ');
             line.push_str(&path_text(&self.scene_path));
@@ -407,7 +407,7 @@ pub fn header(report: &EffectsReport, plans: &[ScenePlan], threads: usize, machi
         "- ms: wall time of `SceneRenderer::render`; +ms and ratio: against `none` (medians); shadow, forward, \
          occlusion: the passes' times from its `FrameReport`, in ms (– where the plan has no such pass)"
             .to_owned(),
-        "- map drawn every frame: a fresh `SceneRenderer` for every frame (as `rasterm render` makes one per image), \
+        "- map drawn every frame: a fresh `SceneRenderer` for every frame (as `rastty render` makes one per image), \
          so the map's buffer is allocated and the map drawn every frame; map kept: one renderer for every frame (as \
          the viewer while only the camera moves), the map drawn in the warm-up frame and reused by every measured \
          frame (the first of them works out its filter windows' depth ranges, once)"

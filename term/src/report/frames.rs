@@ -1,4 +1,4 @@
-//! `rasterm report frames`: the time per frame of one scene file, the same frame drawn again and again.
+//! `rastty report frames`: the time per frame of one scene file, the same frame drawn again and again.
 //!
 //! [`effects`](super::effects) lets its configurations take turns frame by frame, so that a noisy moment of the
 //! machine falls on all of them alike; each of its frames therefore starts with caches full of another
@@ -6,7 +6,7 @@
 //! benchmark loop repeats one frame: in blocks of [`BLOCK`] frames of one configuration, each block after a
 //! warm-up frame of its own, the configurations taking turns block by block. Its rows are the scene with every
 //! effect its file asks for, with the shadow maps kept (one [`SceneRenderer`] for every frame) and drawn every
-//! frame (a fresh renderer per frame, as `rasterm render` makes one per image), and the scene without shadows;
+//! frame (a fresh renderer per frame, as `rastty render` makes one per image), and the scene without shadows;
 //! a scene without a shadow-casting light has the one row.
 
 use std::fmt::Write as _;
@@ -61,7 +61,7 @@ impl FramesReport {
 
     /// The command that prints this report.
     pub fn command_line(&self) -> String {
-        let mut line = format!("rasterm report frames {}", path_text(&self.scene_path));
+        let mut line = format!("rastty report frames {}", path_text(&self.scene_path));
         if self.size != DEFAULT_SIZE {
             let _ = write!(line, " --size {}x{}", self.size.0, self.size.1);
         }
@@ -182,7 +182,7 @@ pub fn header(report: &FramesReport, plan: &ScenePlan, threads: usize, machine: 
          `FrameReport`, in ms (– where the plan has no such pass); fragments: shaded by the forward pass in a frame"
             .to_owned(),
         "- shadow maps kept: one renderer for every frame (as the viewer while only the camera moves); drawn every \
-         frame: a fresh renderer for every frame (as `rasterm render` makes one per image), its map's buffer \
+         frame: a fresh renderer for every frame (as `rastty render` makes one per image), its map's buffer \
          allocated and the map drawn each time"
             .to_owned(),
     ]

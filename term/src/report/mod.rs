@@ -1,4 +1,4 @@
-//! Measurement reports: `rasterm report ...` prints figures as Markdown, with the machine they were measured on.
+//! Measurement reports: `rastty report ...` prints figures as Markdown, with the machine they were measured on.
 //!
 //! | report | measures |
 //! |---|---|

@@ -1,4 +1,4 @@
-//! `rasterm report terminal`, second table: what each tolerance of the viewer's frame writer saves on a moving
+//! `rastty report terminal`, second table: what each tolerance of the viewer's frame writer saves on a moving
 //! picture, and what it costs in accuracy.
 //!
 //! On a slow link the writer sends a moving frame with the smallest tolerance of [`TOLERANCES`] whose bytes fit

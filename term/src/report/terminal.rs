@@ -1,4 +1,4 @@
-//! `rasterm report terminal`: what the viewer's frames cost, for a turntable of the built-in model.
+//! `rastty report terminal`: what the viewer's frames cost, for a turntable of the built-in model.
 //!
 //! For each terminal size and colour mode, the built-in model is turned once around (the default camera, turned
 //! with [`OrbitCamera::rotate`] in equal steps about the screen's vertical axis) and every frame goes through the
@@ -14,7 +14,7 @@ use std::fmt;
 use std::io::{self, Write};
 use std::time::{Duration, Instant};
 
-use rasterm_core::target::{Rgb888, Target};
+use rastty_core::target::{Rgb888, Target};
 
 use super::median;
 use crate::builtin::{BUILTIN_NAME, builtin_model};
@@ -66,9 +66,9 @@ impl TerminalReport {
     /// The command that prints this report.
     pub fn command_line(&self) -> String {
         if self.quick {
-            "rasterm report terminal --quick".to_owned()
+            "rastty report terminal --quick".to_owned()
         } else {
-            format!("rasterm report terminal --frames {}", self.frames)
+            format!("rastty report terminal --frames {}", self.frames)
         }
     }
 }
@@ -214,14 +214,14 @@ impl<'a> Turntable<'a> {
 
     /// Renders the current view into cells, then turns the camera one step; returns the cells and the render time.
     pub(super) fn next_frame(&mut self) -> Result<(CellGrid, Duration), ReportError> {
-        let too_big = |e: rasterm_core::target::TargetError| ReportError::Setup(e.to_string());
+        let too_big = |e: rastty_core::target::TargetError| ReportError::Setup(e.to_string());
         let mut target =
             Target::new(Rgb888(&mut self.pixels), &mut self.depth[..], self.width as u32, self.height as u32)
                 .map_err(too_big)?;
         let start = Instant::now();
         self.scene.render(&mut target, &self.camera, &self.appearance, self.aspect).map_err(ReportError::Render)?;
         let render_time = start.elapsed();
-        let background = rasterm_core::color::pack_rgb888(self.appearance.background);
+        let background = rastty_core::color::pack_rgb888(self.appearance.background);
         let frame = PixelFrame::new(&self.pixels, self.width, self.height);
         let grid = CellMode::HalfBlock.to_cells(frame, self.colors, background);
         self.camera.rotate(self.step, 0.0);
@@ -425,7 +425,7 @@ mod tests {
     #[test]
     fn header_names_the_command_and_the_columns() {
         let header = header(&TerminalReport::quick(), "Test CPU, 2 logical CPUs");
-        assert!(header.contains("`rasterm report terminal --quick`"), "{header}");
+        assert!(header.contains("`rastty report terminal --quick`"), "{header}");
         assert!(header.contains("Test CPU, 2 logical CPUs"));
         let columns = header.lines().rev().nth(1).unwrap();
         assert_eq!(columns.matches('|').count(), 12, "{columns}");

@@ -1,6 +1,6 @@
 //! How a scene is drawn: shading mode, textures, wireframe, background.
 
-use rasterm_core::math::Vec3;
+use rastty_core::math::Vec3;
 
 /// The shading modes offered to users.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -88,5 +88,5 @@ pub fn parse_hex_color(text: &str) -> Result<Vec3, String> {
         return Err(format!("{text:?} is not a colour written RRGGBB"));
     }
     let value = u32::from_str_radix(hex, 16).map_err(|e| e.to_string())?;
-    Ok(rasterm_core::color::unpack_rgb888(value))
+    Ok(rastty_core::color::unpack_rgb888(value))
 }

@@ -1,8 +1,8 @@
 //! The orbit camera: a model turned by a quaternion in front of a fixed camera, seen in perspective or
 //! orthographically.
 
-use rasterm_core::camera::{CameraError, look_at, orthographic, perspective};
-use rasterm_core::math::{Mat4, Quat, Vec3, float};
+use rastty_core::camera::{CameraError, look_at, orthographic, perspective};
+use rastty_core::math::{Mat4, Quat, Vec3, float};
 
 /// Radius of the sphere every model is fitted into (see [`crate::model::Model::fit`]), plus a margin so that the
 /// default near and far planes never touch the model.

@@ -11,12 +11,12 @@ pub use camera::{CameraMatrices, Lens, OrbitCamera};
 
 use std::fmt;
 
-use rasterm_core::camera::CameraError;
-use rasterm_core::math::{Mat4, Vec3};
-use rasterm_core::pipeline::{DrawError, DrawState, DrawStats, LineStyle, draw_wireframe};
-use rasterm_core::shading::{Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh};
-use rasterm_core::target::{ColorBuffer, DepthBuffer, Target};
-use rasterm_core::texture::{FilterMode, WrapMode};
+use rastty_core::camera::CameraError;
+use rastty_core::math::{Mat4, Vec3};
+use rastty_core::pipeline::{DrawError, DrawState, DrawStats, LineStyle, draw_wireframe};
+use rastty_core::shading::{Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh};
+use rastty_core::target::{ColorBuffer, DepthBuffer, Target};
+use rastty_core::texture::{FilterMode, WrapMode};
 
 use crate::model::Model;
 
@@ -124,7 +124,7 @@ impl Scene {
         self.draw(target, camera, appearance, aspect)
     }
 
-    /// What each part's draw compiles to (the shader variant and state), for `rasterm render --stats`.
+    /// What each part's draw compiles to (the shader variant and state), for `rastty render --stats`.
     ///
     /// # Errors
     /// As [`Scene::draw`].

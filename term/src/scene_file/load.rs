@@ -5,8 +5,8 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use rasterm_core::math::Vec3;
-use rasterm_core::texture::{FilterMode, WrapMode};
+use rastty_core::math::Vec3;
+use rastty_core::texture::{FilterMode, WrapMode};
 use toml::Spanned;
 
 use super::SceneFile;

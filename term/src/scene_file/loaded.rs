@@ -3,9 +3,9 @@
 use std::path::PathBuf;
 use std::sync::Arc;
 
-use rasterm_core::camera::{CameraError, look_at};
-use rasterm_core::math::{Mat4, Vec3};
-use rasterm_core::texture::{FilterMode, WrapMode};
+use rastty_core::camera::{CameraError, look_at};
+use rastty_core::math::{Mat4, Vec3};
+use rastty_core::texture::{FilterMode, WrapMode};
 
 use super::schema::NormalSpace;
 use crate::model::{self, Model, TextureImage};
@@ -96,7 +96,7 @@ pub enum LightKind {
     /// Parallel rays.
     Directional {
         /// The unit direction the light travels, from the light toward the scene (the opposite of the core's
-        /// [`rasterm_core::shading::Light::to_light`]).
+        /// [`rastty_core::shading::Light::to_light`]).
         direction: Vec3,
     },
     /// Rays from one point.

@@ -88,11 +88,11 @@
 //! images ([`crate::model::TextureImage`], RGB).
 //!
 //! This module is the format and the loader; [`crate::scene_render`] draws a loaded scene
-//! (`rasterm render SCENE.toml -o OUT.png`, `rasterm render SCENE.toml --explain`, `rasterm SCENE.toml`).
+//! (`rastty render SCENE.toml -o OUT.png`, `rastty render SCENE.toml --explain`, `rastty SCENE.toml`).
 //!
 //! # Example
 //! ```
-//! use rasterm::scene_file::{LightKind, Projection, parse};
+//! use rastty::scene_file::{LightKind, Projection, parse};
 //!
 //! let text = r#"
 //! [camera]

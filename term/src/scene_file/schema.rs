@@ -47,7 +47,7 @@ pub struct CameraSpec {
     /// `target = [x, y, z]`: the point looked at; must differ from `position`. Required.
     pub target: Spanned<Triple>,
     /// `up = [x, y, z]`: which way is up in the image; not zero. Default `[0, 1, 0]`. When it is parallel to the
-    /// view direction, another axis is used (as [`rasterm_core::camera::look_at`] does).
+    /// view direction, another axis is used (as [`rastty_core::camera::look_at`] does).
     pub up: Option<Spanned<Triple>>,
     /// `fov = DEGREES`: a perspective lens with this vertical field of view, strictly between 0 and 180.
     pub fov: Option<Spanned<f32>>,
@@ -102,7 +102,7 @@ pub enum LightType {
 #[serde(deny_unknown_fields, expecting = "a table of object keys")]
 pub struct ObjectSpec {
     /// `mesh = "PATH"`: an OBJ file, relative to the scene file's directory (an absolute path is used as is), with
-    /// its MTL library and textures; or `"builtin:spot"`, the model built into `rasterm` (Spot, facing `+z`, with
+    /// its MTL library and textures; or `"builtin:spot"`, the model built into `rastty` (Spot, facing `+z`, with
     /// her texture; see [`crate::builtin`]). Required.
     pub mesh: Spanned<String>,
     /// `translate = [x, y, z]`: moves the object, in world units. Default `[0, 0, 0]`.
@@ -123,7 +123,7 @@ pub struct ObjectSpec {
 ///
 /// Where the OBJ file has its own MTL materials, the keys given here override them for every part of the object,
 /// and keys left out fall back to each part's MTL material: `color` to its `Kd`, `diffuse` to its `map_Kd`. The
-/// other keys have no MTL counterpart that `rasterm` reads, so when left out they take the renderer's defaults.
+/// other keys have no MTL counterpart that `rastty` reads, so when left out they take the renderer's defaults.
 /// Image paths are relative to the scene file's directory. Images are sampled with the object's texture
 /// coordinates, so they show only on meshes that have them.
 #[derive(Clone, Debug, Default, Deserialize)]

@@ -1,6 +1,6 @@
 //! An object's placement: scale, then rotations about X, Y and Z, then translation, as one matrix.
 
-use rasterm_core::math::{Mat4, Vec3};
+use rastty_core::math::{Mat4, Vec3};
 
 /// The object-to-world matrix of `scale`, `rotate` (degrees) and `translate`:
 ///
@@ -13,8 +13,8 @@ use rasterm_core::math::{Mat4, Vec3};
 ///
 /// # Examples
 /// ```
-/// use rasterm::scene_file::object_transform;
-/// use rasterm_core::math::Vec3;
+/// use rastty::scene_file::object_transform;
+/// use rastty_core::math::Vec3;
 ///
 /// // Scaled by 2, turned a quarter about Z, moved up by 1: +x lands on (0, 3, 0).
 /// let m = object_transform(Vec3::new(0.0, 1.0, 0.0), Vec3::new(0.0, 0.0, 90.0), Vec3::splat(2.0));

@@ -4,7 +4,7 @@
 use std::ops::Range;
 use std::path::Path;
 
-use rasterm_core::math::Vec3;
+use rastty_core::math::Vec3;
 use toml::Spanned;
 
 use super::error::{SceneFileError, SceneFileErrorKind};
@@ -12,7 +12,7 @@ use super::location::Location;
 use super::schema::{CameraSpec, LightSpec, LightType, MaterialSpec, NumberOrTriple, ObjectSpec, SceneSpec, Triple};
 use crate::scene::parse_hex_color;
 
-/// The prefix of a mesh naming a model built into `rasterm`.
+/// The prefix of a mesh naming a model built into `rastty`.
 pub const BUILTIN_PREFIX: &str = "builtin:";
 /// The built-in models, by the name after [`BUILTIN_PREFIX`].
 pub const BUILTIN_MODELS: [&str; 1] = ["spot"];

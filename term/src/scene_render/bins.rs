@@ -8,9 +8,9 @@
 
 use std::ops::Range;
 
-use rasterm_core::camera::Viewport;
-use rasterm_core::math::Mat4;
-use rasterm_core::mesh::Mesh;
+use rastty_core::camera::Viewport;
+use rastty_core::math::Mat4;
+use rastty_core::mesh::Mesh;
 
 /// Rows added on each side of a triangle's rows: more than rounding and sub-pixel snapping can move an edge.
 pub const MARGIN_ROWS: f32 = 2.0;
@@ -65,12 +65,12 @@ impl TriangleBins {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rasterm_core::camera::{look_at, perspective};
-    use rasterm_core::math::Vec3;
-    use rasterm_core::mesh::Indices;
-    use rasterm_core::pipeline::{Cull, DrawState, draw};
-    use rasterm_core::shading::DepthShader;
-    use rasterm_core::target::{Rgb888, Target};
+    use rastty_core::camera::{look_at, perspective};
+    use rastty_core::math::Vec3;
+    use rastty_core::mesh::Indices;
+    use rastty_core::pipeline::{Cull, DrawState, draw};
+    use rastty_core::shading::DepthShader;
+    use rastty_core::target::{Rgb888, Target};
 
     /// A triangle soup around the camera: most triangles in view, some crossing the eye plane or behind it, some
     /// huge, some slivers, and one with an index out of range.

@@ -1,8 +1,8 @@
 //! The scene's extent in world space: the sphere that shadow maps are fitted to and that derived clipping planes
 //! keep inside the view.
 
-use rasterm_core::effects::Bounds;
-use rasterm_core::math::Vec3;
+use rastty_core::effects::Bounds;
+use rastty_core::math::Vec3;
 
 use crate::model;
 use crate::scene_file::SceneObject;
@@ -35,7 +35,7 @@ pub fn scene_bounds(objects: &[SceneObject]) -> Option<Bounds> {
 mod tests {
     use std::sync::Arc;
 
-    use rasterm_core::math::Mat4;
+    use rastty_core::math::Mat4;
 
     use super::*;
     use crate::model::Model;

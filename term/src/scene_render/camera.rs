@@ -1,9 +1,9 @@
 //! A scene file's camera as the matrices of one frame: the lens from the file, the aspect from the frame, and the
 //! clipping planes from the file or around the scene.
 
-use rasterm_core::camera::{CameraError, orthographic, perspective};
-use rasterm_core::effects::Bounds;
-use rasterm_core::math::{Mat4, float};
+use rastty_core::camera::{CameraError, orthographic, perspective};
+use rastty_core::effects::Bounds;
+use rastty_core::math::{Mat4, float};
 
 use crate::scene_file::{Projection, SceneCamera};
 
@@ -100,7 +100,7 @@ impl FrameCamera {
 
 #[cfg(test)]
 mod tests {
-    use rasterm_core::math::Vec3;
+    use rastty_core::math::Vec3;
 
     use super::*;
 

@@ -2,11 +2,11 @@
 
 use std::fmt;
 
-use rasterm_core::camera::CameraError;
-use rasterm_core::effects::{Bounds, OcclusionError, ShadowError, SurfaceError};
-use rasterm_core::mesh::TangentError;
-use rasterm_core::target::TargetError;
-use rasterm_core::texture::TextureError;
+use rastty_core::camera::CameraError;
+use rastty_core::effects::{Bounds, OcclusionError, ShadowError, SurfaceError};
+use rastty_core::mesh::TangentError;
+use rastty_core::target::TargetError;
+use rastty_core::texture::TextureError;
 
 use super::lights::{Number, Triple};
 use crate::escaped::Escaped;

@@ -1,4 +1,4 @@
-//! A scene rendered to pixels in memory, for `rasterm render SCENE.toml` and tests.
+//! A scene rendered to pixels in memory, for `rastty render SCENE.toml` and tests.
 
 use std::time::Duration;
 

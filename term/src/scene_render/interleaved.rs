@@ -5,7 +5,7 @@
 use std::collections::HashMap;
 use std::sync::Arc;
 
-use rasterm_core::texture::{MAX_INTERLEAVED, Texture, TextureError};
+use rastty_core::texture::{MAX_INTERLEAVED, Texture, TextureError};
 
 use crate::model::TextureImage;
 use crate::scene_file::SceneObject;
@@ -111,8 +111,8 @@ fn interleave(images: &[&TextureImage]) -> Arc<[u32]> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rasterm_core::math::Vec2;
-    use rasterm_core::texture::{Bilinear, Clamp, Filter, Nearest, Repeat};
+    use rastty_core::math::Vec2;
+    use rastty_core::texture::{Bilinear, Clamp, Filter, Nearest, Repeat};
 
     /// The ground of `spot_lamp.toml` has four 64x64 maps: one buffer holds them all, a second part with the
     /// same images shares it, and every map samples exactly as its image does.

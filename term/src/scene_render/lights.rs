@@ -3,8 +3,8 @@
 
 use std::fmt;
 
-use rasterm_core::effects::LightKind as CoreLightKind;
-use rasterm_core::math::Vec3;
+use rastty_core::effects::LightKind as CoreLightKind;
+use rastty_core::math::Vec3;
 
 use crate::scene_file::{LightKind, SceneLight};
 

@@ -1,9 +1,9 @@
 //! The core material of one part of an object: the scene file's material keys over the part's MTL material, with
 //! the maps of switched-off effects left out.
 
-use rasterm_core::effects::{NormalMap, NormalSpace as CoreNormalSpace, SurfaceMaterial};
-use rasterm_core::math::Vec3;
-use rasterm_core::texture::TextureError;
+use rastty_core::effects::{NormalMap, NormalSpace as CoreNormalSpace, SurfaceMaterial};
+use rastty_core::math::Vec3;
+use rastty_core::texture::TextureError;
 
 use super::PlanOptions;
 use super::interleaved::{MapRole, PartMaps};

@@ -10,7 +10,7 @@
 //!          ScenePlan: camera matrices, lights (colour × intensity; dark ones dropped), shadow passes,
 //!                     forward draws (one per part, SurfaceVariant resolved), ambient occlusion step
 //!                                       │                       │
-//!                                       ▼                       ▼  Display: `rasterm render --explain`
+//!                                       ▼                       ▼  Display: `rastty render --explain`
 //!   SceneRenderer::render(scene, plan, target)
 //!     1. shadow passes, in bands of map rows: clear_shadow_depth + draw_shadow_caster_band per object
 //!        (maps kept and reused across frames)
@@ -25,7 +25,7 @@
 //!   nothing. Its `Display` is the explanation, one line per pass and per draw.
 //! - [`SceneRenderer`]: runs plans, keeping shadow maps from frame to frame (they depend on the scene and the
 //!   lights, not the camera).
-//! - [`render_scene_image`]: plan and render into fresh buffers, with supersampling: `rasterm render`.
+//! - [`render_scene_image`]: plan and render into fresh buffers, with supersampling: `rastty render`.
 //! - [`SceneOrbit`]: the viewer's camera for scenes: orbit about the file's target, zoom, switch the lens.
 //!
 //! Policies, each documented where it is decided: shadow map size ([`shadow_map_size`]: the frame's longer side
@@ -35,8 +35,8 @@
 //!
 //! # Example
 //! ```
-//! use rasterm::scene_file::parse;
-//! use rasterm::scene_render::{PlanOptions, PreparedScene, ScenePlan, render_scene_image};
+//! use rastty::scene_file::parse;
+//! use rastty::scene_render::{PlanOptions, PreparedScene, ScenePlan, render_scene_image};
 //!
 //! let text = r#"
 //! [camera]

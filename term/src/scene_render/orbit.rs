@@ -1,6 +1,6 @@
 //! Moving a scene file's camera in the viewer: orbiting about its target, zooming, switching the lens.
 
-use rasterm_core::math::{Quat, float};
+use rastty_core::math::{Quat, float};
 
 use crate::scene_file::{Projection, SceneCamera};
 
@@ -115,7 +115,7 @@ fn camera_distance(camera: &SceneCamera) -> f32 {
 
 #[cfg(test)]
 mod tests {
-    use rasterm_core::math::Vec3;
+    use rastty_core::math::Vec3;
 
     use super::*;
 

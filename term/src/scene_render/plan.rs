@@ -1,11 +1,11 @@
 //! The plan of one frame: which passes run, with which lights, and what each draw computes.
 
-use rasterm_core::effects::{
+use rastty_core::effects::{
     AmbientOcclusion, Bounds, LightKind, LightUse, ShadowView, SurfaceMaterial, SurfaceVariant,
 };
-use rasterm_core::math::Vec3;
-use rasterm_core::pipeline::DrawState;
-use rasterm_core::shading::Transforms;
+use rastty_core::math::Vec3;
+use rastty_core::pipeline::DrawState;
+use rastty_core::shading::Transforms;
 
 use super::camera::FrameCamera;
 use super::lights::{DroppedLight, LightName, PlannedLight, core_light};
@@ -66,7 +66,7 @@ pub struct PlannedDraw {
 /// Everything one frame of a scene runs, in order: the shadow passes, the forward pass (one draw per part of each
 /// object, with wireframe lines when asked), and ambient occlusion when the scene asks for it. Nothing else runs,
 /// and switched-off effects ([`PlanOptions::effects`]) are absent from it. Its [`Display`](std::fmt::Display) is
-/// the text of `rasterm render --explain`.
+/// the text of `rastty render --explain`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ScenePlan {
     /// The frame's size in pixels.
@@ -231,6 +231,6 @@ pub(crate) fn tangents_for<'a>(
     scene: &'a PreparedScene,
     object: usize,
     material: &SurfaceMaterial<'_>,
-) -> Option<&'a [rasterm_core::math::Vec4]> {
+) -> Option<&'a [rastty_core::math::Vec4]> {
     material.normal_map.and_then(|_| scene.tangents(object))
 }

@@ -5,9 +5,9 @@ use std::collections::HashMap;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 
-use rasterm_core::effects::Bounds;
-use rasterm_core::math::Vec4;
-use rasterm_core::mesh::{TangentError, compute_tangents};
+use rastty_core::effects::Bounds;
+use rastty_core::math::Vec4;
+use rastty_core::mesh::{TangentError, compute_tangents};
 
 use super::SceneRenderError;
 use super::bounds::scene_bounds;

@@ -6,13 +6,13 @@ use std::sync::Mutex;
 use std::thread;
 use std::time::{Duration, Instant};
 
-use rasterm_core::effects::{
+use rastty_core::effects::{
     LightSource, SceneLights, ShadowBias, ShadowError, ShadowMap, ShadowView, SurfaceDraw, SurfaceVariant,
     WindowRanges, clear_shadow_depth, draw_shadow_caster_band, draw_surface, window_ranges_band,
 };
-use rasterm_core::mesh::{Indices, Mesh};
-use rasterm_core::pipeline::{DrawState, DrawStats, draw_wireframe};
-use rasterm_core::target::{Rgb888, Target};
+use rastty_core::mesh::{Indices, Mesh};
+use rastty_core::pipeline::{DrawState, DrawStats, draw_wireframe};
+use rastty_core::target::{Rgb888, Target};
 
 use super::bins::TriangleBins;
 use super::material::part_material;
@@ -72,7 +72,7 @@ struct ShadowKey {
 ///
 /// The ranges are worked out in the map's second frame, not its first: they read every texel's window (a million
 /// for a 1024x1024 map) to spare the lookups' reads, and one 800x800 frame looks up a quarter as many. A map used
-/// once (`rasterm render`, a moving light) never pays for them; a kept one (the viewer orbiting) does once.
+/// once (`rastty render`, a moving light) never pays for them; a kept one (the viewer orbiting) does once.
 #[derive(Debug, Default)]
 struct ShadowSlot {
     key: Option<ShadowKey>,

@@ -1,7 +1,7 @@
 //! Which effects a frame may use: the switches the viewer's digit keys flip, and the other choices (textures,
 //! wireframe, background) a front end makes for a scene.
 
-use rasterm_core::math::Vec3;
+use rastty_core::math::Vec3;
 
 /// An effect a scene may call for, which can be switched off.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -34,7 +34,7 @@ impl SceneEffect {
         }
     }
 
-    /// Its name on the command line (`rasterm render --without shadows,normal-maps`).
+    /// Its name on the command line (`rastty render --without shadows,normal-maps`).
     pub fn option_name(self) -> &'static str {
         match self {
             Self::NormalMaps => "normal-maps",

@@ -79,7 +79,7 @@ impl FrameWriter {
     pub fn start(out: File, pacing: bool) -> Self {
         let shared = Arc::new((Mutex::new(Mailbox::default()), Condvar::new()));
         let thread_shared = Arc::clone(&shared);
-        let spawned = thread::Builder::new().name("rasterm-writer".into()).spawn(move || {
+        let spawned = thread::Builder::new().name("rastty-writer".into()).spawn(move || {
             write_loop(&out, &thread_shared, pacing);
             lock(&thread_shared).done = true;
             thread_shared.1.notify_all();

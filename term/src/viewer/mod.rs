@@ -1,4 +1,4 @@
-//! The terminal viewer: `rasterm [MODEL.obj | SCENE.toml]`.
+//! The terminal viewer: `rastty [MODEL.obj | SCENE.toml]`.
 //!
 //! The main thread waits for input, renders a frame when something changed (input, a resize, the turntable) and
 //! turns it into terminal cells; a [`FrameWriter`] thread encodes the newest frame as a delta and writes it.
@@ -32,9 +32,9 @@ use std::path::PathBuf;
 use std::sync::atomic::Ordering;
 use std::time::{Duration, Instant};
 
-use rasterm_core::math::Vec3;
-use rasterm_core::pipeline::DrawStats;
-use rasterm_core::target::{Rgb888, Target};
+use rastty_core::math::Vec3;
+use rastty_core::pipeline::DrawStats;
+use rastty_core::target::{Rgb888, Target};
 
 use crate::escaped::{Escaped, path_text};
 use crate::headless::{ModelSource, TextureChoice, load_scene};
@@ -127,7 +127,7 @@ impl fmt::Display for ViewerError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Self::NotATerminal => {
-                f.write_str("standard output is not a terminal; to render to a file use `rasterm render -o FILE.png`")
+                f.write_str("standard output is not a terminal; to render to a file use `rastty render -o FILE.png`")
             }
             Self::Load(e) => e.fmt(f),
             Self::SceneFile(e) => e.fmt(f),
@@ -217,7 +217,7 @@ fn load_content(options: &ViewerOptions) -> Result<(Content, ViewerCamera, Strin
         ViewerSubject::Model { model, texture, camera } => {
             let loaded = load_scene(model, texture).map_err(ViewerError::Load)?;
             for warning in &loaded.warnings {
-                eprintln!("rasterm: warning: {}", Escaped(warning));
+                eprintln!("rastty: warning: {}", Escaped(warning));
             }
             Ok((Content::Model(loaded.scene), ViewerCamera::Model(*camera), loaded.name))
         }
@@ -225,7 +225,7 @@ fn load_content(options: &ViewerOptions) -> Result<(Content, ViewerCamera, Strin
             let data = crate::scene_file::load(path).map_err(ViewerError::SceneFile)?;
             let warnings = data.objects.iter().flat_map(|o| o.model.warnings.iter());
             for warning in data.warnings.iter().chain(warnings) {
-                eprintln!("rasterm: warning: {}", Escaped(warning));
+                eprintln!("rastty: warning: {}", Escaped(warning));
             }
             let scene = PreparedScene::new(data).map_err(|e| ViewerError::Scene(path.clone(), e))?;
             let camera = ViewerCamera::Scene(SceneOrbit::new(scene.data().camera));
@@ -389,7 +389,7 @@ impl Viewer {
         }
         self.render_time = start.elapsed();
         self.frame_times.tick();
-        let background = rasterm_core::color::pack_rgb888(self.state.appearance.background);
+        let background = rastty_core::color::pack_rgb888(self.state.appearance.background);
         let mut grid =
             self.cell_mode.to_cells(PixelFrame::new(&self.canvas.pixels, width, height), self.colors, background);
         if self.state.hud {

@@ -38,7 +38,7 @@ impl ViewerCamera {
 
     /// Zooms by `steps` zoom steps (negative: closer).
     pub fn zoom(&mut self, steps: f32) {
-        let factor = rasterm_core::math::float::pow(ZOOM_FACTOR, steps);
+        let factor = rastty_core::math::float::pow(ZOOM_FACTOR, steps);
         match self {
             Self::Model(c) => c.distance = (c.distance * factor).clamp(MIN_DISTANCE, MAX_DISTANCE),
             Self::Scene(o) => o.zoom(factor),
@@ -179,7 +179,7 @@ impl ViewerState {
 
 #[cfg(test)]
 mod tests {
-    use rasterm_core::math::Vec3;
+    use rastty_core::math::Vec3;
 
     use super::*;
     use crate::scene_file::{Projection, SceneCamera};

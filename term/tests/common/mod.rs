@@ -23,12 +23,12 @@ pub fn scenes_in(dir: &Path) -> Vec<PathBuf> {
     scenes
 }
 
-/// Runs the `rasterm` binary with `args` in an empty temporary directory.
-pub fn rasterm_in_empty_dir(args: &[&str]) -> std::process::Output {
+/// Runs the `rastty` binary with `args` in an empty temporary directory.
+pub fn rastty_in_empty_dir(args: &[&str]) -> std::process::Output {
     let dir = tempfile::tempdir().unwrap();
-    std::process::Command::new(env!("CARGO_BIN_EXE_rasterm"))
+    std::process::Command::new(env!("CARGO_BIN_EXE_rastty"))
         .current_dir(dir.path())
         .args(args)
         .output()
-        .expect("run rasterm")
+        .expect("run rastty")
 }

@@ -1,8 +1,8 @@
 //! A private tmux server with one pane running a program under a wrapper, for the viewer's end-to-end tests.
 //!
-//! Each server runs on a private socket (`tmux -L rasterm-test-...`, no configuration file), so a user's tmux server
+//! Each server runs on a private socket (`tmux -L rastty-test-...`, no configuration file), so a user's tmux server
 //! is never touched, and is killed when the test ends, passed or failed. The program runs under a small shell
-//! wrapper that records its process id, prints `RASTERM-EXIT=<status> TTY=<same|changed>` after it exits (the
+//! wrapper that records its process id, prints `RASTTY-EXIT=<status> TTY=<same|changed>` after it exits (the
 //! `stty -g` settings compared from before and after) and then keeps the pane open, so the tests can look at the
 //! terminal the program left behind.
 //!
@@ -20,9 +20,9 @@ pub const TIMEOUT: Duration = Duration::from_secs(10);
 /// The interval between two looks at the pane.
 pub const POLL: Duration = Duration::from_millis(40);
 /// The marker the wrapper prints after the program exits.
-pub const EXIT_MARKER: &str = "RASTERM-EXIT=";
+pub const EXIT_MARKER: &str = "RASTTY-EXIT=";
 /// The tmux session every test uses (on its own server).
-pub const SESSION: &str = "=rasterm:";
+pub const SESSION: &str = "=rastty:";
 
 /// True when tmux is installed; false (after saying so) when it is not and this is not CI.
 ///
@@ -50,15 +50,15 @@ pub struct Tmux {
 }
 
 impl Tmux {
-    /// Starts a server whose only pane (`cols` x `rows`) runs `rasterm` under the wrapper.
+    /// Starts a server whose only pane (`cols` x `rows`) runs `rastty` under the wrapper.
     pub fn start(test: &str, cols: u16, rows: u16) -> Self {
         Self::start_with(test, cols, rows, &[])
     }
 
-    /// As [`Self::start`], running `rasterm ARGS...`.
+    /// As [`Self::start`], running `rastty ARGS...`.
     pub fn start_with(test: &str, cols: u16, rows: u16, args: &[&Path]) -> Self {
         let args: Vec<&OsStr> = args.iter().map(|a| a.as_os_str()).collect();
-        let tmux = Self::prepare(test, cols, rows, Path::new(env!("CARGO_BIN_EXE_rasterm")), &args);
+        let tmux = Self::prepare(test, cols, rows, Path::new(env!("CARGO_BIN_EXE_rastty")), &args);
         tmux.go();
         tmux
     }
@@ -67,7 +67,7 @@ impl Tmux {
     /// [`TIMEOUT`]) before it runs `program ARGS...`: so that the test can first set up what watches the pane.
     pub fn prepare(test: &str, cols: u16, rows: u16, program: &Path, args: &[&OsStr]) -> Self {
         let dir = tempfile::tempdir().expect("temporary directory");
-        let socket = format!("rasterm-test-{}-{test}", std::process::id());
+        let socket = format!("rastty-test-{}-{test}", std::process::id());
         let mut tmux = Self { socket, socket_path: None, dir };
         let script = tmux.dir.path().join("run.sh");
         let text = wrapper_script(&tmux.go_file(), &tmux.pid_file(), program, args);

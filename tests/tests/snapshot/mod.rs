@@ -10,7 +10,7 @@ use std::fmt;
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use rasterm::png_file::write_png;
+use rastty::png_file::write_png;
 
 /// The environment variable that turns on blessing.
 pub const UPDATE_VARIABLE: &str = "UPDATE_SNAPSHOTS";
@@ -27,7 +27,7 @@ pub fn golden_dir() -> &'static Path {
     Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/snapshots"))
 }
 
-/// An RGB frame: `0x00RRGGBB` pixels, row-major, top row first (what `rasterm_core::target::Rgb888` holds).
+/// An RGB frame: `0x00RRGGBB` pixels, row-major, top row first (what `rastty_core::target::Rgb888` holds).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Image {
     /// Width in pixels.
@@ -192,7 +192,7 @@ impl fmt::Display for Failure {
             Self::Missing { golden, reason, actual_path } => write!(
                 f,
                 "no usable golden image {} ({reason}); the image is in {}. If the scene is new or meant to \
-                 change, bless it with `{UPDATE_VARIABLE}=1 cargo test -p rasterm-tests` and look at the golden \
+                 change, bless it with `{UPDATE_VARIABLE}=1 cargo test -p rastty-tests` and look at the golden \
                  before committing it",
                 golden.display(),
                 actual_path.display()

@@ -2,10 +2,10 @@
 
 use core::fmt;
 
-use rasterm_core::camera::CameraError;
-use rasterm_core::mesh::MeshError;
-use rasterm_core::pipeline::DrawError;
-use rasterm_core::target::TargetError;
+use rastty_core::camera::CameraError;
+use rastty_core::mesh::MeshError;
+use rastty_core::pipeline::DrawError;
+use rastty_core::target::TargetError;
 
 /// Why the scene could not be rendered (never, with these constants; returned rather than unwrapped so that the
 /// firmware reports it).

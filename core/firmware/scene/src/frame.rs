@@ -3,8 +3,8 @@
 use core::fmt;
 use core::ops::Range;
 
-use rasterm_core::pipeline::DrawStats;
-use rasterm_core::target::{Rgb565, Target};
+use rastty_core::pipeline::DrawStats;
+use rastty_core::target::{Rgb565, Target};
 
 use crate::{BandBuffers, Fnv1a, Scene, SceneError};
 

@@ -2,18 +2,18 @@
 //!
 //! # One shader, not `draw_mesh`
 //! [`Scene::draw`] resolves the scene's [`Effects`] and runs the one shader they call for through
-//! [`rasterm_core::pipeline::draw`]. [`draw_mesh`] gives the same pixels (the host test checks it), but it picks
+//! [`rastty_core::pipeline::draw`]. [`draw_mesh`] gives the same pixels (the host test checks it), but it picks
 //! the shader at run time, so a firmware calling it links every variant of the pipeline: 3.1 MB of Cortex-M4 code
 //! (`.text`) at `opt-level = 3`, against 51 KB this way (one build each, 2026-11-21; docs/firmware.md).
 
-use rasterm_core::camera::{look_at, perspective};
-use rasterm_core::math::{Mat4, Quat, Vec3};
-use rasterm_core::mesh::{Indices, Mesh};
-use rasterm_core::pipeline::{DrawState, DrawStats, draw};
-use rasterm_core::shading::{
+use rastty_core::camera::{look_at, perspective};
+use rastty_core::math::{Mat4, Quat, Vec3};
+use rastty_core::mesh::{Indices, Mesh};
+use rastty_core::pipeline::{DrawState, DrawStats, draw};
+use rastty_core::shading::{
     Effects, Light, Lighting, Material, PhongShader, ShadingModel, Specular, Surface, Transforms, Untextured, draw_mesh,
 };
-use rasterm_core::target::{ColorBuffer, DepthBuffer, Target};
+use rastty_core::target::{ColorBuffer, DepthBuffer, Target};
 
 use crate::{HEIGHT, SceneError, WIDTH, spot};
 

@@ -1,14 +1,14 @@
-//! rasterm's picture of a reference scene: the same description, converted to `f32` and drawn through the core with
+//! rastty's picture of a reference scene: the same description, converted to `f32` and drawn through the core with
 //! one setting of the knobs.
 
 use std::time::{Duration, Instant};
 
-use rasterm_core::camera::{CameraError, look_at, orthographic, perspective};
-use rasterm_core::math::{Mat4, Vec2, Vec3, Vec4};
-use rasterm_core::mesh::{Indices, Mesh, MeshError};
-use rasterm_core::pipeline::{DrawError, DrawState};
-use rasterm_core::shading::{Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh};
-use rasterm_core::target::{ColorBuffer, DepthBuffer, Rgb888, Target, TargetError, downsample_rgb888};
+use rastty_core::camera::{CameraError, look_at, orthographic, perspective};
+use rastty_core::math::{Mat4, Vec2, Vec3, Vec4};
+use rastty_core::mesh::{Indices, Mesh, MeshError};
+use rastty_core::pipeline::{DrawError, DrawState};
+use rastty_core::shading::{Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh};
+use rastty_core::target::{ColorBuffer, DepthBuffer, Rgb888, Target, TargetError, downsample_rgb888};
 
 use super::settings::{DepthFormat, LitShading, Setting};
 use crate::reference::{self, Projection, Scene, Shading};

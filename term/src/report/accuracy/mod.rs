@@ -1,7 +1,7 @@
-//! `rasterm report accuracy`: what each quality knob costs in time and buys in accuracy.
+//! `rastty report accuracy`: what each quality knob costs in time and buys in accuracy.
 //!
 //! Four scenes ([`scenes`]) are rendered by the reference renderer ([`crate::reference`]: `f64` throughout, 16x16
-//! samples per pixel) and by rasterm with the default settings and with each knob turned alone
+//! samples per pixel) and by rastty with the default settings and with each knob turned alone
 //! ([`settings`]). For every scene and setting the report gives the median frame time, the time relative to the
 //! default, the PSNR against the reference, the largest error in 8-bit steps, and the pixels with wrong coverage;
 //! then which settings lie on the speed/quality frontier. It writes `accuracy.md` and the chart `accuracy.png`.
@@ -154,7 +154,7 @@ pub const ANALYSIS_MARKER: &str =
 impl AccuracyReport {
     /// The command line that reproduces the report.
     pub fn command_line(&self) -> String {
-        if self.options.quick { "rasterm report accuracy --quick".into() } else { "rasterm report accuracy".into() }
+        if self.options.quick { "rastty report accuracy --quick".into() } else { "rastty report accuracy".into() }
     }
 
     /// The Markdown report (without any hand-written analysis).
@@ -169,7 +169,7 @@ impl AccuracyReport {
              settings taking turns. Each scene is also rendered by the reference renderer (`f64` throughout, \
              {n}x{n} samples per pixel each tested against the triangles' edges in `f64`, perspective-correct, \
              bilinear, per-pixel lighting); PSNR and errors are \
-             against it. Every setting changes one knob from rasterm's default (8 sub-pixel bits, fixed-point \
+             against it. Every setting changes one knob from rastty's default (8 sub-pixel bits, fixed-point \
              edges, perspective-correct, bilinear, per-pixel lighting, one sample per pixel, `f32` depth). There is \
              no maths knob: normalising uses a Newton-Raphson inverse square root within one unit in the last \
              place of the exact value for every input (`float::inv_sqrt`, tested over all of them), and every \

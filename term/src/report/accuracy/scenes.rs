@@ -1,8 +1,8 @@
 //! The four scenes, each chosen so that some quality knob shows its effect. They are described once, as reference
-//! scenes; rasterm renders the same description through the core.
+//! scenes; rastty renders the same description through the core.
 
-use rasterm_core::pipeline::Cull;
-use rasterm_core::texture::WrapMode;
+use rastty_core::pipeline::Cull;
+use rastty_core::texture::WrapMode;
 
 use crate::builtin::builtin_model;
 use crate::model::{LoadError, TextureImage};

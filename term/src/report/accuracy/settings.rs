@@ -1,7 +1,7 @@
 //! The quality knobs: each setting changes one of them from the default.
 
-use rasterm_core::pipeline::{DrawState, EdgeArithmetic, Interpolation};
-use rasterm_core::texture::FilterMode;
+use rastty_core::pipeline::{DrawState, EdgeArithmetic, Interpolation};
+use rastty_core::texture::FilterMode;
 
 /// How lit surfaces are shaded (unlit ones ignore it).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -46,7 +46,7 @@ pub struct Setting {
     pub depth: DepthFormat,
 }
 
-/// rasterm's defaults: 8 sub-pixel bits, fixed-point edges, perspective-correct, bilinear, per-pixel lighting, one
+/// rastty's defaults: 8 sub-pixel bits, fixed-point edges, perspective-correct, bilinear, per-pixel lighting, one
 /// sample per pixel, `f32` depth.
 pub const DEFAULT: Setting = Setting {
     name: "default",
