@@ -1,7 +1,7 @@
 //! Clipping: triangles crossing the near and far planes, vertices behind the camera or at w = 0, and huge
 //! triangles cut by the guard band, each against an exact f64 ray-cast of the same view.
 
-mod common;
+use crate::common;
 
 use common::{PinholeCamera, ascii, both_sides};
 

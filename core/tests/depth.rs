@@ -1,6 +1,6 @@
 //! The z-buffer: comparison, formats, clearing, and the depth test switched off.
 
-mod common;
+use crate::common;
 
 use common::ScreenSpace;
 use rastty_core::math::{Vec3, Vec4};

@@ -4,7 +4,7 @@
 //! equals the classic Phong shader bit for bit: colours and depths. The general loop draws into a caller's own
 //! depth buffer (`PlainDepth`), every other draw into the library's `&mut [f32]`.
 
-mod common;
+use crate::common;
 
 use common::{ExactColor, PlainDepth, Torus, assert_same_depths, checker_texels};
 use rastty_core::camera::{look_at, perspective};

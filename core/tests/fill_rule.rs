@@ -1,6 +1,6 @@
 //! Coverage and the top-left fill rule, asserted as ASCII art (`#` = covered once, `2` = twice, `.` = not).
 
-mod common;
+use crate::common;
 
 use common::{assert_pattern, both_sides, coverage};
 use rastty_core::pipeline::{Cull, DrawState, Winding};

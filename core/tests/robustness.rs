@@ -1,7 +1,7 @@
 //! Bad input never panics: out-of-range indices and non-finite values skip their triangle only, and buffers of
 //! the wrong size are refused with an error value.
 
-mod common;
+use crate::common;
 
 use common::{Count, ScreenSpace, Torus, coverage};
 use rastty_core::camera::{look_at, perspective};

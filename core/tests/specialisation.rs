@@ -2,7 +2,7 @@
 //! and through the general one must give identical pixels, depths and statistics. The general path draws into a
 //! caller's own depth buffer (`PlainDepth`), the specialised ones into the library's `&mut [f32]`.
 
-mod common;
+use crate::common;
 
 use common::{ExactColor, PlainDepth, Torus, assert_same_depths, checker_texels};
 use rastty_core::camera::{look_at, orthographic, perspective};

@@ -9,7 +9,7 @@
 //! specialised and general shading pipelines with the depth test on and off, wireframe lines, depth-only passes,
 //! and the batched fragment path of mapped surfaces (maps, a point light, a shadowed sun).
 
-mod common;
+use crate::common;
 
 use common::{ExactColor, PlainDepth, PlainDepth16, Torus, Transformed, assert_same_depths, checker_texels};
 use rastty_core::camera::{look_at, perspective};

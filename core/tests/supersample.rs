@@ -1,6 +1,6 @@
 //! Supersampling: render k times larger, average k x k blocks.
 
-mod common;
+use crate::common;
 
 use common::ScreenSpace;
 use rastty_core::math::Vec3;

@@ -1,6 +1,6 @@
 //! Wireframe lines: one pixel per major-axis step, clipped in homogeneous space, depth-tested.
 
-mod common;
+use crate::common;
 
 use common::{Count, PlainDepth, PlainDepth16, ascii, assert_pattern, assert_same_depths};
 use core::ops::Range;

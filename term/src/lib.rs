@@ -10,8 +10,6 @@
 //! | [`scene_render`] | drawing scene files: a plan of passes (shadow maps, forward draws, ambient occlusion), explained and run |
 //! | [`headless`] | `rastty render`: a scene to a PNG file |
 //! | [`png_file`] | writing PNG files safely |
-//! | [`reference`](mod@reference) | a slow `f64` reference renderer (16x16 samples per pixel, coverage and shading in `f64`): the truth to measure against |
-//! | [`report`] | `rastty report`: measured figures as Markdown (terminal frame bytes and times; every quality knob's time and error) |
 //! | [`screen`] | terminal cells, colour modes and the frame-diff encoder |
 //! | [`viewer`] | the interactive terminal viewer |
 
@@ -20,8 +18,6 @@ pub mod escaped;
 pub mod headless;
 pub mod model;
 pub mod png_file;
-pub mod reference;
-pub mod report;
 pub mod scene;
 pub mod scene_file;
 pub mod scene_render;

@@ -1,5 +1,5 @@
-//! The `rastty` command: a terminal viewer (`rastty [MODEL.obj | SCENE.toml]`), a headless renderer
-//! (`rastty render`) and measurement reports (`rastty report`).
+//! The `rastty` command: a terminal viewer (`rastty [MODEL.obj | SCENE.toml]`) and a headless renderer
+//! (`rastty render`).
 //!
 //! Argument parsing only; the work is in the `rastty` library.
 
@@ -12,8 +12,6 @@ use clap::{ArgMatches, Args, CommandFactory, FromArgMatches, Parser, Subcommand}
 use rastty::escaped::{Escaped, path_text};
 use rastty::headless::{ModelSource, RenderRequest, TextureChoice, parse_size, render_to_png};
 use rastty::png_file::write_png;
-use rastty::report::terminal::{DEFAULT_FRAMES, TerminalReport};
-use rastty::report::{effects, frames};
 use rastty::scene::{Appearance, Lens, OrbitCamera, ShadingMode, parse_hex_color};
 use rastty::scene_file::SceneData;
 use rastty::scene_render::{EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, render_scene_image};
@@ -35,81 +33,6 @@ struct Cli {
 enum Command {
     /// Render a model or a scene file to a PNG file, or explain a scene's passes.
     Render(RenderArgs),
-    /// Measure and print figures as Markdown.
-    #[command(subcommand)]
-    Report(ReportCommand),
-}
-
-/// The reports of `rastty report`.
-#[derive(Subcommand, Debug)]
-enum ReportCommand {
-    /// Bytes and times of terminal frames for a turntable of the built-in model.
-    Terminal(TerminalReportArgs),
-    /// Time and error of every quality knob against a high-precision reference; writes accuracy.md and
-    /// accuracy.png.
-    Accuracy(AccuracyReportArgs),
-    /// Time per frame of a scene file with no effect, each effect alone and every effect, at 800x800 and 200x120.
-    Effects(EffectsReportArgs),
-    /// Time per frame of a scene file as it is (shadow maps kept, drawn every frame, and without shadows), the
-    /// same frame drawn again and again.
-    Frames(FramesReportArgs),
-}
-
-/// Options of `rastty report frames`.
-#[derive(Args, Debug)]
-struct FramesReportArgs {
-    /// The scene file to measure.
-    scene: PathBuf,
-    /// Frames measured per configuration.
-    #[arg(long, default_value_t = frames::DEFAULT_FRAMES as u32, value_parser = clap::value_parser!(u32).range(1..=100_000))]
-    frames: u32,
-    /// Threads per frame, each drawing a band of rows (default: every logical CPU).
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
-    threads: Option<u32>,
-    /// Frame size.
-    #[arg(long, value_name = "WxH", default_value = "800x800", value_parser = parse_size)]
-    size: (u32, u32),
-    /// A few frames only (for CI): the same as `--frames 5`.
-    #[arg(long, conflicts_with = "frames")]
-    quick: bool,
-}
-
-/// Options of `rastty report effects`.
-#[derive(Args, Debug)]
-struct EffectsReportArgs {
-    /// The scene file to measure (default: assets/scenes/spot_lamp.toml, which uses every effect).
-    scene: Option<PathBuf>,
-    /// Frames measured per configuration and size, after one warm-up frame each.
-    #[arg(long, default_value_t = effects::DEFAULT_FRAMES as u32, value_parser = clap::value_parser!(u32).range(1..=100_000))]
-    frames: u32,
-    /// Threads per frame, each drawing a band of rows (default: every logical CPU).
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
-    threads: Option<u32>,
-    /// A few frames only (for CI): the same as `--frames 5`.
-    #[arg(long, conflicts_with = "frames")]
-    quick: bool,
-}
-
-/// Options of `rastty report accuracy`.
-#[derive(Args, Debug)]
-struct AccuracyReportArgs {
-    /// Directory to write accuracy.md and accuracy.png into.
-    #[arg(long, value_name = "DIR", default_value = "docs")]
-    output: PathBuf,
-    /// Small images and few repeats (for CI): proves the command works; the figures mean little.
-    #[arg(long)]
-    quick: bool,
-}
-
-/// Options of `rastty report terminal`.
-#[derive(Args, Debug)]
-struct TerminalReportArgs {
-    /// Frames per full turn of the turntable.
-    #[arg(long, default_value_t = DEFAULT_FRAMES as u32, value_parser = clap::value_parser!(u32).range(1..=100_000))]
-    frames: u32,
-    /// A few frames only (for CI): the same as `--frames 12`.
-    #[arg(long, conflicts_with = "frames")]
-    quick: bool,
 }
 
 /// Options of the interactive viewer.
@@ -347,10 +270,6 @@ fn main() -> ExitCode {
             let sub = matches.subcommand_matches("render").unwrap_or(&matches);
             render(&args, sub).map(|()| ExitCode::SUCCESS)
         }
-        Some(Command::Report(ReportCommand::Terminal(args))) => terminal_report(&args).map(|()| ExitCode::SUCCESS),
-        Some(Command::Report(ReportCommand::Accuracy(args))) => accuracy_report(&args).map(|()| ExitCode::SUCCESS),
-        Some(Command::Report(ReportCommand::Effects(args))) => effects_report(&args).map(|()| ExitCode::SUCCESS),
-        Some(Command::Report(ReportCommand::Frames(args))) => frames_report(&args).map(|()| ExitCode::SUCCESS),
         None => view(&cli.viewer, &matches),
     };
     result.unwrap_or_else(|message| {
@@ -476,55 +395,6 @@ fn render_scene(args: &RenderArgs, path: &Path, matches: &ArgMatches) -> Result<
         );
     }
     Ok(())
-}
-
-fn accuracy_report(args: &AccuracyReportArgs) -> Result<(), String> {
-    use rastty::report::accuracy::{AccuracyOptions, measure};
-    let options = if args.quick {
-        AccuracyOptions::quick(args.output.clone())
-    } else {
-        AccuracyOptions::full(args.output.clone())
-    };
-    let report = measure(&options)?;
-    let written = report.write()?;
-    print!("{}", written.markdown);
-    eprintln!("rastty: wrote {} and {}", path_text(&written.markdown_path), path_text(&written.chart_path));
-    Ok(())
-}
-
-fn terminal_report(args: &TerminalReportArgs) -> Result<(), String> {
-    let report = if args.quick { TerminalReport::quick() } else { TerminalReport::new(args.frames as usize) };
-    rastty::report::terminal::run(&report, &mut std::io::stdout().lock()).map(|_| ()).map_err(|e| e.to_string())
-}
-
-fn effects_report(args: &EffectsReportArgs) -> Result<(), String> {
-    let threads = args.threads.map(|n| n as usize);
-    let report = if args.quick {
-        effects::EffectsReport::quick(args.scene.clone(), threads)
-    } else {
-        effects::EffectsReport::new(args.scene.clone(), args.frames as usize, threads)
-    };
-    let scene = load_scene_file(&report.scene_path)?;
-    effects::run(&report, &scene, &mut std::io::stdout().lock()).map(|_| ()).map_err(in_file(&report.scene_path))
-}
-
-/// A timing report's error as a message; a frame that could not be planned or drawn names the scene file.
-fn in_file(scene: &Path) -> impl Fn(effects::EffectsError) -> String + '_ {
-    move |e| match e {
-        effects::EffectsError::Render(e) => format!("{}: {e}", path_text(scene)),
-        e => e.to_string(),
-    }
-}
-
-fn frames_report(args: &FramesReportArgs) -> Result<(), String> {
-    let threads = args.threads.map(|n| n as usize);
-    let report = if args.quick {
-        frames::FramesReport::quick(args.scene.clone(), threads, args.size)
-    } else {
-        frames::FramesReport::new(args.scene.clone(), args.frames as usize, threads, args.size)
-    };
-    let scene = load_scene_file(&report.scene_path)?;
-    frames::run(&report, &scene, &mut std::io::stdout().lock()).map(|_| ()).map_err(in_file(&report.scene_path))
 }
 
 fn view(args: &ViewerArgs, matches: &ArgMatches) -> Result<ExitCode, String> {

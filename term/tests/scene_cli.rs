@@ -1,6 +1,6 @@
 //! The `rastty` binary on scene files: `render SCENE.toml -o`, `--explain`, and the errors.
 
-mod common;
+use crate::common;
 
 use common::root;
 use std::fs;

@@ -1,7 +1,7 @@
 //! Rendering scene files: every shipped scene draws, the plan lists exactly the passes a scene calls for (and
 //! nothing switched off), and the plan's explanation says so.
 
-mod common;
+use crate::common;
 
 use common::{root, scenes_in};
 use std::fs;

@@ -4,7 +4,7 @@
 //! and the excess Oklab distance (ΔE of the table's pick minus ΔE of the exact pick), mean over all colours
 //! checked and maximum. The normal run checks a lattice of 86^3 colours (every channel value divisible
 //! by 3, both ends included); the ignored test checks all 2^24 colours:
-//! `cargo test -p rastty --release --test screen_palette -- --ignored --nocapture`.
+//! `cargo test -p rastty --release --test integration screen_palette:: -- --ignored --nocapture`.
 
 use rastty::screen::oklab::Oklab;
 use rastty::screen::palette::{nearest_ansi16_exact, nearest_xterm256_exact, oklab_distance_to_entry};

@@ -22,7 +22,7 @@
 //! sshd, ssh and tmux are required in CI (`CI` set): there, without them this test fails. Elsewhere a machine
 //! without them skips it with a notice.
 
-mod common;
+use crate::common;
 
 use std::ffi::OsStr;
 use std::fs::{self, File, OpenOptions};

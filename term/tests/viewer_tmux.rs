@@ -3,7 +3,7 @@
 //! Each test starts its own tmux server with the viewer in its one pane (`common/tmux.rs`), and kills it when the
 //! test ends, passed or failed.
 
-mod common;
+use crate::common;
 
 use std::path::Path;
 use std::process::Command;

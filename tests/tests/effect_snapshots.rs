@@ -12,7 +12,7 @@
 //! to re-bless. So that a re-blessing cannot quietly turn an effect into a no-op, each frame without an effect must
 //! also differ from the frame with every effect in a good number of pixels.
 
-mod snapshot;
+use crate::snapshot;
 
 use std::path::Path;
 use std::sync::LazyLock;

@@ -4,7 +4,7 @@
 //! cover the frame top to bottom, the band buffers fit 16 KiB, and the strips add up to the frame rendered whole,
 //! both by the scene's specialised draw and by `draw_mesh`.
 //!
-//! Run `cargo test -p rastty-tests --test firmware_checksum -- --nocapture` to see the lines.
+//! Run `cargo test -p rastty-tests --test integration firmware_checksum:: -- --nocapture` to see the lines.
 
 use rastty_core::pipeline::DrawStats;
 use rastty_core::target::{Rgb565, Target};

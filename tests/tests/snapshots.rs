@@ -7,7 +7,7 @@
 //! `NAME.actual.png` and `NAME.diff.png` (or `NAME.bands.actual.png` and `NAME.bands.diff.png` for the banded
 //! rendering) beside the golden. `UPDATE_SNAPSHOTS=1 cargo test -p rastty-tests` re-blesses the goldens.
 
-mod snapshot;
+use crate::snapshot;
 
 use std::sync::LazyLock;
 

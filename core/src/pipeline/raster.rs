@@ -396,7 +396,7 @@ impl<E: Edges> Coverage<E> {
     /// interpolates the varyings it reads.
     ///
     /// Its row walk repeats `fill`'s on purpose: sharing one walk through a closure made the per-pixel loop twice
-    /// as slow (`cargo bench -p rastty-core --bench render -- sphere_2_5k_phong_lambert_800x800`: fastest 13.4
+    /// as slow (`cargo bench -p rastty-bench --bench render -- sphere_2_5k_phong_lambert_800x800`: fastest 13.4
     /// against 6.5 ms).
     #[inline(always)]
     fn fill_batched<S, I, Z, C, D>(

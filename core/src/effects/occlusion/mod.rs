@@ -58,7 +58,7 @@ impl AmbientOcclusion {
     /// 2x2 block of cells and averaged by the filter, so 16 directions and 16 distances shape every pixel. Creases
     /// and contacts come out soft and smooth, with no dither pattern; open surfaces stay untouched.
     ///
-    /// Measured with `cargo bench -p rastty-core --bench occlusion` on one core of a 2-core x86-64 virtual
+    /// Measured with `cargo bench -p rastty-bench --bench occlusion` on one core of a 2-core x86-64 virtual
     /// machine (AMD EPYC, SSE2) shared with other work, so noisy: an 800x800 frame took a median of 14.8 ms
     /// (fastest 13.0 ms) for a model filling most of it and 19.7 ms (fastest 16.9 ms) with a floor and boxes
     /// around it, where the previous search, 8 directions of 4 steps at every pixel (32 samples a pixel), took

@@ -1,4 +1,4 @@
-//! `rastty report terminal`: what the viewer's frames cost, for a turntable of the built-in model.
+//! `rastty-bench terminal`: what the viewer's frames cost, for a turntable of the built-in model.
 //!
 //! For each terminal size and colour mode, the built-in model is turned once around (the default camera, turned
 //! with [`OrbitCamera::rotate`] in equal steps about the screen's vertical axis) and every frame goes through the
@@ -17,10 +17,10 @@ use std::time::{Duration, Instant};
 use rastty_core::target::{Rgb888, Target};
 
 use super::median;
-use crate::builtin::{BUILTIN_NAME, builtin_model};
-use crate::model::LoadError;
-use crate::scene::{Appearance, OrbitCamera, RenderError, Scene};
-use crate::screen::{CellGrid, CellMode, ColorMode, Encoder, PixelFrame, naive_full_frame};
+use rastty::builtin::{BUILTIN_NAME, builtin_model};
+use rastty::model::LoadError;
+use rastty::scene::{Appearance, OrbitCamera, RenderError, Scene};
+use rastty::screen::{CellGrid, CellMode, ColorMode, Encoder, PixelFrame, naive_full_frame};
 
 /// Terminal sizes measured, in cells (columns, rows).
 pub const SIZES: [(u16, u16); 3] = [(80, 24), (120, 40), (200, 60)];
@@ -66,9 +66,9 @@ impl TerminalReport {
     /// The command that prints this report.
     pub fn command_line(&self) -> String {
         if self.quick {
-            "rastty report terminal --quick".to_owned()
+            "rastty-bench terminal --quick".to_owned()
         } else {
-            format!("rastty report terminal --frames {}", self.frames)
+            format!("rastty-bench terminal --frames {}", self.frames)
         }
     }
 }
@@ -425,7 +425,7 @@ mod tests {
     #[test]
     fn header_names_the_command_and_the_columns() {
         let header = header(&TerminalReport::quick(), "Test CPU, 2 logical CPUs");
-        assert!(header.contains("`rastty report terminal --quick`"), "{header}");
+        assert!(header.contains("`rastty-bench terminal --quick`"), "{header}");
         assert!(header.contains("Test CPU, 2 logical CPUs"));
         let columns = header.lines().rev().nth(1).unwrap();
         assert_eq!(columns.matches('|').count(), 12, "{columns}");

@@ -39,11 +39,11 @@
 //! # Use
 //!
 //! Build a [`Scene`] by hand, or from a rastty model and camera with [`Scene::from_model`] (the same picture as
-//! [`crate::scene::Scene::draw`] draws), then call [`render`] for a [`ReferenceImage`], or make a [`Renderer`] to
+//! [`rastty::scene::Scene::draw`] draws), then call [`render`] for a [`ReferenceImage`], or make a [`Renderer`] to
 //! render and also [`Renderer::probe`] single points.
 //!
 //! ```
-//! use rastty::reference::{Camera, Object, Projection, Scene, Shading, render};
+//! use rastty_bench::reference::{Camera, Object, Projection, Scene, Shading, render};
 //!
 //! // An orthographic camera whose view box is the 4x4 image itself (view y = -screen y), and a triangle whose
 //! // right edge is the line x = 2.
@@ -80,8 +80,8 @@ pub use image::ReferenceImage;
 pub use render::{Probe, Renderer, SAMPLES_PER_AXIS, render};
 pub use texture::sample_bilinear;
 
-use crate::model::TextureImage;
 use math::Mat4;
+use rastty::model::TextureImage;
 
 /// Everything the reference renderer draws: image size, camera, lights, background and objects.
 #[derive(Clone, Debug, PartialEq)]

@@ -1,12 +1,12 @@
-//! The reference scene of a rastty model, camera and appearance: the picture [`crate::scene::Scene::draw`] draws.
+//! The reference scene of a rastty model, camera and appearance: the picture [`rastty::scene::Scene::draw`] draws.
 
 use rastty_core::pipeline::Cull;
 use rastty_core::texture::WrapMode;
 
 use super::math::{self, Mat4};
 use super::{Camera, Light, Lighting, Material, Object, Projection, ReferenceError, Scene, Shading};
-use crate::model::{DEFAULT_DIFFUSE, Model};
-use crate::scene::{self, Appearance, Lens, OrbitCamera, ShadingMode};
+use rastty::model::{DEFAULT_DIFFUSE, Model};
+use rastty::scene::{self, Appearance, Lens, OrbitCamera, ShadingMode};
 
 fn widen(v: rastty_core::math::Vec3) -> [f64; 3] {
     [f64::from(v.x), f64::from(v.y), f64::from(v.z)]
@@ -23,7 +23,7 @@ fn fit(model: &Model) -> Mat4 {
 }
 
 impl Scene {
-    /// The reference scene of what [`crate::scene::Scene::draw`] draws for `model` seen by `camera` with
+    /// The reference scene of what [`rastty::scene::Scene::draw`] draws for `model` seen by `camera` with
     /// `appearance`, in a `width x height` image of physical aspect `aspect` (width over height, as passed to
     /// `draw`; `width / height` for a PNG).
     ///

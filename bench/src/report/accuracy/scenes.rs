@@ -4,10 +4,10 @@
 use rastty_core::pipeline::Cull;
 use rastty_core::texture::WrapMode;
 
-use crate::builtin::builtin_model;
-use crate::model::{LoadError, TextureImage};
 use crate::reference::{Camera, Light, Lighting, Object, Projection, Scene, Shading, math};
-use crate::scene::{Appearance, Lens, OrbitCamera};
+use rastty::builtin::builtin_model;
+use rastty::model::{LoadError, TextureImage};
+use rastty::scene::{Appearance, Lens, OrbitCamera};
 
 /// A named scene and what it is for.
 pub struct AccuracyScene {
@@ -81,7 +81,7 @@ fn model(w: u32, h: u32) -> Result<AccuracyScene, LoadError> {
     let camera = OrbitCamera::new(65.0, 35.0, 2.4, Lens::Perspective { fov_degrees: 40.0 });
     let scene =
         Scene::from_model(&builtin_model()?, &camera, &Appearance::default(), (w, h), f64::from(w) / f64::from(h))
-            .map_err(|e| LoadError::new("built-in Spot", crate::model::LoadErrorKind::Parser(e.to_string())))?;
+            .map_err(|e| LoadError::new("built-in Spot", rastty::model::LoadErrorKind::Parser(e.to_string())))?;
     Ok(AccuracyScene {
         name: "model",
         purpose: "the built-in model, textured and lit, seen obliquely: shading and texture filtering",

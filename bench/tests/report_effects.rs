@@ -1,12 +1,12 @@
-//! `rastty report effects`: the report's shape (every row, every number) on a tiny configuration through the
+//! `rastty-bench effects`: the report's shape (every row, every number) on a tiny configuration through the
 //! library, and its errors through the binary. Timings are never compared.
 
-mod common;
+use crate::common;
 
 use std::path::PathBuf;
 
-use rastty::report::effects::{self, EffectsReport, ShadowMaps, configurations};
 use rastty::scene_render::{EffectToggles, PreparedScene, SceneEffect};
+use rastty_bench::report::effects::{self, EffectsReport, ShadowMaps, configurations};
 
 const ROWS: [&str; 9] = [
     "none",
@@ -105,23 +105,23 @@ fn the_report_has_every_row_and_every_number() {
 
 #[test]
 fn command_lines_show_the_options_given() {
-    assert_eq!(EffectsReport::new(None, 30, None).command_line(), "rastty report effects --frames 30");
+    assert_eq!(EffectsReport::new(None, 30, None).command_line(), "rastty-bench effects --frames 30");
     assert_eq!(
         EffectsReport::quick(Some("a.toml".into()), Some(1)).command_line(),
-        "rastty report effects a.toml --quick --threads 1"
+        "rastty-bench effects a.toml --quick --threads 1"
     );
 }
 
 #[test]
 fn a_scene_that_does_not_load_is_an_error_naming_it() {
-    let out = common::rastty_in_empty_dir(&["report", "effects", "missing.toml", "--quick"]);
+    let out = common::rastty_bench_in_empty_dir(&["effects", "missing.toml", "--quick"]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{stderr}");
-    assert!(stderr.starts_with("rastty: error: missing.toml: "), "{stderr}");
+    assert!(stderr.starts_with("rastty-bench: error: missing.toml: "), "{stderr}");
     assert!(out.stdout.is_empty());
 
     // Without a scene, the default is looked for in the current directory: named too.
-    let out = common::rastty_in_empty_dir(&["report", "effects", "--quick"]);
+    let out = common::rastty_bench_in_empty_dir(&["effects", "--quick"]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{stderr}");
     assert!(stderr.contains(effects::DEFAULT_SCENE), "{stderr}");
@@ -130,7 +130,7 @@ fn a_scene_that_does_not_load_is_an_error_naming_it() {
 #[test]
 fn bad_options_are_usage_errors() {
     for args in [&["--frames", "0"][..], &["--threads", "0"], &["--quick", "--frames", "3"]] {
-        let out = common::rastty_in_empty_dir(&[&["report", "effects"][..], args].concat());
+        let out = common::rastty_bench_in_empty_dir(&[&["effects"][..], args].concat());
         assert_eq!(out.status.code(), Some(2), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
     }
 }

@@ -3,7 +3,7 @@
 use rastty_core::texture::WrapMode;
 
 use super::math::V3;
-use crate::model::TextureImage;
+use rastty::model::TextureImage;
 
 /// A texel's channels in `[0, 1]` (`0x00RRGGBB`, the top byte ignored).
 fn unpack(p: u32) -> V3 {

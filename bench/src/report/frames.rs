@@ -1,4 +1,4 @@
-//! `rastty report frames`: the time per frame of one scene file, the same frame drawn again and again.
+//! `rastty-bench frames`: the time per frame of one scene file, the same frame drawn again and again.
 //!
 //! [`effects`](super::effects) lets its configurations take turns frame by frame, so that a noisy moment of the
 //! machine falls on all of them alike; each of its frames therefore starts with caches full of another
@@ -16,8 +16,8 @@ use std::time::Duration;
 
 use super::effects::{EffectsError, Samples, ShadowMaps, TimedFrames, check_maps, plan};
 use super::median;
-use crate::escaped::path_text;
-use crate::scene_render::{EffectToggles, PreparedScene, SceneEffect, ScenePlan, SceneRenderer};
+use rastty::escaped::path_text;
+use rastty::scene_render::{EffectToggles, PreparedScene, SceneEffect, ScenePlan, SceneRenderer};
 
 /// Frame size measured unless another is given: the tinyrenderer comparison's.
 pub const DEFAULT_SIZE: (u32, u32) = (800, 800);
@@ -61,7 +61,7 @@ impl FramesReport {
 
     /// The command that prints this report.
     pub fn command_line(&self) -> String {
-        let mut line = format!("rastty report frames {}", path_text(&self.scene_path));
+        let mut line = format!("rastty-bench frames {}", path_text(&self.scene_path));
         if self.size != DEFAULT_SIZE {
             let _ = write!(line, " --size {}x{}", self.size.0, self.size.1);
         }

@@ -1,4 +1,4 @@
-//! `rastty report effects`: what each effect of a scene file costs per frame.
+//! `rastty-bench effects`: what each effect of a scene file costs per frame.
 //!
 //! One scene ([`DEFAULT_SCENE`] unless another is given), its own camera, rendered by a [`SceneRenderer`] at each
 //! size of [`EffectsReport::sizes`] in every [`configuration`](configurations): no effect, each effect alone, and
@@ -26,8 +26,8 @@ use std::time::{Duration, Instant};
 use rastty_core::target::{Rgb888, Target};
 
 use super::median;
-use crate::escaped::path_text;
-use crate::scene_render::{
+use rastty::escaped::path_text;
+use rastty::scene_render::{
     BAND_PIXELS, BANDS_PER_THREAD, EffectToggles, FrameReport, PlanOptions, PreparedScene, SceneEffect, ScenePlan,
     SceneRenderError, SceneRenderer,
 };
@@ -127,7 +127,7 @@ impl EffectsReport {
 
     /// The command that prints this report.
     pub fn command_line(&self) -> String {
-        let mut line = "rastty report effects".to_owned();
+        let mut line = "rastty-bench effects".to_owned();
         if self.scene_given {
             line.push(' ');
             line.push_str(&path_text(&self.scene_path));

@@ -1,4 +1,4 @@
-//! `rastty report accuracy`: what each quality knob costs in time and buys in accuracy.
+//! `rastty-bench accuracy`: what each quality knob costs in time and buys in accuracy.
 //!
 //! Four scenes ([`scenes`]) are rendered by the reference renderer ([`crate::reference`]: `f64` throughout, 16x16
 //! samples per pixel) and by rastty with the default settings and with each knob turned alone
@@ -20,9 +20,9 @@ use std::time::Duration;
 pub use core_render::{CoreRenderError, CoreScene, Frames, Rendered};
 pub use metrics::{Score, score};
 
-use crate::escaped::path_text;
-use crate::png_file::{write_atomically, write_png};
 use crate::reference;
+use rastty::escaped::path_text;
+use rastty::png_file::{write_atomically, write_png};
 
 /// What to measure and where to write.
 #[derive(Clone, Debug)]
@@ -154,7 +154,7 @@ pub const ANALYSIS_MARKER: &str =
 impl AccuracyReport {
     /// The command line that reproduces the report.
     pub fn command_line(&self) -> String {
-        if self.options.quick { "rastty report accuracy --quick".into() } else { "rastty report accuracy".into() }
+        if self.options.quick { "rastty-bench accuracy --quick".into() } else { "rastty-bench accuracy".into() }
     }
 
     /// The Markdown report (without any hand-written analysis).

@@ -1,4 +1,4 @@
-//! Measurement reports: `rastty report ...` prints figures as Markdown, with the machine they were measured on.
+//! Measurement reports: `rastty-bench ...` prints figures as Markdown, with the machine they were measured on.
 //!
 //! | report | measures |
 //! |---|---|
@@ -32,7 +32,7 @@ pub fn machine_description() -> String {
 
 /// The threads a timing report draws each frame on: `threads`, else this machine's logical CPUs (at least 1).
 pub fn thread_count(threads: Option<usize>) -> usize {
-    use crate::scene_render::SceneRenderer;
+    use rastty::scene_render::SceneRenderer;
     SceneRenderer::with_threads(threads.unwrap_or_else(|| SceneRenderer::new().threads())).threads()
 }
 

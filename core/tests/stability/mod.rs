@@ -6,8 +6,7 @@
 //! (look-at, normal matrix, rotation drift), `texture.rs` (wrap cases), `strips.rs` (bands), `fill_rule.rs`
 //! (degenerate triangles, the fill rule itself).
 
-#[path = "../common/mod.rs"]
-mod common;
+use crate::common;
 
 mod depth_resolution;
 mod huge_coordinates;

@@ -1,6 +1,6 @@
 //! Rendering benchmarks: whole meshes at typical sizes, and large-triangle fill rate.
 //!
-//! Run with `cargo bench -p rastty-core --bench render`. Meshes are generated here, so the figures need nothing
+//! Run with `cargo bench -p rastty-bench --bench render`. Meshes are generated here, so the figures need nothing
 //! outside the repository.
 
 use divan::{Bencher, black_box};

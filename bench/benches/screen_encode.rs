@@ -1,6 +1,6 @@
 //! Frame-encoder timing for a 200x60-cell terminal (a 200x120-pixel half-block frame).
 //!
-//! `cargo bench -p rastty --bench screen_encode`. Before the timings it prints the byte counts of the
+//! `cargo bench -p rastty-bench --bench screen_encode`. Before the timings it prints the byte counts of the
 //! benchmarked frames next to the naive full frame, and how long the 256-colour lookup table took to build.
 
 use std::hint::black_box;

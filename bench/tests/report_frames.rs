@@ -1,13 +1,13 @@
-//! `rastty report frames`: the report's rows and numbers on a small frame through the library, and its errors
+//! `rastty-bench frames`: the report's rows and numbers on a small frame through the library, and its errors
 //! through the binary. Timings are never compared.
 
-mod common;
+use crate::common;
 
 use std::path::PathBuf;
 
-use rastty::report::effects::ShadowMaps;
-use rastty::report::frames::{self, FramesReport, rows};
 use rastty::scene_render::{EffectToggles, PreparedScene, SceneEffect};
+use rastty_bench::report::effects::ShadowMaps;
+use rastty_bench::report::frames::{self, FramesReport, rows};
 
 fn load(path: &PathBuf, text: Option<String>) -> PreparedScene {
     let data = match text {
@@ -97,17 +97,17 @@ fn a_scene_without_shadows_has_one_row() {
 #[test]
 fn command_lines_show_the_options_given() {
     let report = FramesReport::new("a.toml".into(), 30, None, frames::DEFAULT_SIZE);
-    assert_eq!(report.command_line(), "rastty report frames a.toml --frames 30");
+    assert_eq!(report.command_line(), "rastty-bench frames a.toml --frames 30");
     let report = FramesReport::quick("a.toml".into(), Some(1), (200, 120));
-    assert_eq!(report.command_line(), "rastty report frames a.toml --size 200x120 --quick --threads 1");
+    assert_eq!(report.command_line(), "rastty-bench frames a.toml --size 200x120 --quick --threads 1");
 }
 
 #[test]
 fn a_scene_that_does_not_load_is_an_error_naming_it() {
-    let out = common::rastty_in_empty_dir(&["report", "frames", "missing.toml", "--quick"]);
+    let out = common::rastty_bench_in_empty_dir(&["frames", "missing.toml", "--quick"]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{stderr}");
-    assert!(stderr.starts_with("rastty: error: missing.toml: "), "{stderr}");
+    assert!(stderr.starts_with("rastty-bench: error: missing.toml: "), "{stderr}");
     assert!(out.stdout.is_empty());
 }
 
@@ -121,7 +121,7 @@ fn bad_options_are_usage_errors() {
         &["a.toml", "--size", "0x5"],
     ];
     for args in cases {
-        let out = common::rastty_in_empty_dir(&[&["report", "frames"][..], args].concat());
+        let out = common::rastty_bench_in_empty_dir(&[&["frames"][..], args].concat());
         assert_eq!(out.status.code(), Some(2), "{args:?}: {}", String::from_utf8_lossy(&out.stderr));
     }
 }

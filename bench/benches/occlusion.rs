@@ -1,6 +1,6 @@
 //! Ambient occlusion benchmarks: [`AmbientOcclusion::apply`] on whole 800x800 frames rendered here first.
 //!
-//! Run with `cargo bench -p rastty-core --bench occlusion`. Only the occlusion pass is timed: each iteration
+//! Run with `cargo bench -p rastty-bench --bench occlusion`. Only the occlusion pass is timed: each iteration
 //! starts from a fresh copy of the rendered colour (the copy is not timed).
 
 use divan::{Bencher, black_box};

@@ -2,15 +2,15 @@
 //! colours, depth order, the near-plane cut, perspective-correct texture coordinates, bilinear sampling, Blinn-Phong
 //! lighting; and against rastty itself (the same scene from a model, within 8-bit rounding).
 //!
-//! `cargo test --release -p rastty --test reference -- --ignored --nocapture` also renders the built-in model at
+//! `cargo test --release -p rastty-bench --test integration reference:: -- --ignored --nocapture` also renders the built-in model at
 //! 320x240, writes `/tmp/reference.png` and `/tmp/rastty_default.png`, and prints the time and the PSNR.
 
 use rastty::model::{DEFAULT_DIFFUSE, Material as ModelMaterial, Model, Part, TextureImage};
-use rastty::reference::{
+use rastty::scene::{Appearance, OrbitCamera, ShadingMode};
+use rastty_bench::reference::{
     Camera, Light, Lighting, Material, Object, Projection, ReferenceError, ReferenceImage, Renderer, SAMPLES_PER_AXIS,
     Scene, Shading, render,
 };
-use rastty::scene::{Appearance, OrbitCamera, ShadingMode};
 use rastty_core::camera::CameraError;
 use rastty_core::math::{Vec2, Vec3};
 use rastty_core::pipeline::Cull;

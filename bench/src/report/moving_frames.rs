@@ -1,4 +1,4 @@
-//! `rastty report terminal`, second table: what each tolerance of the viewer's frame writer saves on a moving
+//! `rastty-bench terminal`, second table: what each tolerance of the viewer's frame writer saves on a moving
 //! picture, and what it costs in accuracy.
 //!
 //! On a slow link the writer sends a moving frame with the smallest tolerance of [`TOLERANCES`] whose bytes fit
@@ -11,10 +11,10 @@
 use std::io::Write;
 
 use super::terminal::{ReportError, Turntable};
-use crate::scene::Scene;
-use crate::screen::tolerance::color_distance;
-use crate::screen::{CellGrid, ColorMode, Encoder, Tolerance};
-use crate::viewer::TOLERANCES;
+use rastty::scene::Scene;
+use rastty::screen::tolerance::color_distance;
+use rastty::screen::{CellGrid, ColorMode, Encoder, Tolerance};
+use rastty::viewer::TOLERANCES;
 
 /// The terminal size measured: the SSH test's (docs/terminal.md).
 pub const SIZE: (u16, u16) = (120, 40);
@@ -147,7 +147,7 @@ pub fn write_table(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::builtin::builtin_model;
+    use rastty::builtin::builtin_model;
 
     /// Exact is exact and costs the most; every error stays within its tolerance; more tolerance never costs
     /// more bytes on these frames.

@@ -1,0 +1,12 @@
+//! rastty-bench: what rastty's figures are measured with, kept out of the installed program.
+//!
+//! | module | holds |
+//! |---|---|
+//! | [`reference`](mod@reference) | a slow `f64` reference renderer (16x16 samples per pixel, coverage and shading in `f64`): the truth to measure against |
+//! | [`report`] | `rastty-bench`: measured figures as Markdown (terminal frame bytes and times; every quality knob's time and error; the cost of each effect) |
+//!
+//! The benchmarks (`cargo bench -p rastty-bench`) live in `benches/`: the core's pipelines and ambient
+//! occlusion (`render`, `occlusion`) and the terminal encoder (`screen_encode`).
+
+pub mod reference;
+pub mod report;

@@ -1,0 +1,23 @@
+//! rastty-core's integration tests: one binary, one module per subject (listed below).
+//!
+//! One test binary per crate links once instead of once per file (`autotests = false` in Cargo.toml: a new
+//! file here is a module declared below). Run one subject with `cargo test -p rastty-core --test integration MODULE::`.
+
+mod ambient_occlusion;
+mod clipping;
+mod common;
+mod depth;
+mod effects;
+mod fill_rule;
+mod inverse_sqrt;
+mod math;
+mod robustness;
+mod shadows;
+mod specialisation;
+mod stability;
+mod strips;
+mod supersample;
+mod tangents;
+mod texture;
+mod vertex_cache;
+mod wireframe;

@@ -1,0 +1,17 @@
+//! The `rastty` program's integration tests: one binary, one module per subject (listed below).
+//!
+//! One test binary per crate links once instead of once per file (`autotests = false` in Cargo.toml: a new
+//! file here is a module declared below). Run one subject with `cargo test -p rastty --test integration MODULE::`.
+
+mod cli;
+mod common;
+mod model_loading;
+mod scene_cli;
+mod scene_file;
+mod scene_render;
+mod screen_cells;
+mod screen_encoder;
+mod screen_palette;
+mod viewer_lifecycle;
+mod viewer_ssh;
+mod viewer_tmux;
