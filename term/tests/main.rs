@@ -6,6 +6,7 @@
 mod cli;
 mod common;
 mod model_loading;
+mod readme_picture;
 mod scene_cli;
 mod scene_file;
 mod scene_render;

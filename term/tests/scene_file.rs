@@ -82,7 +82,7 @@ fn every_example_scene_loads() {
             assert!(object.model.warnings.is_empty(), "{:?}", object.model.warnings);
             assert!(object.transform.is_finite());
         }
-        scene.camera.view().unwrap();
+        assert!(scene.camera.view().unwrap().is_finite());
     }
 }
 
@@ -146,6 +146,20 @@ fn the_docs_scenes_load_the_tinyrenderer_models() {
 
 // ---------------------------------------------------------------------------------------------------------------
 // Errors: each names the file, line, column and key
+
+#[test]
+fn the_format_documents_example_parses_with_every_key() {
+    let doc = fs::read_to_string(root().join("docs/scene-format.md")).unwrap();
+    let example = doc.split("```toml\n").nth(1).and_then(|rest| rest.split("```").next()).expect("a toml example");
+    let parsed = rastty::scene_file::parse(example, "scene-format.md");
+    assert!(parsed.is_ok(), "{}", parsed.unwrap_err());
+    // Every key of the table appears in the example.
+    let table_keys = doc.lines().filter_map(|l| l.strip_prefix("| `")).filter_map(|l| l.split('`').next());
+    for key in table_keys {
+        let leaf = key.rsplit(['.', ']']).next().unwrap();
+        assert!(example.contains(&format!("{leaf} =")), "`{key}` is in the table but not in the example");
+    }
+}
 
 #[test]
 fn toml_syntax_errors_name_the_line_and_the_key_being_written() {

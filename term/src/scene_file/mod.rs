@@ -5,87 +5,7 @@
 //! [`SceneFile::load`] does the rest. Every problem is one [`SceneFileError`] naming the file, the line and column,
 //! and the key: `scene.toml:7:7: camera.fov: must be between 0 and 180 degrees, got 200`.
 //!
-//! # The format
-//!
-//! ```toml
-//! background = "20242c"          # optional, RRGGBB
-//! ambient = [0.1, 0.1, 0.12]     # optional ambient light colour
-//! ambient_occlusion = true       # optional, default false
-//!
-//! [camera]
-//! position = [2.5, 1.8, 3.5]
-//! target = [0, 0.6, 0]
-//! up = [0, 1, 0]                 # default [0, 1, 0]
-//! fov = 40                       # vertical, degrees; or `orthographic = HEIGHT`, not both
-//! near = 0.1                     # optional, 0 < near < far
-//! far = 50                       # optional
-//!
-//! [[lights]]
-//! type = "directional"
-//! direction = [-1, -2, -1]       # the way the light travels: from the light toward the scene
-//! color = [1, 0.95, 0.9]         # default [1, 1, 1]
-//! intensity = 1.2                # default 1
-//! shadows = true                 # default false
-//!
-//! [[lights]]
-//! type = "point"
-//! position = [0, 3, 2]
-//!
-//! [[objects]]
-//! mesh = "../spot/spot.obj"      # relative to this file; or "builtin:spot"
-//! translate = [0, 0.74, 0]       # default [0, 0, 0]
-//! rotate = [0, 180, 0]           # degrees about X, then Y, then Z; default [0, 0, 0]
-//! scale = 1                      # or [x, y, z]; default 1
-//!
-//! [objects.material]             # every key optional
-//! color = [1, 1, 1]              # overrides the MTL's Kd
-//! diffuse = "../spot/spot_texture.png"   # overrides the MTL's map_Kd
-//! normal_map = "bumps.png"
-//! normal_space = "tangent"       # or "object"; needs normal_map
-//! specular = 0.3                 # or [r, g, b]
-//! shininess = 32
-//! specular_map = "shine.png"
-//! glow_map = "glow.png"
-//! filter = "bilinear"            # or "nearest"
-//! wrap = "repeat"                # or "clamp"
-//! ```
-//!
-//! | key | value | default | rule |
-//! |---|---|---|---|
-//! | `background` | `"RRGGBB"` | `16191f` | six hex digits, `#` allowed |
-//! | `ambient` | `[r, g, b]` | [`crate::scene::AMBIENT`] | finite, not negative |
-//! | `ambient_occlusion` | bool | `false` | |
-//! | `camera.position`, `camera.target` | `[x, y, z]` | required | finite, not the same point |
-//! | `camera.up` | `[x, y, z]` | `[0, 1, 0]` | not zero |
-//! | `camera.fov` | degrees | | `0 < fov < 180`; exactly one of `fov` and `orthographic` |
-//! | `camera.orthographic` | world units | | the view's height, positive |
-//! | `camera.near`, `camera.far` | distance | renderer's | positive, `near < far` |
-//! | `lights[].type` | `"directional"`, `"point"` | required | |
-//! | `lights[].direction` | `[x, y, z]` | | directional only, required there; the direction of travel; not zero |
-//! | `lights[].position` | `[x, y, z]` | | point only, required there |
-//! | `lights[].color` | `[r, g, b]` | `[1, 1, 1]` | finite, not negative |
-//! | `lights[].intensity` | number | `1` | finite, not negative |
-//! | `lights[].shadows` | bool | `false` | |
-//! | `objects[].mesh` | path or `"builtin:spot"` | required | relative to the scene file |
-//! | `objects[].translate` | `[x, y, z]` | `[0, 0, 0]` | finite |
-//! | `objects[].rotate` | degrees `[x, y, z]` | `[0, 0, 0]` | applied about X, then Y, then Z |
-//! | `objects[].scale` | number or `[x, y, z]` | `1` | positive |
-//! | `objects[].material.color` | `[r, g, b]` | the MTL's `Kd` | 0 to 1 |
-//! | `objects[].material.diffuse` | image path | the MTL's `map_Kd` | |
-//! | `objects[].material.normal_map` | image path | none | |
-//! | `objects[].material.normal_space` | `"tangent"`, `"object"` | `"tangent"` | only with `normal_map` |
-//! | `objects[].material.specular` | number or `[r, g, b]` | renderer's | 0 to 1 |
-//! | `objects[].material.shininess` | number | renderer's | positive |
-//! | `objects[].material.specular_map`, `glow_map` | image path | none | |
-//! | `objects[].material.filter` | `"nearest"`, `"bilinear"` | `"bilinear"` | |
-//! | `objects[].material.wrap` | `"repeat"`, `"clamp"` | `"repeat"` | |
-//!
-//! The types of [`schema`] document every key. Unknown keys are errors. Paths are relative to the scene file's
-//! directory. A mesh is placed by `translate * rotate_z * rotate_y * rotate_x * scale` ([`object_transform`]) in its
-//! own coordinates, without the viewer's fitting. Each mesh file and each image file the scene names is loaded once,
-//! however many objects or keys name it (files are told apart by their canonical paths); textures named by a
-//! mesh's own MTL file are decoded by the OBJ loader, separately. Normal, specular and glow maps are loaded as
-//! images ([`crate::model::TextureImage`], RGB).
+//! The format, every key with its default and rule, is in `docs/scene-format.md`.
 //!
 //! This module is the format and the loader; [`crate::scene_render`] draws a loaded scene
 //! (`rastty render SCENE.toml -o OUT.png`, `rastty render SCENE.toml --explain`, `rastty SCENE.toml`).
@@ -258,18 +178,6 @@ fn schema_message(message: &str, key: Option<String>) -> (Option<String>, String
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn the_format_shown_in_the_module_docs_is_a_valid_scene() {
-        let source = include_str!("mod.rs");
-        let lines: Vec<&str> = source.lines().map_while(|l| l.strip_prefix("//!")).collect();
-        let start = lines.iter().position(|l| l.trim() == "```toml").unwrap() + 1;
-        let end = start + lines[start..].iter().position(|l| l.trim() == "```").unwrap();
-        let text: Vec<&str> = lines[start..end].iter().map(|l| l.strip_prefix(' ').unwrap_or(l)).collect();
-        let file = parse(text.join("\n"), "docs.toml").unwrap_or_else(|e| panic!("{e}"));
-        assert_eq!(file.spec.lights.len(), 2);
-        assert!(file.spec.objects.get_ref()[0].get_ref().material.glow_map.is_some());
-    }
 
     #[test]
     fn serde_messages_are_reworded() {
