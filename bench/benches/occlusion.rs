@@ -5,9 +5,9 @@
 
 use divan::{Bencher, black_box};
 use rastty_core::camera::{look_at, perspective};
-use rastty_core::effects::AmbientOcclusion;
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::mesh::{Indices, Mesh};
+use rastty_core::occlusion::AmbientOcclusion;
 use rastty_core::pipeline::DrawState;
 use rastty_core::shading::{Effects, Light, Lighting, Material, ShadingModel, Transforms, draw_mesh};
 use rastty_core::target::{Rgb888, Target};

@@ -253,10 +253,10 @@ enum Maps {
 
 fn surface(bencher: Bencher, maps: Maps) {
     use rastty_core::effects::{
-        Bounds, LightSource, NormalMap, NormalSpace, SceneLights, ShadowBias, ShadowMap, ShadowView, SurfaceDraw,
-        SurfaceMaterial, clear_shadow_depth, draw_shadow_caster, draw_surface,
+        LightSource, NormalMap, NormalSpace, SceneLights, SurfaceDraw, SurfaceMaterial, draw_surface,
     };
     use rastty_core::math::Vec4;
+    use rastty_core::shadow::{Bounds, ShadowBias, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster};
     let sphere = Sphere::new(35, 36);
     let mesh = sphere.mesh();
     let mut tangents = vec![Vec4::ZERO; sphere.positions.len()];
@@ -277,7 +277,7 @@ fn surface(bencher: Bencher, maps: Maps) {
             ..SurfaceMaterial::plain(Vec3::new(0.9, 0.8, 0.7))
         },
     };
-    let object = SurfaceDraw { mesh, tangents: Some(&tangents), transforms: t, material };
+    let object = SurfaceDraw { mesh, tangents: Some(&tangents), transforms: t, shading: ShadingModel::Phong, material };
     let shadowed = matches!(maps, Maps::DiffuseNormalSpecularShadow);
     let view = ShadowView::fit(light.kind, Bounds { centre: Vec3::ZERO, radius: 1.0 }, 2048).unwrap();
     let mut shadow_depth = vec![0.0; 2048 * 2048];

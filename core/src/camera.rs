@@ -42,6 +42,8 @@ impl core::fmt::Display for CameraError {
     }
 }
 
+impl core::error::Error for CameraError {}
+
 /// The view matrix of a camera at `eye` looking at `target`, with `up` pointing roughly upward on screen.
 ///
 /// When `up` is parallel to the view direction (or zero) it is replaced by the world axis least aligned with the

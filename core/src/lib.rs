@@ -18,8 +18,9 @@
 //! | target | [`target`] | RGB888 or RGB565 colour, `f32` or `u16` depth, whole frames or bands |
 //!
 //! [`pipeline::draw`] runs a [`pipeline::Shader`] of your own; [`shading::draw_mesh`] picks one of the built-in
-//! shaders for the effects a scene calls for, and compiles exactly those. [`effects`] adds material maps, point
-//! lights, shadow maps and ambient occlusion, each computed only by the draws that use it.
+//! shaders for the effects a scene calls for, and compiles exactly those. [`effects`] adds material maps and point
+//! lights, computed only by the draws that use them; shadow maps ([`shadow`]) and ambient occlusion ([`occlusion`])
+//! are passes of their own.
 //!
 //! # Example
 //! ```
@@ -65,7 +66,9 @@ pub mod color;
 pub mod effects;
 pub mod math;
 pub mod mesh;
+pub mod occlusion;
 pub mod pipeline;
 pub mod shading;
+pub mod shadow;
 pub mod target;
 pub mod texture;

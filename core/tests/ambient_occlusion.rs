@@ -5,9 +5,9 @@
 //! same; wide frames darken alike across the strips the work is split into.
 
 use rastty_core::camera::{look_at, orthographic, perspective};
-use rastty_core::effects::{AmbientOcclusion, OcclusionError};
 use rastty_core::math::{Mat4, Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh};
+use rastty_core::occlusion::{AmbientOcclusion, OcclusionError};
 use rastty_core::pipeline::{Cull, DrawState, Fragment, Shader, draw};
 use rastty_core::target::{NoColor, Target};
 

@@ -9,14 +9,14 @@ use crate::common;
 use common::{ExactColor, PlainDepth, Torus, assert_same_depths, checker_texels};
 use rastty_core::camera::{look_at, perspective};
 use rastty_core::effects::{
-    Bounds, LightSource, NormalMap, NormalSource, NormalSpace, SceneLights, ShadowBias, ShadowMap, ShadowView,
-    SpecularSource, SurfaceDraw, SurfaceMaterial, SurfaceVariant, clear_shadow_depth, draw_surface,
-    draw_surface_unspecialised,
+    LightSource, NormalMap, NormalSource, NormalSpace, SceneLights, SpecularSource, SurfaceDraw, SurfaceMaterial,
+    SurfaceVariant, draw_surface, draw_surface_unspecialised,
 };
 use rastty_core::math::{Mat4, Vec3, Vec4};
 use rastty_core::mesh::{Mesh, compute_tangents};
 use rastty_core::pipeline::{DrawState, DrawStats};
 use rastty_core::shading::{Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh};
+use rastty_core::shadow::{Bounds, ShadowBias, ShadowMap, ShadowView, clear_shadow_depth};
 use rastty_core::target::Target;
 use rastty_core::texture::{FilterMode, Texture, WrapMode};
 
@@ -82,7 +82,13 @@ fn render(
 ) -> (Picture, SurfaceVariant, DrawStats) {
     let mut color = vec![[0u32; 3]; (W * H) as usize];
     let mut depth = vec![0f32; (W * H) as usize];
-    let object = SurfaceDraw { mesh: f.torus.mesh(), tangents: Some(&f.tangents), transforms: transforms(), material };
+    let object = SurfaceDraw {
+        mesh: f.torus.mesh(),
+        tangents: Some(&f.tangents),
+        transforms: transforms(),
+        shading: ShadingModel::Phong,
+        material,
+    };
     let lights = SceneLights { ambient: Vec3::splat(0.08), lights };
     let background = Vec3::new(0.1, 0.2, 0.3);
     let state = DrawState::default();
@@ -277,7 +283,7 @@ fn the_explanation_lists_only_what_is_used() {
         render(&f, SurfaceMaterial { diffuse: None, specular: Vec3::ZERO, ..base_material(&f) }, &[sun()], false);
     assert_eq!(
         lean.to_string(),
-        "varyings normal; albedo colour; normals interpolated; no specular; lights 1 directional; \
+        "phong; varyings normal; albedo colour; normals interpolated; no specular; lights 1 directional; \
          perspective-correct, depth less, cull back"
     );
     let flat = [0x8080FF];
@@ -297,7 +303,7 @@ fn the_explanation_lists_only_what_is_used() {
     let (_, full, _) = render(&f, material, &[shadowed, lamp], false);
     assert_eq!(
         full.to_string(),
-        "varyings normal+world+uv+tangent; albedo texture; normals tangent-space map; specular map; glow map; \
+        "phong; varyings normal+world+uv+tangent; albedo texture; normals tangent-space map; specular map; glow map; \
          maps nearest/repeat; lights 1 directional + 1 point (1 with shadows, pcf 3x3); perspective-correct, \
          depth less, cull back"
     );
@@ -313,7 +319,8 @@ fn a_tangent_space_map_without_tangents_is_refused() {
     };
     let mesh: Mesh<'_> = f.torus.mesh();
     for tangents in [None, Some(&f.tangents[1..])] {
-        let result = SurfaceVariant::resolve(&mesh, tangents, &transforms(), &material, [], &DrawState::default());
+        let object = SurfaceDraw { mesh, tangents, transforms: transforms(), shading: ShadingModel::Phong, material };
+        let result = SurfaceVariant::resolve(&object, [], &DrawState::default());
         let expected = rastty_core::effects::SurfaceError::Tangents {
             expected: mesh.vertex_count(),
             actual: tangents.map_or(0, <[Vec4]>::len),

@@ -19,5 +19,6 @@ mod strips;
 mod supersample;
 mod tangents;
 mod texture;
+mod unification;
 mod vertex_cache;
 mod wireframe;

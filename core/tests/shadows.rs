@@ -5,14 +5,15 @@
 //! orthographic camera, so that each pixel is a known point of the ground: 32 pixels per world unit.
 
 use rastty_core::camera::{look_at, orthographic};
-use rastty_core::effects::{
-    Bounds, LightSource, SceneLights, ShadowBias, ShadowError, ShadowMap, ShadowView, SurfaceDraw, SurfaceMaterial,
-    clear_shadow_depth, draw_shadow_caster, draw_shadow_caster_band, draw_surface,
-};
+use rastty_core::effects::{LightSource, SceneLights, SurfaceDraw, SurfaceMaterial, draw_surface};
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::DrawState;
-use rastty_core::shading::Transforms;
+use rastty_core::shading::{ShadingModel, Transforms};
+use rastty_core::shadow::{
+    Bounds, ShadowBias, ShadowError, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster,
+    draw_shadow_caster_band,
+};
 use rastty_core::target::{Rgb888, Target};
 
 const SIZE: u32 = 128;
@@ -100,6 +101,7 @@ fn render(objects: &[&Quads], to_light: Vec3, shadow: Option<(ShadowBias, u32)>)
             mesh: o.mesh(),
             tangents: None,
             transforms: Transforms::new(Mat4::IDENTITY, view, projection),
+            shading: ShadingModel::Phong,
             material: SurfaceMaterial::plain(Vec3::ONE),
         };
         draw_surface(&mut target, &object, &scene, &DrawState::default()).unwrap();

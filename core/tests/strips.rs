@@ -14,8 +14,8 @@ use crate::common;
 use common::{ExactColor, PlainDepth, PlainDepth16, Torus, Transformed, assert_same_depths, checker_texels};
 use rastty_core::camera::{look_at, perspective};
 use rastty_core::effects::{
-    Bounds, LightSource, NormalMap, NormalSpace, SceneLights, ShadowBias, ShadowMap, ShadowView, SurfaceDraw,
-    SurfaceMaterial, clear_shadow_depth, draw_shadow_caster, draw_surface, draw_surface_unspecialised,
+    LightSource, NormalMap, NormalSpace, SceneLights, SurfaceDraw, SurfaceMaterial, draw_surface,
+    draw_surface_unspecialised,
 };
 use rastty_core::math::{Mat4, Vec3, Vec4};
 use rastty_core::mesh::{Mesh, compute_tangents};
@@ -25,6 +25,7 @@ use rastty_core::pipeline::{
 use rastty_core::shading::{
     Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh, draw_mesh_unspecialised,
 };
+use rastty_core::shadow::{Bounds, ShadowBias, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster};
 use rastty_core::target::{DEPTH_LANES, DepthBuffer, NoColor, Rgb565, Target};
 use rastty_core::texture::{FilterMode, Texture, WrapMode};
 
@@ -255,7 +256,13 @@ fn every_band_of_a_mapped_surface_with_shadows_equals_the_frame() {
         glow_map: Some(Texture::new(&bumps, 8, 8).unwrap()),
         ..SurfaceMaterial::plain(Vec3::ONE)
     };
-    let object = SurfaceDraw { mesh: torus.mesh(), tangents: Some(&tangents), transforms: transforms(), material };
+    let object = SurfaceDraw {
+        mesh: torus.mesh(),
+        tangents: Some(&tangents),
+        transforms: transforms(),
+        shading: ShadingModel::Phong,
+        material,
+    };
 
     // The torus casts its own shadow from the sun.
     let mut sun = LightSource::directional(Vec3::new(0.5, 1.0, 0.8), Vec3::new(0.9, 0.85, 0.8));

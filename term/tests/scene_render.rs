@@ -105,7 +105,7 @@ fn spot_lamp_lists_ambient_occlusion_last() {
     let floor = text.lines().find(|l| l.contains("ground.obj")).unwrap();
     assert!(
         floor.contains(
-            "varyings normal+world+uv+tangent; albedo texture; normals tangent-space map; specular map; glow map"
+            "phong; varyings normal+world+uv+tangent; albedo texture; normals tangent-space map; specular map; glow map"
         ),
         "{floor}"
     );
@@ -121,7 +121,7 @@ fn an_object_without_maps_interpolates_no_texture_coordinates() {
     // The statue: spot.obj has texture coordinates, but the statue names no image and the OBJ has no MTL.
     let statue = &plan.draws.iter().find(|d| d.object == 2).unwrap();
     let line = statue.variant.to_string();
-    assert!(line.starts_with("varyings normal+world; albedo colour;"), "{line}");
+    assert!(line.starts_with("phong; varyings normal+world; albedo colour;"), "{line}");
     assert!(!line.contains("uv") && !line.contains("maps "), "{line}");
     // The textured cows do interpolate them.
     assert!(plan.draws[0].variant.uvs);

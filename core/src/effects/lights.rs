@@ -1,7 +1,7 @@
 //! The lights of a mapped draw: directional and point lights, each with an optional shadow map.
 
-use super::ShadowMap;
 use crate::math::Vec3;
+use crate::shadow::ShadowMap;
 
 /// Where a light's rays come from.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -37,7 +37,7 @@ impl<F: Filter, W: Wrap> MapReader<F, W> {
 
 /// Albedo: `color` times the diffuse map.
 pub(crate) fn albedo<F: Filter, W: Wrap>(s: &mut Scratch, maps: &mut MapReader<F, W>, map: &Texture<'_>, color: Vec3) {
-    modulated(&mut s.albedo, &s.uv, maps, map, Some(color));
+    modulated(&mut s.albedo, &s.uv, maps, map, Some(&Column3::splat(color)));
 }
 
 /// Specular colour: `specular` times the specular map.
@@ -47,7 +47,7 @@ pub(crate) fn specular_color<F: Filter, W: Wrap>(
     map: &Texture<'_>,
     specular: Vec3,
 ) {
-    modulated(&mut s.specular_color, &s.uv, maps, map, Some(specular));
+    modulated(&mut s.specular_color, &s.uv, maps, map, Some(&Column3::splat(specular)));
 }
 
 /// Emission: the glow map.
@@ -55,15 +55,15 @@ pub(crate) fn glow<F: Filter, W: Wrap>(s: &mut Scratch, maps: &mut MapReader<F, 
     modulated(&mut s.emission, &s.uv, maps, map, None);
 }
 
-/// The map at every lane's texture coordinates, times `color` if given, into `out`.
+/// The map at every lane's texture coordinates, times that lane's `color` if given, into `out`.
 #[allow(clippy::needless_range_loop)] // lanes: one index into every column
 #[inline(always)]
-fn modulated<F: Filter, W: Wrap>(
+pub(crate) fn modulated<F: Filter, W: Wrap>(
     out: &mut Column3,
     uv: &Column2,
     maps: &mut MapReader<F, W>,
     map: &Texture<'_>,
-    color: Option<Vec3>,
+    color: Option<&Column3>,
 ) {
     let mut texels = [0; BATCH_SIZE];
     maps.read(map, uv, &mut texels);
@@ -72,9 +72,9 @@ fn modulated<F: Filter, W: Wrap>(
         Some(color) => {
             for i in 0..BATCH_SIZE {
                 let c = unpack_rgb888(texels[i]);
-                out.x[i] = color.x * c.x;
-                out.y[i] = color.y * c.y;
-                out.z[i] = color.z * c.z;
+                out.x[i] = color.x[i] * c.x;
+                out.y[i] = color.y[i] * c.y;
+                out.z[i] = color.z[i] * c.z;
             }
         }
         None => {

@@ -1,27 +1,31 @@
-//! The mapped shader: vertex stage per draw variant, fragment stages over batches.
+//! The surface shader: the vertex stage of the draw's variant, and its fragment stages over batches.
 
 use core::marker::PhantomData;
 
 use super::columns::{self, Column2, Column3};
+use super::light_terms::light_at;
 use super::maps::{MapReader, albedo, glow, specular_color};
 use super::normals::{self, object_map, tangent_map};
 use super::scratch::Scratch;
 use super::varyings::{Slot, SurfaceVaryings};
-use super::{NormalSource, SceneLights, SpecularSource, SurfaceMaterial, SurfaceVariant, lighting};
+use super::{Layout, NormalSource, SceneLights, SpecularSource, SurfaceMaterial, SurfaceVariant, lighting};
+use super::{coarse, views};
 use crate::math::{Mat3, Vec2, Vec3, Vec4};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{BATCH_SIZE, Fragment, FragmentBatch, Shader};
-use crate::shading::Transforms;
+use crate::shading::{LightTerms, ShadingModel, Transforms, world_normal};
 use crate::texture::{Bilinear, Clamp, Filter, FilterMode, Nearest, Repeat, Wrap, WrapMode};
 
-/// Shades a mesh with a [`SurfaceMaterial`] under [`SceneLights`], computing what its [`SurfaceVariant`] says.
+/// Shades a mesh with a [`SurfaceMaterial`] under [`SceneLights`], computing what its [`SurfaceVariant`] says:
+/// its shading model, maps and lights.
 ///
-/// The varyings it carries are fixed by its type (`W`: world position, `U`: texture coordinates, `T`: tangent;
-/// each the value's type or [`super::Absent`]). Everything else, which maps are sampled and how each light is
-/// applied, is decided once per batch of fragments and runs as a loop compiled for that choice, so the number of
-/// compiled loops is the sum of the choices, not their product.
+/// The varyings it carries are fixed by its type (`A` and `B`: the two `Vec3` slots of the variant's
+/// [`Layout`], `U`: texture coordinates, `T`: tangent; each the value's type or [`super::Absent`]). Everything
+/// else, the shading model, which maps are sampled and how each light is applied, is decided once per batch of
+/// fragments and runs as a loop compiled for that choice, so the number of compiled loops is the sum of the
+/// choices, not their product.
 #[derive(Clone, Copy, Debug)]
-pub struct SurfaceShader<'a, W, U, T> {
+pub struct SurfaceShader<'a, A, B, U, T> {
     transforms: Transforms,
     /// Object to world for tangents (the model's upper 3x3).
     tangent_matrix: Mat3,
@@ -31,17 +35,20 @@ pub struct SurfaceShader<'a, W, U, T> {
     material: SurfaceMaterial<'a>,
     lights: SceneLights<'a>,
     variant: SurfaceVariant,
-    _varyings: PhantomData<(W, U, T)>,
+    /// The slots the variant fills (a general draw may carry more, which then hold zeros).
+    layout: Layout,
+    _varyings: PhantomData<(A, B, U, T)>,
 }
 
-impl<'a, W, U, T> SurfaceShader<'a, W, U, T>
+impl<'a, A, B, U, T> SurfaceShader<'a, A, B, U, T>
 where
-    W: Slot<Vec3>,
+    A: Slot<Vec3>,
+    B: Slot<Vec3>,
     U: Slot<Vec2>,
     T: Slot<Vec4>,
 {
-    /// A shader for a resolved `variant`. `tangents` holds one per vertex when `T` is carried (may be empty
-    /// otherwise).
+    /// A shader for a resolved `variant`, whose [`SurfaceVariant::layout`] the slot types must carry (they may
+    /// carry more). `tangents` holds one per vertex when the variant reads tangents (may be empty otherwise).
     pub fn new(
         variant: SurfaceVariant,
         transforms: Transforms,
@@ -58,11 +65,13 @@ where
             material,
             lights,
             variant,
+            layout: variant.layout(),
             _varyings: PhantomData,
         }
     }
 
-    /// Runs the stages of the variant over `s`, whose varyings columns are filled, into `colors`.
+    /// Runs the per-pixel lighting stages of the variant over `s`, whose varyings columns are filled, into
+    /// `colors`.
     fn shade(&self, s: &mut Scratch, colors: &mut [Vec3; BATCH_SIZE]) {
         // One decision per batch: every map of a draw is read with the draw's filter and wrap mode.
         match (self.variant.filter, self.variant.wrap) {
@@ -133,15 +142,18 @@ where
     }
 }
 
-impl<W, U, T> Shader for SurfaceShader<'_, W, U, T>
+impl<A, B, U, T> Shader for SurfaceShader<'_, A, B, U, T>
 where
-    W: Slot<Vec3>,
+    A: Slot<Vec3>,
+    B: Slot<Vec3>,
     U: Slot<Vec2>,
     T: Slot<Vec4>,
 {
-    type Varyings = SurfaceVaryings<W, U, T>;
-    type Face = ();
-    const ATTRIBUTES: Attributes = Attributes { normals: true, uvs: U::PRESENT, colors: false };
+    type Varyings = SurfaceVaryings<A, B, U, T>;
+    /// Flat shading's light for the whole triangle (zero for the other models).
+    type Face = LightTerms;
+    // Normals and colours are read only by some models: the variant checks the mesh has them.
+    const ATTRIBUTES: Attributes = Attributes { normals: false, uvs: U::PRESENT, colors: false };
     const BATCHED: bool = true;
 
     #[inline(always)]
@@ -149,14 +161,47 @@ where
         self.transforms.clip_from_object.project_point(mesh.position(i))
     }
 
+    /// The slots the variant reads, for vertex `i`; a slot carried but not read holds zero (so that it never
+    /// makes the pipeline skip a triangle).
     #[inline(always)]
     fn varyings(&self, mesh: &Mesh<'_>, i: usize) -> Self::Varyings {
-        let t = &self.transforms;
+        let (t, v, layout) = (&self.transforms, &self.variant, &self.layout);
+        let (first, second) = match v.shading {
+            ShadingModel::Phong => (
+                A::capture(|| world_normal(&t.normal, mesh.normal(i))),
+                B::capture(|| if layout.second { t.model.transform_point(mesh.position(i)) } else { Vec3::ZERO }),
+            ),
+            ShadingModel::Normals => {
+                (A::capture(|| world_normal(&t.normal, mesh.normal(i))), B::capture(|| Vec3::ZERO))
+            }
+            ShadingModel::Unlit => {
+                (A::capture(|| if layout.first { mesh.color(i) } else { Vec3::ZERO }), B::capture(|| Vec3::ZERO))
+            }
+            ShadingModel::Gouraud => {
+                let n = world_normal(&t.normal, mesh.normal(i));
+                let highlights = v.specular != SpecularSource::None;
+                // The world position only where a light or the highlight needs it.
+                let point = if highlights || v.point_lights > 0 {
+                    t.model.transform_point(mesh.position(i))
+                } else {
+                    Vec3::ZERO
+                };
+                let light = light_at(&self.lights, n, point, t.eye, self.material.shininess, highlights);
+                // A non-finite normal must reach the varyings, so that the pipeline skips its triangle: the light
+                // alone would hide it (`max(NaN, 0)` is 0) and draw the triangle unlit.
+                let diffuse = if n.is_finite() { light.diffuse } else { n };
+                (A::capture(|| diffuse), B::capture(|| light.specular))
+            }
+            ShadingModel::Flat | ShadingModel::Depth { .. } => (A::capture(|| Vec3::ZERO), B::capture(|| Vec3::ZERO)),
+        };
         SurfaceVaryings {
-            normal: crate::shading::world_normal(&t.normal, mesh.normal(i)),
-            world: W::capture(|| t.model.transform_point(mesh.position(i))),
-            uv: U::capture(|| mesh.uv(i)),
+            first,
+            second,
+            uv: U::capture(|| if layout.uvs { mesh.uv(i) } else { Vec2::ZERO }),
             tangent: T::capture(|| {
+                if !layout.tangents {
+                    return Vec4::ZERO;
+                }
                 // A tangent slice shorter than the mesh cannot happen (the variant checks it); NaN would skip the
                 // triangle rather than panic.
                 let tangent = self.tangents.get(i).copied().unwrap_or(Vec4::new(f32::NAN, 0.0, 0.0, 0.0));
@@ -165,33 +210,99 @@ where
         }
     }
 
+    /// Flat shading's light: the face normal (through the normal matrix), the highlight at the world centroid.
     #[inline(always)]
-    fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
+    fn face(&self, mesh: &Mesh<'_>, [a, b, c]: [usize; 3]) -> LightTerms {
+        if self.variant.shading != ShadingModel::Flat {
+            return LightTerms { diffuse: Vec3::ZERO, specular: Vec3::ZERO };
+        }
+        let t = &self.transforms;
+        let (p0, p1, p2) = (mesh.position(a), mesh.position(b), mesh.position(c));
+        let n = (t.normal * (p1 - p0).cross(p2 - p0)).normalize_or_zero();
+        let highlights = self.variant.specular != SpecularSource::None;
+        let centroid = if highlights || self.variant.point_lights > 0 {
+            t.model.transform_point((p0 + p1 + p2) * (1.0 / 3.0))
+        } else {
+            Vec3::ZERO
+        };
+        light_at(&self.lights, n, centroid, t.eye, self.material.shininess, highlights)
+    }
 
     /// One fragment as a batch of one.
-    fn fragment(&self, f: &Fragment, _: &(), v: &Self::Varyings) -> Vec3 {
+    fn fragment(&self, f: &Fragment, face: &LightTerms, v: &Self::Varyings) -> Vec3 {
         let mut colors = [Vec3::ZERO; BATCH_SIZE];
-        self.shade_batch(&(), &FragmentBatch::single(f, *v), &mut colors);
+        self.shade_batch(face, &FragmentBatch::single(f, *v), &mut colors);
         colors[0]
     }
 
-    /// Interpolates the carried varyings into columns, lane by lane, and runs the variant's stages over them.
+    /// Interpolates the slots the model reads into columns, lane by lane, and runs its stages over them.
     #[inline(always)]
-    fn shade_batch(&self, _: &(), batch: &FragmentBatch<Self::Varyings>, colors: &mut [Vec3; BATCH_SIZE]) {
-        let mut s = Scratch::new(batch.len());
+    fn shade_batch(&self, face: &LightTerms, batch: &FragmentBatch<Self::Varyings>, colors: &mut [Vec3; BATCH_SIZE]) {
         let [v0, d1, d2] = batch.triangle();
         let w = batch.weights();
-        s.normal = Column3::interpolated(v0.normal, d1.normal, d2.normal, w);
-        if let (Some(v0), Some(d1), Some(d2)) = (v0.world.get(), d1.world.get(), d2.world.get()) {
-            s.world = Column3::interpolated(v0, d1, d2, w);
+        let first = || match (v0.first.get(), d1.first.get(), d2.first.get()) {
+            (Some(v0), Some(d1), Some(d2)) => Column3::interpolated(v0, d1, d2, w),
+            _ => Column3::ZERO,
+        };
+        let second = || match (v0.second.get(), d1.second.get(), d2.second.get()) {
+            (Some(v0), Some(d1), Some(d2)) => Column3::interpolated(v0, d1, d2, w),
+            _ => Column3::ZERO,
+        };
+        let uv = || match (v0.uv.get(), d1.uv.get(), d2.uv.get()) {
+            (Some(v0), Some(d1), Some(d2)) => Column2::interpolated(v0, d1, d2, w),
+            _ => Column2::ZERO,
+        };
+        let (len, m, v) = (batch.len(), &self.material, &self.variant);
+        match v.shading {
+            ShadingModel::Phong => {
+                let mut s = Scratch::new(len);
+                s.normal = first();
+                if self.layout.second {
+                    s.world = second();
+                }
+                if self.layout.uvs {
+                    s.uv = uv();
+                }
+                if let (true, Some(v0), Some(d1), Some(d2)) =
+                    (self.layout.tangents, v0.tangent.get(), d1.tangent.get(), d2.tangent.get())
+                {
+                    s.tangent = Column3::interpolated(v0.truncate(), d1.truncate(), d2.truncate(), w);
+                    s.handedness = columns::interpolated(v0.w, d1.w, d2.w, w);
+                }
+                self.shade(&mut s, colors);
+            }
+            ShadingModel::Depth { near, far } => views::depth(batch.depths(), len, near, far, colors),
+            ShadingModel::Normals => views::normals(first(), len, colors),
+            ShadingModel::Unlit | ShadingModel::Flat | ShadingModel::Gouraud => {
+                let albedo = if self.variant.vertex_colors { first() } else { Column3::splat(m.color) };
+                let uv = if self.layout.uvs { uv() } else { Column2::ZERO };
+                let (diffuse, specular) = match v.shading {
+                    ShadingModel::Gouraud => (first(), second()),
+                    _ => (Column3::ZERO, Column3::ZERO),
+                };
+                let light = match v.shading {
+                    ShadingModel::Flat => coarse::Light::Face(*face),
+                    ShadingModel::Gouraud => coarse::Light::Vertex { diffuse: &diffuse, specular: &specular },
+                    _ => coarse::Light::None,
+                };
+                match (v.filter, v.wrap) {
+                    (_, _) if !U::PRESENT => {
+                        coarse::shade::<Nearest, Clamp>(v, m, albedo, &uv, &light, len, colors);
+                    }
+                    (FilterMode::Nearest, WrapMode::Repeat) => {
+                        coarse::shade::<Nearest, Repeat>(v, m, albedo, &uv, &light, len, colors);
+                    }
+                    (FilterMode::Nearest, WrapMode::Clamp) => {
+                        coarse::shade::<Nearest, Clamp>(v, m, albedo, &uv, &light, len, colors);
+                    }
+                    (FilterMode::Bilinear, WrapMode::Repeat) => {
+                        coarse::shade::<Bilinear, Repeat>(v, m, albedo, &uv, &light, len, colors);
+                    }
+                    (FilterMode::Bilinear, WrapMode::Clamp) => {
+                        coarse::shade::<Bilinear, Clamp>(v, m, albedo, &uv, &light, len, colors);
+                    }
+                }
+            }
         }
-        if let (Some(v0), Some(d1), Some(d2)) = (v0.uv.get(), d1.uv.get(), d2.uv.get()) {
-            s.uv = Column2::interpolated(v0, d1, d2, w);
-        }
-        if let (Some(v0), Some(d1), Some(d2)) = (v0.tangent.get(), d1.tangent.get(), d2.tangent.get()) {
-            s.tangent = Column3::interpolated(v0.truncate(), d1.truncate(), d2.truncate(), w);
-            s.handedness = columns::interpolated(v0.w, d1.w, d2.w, w);
-        }
-        self.shade(&mut s, colors);
     }
 }

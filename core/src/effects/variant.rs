@@ -2,17 +2,23 @@
 
 use core::fmt;
 
-use super::{LightUse, SurfaceMaterial};
-use crate::math::Vec4;
-use crate::mesh::{Attributes, Mesh};
+use super::{LightUse, SurfaceDraw};
+use crate::math::{Vec3, Vec4};
+use crate::mesh::Attributes;
 use crate::pipeline::{DrawError, DrawState, FixedFunction};
-use crate::shading::Transforms;
+use crate::shading::ShadingModel;
 use crate::texture::{FilterMode, WrapMode};
 
 /// Where the shading normal comes from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum NormalSource {
-    /// The interpolated vertex normal.
+    /// None: the model reads no normal (unlit, the depth view).
+    None,
+    /// The triangle's own normal, once per triangle (flat shading).
+    Face,
+    /// The vertex normals, lit per vertex (Gouraud shading).
+    Vertex,
+    /// The interpolated vertex normal, per pixel.
     Interpolated,
     /// A tangent-space normal map, applied with the interpolated tangent frame.
     TangentMap,
@@ -59,14 +65,20 @@ impl fmt::Display for SurfaceError {
     }
 }
 
+impl core::error::Error for SurfaceError {}
+
 /// The stages and varyings one mapped draw runs: exactly what its mesh, material and lights call for.
 ///
 /// Its [`Display`](fmt::Display) form is the explanation `rastty render --explain` prints, e.g.
-/// `varyings normal+world+uv+tangent; albedo texture; normals tangent-space map; specular map; glow map;
+/// `phong; varyings normal+world+uv+tangent; albedo texture; normals tangent-space map; specular map; glow map;
 /// maps bilinear/repeat; lights 1 directional (1 with shadows, pcf 3x3); perspective-correct, depth less, cull back`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SurfaceVariant {
-    /// The world position is interpolated (for point lights, highlights or shadows).
+    /// The shading model.
+    pub shading: ShadingModel,
+    /// The mesh's vertex colours are the albedo (unlit shading of a mesh with colours).
+    pub vertex_colors: bool,
+    /// The world position is interpolated (per-pixel lighting with point lights, highlights or shadows).
     pub world: bool,
     /// Texture coordinates are interpolated (for any map).
     pub uvs: bool,
@@ -88,7 +100,7 @@ pub struct SurfaceVariant {
     pub directional_lights: usize,
     /// Point lights.
     pub point_lights: usize,
-    /// Lights with a shadow map.
+    /// Lights with a shadow map that this draw reads (per-pixel lighting only).
     pub shadowed_lights: usize,
     /// The largest percentage-closer filtering radius among them.
     pub pcf_radius: u32,
@@ -97,73 +109,106 @@ pub struct SurfaceVariant {
     pub state: DrawState,
 }
 
+/// Which of a draw's varying slots are carried ([`super::SurfaceVaryings`]): what its pipeline is compiled for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Layout {
+    /// The first `Vec3` slot: the world normal (per-pixel lighting, the normals view), the vertex colour (unlit)
+    /// or the diffuse light (Gouraud).
+    pub first: bool,
+    /// The second `Vec3` slot: the world position (per-pixel lighting) or the specular light (Gouraud). Only with
+    /// the first.
+    pub second: bool,
+    /// Texture coordinates.
+    pub uvs: bool,
+    /// Tangents (a tangent-space normal map). Only with the first slot and texture coordinates.
+    pub tangents: bool,
+}
+
 impl SurfaceVariant {
-    /// Decides what a draw of `mesh` with `material` under `lights` (one [`LightUse`] per light, as
+    /// Decides what a draw of `object` under `lights` (one [`LightUse`] per light, as
     /// `scene_lights.lights.iter().map(LightUse::from)` gives) computes.
     ///
-    /// - Maps are sampled only on a mesh with texture coordinates; without, the draw is untextured.
+    /// - Normals are read by Gouraud and per-pixel lighting and the normals view only; vertex colours by unlit
+    ///   shading only, as its albedo.
+    /// - Maps are sampled only on a mesh with texture coordinates; without, the draw is untextured. The albedo map
+    ///   serves every model that colours (unlit, flat, Gouraud, per-pixel), the specular and glow maps the lit
+    ///   ones, normal maps per-pixel lighting only. The depth and normals views read no map.
     /// - A tangent-space normal map needs `tangents` (one per vertex), and only then are tangents interpolated.
-    /// - Highlights only for a non-zero [`SurfaceMaterial::specular`] with at least one light.
-    /// - The world position only for point lights, highlights or shadows.
+    /// - Lights reach the lit models: per triangle (flat, at its centroid), per vertex (Gouraud) or per pixel.
+    ///   Shadow maps are read per pixel only.
+    /// - Highlights only for a non-zero [`super::SurfaceMaterial::specular`] with at least one light.
+    /// - The world position only for per-pixel point lights, highlights or shadows.
     /// - Affine interpolation under an orthographic projection, and the front face flipped for a mirroring model
-    ///   matrix, as [`crate::shading::Effects::resolve`] does.
+    ///   matrix ([`crate::shading::Transforms::adapt`]).
     ///
     /// # Errors
-    /// [`SurfaceError::Draw`] when the mesh has no normals; [`SurfaceError::Tangents`] for a tangent-space normal
-    /// map without a tangent per vertex.
+    /// [`SurfaceError::Draw`] when the model needs normals and the mesh has none; [`SurfaceError::Tangents`] for a
+    /// tangent-space normal map without a tangent per vertex.
     pub fn resolve(
-        mesh: &Mesh<'_>,
-        tangents: Option<&[Vec4]>,
-        transforms: &Transforms,
-        material: &SurfaceMaterial<'_>,
+        object: &SurfaceDraw<'_>,
         lights: impl IntoIterator<Item = LightUse>,
         state: &DrawState,
     ) -> Result<Self, SurfaceError> {
+        let (mesh, material, shading) = (&object.mesh, &object.material, object.shading);
         let present = mesh.attributes();
-        if !present.normals {
+        let per_pixel = shading == ShadingModel::Phong;
+        let lit = matches!(shading, ShadingModel::Flat | ShadingModel::Gouraud | ShadingModel::Phong);
+        let colored = lit || shading == ShadingModel::Unlit;
+        let reads_normals = per_pixel || matches!(shading, ShadingModel::Gouraud | ShadingModel::Normals);
+        if reads_normals && !present.normals {
             let needed = Attributes { normals: true, ..Attributes::NONE };
             return Err(SurfaceError::Draw(DrawError::MissingAttributes { needed, present }));
         }
         let uvs = present.uvs;
-        let normals = match material.normal_map {
-            Some(map) if uvs => match map.space {
-                super::NormalSpace::Tangent => {
-                    let actual = tangents.map_or(0, <[Vec4]>::len);
-                    if actual != mesh.vertex_count() {
-                        return Err(SurfaceError::Tangents { expected: mesh.vertex_count(), actual });
+        let normals = match shading {
+            ShadingModel::Unlit | ShadingModel::Depth { .. } => NormalSource::None,
+            ShadingModel::Flat => NormalSource::Face,
+            ShadingModel::Gouraud => NormalSource::Vertex,
+            ShadingModel::Normals => NormalSource::Interpolated,
+            ShadingModel::Phong => match material.normal_map {
+                Some(map) if uvs => match map.space {
+                    super::NormalSpace::Tangent => {
+                        let actual = object.tangents.map_or(0, <[Vec4]>::len);
+                        if actual != mesh.vertex_count() {
+                            return Err(SurfaceError::Tangents { expected: mesh.vertex_count(), actual });
+                        }
+                        NormalSource::TangentMap
                     }
-                    NormalSource::TangentMap
-                }
-                super::NormalSpace::Object => NormalSource::ObjectMap,
+                    super::NormalSpace::Object => NormalSource::ObjectMap,
+                },
+                _ => NormalSource::Interpolated,
             },
-            _ => NormalSource::Interpolated,
         };
         let (mut directional_lights, mut point_lights, mut shadowed_lights, mut pcf_radius) = (0, 0, 0, 0);
-        for light in lights {
+        for light in lights.into_iter().filter(|_| lit) {
             if light.point {
                 point_lights += 1;
             } else {
                 directional_lights += 1;
             }
-            if let Some(r) = light.shadow_pcf {
+            if let (Some(r), true) = (light.shadow_pcf, per_pixel) {
                 shadowed_lights += 1;
                 pcf_radius = pcf_radius.max(r);
             }
         }
-        let lit = directional_lights + point_lights > 0;
-        let specular = if !lit || material.specular == crate::math::Vec3::ZERO {
+        let specular = if directional_lights + point_lights == 0 || material.specular == Vec3::ZERO {
             SpecularSource::None
         } else if material.specular_map.is_some() && uvs {
             SpecularSource::Map
         } else {
             SpecularSource::Constant
         };
-        let albedo_map = material.diffuse.is_some() && uvs;
-        let glow_map = material.glow_map.is_some() && uvs;
-        let state = transforms.adapt(state);
+        let albedo_map = colored && material.diffuse.is_some() && uvs;
+        let glow_map = lit && material.glow_map.is_some() && uvs;
+        let state = object.transforms.adapt(state);
         Ok(Self {
-            world: specular != SpecularSource::None || point_lights > 0 || shadowed_lights > 0,
-            uvs: albedo_map || glow_map || specular == SpecularSource::Map || normals != NormalSource::Interpolated,
+            shading,
+            vertex_colors: shading == ShadingModel::Unlit && present.colors,
+            world: per_pixel && (specular != SpecularSource::None || point_lights > 0 || shadowed_lights > 0),
+            uvs: albedo_map
+                || glow_map
+                || specular == SpecularSource::Map
+                || matches!(normals, NormalSource::TangentMap | NormalSource::ObjectMap),
             tangents: normals == NormalSource::TangentMap,
             albedo_map,
             normals,
@@ -178,27 +223,68 @@ impl SurfaceVariant {
             state,
         })
     }
+
+    /// The varying slots this variant's draw carries.
+    #[must_use]
+    pub fn layout(&self) -> Layout {
+        let first = match self.shading {
+            ShadingModel::Unlit => self.vertex_colors,
+            ShadingModel::Flat | ShadingModel::Depth { .. } => false,
+            ShadingModel::Gouraud | ShadingModel::Phong | ShadingModel::Normals => true,
+        };
+        let second = match self.shading {
+            ShadingModel::Gouraud => self.specular != SpecularSource::None,
+            ShadingModel::Phong => self.world,
+            _ => false,
+        };
+        Layout { first, second, uvs: self.uvs, tangents: self.tangents }
+    }
 }
 
 impl fmt::Display for SurfaceVariant {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str("varyings normal")?;
-        for (on, name) in [(self.world, "+world"), (self.uvs, "+uv"), (self.tangents, "+tangent")] {
-            if on {
+        let layout = self.layout();
+        let (first, second) = match self.shading {
+            ShadingModel::Unlit => ("colour", ""),
+            ShadingModel::Gouraud => ("light", "specular light"),
+            _ => ("normal", "world"),
+        };
+        write!(f, "{}; varyings ", self.shading.name())?;
+        let carried =
+            [(layout.first, first), (layout.second, second), (layout.uvs, "uv"), (layout.tangents, "tangent")];
+        let mut names = carried.iter().filter(|(on, _)| *on).map(|(_, name)| *name);
+        match names.next() {
+            None => f.write_str("none")?,
+            Some(name) => {
                 f.write_str(name)?;
+                for name in names {
+                    write!(f, "+{name}")?;
+                }
             }
         }
-        f.write_str(if self.albedo_map { "; albedo texture" } else { "; albedo colour" })?;
-        f.write_str(match self.normals {
-            NormalSource::Interpolated => "; normals interpolated",
-            NormalSource::TangentMap => "; normals tangent-space map",
-            NormalSource::ObjectMap => "; normals object-space map",
-        })?;
-        f.write_str(match self.specular {
-            SpecularSource::None => "; no specular",
-            SpecularSource::Constant => "; specular constant",
-            SpecularSource::Map => "; specular map",
-        })?;
+        let lit = matches!(self.shading, ShadingModel::Flat | ShadingModel::Gouraud | ShadingModel::Phong);
+        if lit || self.shading == ShadingModel::Unlit {
+            f.write_str(match (self.vertex_colors, self.albedo_map) {
+                (true, true) => "; albedo vertex colours x texture",
+                (true, false) => "; albedo vertex colours",
+                (false, true) => "; albedo texture",
+                (false, false) => "; albedo colour",
+            })?;
+        }
+        if lit {
+            f.write_str(match self.normals {
+                NormalSource::Face => "; normals per face",
+                NormalSource::Vertex => "; normals per vertex",
+                NormalSource::TangentMap => "; normals tangent-space map",
+                NormalSource::ObjectMap => "; normals object-space map",
+                NormalSource::Interpolated | NormalSource::None => "; normals interpolated",
+            })?;
+            f.write_str(match self.specular {
+                SpecularSource::None => "; no specular",
+                SpecularSource::Constant => "; specular constant",
+                SpecularSource::Map => "; specular map",
+            })?;
+        }
         if self.glow_map {
             f.write_str("; glow map")?;
         }
@@ -213,11 +299,13 @@ impl fmt::Display for SurfaceVariant {
             };
             write!(f, "; maps {filter}/{wrap}")?;
         }
-        match (self.directional_lights, self.point_lights) {
-            (0, 0) => f.write_str("; unlit but ambient")?,
-            (d, 0) => write!(f, "; lights {d} directional")?,
-            (0, p) => write!(f, "; lights {p} point")?,
-            (d, p) => write!(f, "; lights {d} directional + {p} point")?,
+        if lit {
+            match (self.directional_lights, self.point_lights) {
+                (0, 0) => f.write_str("; unlit but ambient")?,
+                (d, 0) => write!(f, "; lights {d} directional")?,
+                (0, p) => write!(f, "; lights {p} point")?,
+                (d, p) => write!(f, "; lights {d} directional + {p} point")?,
+            }
         }
         if self.shadowed_lights > 0 {
             let side = 2 * self.pcf_radius + 1;

@@ -1,5 +1,4 @@
-//! The varyings of a mapped draw: the normal always, the world position, texture coordinates and tangent only
-//! when the draw uses them.
+//! The varyings of a draw: each slot carried only when the draw's variant uses it.
 
 use crate::math::{Vec2, Vec3, Vec4};
 use crate::pipeline::Varyings;
@@ -68,26 +67,29 @@ macro_rules! carried {
 
 carried!(Vec2, Vec3, Vec4);
 
-/// What a mapped draw interpolates: the world normal, and in the other slots the world position (`W`), texture
-/// coordinates (`U`) and the world tangent with its handedness (`T`), each either carried or [`Absent`].
+/// What a draw interpolates, in four slots, each carried or [`Absent`] as its variant's layout says. The two
+/// `Vec3` slots hold what the shading model reads per vertex ([`super::Layout`]): the world normal and the world
+/// position (per-pixel lighting), the vertex colour (unlit), the diffuse and specular light (Gouraud), the world
+/// normal (the normals view). Each component is interpolated on its own with the same weights, so what a slot
+/// means changes no value.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SurfaceVaryings<W, U, T> {
-    /// World-space normal (unit at the vertices).
-    pub normal: Vec3,
-    /// World-space position.
-    pub world: W,
+pub struct SurfaceVaryings<A, B, U, T> {
+    /// The first `Vec3` slot.
+    pub first: A,
+    /// The second `Vec3` slot.
+    pub second: B,
     /// Texture coordinates.
     pub uv: U,
     /// World-space tangent in `xyz`, handedness in `w`.
     pub tangent: T,
 }
 
-impl<W: Varyings, U: Varyings, T: Varyings> Varyings for SurfaceVaryings<W, U, T> {
+impl<A: Varyings, B: Varyings, U: Varyings, T: Varyings> Varyings for SurfaceVaryings<A, B, U, T> {
     #[inline(always)]
     fn lerp(&self, o: &Self, t: f32) -> Self {
         Self {
-            normal: Varyings::lerp(&self.normal, &o.normal, t),
-            world: self.world.lerp(&o.world, t),
+            first: self.first.lerp(&o.first, t),
+            second: self.second.lerp(&o.second, t),
             uv: self.uv.lerp(&o.uv, t),
             tangent: self.tangent.lerp(&o.tangent, t),
         }
@@ -95,8 +97,8 @@ impl<W: Varyings, U: Varyings, T: Varyings> Varyings for SurfaceVaryings<W, U, T
     #[inline(always)]
     fn sub(&self, o: &Self) -> Self {
         Self {
-            normal: Varyings::sub(&self.normal, &o.normal),
-            world: self.world.sub(&o.world),
+            first: self.first.sub(&o.first),
+            second: self.second.sub(&o.second),
             uv: self.uv.sub(&o.uv),
             tangent: self.tangent.sub(&o.tangent),
         }
@@ -104,14 +106,14 @@ impl<W: Varyings, U: Varyings, T: Varyings> Varyings for SurfaceVaryings<W, U, T
     #[inline(always)]
     fn interpolate(&self, d1: &Self, w1: f32, d2: &Self, w2: f32) -> Self {
         Self {
-            normal: self.normal.interpolate(&d1.normal, w1, &d2.normal, w2),
-            world: self.world.interpolate(&d1.world, w1, &d2.world, w2),
+            first: self.first.interpolate(&d1.first, w1, &d2.first, w2),
+            second: self.second.interpolate(&d1.second, w1, &d2.second, w2),
             uv: self.uv.interpolate(&d1.uv, w1, &d2.uv, w2),
             tangent: self.tangent.interpolate(&d1.tangent, w1, &d2.tangent, w2),
         }
     }
     #[inline(always)]
     fn is_finite(&self) -> bool {
-        Varyings::is_finite(&self.normal) && self.world.is_finite() && self.uv.is_finite() && self.tangent.is_finite()
+        self.first.is_finite() && self.second.is_finite() && self.uv.is_finite() && self.tangent.is_finite()
     }
 }

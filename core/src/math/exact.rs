@@ -51,6 +51,7 @@ impl Expansion {
     pub const ZERO: Self = Self { terms: [0.0; CAPACITY], len: 0 };
 
     /// An expansion equal to `a`.
+    #[must_use]
     pub fn from_f64(a: f64) -> Self {
         let mut e = Self::ZERO;
         if a != 0.0 {
@@ -61,6 +62,7 @@ impl Expansion {
     }
 
     /// The exact product of two `f32`s (exact in one `f64`: 24 + 24 bits of mantissa).
+    #[must_use]
     pub fn product(a: f32, b: f32) -> Self {
         Self::from_f64(f64::from(a) * f64::from(b))
     }
@@ -74,6 +76,7 @@ impl Expansion {
     }
 
     /// `self + b` exactly (Shewchuk's Grow-Expansion with zero elimination).
+    #[must_use]
     pub fn add_f64(&self, b: f64) -> Self {
         let mut out = Self::ZERO;
         let mut q = b;
@@ -87,6 +90,7 @@ impl Expansion {
     }
 
     /// `self + other` exactly.
+    #[must_use]
     pub fn add(&self, other: &Self) -> Self {
         let mut out = *self;
         for &t in &other.terms[..other.len] {
@@ -96,6 +100,7 @@ impl Expansion {
     }
 
     /// `-self`.
+    #[must_use]
     pub fn neg(&self) -> Self {
         let mut out = *self;
         for t in &mut out.terms[..out.len] {
@@ -105,11 +110,13 @@ impl Expansion {
     }
 
     /// `self - other` exactly.
+    #[must_use]
     pub fn sub(&self, other: &Self) -> Self {
         self.add(&other.neg())
     }
 
     /// `self * b` exactly (Shewchuk's Scale-Expansion).
+    #[must_use]
     pub fn scale(&self, b: f64) -> Self {
         let mut out = Self::ZERO;
         let Some((&first, rest)) = self.terms[..self.len].split_first() else { return out };
@@ -131,11 +138,13 @@ impl Expansion {
     ///
     /// Components are summed from the smallest: for a non-overlapping expansion the rounding errors stay below
     /// the last place of the result.
+    #[must_use]
     pub fn value(&self) -> f64 {
         self.terms[..self.len].iter().fold(0.0, |sum, &t| sum + t)
     }
 
     /// The sign: -1, 0 or 1 (exact: the largest component has the sign of the sum).
+    #[must_use]
     pub fn signum(&self) -> i32 {
         match self.terms[..self.len].last() {
             Some(&t) if t > 0.0 => 1,

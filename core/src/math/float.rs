@@ -8,6 +8,7 @@
 
 /// Square root (correctly rounded on every target).
 #[inline(always)]
+#[must_use]
 pub fn sqrt(x: f32) -> f32 {
     libm::sqrtf(x)
 }
@@ -23,6 +24,7 @@ pub fn sqrt(x: f32) -> f32 {
 /// correction `y + y (1 - x y^2) / 2` so that its rounding stays below the correction's size. Subnormal inputs
 /// are scaled by 2^24 first (exact), and their result by 2^12.
 #[inline(always)]
+#[must_use]
 pub fn inv_sqrt(x: f32) -> f32 {
     const SCALE: f32 = 16_777_216.0; // 2^24: an even power, so its square root 2^12 is exact
     let subnormal = x < f32::MIN_POSITIVE;
@@ -37,30 +39,35 @@ pub fn inv_sqrt(x: f32) -> f32 {
 
 /// Sine of `x` radians.
 #[inline(always)]
+#[must_use]
 pub fn sin(x: f32) -> f32 {
     libm::sinf(x)
 }
 
 /// Cosine of `x` radians.
 #[inline(always)]
+#[must_use]
 pub fn cos(x: f32) -> f32 {
     libm::cosf(x)
 }
 
 /// Tangent of `x` radians.
 #[inline(always)]
+#[must_use]
 pub fn tan(x: f32) -> f32 {
     libm::tanf(x)
 }
 
 /// Arc-sine in radians, in `[-pi/2, pi/2]`.
 #[inline(always)]
+#[must_use]
 pub fn asin(x: f32) -> f32 {
     libm::asinf(x)
 }
 
 /// Arc-tangent in radians, in `[-pi/2, pi/2]`.
 #[inline(always)]
+#[must_use]
 pub fn atan(x: f32) -> f32 {
     libm::atanf(x)
 }
@@ -70,6 +77,7 @@ pub fn atan(x: f32) -> f32 {
 /// Whole exponents up to 256 (Blinn-Phong shininess nearly always is one) are computed by repeated squaring: a
 /// handful of multiplications instead of a `powf` call, equally deterministic on every target.
 #[inline(always)]
+#[must_use]
 pub fn pow(x: f32, y: f32) -> f32 {
     match whole_exponent(y) {
         Some(n) => powi(x, n),
@@ -79,6 +87,7 @@ pub fn pow(x: f32, y: f32) -> f32 {
 
 /// `y` as a whole number when it is one from 0 to 256: the exponents [`pow`] computes by [`powi`].
 #[inline(always)]
+#[must_use]
 pub fn whole_exponent(y: f32) -> Option<u32> {
     ((0.0..=256.0).contains(&y) && y == (y as u32) as f32).then_some(y as u32)
 }
@@ -86,6 +95,7 @@ pub fn whole_exponent(y: f32) -> Option<u32> {
 /// `x` raised to the whole power `n`, by binary exponentiation (square-and-multiply, Knuth TAOCP vol. 2,
 /// 4.6.3), in a fixed order of operations.
 #[inline(always)]
+#[must_use]
 pub fn powi(mut x: f32, mut n: u32) -> f32 {
     let mut result = 1.0;
     while n > 0 {
@@ -109,6 +119,7 @@ const TWO_POW_23: f32 = 8_388_608.0;
 /// that rounded up. Branch-light and much cheaper than a software `floorf` on targets without a rounding
 /// instruction.
 #[inline(always)]
+#[must_use]
 pub fn floor(x: f32) -> f32 {
     if abs(x) < TWO_POW_23 {
         let c = f32::from_bits(TWO_POW_23.to_bits() | (x.to_bits() & 0x8000_0000));
@@ -122,18 +133,21 @@ pub fn floor(x: f32) -> f32 {
 
 /// Absolute value (clears the sign bit).
 #[inline(always)]
+#[must_use]
 pub fn abs(x: f32) -> f32 {
     f32::from_bits(x.to_bits() & 0x7FFF_FFFF)
 }
 
 /// Smaller of two values; if `a` is NaN, `b`. A comparison, not a `libm` call: exact, and compiled inline.
 #[inline(always)]
+#[must_use]
 pub fn min(a: f32, b: f32) -> f32 {
     if a < b { a } else { b }
 }
 
 /// Larger of two values; if `a` is NaN, `b`. A comparison, not a `libm` call: exact, and compiled inline.
 #[inline(always)]
+#[must_use]
 pub fn max(a: f32, b: f32) -> f32 {
     if a > b { a } else { b }
 }
@@ -142,18 +156,21 @@ pub fn max(a: f32, b: f32) -> f32 {
 /// Exact. Unlike [`min`], a loop that keeps a running minimum in memory with it compiles to plain SIMD stores,
 /// not masked ones (which are slow on some x86 processors).
 #[inline(always)]
+#[must_use]
 pub fn min_num(a: f32, b: f32) -> f32 {
     a.min(b)
 }
 
 /// Larger of two values, ignoring a NaN (IEEE 754 maxNum); see [`min_num`].
 #[inline(always)]
+#[must_use]
 pub fn max_num(a: f32, b: f32) -> f32 {
     a.max(b)
 }
 
 /// `x` limited to `[lo, hi]`; NaN becomes `lo`.
 #[inline(always)]
+#[must_use]
 pub fn clamp(x: f32, lo: f32, hi: f32) -> f32 {
     min(max(x, lo), hi)
 }
@@ -163,6 +180,7 @@ pub fn clamp(x: f32, lo: f32, hi: f32) -> f32 {
 /// Cheaper than [`floor`] followed by a cast: the cast truncates toward zero (saturating, as Rust defines it), and
 /// one compare corrects negative non-integers.
 #[inline(always)]
+#[must_use]
 pub fn floor_to_i32(x: f32) -> i32 {
     let t = x as i32;
     t.saturating_sub(i32::from((t as f32) > x))
@@ -175,6 +193,7 @@ pub fn floor_to_i32(x: f32) -> i32 {
 /// it widens to SIMD: the clamped floor plus `2^22` is a whole number in `(0, 2^23)`, read from the mantissa bits
 /// by [`round_small_to_u32`].
 #[inline(always)]
+#[must_use]
 pub fn floor_to_i32_clamped(x: f32) -> i32 {
     const OFFSET: i32 = 1 << 22;
     const LIMIT: f32 = (OFFSET - 1) as f32;
@@ -188,6 +207,7 @@ pub fn floor_to_i32_clamped(x: f32) -> i32 {
 /// Adding 2^23 leaves the rounded value in the low mantissa bits: an exact IEEE operation, and cheaper than a
 /// saturating float-to-integer cast.
 #[inline(always)]
+#[must_use]
 pub fn round_small_to_u32(x: f32) -> u32 {
     (x + TWO_POW_23).to_bits() & 0x7F_FFFF
 }
@@ -195,6 +215,7 @@ pub fn round_small_to_u32(x: f32) -> u32 {
 /// Maps `x` in `[0, 1]` to an integer in `0..=max` (`max < 2^23`), rounding to nearest with ties to even; values
 /// outside saturate and NaN gives 0.
 #[inline(always)]
+#[must_use]
 pub fn quantize_unit(x: f32, max: f32) -> u32 {
     round_small_to_u32(clamp(x, 0.0, 1.0) * max)
 }

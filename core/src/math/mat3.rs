@@ -6,6 +6,7 @@ use super::Vec3;
 
 /// A 3x3 `f32` matrix acting on column vectors (`m * v`), stored as three columns.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[must_use]
 pub struct Mat3 {
     /// The columns: `cols[j]` is the image of the j-th unit axis.
     pub cols: [Vec3; 3],
@@ -44,6 +45,7 @@ impl Mat3 {
     }
 
     /// The determinant (the scalar triple product of the columns).
+    #[must_use]
     pub fn determinant(&self) -> f32 {
         let [a, b, c] = self.cols;
         a.dot(b.cross(c))
@@ -60,6 +62,7 @@ impl Mat3 {
     }
 
     /// The inverse, or `None` when the matrix is singular (determinant zero) or the result is not finite.
+    #[must_use]
     pub fn inverse(&self) -> Option<Self> {
         let det = self.determinant();
         if det == 0.0 || !det.is_finite() {
@@ -79,6 +82,7 @@ impl Mat3 {
     }
 
     /// True when every element is finite.
+    #[must_use]
     pub fn is_finite(&self) -> bool {
         self.cols.iter().all(|c| c.is_finite())
     }

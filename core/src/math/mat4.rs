@@ -9,6 +9,7 @@ use super::{Mat3, Quat, Vec3, Vec4, float};
 /// Conventions: column vectors, so `a * b` applies `b` first; right-handed coordinates. A translation lives in the
 /// fourth column.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[must_use]
 pub struct Mat4 {
     /// The columns: `cols[j]` is the image of the j-th unit axis (`cols[3]` holds the translation).
     pub cols: [Vec4; 4],
@@ -109,6 +110,7 @@ impl Mat4 {
     }
 
     /// The determinant.
+    #[must_use]
     pub fn determinant(&self) -> f32 {
         let (s, t) = self.minors();
         Self::determinant_from_minors(&s, &t)
@@ -119,6 +121,7 @@ impl Mat4 {
     }
 
     /// The inverse, or `None` when the matrix is singular (determinant zero) or the result is not finite.
+    #[must_use]
     pub fn inverse(&self) -> Option<Self> {
         // Adjugate from the same minors (Eberly 2008, section 2), divided by the determinant.
         let [a, b, c, d] = self.cols;
@@ -182,16 +185,19 @@ impl Mat4 {
 
     /// True when the matrix maps every point to `w = 1` (its last row is `0 0 0 1`): the transform is affine and
     /// needs no perspective division.
+    #[must_use]
     pub fn is_affine(&self) -> bool {
         self.row(3) == Vec4::new(0.0, 0.0, 0.0, 1.0)
     }
 
     /// True when every element is finite.
+    #[must_use]
     pub fn is_finite(&self) -> bool {
         self.cols.iter().all(|c| c.is_finite())
     }
 
     /// Largest absolute difference between corresponding elements.
+    #[must_use]
     pub fn max_abs_diff(&self, o: &Self) -> f32 {
         let mut m = 0.0f32;
         for (a, b) in self.cols.iter().zip(&o.cols) {

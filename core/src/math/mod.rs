@@ -3,6 +3,11 @@
 //! Conventions used throughout rastty: column vectors (`m * v`), matrices stored by columns, right-handed
 //! coordinates, angles in radians. All non-trivial float functions go through [`float`], which calls `libm`; code
 //! outside the core that computes anything a pixel depends on should use it too.
+//!
+//! Every value type here is `#[must_use]`, and so is every function that returns a value (the lint below keeps it so):
+//! a computed value left unused is a bug.
+
+#![warn(clippy::must_use_candidate)]
 
 pub mod exact;
 pub mod float;

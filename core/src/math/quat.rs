@@ -9,6 +9,7 @@ use super::{Mat3, Mat4, Vec3, float};
 /// Composing rotations multiplies quaternions; [`Quat::normalize`] after each step keeps it a pure rotation,
 /// where repeatedly multiplied matrices would slowly shear and scale.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[must_use]
 pub struct Quat {
     /// Vector part, i.
     pub x: f32,

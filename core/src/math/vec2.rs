@@ -4,6 +4,7 @@ use core::ops::{Add, Mul, Neg, Sub};
 
 /// A 2-component `f32` vector.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[must_use]
 pub struct Vec2 {
     /// First component (u, or screen x).
     pub x: f32,
@@ -23,6 +24,7 @@ impl Vec2 {
 
     /// Dot product.
     #[inline(always)]
+    #[must_use]
     pub fn dot(self, o: Self) -> f32 {
         self.x * o.x + self.y * o.y
     }
@@ -30,12 +32,14 @@ impl Vec2 {
     /// z component of the 3D cross product of `(self, 0)` and `(o, 0)`: twice the signed area of the triangle
     /// `(0, self, o)`.
     #[inline(always)]
+    #[must_use]
     pub fn perp_dot(self, o: Self) -> f32 {
         self.x * o.y - self.y * o.x
     }
 
     /// True when both components are finite (neither NaN nor infinite).
     #[inline(always)]
+    #[must_use]
     pub fn is_finite(self) -> bool {
         self.x.is_finite() && self.y.is_finite()
     }

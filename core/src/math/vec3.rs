@@ -6,6 +6,7 @@ use super::float;
 
 /// A 3-component `f32` vector. Also used for RGB colours, with each channel nominally in `[0, 1]`.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[must_use]
 pub struct Vec3 {
     /// First component (x, or red).
     pub x: f32,
@@ -41,6 +42,7 @@ impl Vec3 {
 
     /// Dot product.
     #[inline(always)]
+    #[must_use]
     pub fn dot(self, o: Self) -> f32 {
         self.x * o.x + self.y * o.y + self.z * o.z
     }
@@ -53,6 +55,7 @@ impl Vec3 {
 
     /// Euclidean length.
     #[inline(always)]
+    #[must_use]
     pub fn length(self) -> f32 {
         float::sqrt(self.dot(self))
     }
@@ -63,6 +66,7 @@ impl Vec3 {
     /// lane, computes exactly this. The squared length is zero or infinite exactly where the length is (a
     /// square root neither underflows nor overflows).
     #[inline]
+    #[must_use]
     pub fn try_normalize(self) -> Option<Self> {
         let squared = self.dot(self);
         if squared > 0.0 && squared < f32::INFINITY { Some(self * float::inv_sqrt(squared)) } else { None }
@@ -107,6 +111,7 @@ impl Vec3 {
 
     /// Largest component.
     #[inline(always)]
+    #[must_use]
     pub fn max_elem(self) -> f32 {
         float::max(self.x, float::max(self.y, self.z))
     }
@@ -119,6 +124,7 @@ impl Vec3 {
 
     /// True when every component is finite (neither NaN nor infinite).
     #[inline(always)]
+    #[must_use]
     pub fn is_finite(self) -> bool {
         self.x.is_finite() && self.y.is_finite() && self.z.is_finite()
     }

@@ -6,6 +6,7 @@ use super::Vec3;
 
 /// A 4-component `f32` vector; as a point in clip space, `(x, y, z, w)`.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[must_use]
 pub struct Vec4 {
     /// First component.
     pub x: f32,
@@ -29,6 +30,7 @@ impl Vec4 {
 
     /// Dot product.
     #[inline(always)]
+    #[must_use]
     pub fn dot(self, o: Self) -> f32 {
         self.x * o.x + self.y * o.y + self.z * o.z + self.w * o.w
     }
@@ -47,6 +49,7 @@ impl Vec4 {
 
     /// True when every component is finite (neither NaN nor infinite).
     #[inline(always)]
+    #[must_use]
     pub fn is_finite(self) -> bool {
         self.x.is_finite() && self.y.is_finite() && self.z.is_finite() && self.w.is_finite()
     }

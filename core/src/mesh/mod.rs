@@ -71,6 +71,8 @@ impl core::fmt::Display for MeshError {
     }
 }
 
+impl core::error::Error for MeshError {}
+
 /// A triangle mesh: positions, optional per-vertex normals, texture coordinates and colours, and indices, all
 /// borrowed. Attribute slices have one entry per position (checked when they are attached).
 ///

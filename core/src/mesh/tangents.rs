@@ -28,6 +28,8 @@ impl core::fmt::Display for TangentError {
     }
 }
 
+impl core::error::Error for TangentError {}
+
 /// Computes a tangent for every vertex of `mesh` into `out` (one entry per vertex): in `xyz` a unit vector
 /// perpendicular to the vertex normal pointing toward increasing `u`, in `w` the handedness, `1.0` or `-1.0`, so
 /// that the bitangent (toward increasing `v`) is `w * normal.cross(tangent)`.

@@ -75,3 +75,5 @@ impl core::fmt::Display for OcclusionError {
         }
     }
 }
+
+impl core::error::Error for OcclusionError {}

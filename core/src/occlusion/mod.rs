@@ -7,11 +7,11 @@
 //! the directions of the squared sine of that elevation (the share of the direction's slice of the hemisphere it
 //! hides from cosine-weighted light, less a small bias, faded with distance) is the occlusion.
 //!
-//! The search runs once per 2x2 block of pixels, at its top-left pixel (a cell, [`grid`]), with the directions of
+//! The search runs once per 2x2 block of pixels, at its top-left pixel (a cell, `grid.rs`), with the directions of
 //! the four cells of each 2x2 block of cells turned a quarter of their spacing apart. A 1-2-1 filter across and
 //! down the cells averages the four turns (only cells on the same surface count), and every pixel takes the mean
 //! of the filtered cells at and next to it on its own surface. The search itself is linear algebra on
-//! homogeneous coordinates in units of the radius ([`around`]), four directions at a time ([`lanes`]), with one
+//! homogeneous coordinates in units of the radius (`around.rs`), four directions at a time (`lanes.rs`), with one
 //! division per sample and no square root.
 //!
 //! Everything a pixel computes depends on frame coordinates and depths only, so a band given enough rows of depth

@@ -143,6 +143,13 @@ impl<V: Varyings> FragmentBatch<V> {
         (&self.w1, &self.w2)
     }
 
+    /// Each fragment's depth (as the depth test saw it), one lane per fragment (all [`BATCH_SIZE`] lanes; those
+    /// past [`Self::len`] are finite).
+    #[inline(always)]
+    pub fn depths(&self) -> &Lanes {
+        &self.depth
+    }
+
     /// Where each fragment goes in the target's buffers.
     #[inline(always)]
     pub(crate) fn indices(&self) -> &[usize] {

@@ -35,6 +35,8 @@ impl core::fmt::Display for DrawError {
     }
 }
 
+impl core::error::Error for DrawError {}
+
 /// Draws the triangles of `mesh` with `shader` into `target`.
 ///
 /// The edge arithmetic, interpolation mode and depth test of `state` select one of eight compiled pixel loops,

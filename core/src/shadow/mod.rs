@@ -9,14 +9,17 @@
 
 use core::ops::Range;
 
-use super::LightKind;
-use super::columns::{self, Column, Column3};
-use super::shadow_windows::WindowRanges;
 use crate::camera::{CameraError, look_at, orthographic, perspective};
+use crate::effects::LightKind;
+use crate::effects::columns::{self, Column, Column3};
 use crate::math::{Mat4, Vec3, Vec4, float};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{BATCH_SIZE, Cull, DrawState, DrawStats, Fragment, Shader, draw};
 use crate::target::{MAX_DIMENSION, NoColor, Target};
+
+mod windows;
+
+pub use windows::{WindowRanges, window_ranges_band};
 
 /// Why a shadow map could not be set up.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -76,6 +79,8 @@ impl core::fmt::Display for ShadowError {
         }
     }
 }
+
+impl core::error::Error for ShadowError {}
 
 /// How far a shadow lookup moves the point off its surface, and the depth margin it allows.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -283,7 +288,7 @@ impl<'a> ShadowMap<'a> {
         Ok(Self { view, depth, bias, pcf_radius, windows: None })
     }
 
-    /// The same map, with the depth ranges of its filter's windows ([`super::window_ranges_band`], computed from
+    /// The same map, with the depth ranges of its filter's windows ([`window_ranges_band`], computed from
     /// this map's depths): lookups that the range decides read one value instead of the window. The light reaching
     /// any point is the same, bit for bit.
     ///
@@ -329,7 +334,7 @@ impl<'a> ShadowMap<'a> {
     }
 
     /// [`Self::light_reaching`] for the first `len` lanes of a batch, into `share`: the same values, bit for bit.
-    /// The projection into the map runs lane-wise ([`super::columns`]); only the taps read the map fragment by
+    /// The projection into the map runs lane-wise ([`crate::effects::columns`]); only the taps read the map fragment by
     /// fragment.
     pub(crate) fn light_reaching_lanes(
         &self,
@@ -533,7 +538,7 @@ mod tests {
         let zs = [f32::NEG_INFINITY, -0.0, 0.0, 0.2, 0.3 + 20.0 / 400.0, 0.5, 0.8, 0.9, 1.0, f32::INFINITY, f32::NAN];
         for radius in 0..=3u32 {
             let (mut near, mut far) = ([0.0; (SIZE * SIZE) as usize], [0.0; (SIZE * SIZE) as usize]);
-            super::super::window_ranges_band(&depth, SIZE, radius, 0..SIZE, &mut near, &mut far).unwrap();
+            super::window_ranges_band(&depth, SIZE, radius, 0..SIZE, &mut near, &mut far).unwrap();
             let plain = ShadowMap::new(view, &depth, ShadowBias::DEFAULT, radius).unwrap();
             let windows = WindowRanges::new(&near, &far, SIZE, radius).unwrap();
             let ranged = plain.with_windows(windows).unwrap();
@@ -627,7 +632,7 @@ mod tests {
             for radius in 0..=3 {
                 let plain = ShadowMap::new(view, &depth, ShadowBias::DEFAULT, radius).unwrap();
                 let (mut near, mut far) = ([0.0; (SIZE * SIZE) as usize], [0.0; (SIZE * SIZE) as usize]);
-                super::super::window_ranges_band(&depth, SIZE, radius, 0..SIZE, &mut near, &mut far).unwrap();
+                super::window_ranges_band(&depth, SIZE, radius, 0..SIZE, &mut near, &mut far).unwrap();
                 let ranged = plain.with_windows(WindowRanges::new(&near, &far, SIZE, radius).unwrap()).unwrap();
                 for (map, ranges) in [(plain, "without"), (ranged, "with")] {
                     let len = BATCH_SIZE - 3;

@@ -91,6 +91,8 @@ impl core::fmt::Display for TargetError {
     }
 }
 
+impl core::error::Error for TargetError {}
+
 /// A colour buffer and a depth buffer holding rows `[y0, y1)` of a `width x height` frame.
 #[derive(Debug)]
 pub struct Target<C: ColorBuffer, D: DepthBuffer> {

@@ -60,6 +60,8 @@ impl core::fmt::Display for TextureError {
     }
 }
 
+impl core::error::Error for TextureError {}
+
 /// A borrowed image of `0x00RRGGBB` texels.
 #[derive(Clone, Copy, Debug)]
 pub struct Texture<'a> {

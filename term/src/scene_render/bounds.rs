@@ -1,8 +1,8 @@
 //! The scene's extent in world space: the sphere that shadow maps are fitted to and that derived clipping planes
 //! keep inside the view.
 
-use rastty_core::effects::Bounds;
 use rastty_core::math::Vec3;
+use rastty_core::shadow::Bounds;
 
 use crate::model;
 use crate::scene_file::SceneObject;

@@ -2,8 +2,8 @@
 //! clipping planes from the file or around the scene.
 
 use rastty_core::camera::{CameraError, orthographic, perspective};
-use rastty_core::effects::Bounds;
 use rastty_core::math::{Mat4, float};
+use rastty_core::shadow::Bounds;
 
 use crate::scene_file::{Projection, SceneCamera};
 

@@ -3,8 +3,10 @@
 use std::fmt;
 
 use rastty_core::camera::CameraError;
-use rastty_core::effects::{Bounds, OcclusionError, ShadowError, SurfaceError};
+use rastty_core::effects::SurfaceError;
 use rastty_core::mesh::TangentError;
+use rastty_core::occlusion::OcclusionError;
+use rastty_core::shadow::{Bounds, ShadowError};
 use rastty_core::target::TargetError;
 use rastty_core::texture::TextureError;
 

@@ -1,11 +1,11 @@
 //! The plan of one frame: which passes run, with which lights, and what each draw computes.
 
-use rastty_core::effects::{
-    AmbientOcclusion, Bounds, LightKind, LightUse, ShadowView, SurfaceMaterial, SurfaceVariant,
-};
+use rastty_core::effects::{LightKind, LightUse, SurfaceDraw, SurfaceMaterial, SurfaceVariant};
 use rastty_core::math::Vec3;
+use rastty_core::occlusion::AmbientOcclusion;
 use rastty_core::pipeline::DrawState;
-use rastty_core::shading::Transforms;
+use rastty_core::shading::{ShadingModel, Transforms};
+use rastty_core::shadow::{Bounds, ShadowView};
 
 use super::camera::FrameCamera;
 use super::lights::{DroppedLight, LightName, PlannedLight, core_light};
@@ -204,15 +204,9 @@ impl ScenePlan {
                 let material = part_material(object, scene.part_maps(index, part_index), part_index, &self.options)
                     .map_err(|error| SceneRenderError::Texture { draw: label.clone(), error })?;
                 let tangents = tangents_for(scene, index, &material);
-                let variant = SurfaceVariant::resolve(
-                    &mesh,
-                    tangents,
-                    &transforms,
-                    &material,
-                    lights.iter().copied(),
-                    &DrawState::DEFAULT,
-                )
-                .map_err(|error| SceneRenderError::Draw { draw: label.clone(), error })?;
+                let object = SurfaceDraw { mesh, tangents, transforms, shading: ShadingModel::Phong, material };
+                let variant = SurfaceVariant::resolve(&object, lights.iter().copied(), &DrawState::DEFAULT)
+                    .map_err(|error| SceneRenderError::Draw { draw: label.clone(), error })?;
                 draws.push(PlannedDraw { object: index, part: part_index, label, transforms, variant });
             }
         }

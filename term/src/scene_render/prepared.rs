@@ -5,9 +5,9 @@ use std::collections::HashMap;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 
-use rastty_core::effects::Bounds;
 use rastty_core::math::Vec4;
 use rastty_core::mesh::{TangentError, compute_tangents};
+use rastty_core::shadow::Bounds;
 
 use super::SceneRenderError;
 use super::bounds::scene_bounds;

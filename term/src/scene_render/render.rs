@@ -6,12 +6,13 @@ use std::sync::Mutex;
 use std::thread;
 use std::time::{Duration, Instant};
 
-use rastty_core::effects::{
-    LightSource, SceneLights, ShadowBias, ShadowError, ShadowMap, ShadowView, SurfaceDraw, SurfaceVariant,
-    WindowRanges, clear_shadow_depth, draw_shadow_caster_band, draw_surface, window_ranges_band,
-};
+use rastty_core::effects::{LightSource, SceneLights, SurfaceDraw, SurfaceVariant, draw_surface};
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::{DrawState, DrawStats, draw_wireframe};
+use rastty_core::shadow::{
+    ShadowBias, ShadowError, ShadowMap, ShadowView, WindowRanges, clear_shadow_depth, draw_shadow_caster_band,
+    window_ranges_band,
+};
 use rastty_core::target::{Rgb888, Target};
 
 use super::bins::TriangleBins;
@@ -417,7 +418,13 @@ fn forward_band(
         let material = part_material(object, scene.part_maps(draw.object, draw.part), draw.part, &plan.options)
             .map_err(|error| SceneRenderError::Texture { draw: draw.label.clone(), error })?;
         let tangents = tangents_for(scene, draw.object, &material);
-        let surface = SurfaceDraw { mesh: triangles, tangents, transforms: draw.transforms, material };
+        let surface = SurfaceDraw {
+            mesh: triangles,
+            tangents,
+            transforms: draw.transforms,
+            shading: draw.variant.shading,
+            material,
+        };
         let (variant, stats) = draw_surface(&mut target, &surface, lights, &DrawState::DEFAULT)
             .map_err(|error| SceneRenderError::Draw { draw: draw.label.clone(), error })?;
         result.stats += stats;

@@ -1,0 +1,69 @@
+//! Unlit, flat and Gouraud shading over a batch: the albedo (material or vertex colours, times the diffuse map)
+//! under light computed once per triangle or per vertex, plus the highlight and the glow map.
+
+use super::columns::{Column2, Column3};
+use super::maps::{MapReader, modulated};
+use super::{SpecularSource, SurfaceMaterial, SurfaceVariant};
+use crate::math::Vec3;
+use crate::pipeline::BATCH_SIZE;
+use crate::shading::LightTerms;
+use crate::texture::{Filter, Wrap};
+
+/// The light a coarse model shades with.
+pub(crate) enum Light<'a> {
+    /// None: unlit.
+    None,
+    /// One for the whole triangle (flat).
+    Face(LightTerms),
+    /// Interpolated from the vertices (Gouraud): diffuse and, with highlights, specular light per fragment.
+    Vertex { diffuse: &'a Column3, specular: &'a Column3 },
+}
+
+/// Colours the batch: `albedo` (per fragment) times the diffuse map when the variant reads it, times the diffuse
+/// light, plus the specular colour (times the specular map) times the specular light, plus the glow map; maps
+/// read with filter `F` and wrap mode `W` at `uv`.
+#[allow(clippy::too_many_arguments, clippy::needless_range_loop)] // lanes: one index into every column
+#[inline(always)]
+pub(crate) fn shade<F: Filter, W: Wrap>(
+    v: &SurfaceVariant,
+    m: &SurfaceMaterial<'_>,
+    mut albedo: Column3,
+    uv: &Column2,
+    light: &Light<'_>,
+    len: usize,
+    colors: &mut [Vec3; BATCH_SIZE],
+) {
+    let maps = &mut MapReader::<F, W>::new();
+    if let (true, Some(map)) = (v.albedo_map, m.diffuse) {
+        let base = albedo;
+        modulated(&mut albedo, uv, maps, &map, Some(&base));
+    }
+    let out = &mut colors[..len];
+    let (diffuse, specular) = match light {
+        Light::None => {
+            out.iter_mut().enumerate().for_each(|(i, c)| *c = albedo.get(i));
+            return;
+        }
+        Light::Face(face) => (Column3::splat(face.diffuse), Column3::splat(face.specular)),
+        Light::Vertex { diffuse, specular } => (**diffuse, **specular),
+    };
+    for (i, c) in out.iter_mut().enumerate() {
+        *c = albedo.get(i).mul_elem(diffuse.get(i));
+    }
+    if v.specular != SpecularSource::None {
+        let mut color = Column3::splat(m.specular);
+        if let (SpecularSource::Map, Some(map)) = (v.specular, m.specular_map) {
+            modulated(&mut color, uv, maps, &map, Some(&Column3::splat(m.specular)));
+        }
+        for (i, c) in out.iter_mut().enumerate() {
+            *c += color.get(i).mul_elem(specular.get(i));
+        }
+    }
+    if let (true, Some(map)) = (v.glow_map, m.glow_map) {
+        let mut glow = Column3::ZERO;
+        modulated(&mut glow, uv, maps, &map, None);
+        for (i, c) in out.iter_mut().enumerate() {
+            *c += glow.get(i);
+        }
+    }
+}

@@ -1,0 +1,37 @@
+//! Light at one point, in scalar maths: what flat shading computes once per triangle (at its centroid, with its
+//! face normal) and Gouraud shading once per vertex, under the same lights as per-pixel lighting.
+
+use super::{LightKind, SceneLights};
+use crate::math::{Vec3, float};
+use crate::shading::LightTerms;
+
+/// The light arriving at `point` on a surface with unit normal `n`: ambient plus each light's
+/// `color * max(0, n . l)`, and with `specular` each light's Blinn-Phong highlight
+/// `color * max(0, n . h)^shininess` where `n . l > 0` (Blinn, SIGGRAPH 1977). `l` points toward the light (the
+/// same for every point under a directional light), `h` is the unit half vector of `l` and the direction to
+/// `eye`. Shadow maps are not read: shadows are computed per pixel.
+#[inline(always)]
+pub(crate) fn light_at(
+    lights: &SceneLights<'_>,
+    n: Vec3,
+    point: Vec3,
+    eye: Vec3,
+    shininess: f32,
+    specular: bool,
+) -> LightTerms {
+    let mut terms = LightTerms { diffuse: lights.ambient, specular: Vec3::ZERO };
+    let to_eye = if specular { (eye - point).normalize_or_zero() } else { Vec3::ZERO };
+    for light in lights.lights {
+        let to_light = match light.kind {
+            LightKind::Directional { to_light } => to_light,
+            LightKind::Point { position } => (position - point).normalize_or_zero(),
+        };
+        let n_dot_l = n.dot(to_light);
+        terms.diffuse += light.color * float::max(n_dot_l, 0.0);
+        if specular && n_dot_l > 0.0 {
+            let h = (to_light + to_eye).normalize_or_zero();
+            terms.specular += light.color * float::pow(float::max(n.dot(h), 0.0), shininess);
+        }
+    }
+    terms
+}
