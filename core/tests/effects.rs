@@ -9,8 +9,8 @@ use crate::common;
 use common::{ExactColor, PlainDepth, Torus, assert_same_depths, checker_texels};
 use rastty_core::camera::{look_at, perspective};
 use rastty_core::effects::{
-    LightSource, NormalMap, NormalSource, NormalSpace, SceneLights, SpecularSource, SurfaceDraw, SurfaceMaterial,
-    SurfaceVariant, draw_surface, draw_surface_unspecialised,
+    LightSource, NormalMap, NormalSource, NormalSpace, SceneLights, SpecularSource, SurfaceDraw, SurfaceError,
+    SurfaceMaterial, SurfaceVariant, draw_surface, draw_surface_unspecialised,
 };
 use rastty_core::math::{Mat4, Vec3, Vec4};
 use rastty_core::mesh::{Mesh, compute_tangents};
@@ -327,4 +327,35 @@ fn a_tangent_space_map_without_tangents_is_refused() {
         };
         assert_eq!(result, Err(expected));
     }
+}
+
+#[test]
+fn a_surface_shader_refuses_a_variant_it_was_not_compiled_for() {
+    use rastty_core::effects::{Absent, LightUse, SurfaceShader, capabilities};
+    let f = Fixture::new();
+    let material = SurfaceMaterial { specular: Vec3::splat(0.3), ..SurfaceMaterial::plain(Vec3::ONE) };
+    let sources =
+        [LightSource::directional(Vec3::Z, Vec3::ONE), LightSource::point(Vec3::new(0.0, 2.0, 2.0), Vec3::ONE)];
+    let lights = SceneLights { ambient: Vec3::ZERO, lights: &sources };
+    let variant = |shading, lights: &[LightSource<'_>]| {
+        let object = SurfaceDraw { mesh: f.torus.mesh(), tangents: None, transforms: transforms(), shading, material };
+        SurfaceVariant::resolve(&object, lights.iter().map(LightUse::from), &DrawState::default()).unwrap()
+    };
+    type PerPixel<'a, const CAPS: u32> = SurfaceShader<'a, Vec3, Vec3, Absent, Absent, CAPS>;
+    let new = |v| PerPixel::<{ capabilities::PER_PIXEL }>::new(v, transforms(), &[], material, lights).map(|_| ());
+    assert_eq!(new(variant(ShadingModel::Phong, &sources[..1])), Ok(()));
+    // Another model, or a point light, is not compiled in.
+    assert_eq!(new(variant(ShadingModel::Flat, &sources[..1])), Err(SurfaceError::Unsupported));
+    assert_eq!(new(variant(ShadingModel::Phong, &sources)), Err(SurfaceError::Unsupported));
+    let all = |v| PerPixel::<{ capabilities::ALL }>::new(v, transforms(), &[], material, lights).map(|_| ());
+    assert_eq!(all(variant(ShadingModel::Phong, &sources)), Ok(()));
+    // Slots that do not carry the layout: per-pixel lighting needs the normal.
+    let bare = SurfaceShader::<Absent, Absent, Absent, Absent>::new(
+        variant(ShadingModel::Phong, &sources[..1]),
+        transforms(),
+        &[],
+        material,
+        lights,
+    );
+    assert_eq!(bare.map(|_| ()), Err(SurfaceError::Unsupported));
 }

@@ -21,7 +21,7 @@ pub(crate) enum Light<'a> {
 
 /// Colours the batch: `albedo` (per fragment) times the diffuse map when the variant reads it, times the diffuse
 /// light, plus the specular colour (times the specular map) times the specular light, plus the glow map; maps
-/// read with filter `F` and wrap mode `W` at `uv`.
+/// read with filter `F` and wrap mode `W` at `uv`, and only when `maps` (false, a constant, leaves their code out).
 #[allow(clippy::too_many_arguments, clippy::needless_range_loop)] // lanes: one index into every column
 #[inline(always)]
 pub(crate) fn shade<F: Filter, W: Wrap>(
@@ -32,9 +32,10 @@ pub(crate) fn shade<F: Filter, W: Wrap>(
     light: &Light<'_>,
     len: usize,
     colors: &mut [Vec3; BATCH_SIZE],
+    maps_read: bool,
 ) {
     let maps = &mut MapReader::<F, W>::new();
-    if let (true, Some(map)) = (v.albedo_map, m.diffuse) {
+    if let (true, true, Some(map)) = (maps_read, v.albedo_map, m.diffuse) {
         let base = albedo;
         modulated(&mut albedo, uv, maps, &map, Some(&base));
     }
@@ -52,14 +53,14 @@ pub(crate) fn shade<F: Filter, W: Wrap>(
     }
     if v.specular != SpecularSource::None {
         let mut color = Column3::splat(m.specular);
-        if let (SpecularSource::Map, Some(map)) = (v.specular, m.specular_map) {
+        if let (true, SpecularSource::Map, Some(map)) = (maps_read, v.specular, m.specular_map) {
             modulated(&mut color, uv, maps, &map, Some(&Column3::splat(m.specular)));
         }
         for (i, c) in out.iter_mut().enumerate() {
             *c += color.get(i).mul_elem(specular.get(i));
         }
     }
-    if let (true, Some(map)) = (v.glow_map, m.glow_map) {
+    if let (true, true, Some(map)) = (maps_read, v.glow_map, m.glow_map) {
         let mut glow = Column3::ZERO;
         modulated(&mut glow, uv, maps, &map, None);
         for (i, c) in out.iter_mut().enumerate() {

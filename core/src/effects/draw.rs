@@ -4,7 +4,7 @@ use super::varyings::Absent;
 use super::{LightUse, SceneLights, SurfaceError, SurfaceMaterial, SurfaceShader, SurfaceVariant};
 use crate::math::{Vec2, Vec3, Vec4};
 use crate::mesh::Mesh;
-use crate::pipeline::{DrawError, DrawState, DrawStats, draw, draw_unspecialised};
+use crate::pipeline::{DrawState, DrawStats, draw, draw_unspecialised};
 use crate::shading::{ShadingModel, Transforms};
 use crate::target::{ColorBuffer, DepthBuffer, Target};
 
@@ -63,7 +63,7 @@ fn dispatch<C: ColorBuffer, D: DepthBuffer>(
     general: bool,
 ) -> Result<(SurfaceVariant, DrawStats), SurfaceError> {
     let variant = SurfaceVariant::resolve(object, lights.lights.iter().map(LightUse::from), state)?;
-    let stats = draw_resolved(target, object, lights, &variant, general).map_err(SurfaceError::Draw)?;
+    let stats = draw_resolved(target, object, lights, &variant, general)?;
     Ok((variant, stats))
 }
 
@@ -75,14 +75,19 @@ fn draw_resolved<C: ColorBuffer, D: DepthBuffer>(
     lights: &SceneLights<'_>,
     variant: &SurfaceVariant,
     general: bool,
-) -> Result<DrawStats, DrawError> {
+) -> Result<DrawStats, SurfaceError> {
     let tangents = object.tangents.unwrap_or(&[]);
     let (mesh, state) = (&object.mesh, &variant.state);
     macro_rules! run {
         ($a:ty, $b:ty, $u:ty, $t:ty) => {{
             let shader =
-                SurfaceShader::<$a, $b, $u, $t>::new(*variant, object.transforms, tangents, object.material, *lights);
-            if general { draw_unspecialised(target, mesh, &shader, state) } else { draw(target, mesh, &shader, state) }
+                SurfaceShader::<$a, $b, $u, $t>::new(*variant, object.transforms, tangents, object.material, *lights)?;
+            let drawn = if general {
+                draw_unspecialised(target, mesh, &shader, state)
+            } else {
+                draw(target, mesh, &shader, state)
+            };
+            drawn.map_err(SurfaceError::Draw)
         }};
     }
     let layout = variant.layout();

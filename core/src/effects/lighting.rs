@@ -6,6 +6,7 @@
 //! with a shadow map), the diffuse term, and the highlight only when the material has one. The passes are
 //! lane-wise loops ([`super::columns`]), except the shadow lookups, which read the map fragment by fragment.
 
+use super::capabilities::{self, has};
 use super::columns::{self, Column, Column3};
 use super::scratch::Scratch;
 use super::{LightKind, SceneLights};
@@ -17,7 +18,15 @@ use crate::pipeline::BATCH_SIZE;
 /// Per light: `color * max(0, n . l) * shadow` to the diffuse light and, with `specular`,
 /// `color * max(0, n . h)^shininess * shadow` to the specular light where `n . l > 0` (Blinn, "Models of light
 /// reflection for computer synthesized pictures", SIGGRAPH 1977).
-pub(crate) fn light(s: &mut Scratch, lights: &SceneLights<'_>, eye: Vec3, shininess: f32, specular: bool) {
+/// Point lights and shadow maps only where `CAPS` holds them ([`super::capabilities`]): a shader compiled without
+/// them has had its variant checked to use none.
+pub(crate) fn light<const CAPS: u32>(
+    s: &mut Scratch,
+    lights: &SceneLights<'_>,
+    eye: Vec3,
+    shininess: f32,
+    specular: bool,
+) {
     let len = s.len;
     s.diffuse = Column3::splat(lights.ambient);
     if specular {
@@ -29,16 +38,17 @@ pub(crate) fn light(s: &mut Scratch, lights: &SceneLights<'_>, eye: Vec3, shinin
     for light in lights.lights {
         let to_light = match light.kind {
             LightKind::Directional { to_light } => Column3::splat(to_light),
-            LightKind::Point { position } => {
+            LightKind::Point { position } if has(CAPS, capabilities::POINT_LIGHTS) => {
                 let mut l = Column3::toward(position, &s.world);
                 l.normalize(len, &mut s.lane);
                 l
             }
+            LightKind::Point { .. } => Column3::ZERO,
         };
         let mut n_dot_l = [0.0; BATCH_SIZE];
         s.shading.dot(&to_light, &mut n_dot_l);
         // The share of the light its shadow map lets through, if it has one.
-        let shares = light.shadow.map(|map| {
+        let shares = light.shadow.filter(|_| has(CAPS, capabilities::SHADOWS)).map(|map| {
             s.geometric.dot(&to_light, &mut s.lane);
             let mut shares = [0.0; BATCH_SIZE];
             map.light_reaching_lanes(&s.world, &s.geometric, &s.lane, len, &mut shares);

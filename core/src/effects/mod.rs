@@ -18,6 +18,7 @@
 //! Turning an effect off by data (a white map, a black glow map, a zero-strength light, a shadow map nothing was
 //! drawn into) gives the same pixels as leaving it out; `core/tests/effects.rs` proves it for each.
 
+pub mod capabilities;
 mod coarse;
 pub(crate) mod columns;
 mod draw;

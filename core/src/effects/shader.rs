@@ -2,6 +2,7 @@
 
 use core::marker::PhantomData;
 
+use super::capabilities::{self, has};
 use super::columns::{self, Column2, Column3};
 use super::light_terms::light_at;
 use super::maps::{MapReader, albedo, glow, specular_color};
@@ -9,7 +10,7 @@ use super::normals::{self, object_map, tangent_map};
 use super::scratch::Scratch;
 use super::varyings::{Slot, SurfaceVaryings};
 use super::{Layout, NormalSource, SceneLights, SpecularSource, SurfaceMaterial, SurfaceVariant, lighting};
-use super::{coarse, views};
+use super::{SurfaceError, coarse, views};
 use crate::math::{Mat3, Vec2, Vec3, Vec4};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{BATCH_SIZE, Fragment, FragmentBatch, Shader};
@@ -25,7 +26,7 @@ use crate::texture::{Bilinear, Clamp, Filter, FilterMode, Nearest, Repeat, Wrap,
 /// fragments and runs as a loop compiled for that choice, so the number of compiled loops is the sum of the
 /// choices, not their product.
 #[derive(Clone, Copy, Debug)]
-pub struct SurfaceShader<'a, A, B, U, T> {
+pub struct SurfaceShader<'a, A, B, U, T, const CAPS: u32 = { capabilities::ALL }> {
     transforms: Transforms,
     /// Object to world for tangents (the model's upper 3x3).
     tangent_matrix: Mat3,
@@ -40,24 +41,47 @@ pub struct SurfaceShader<'a, A, B, U, T> {
     _varyings: PhantomData<(A, B, U, T)>,
 }
 
-impl<'a, A, B, U, T> SurfaceShader<'a, A, B, U, T>
+impl<'a, A, B, U, T, const CAPS: u32> SurfaceShader<'a, A, B, U, T, CAPS>
 where
     A: Slot<Vec3>,
     B: Slot<Vec3>,
     U: Slot<Vec2>,
     T: Slot<Vec4>,
 {
-    /// A shader for a resolved `variant`, whose [`SurfaceVariant::layout`] the slot types must carry (they may
-    /// carry more). `tangents` holds one per vertex when the variant reads tangents (may be empty otherwise).
+    /// A shader for a resolved `variant`. `tangents` holds one per vertex when the variant reads tangents (may be
+    /// empty otherwise).
+    ///
+    /// # Errors
+    /// [`SurfaceError::Unsupported`] when the slot types do not carry the variant's [`SurfaceVariant::layout`]
+    /// (they may carry more), or `CAPS` ([`capabilities`]) leaves out its shading model, point lights or shadow
+    /// maps.
     pub fn new(
         variant: SurfaceVariant,
         transforms: Transforms,
         tangents: &'a [Vec4],
         material: SurfaceMaterial<'a>,
         lights: SceneLights<'a>,
-    ) -> Self {
+    ) -> Result<Self, SurfaceError> {
+        let layout = variant.layout();
+        let carried = (!layout.first || A::PRESENT)
+            && (!layout.second || B::PRESENT)
+            && (!layout.uvs || U::PRESENT)
+            && (!layout.tangents || T::PRESENT);
+        let model = match variant.shading {
+            ShadingModel::Unlit => capabilities::UNLIT,
+            ShadingModel::Flat => capabilities::FLAT,
+            ShadingModel::Gouraud => capabilities::GOURAUD,
+            ShadingModel::Phong => capabilities::PER_PIXEL,
+            ShadingModel::Depth { .. } | ShadingModel::Normals => capabilities::VIEWS,
+        };
+        let compiled = has(CAPS, model)
+            && (variant.point_lights == 0 || has(CAPS, capabilities::POINT_LIGHTS))
+            && (variant.shadowed_lights == 0 || has(CAPS, capabilities::SHADOWS));
+        if !(carried && compiled) {
+            return Err(SurfaceError::Unsupported);
+        }
         let handedness = if transforms.mirrors() { -1.0 } else { 1.0 };
-        Self {
+        Ok(Self {
             transforms,
             tangent_matrix: transforms.model.to_mat3(),
             handedness,
@@ -65,15 +89,19 @@ where
             material,
             lights,
             variant,
-            layout: variant.layout(),
+            layout,
             _varyings: PhantomData,
-        }
+        })
     }
 
     /// Runs the per-pixel lighting stages of the variant over `s`, whose varyings columns are filled, into
     /// `colors`.
     fn shade(&self, s: &mut Scratch, colors: &mut [Vec3; BATCH_SIZE]) {
-        // One decision per batch: every map of a draw is read with the draw's filter and wrap mode.
+        // One decision per batch: every map of a draw is read with the draw's filter and wrap mode. Without texture
+        // coordinates no map is read, and one instance of the stages is compiled.
+        if !U::PRESENT {
+            return self.stages::<Nearest, Clamp>(s, colors);
+        }
         match (self.variant.filter, self.variant.wrap) {
             (FilterMode::Nearest, WrapMode::Repeat) => self.stages::<Nearest, Repeat>(s, colors),
             (FilterMode::Nearest, WrapMode::Clamp) => self.stages::<Nearest, Clamp>(s, colors),
@@ -96,21 +124,23 @@ where
             normals::interpolated(s, interpolated_shading);
         }
         match (v.normals, m.normal_map) {
-            (NormalSource::TangentMap, Some(map)) => tangent_map(s, maps, &map.texture),
-            (NormalSource::ObjectMap, Some(map)) => object_map(s, maps, &map.texture, &self.transforms.normal),
+            (NormalSource::TangentMap, Some(map)) if T::PRESENT => tangent_map(s, maps, &map.texture),
+            (NormalSource::ObjectMap, Some(map)) if U::PRESENT => {
+                object_map(s, maps, &map.texture, &self.transforms.normal);
+            }
             _ => {}
         }
         match m.diffuse {
-            Some(map) if v.albedo_map => albedo(s, maps, &map, m.color),
+            Some(map) if U::PRESENT && v.albedo_map => albedo(s, maps, &map, m.color),
             _ => s.albedo = Column3::splat(m.color),
         }
         let specular = v.specular != SpecularSource::None;
-        lighting::light(s, &self.lights, self.transforms.eye, m.shininess, specular);
+        lighting::light::<CAPS>(s, &self.lights, self.transforms.eye, m.shininess, specular);
         match (v.specular, m.specular_map) {
-            (SpecularSource::Map, Some(map)) => specular_color(s, maps, &map, m.specular),
+            (SpecularSource::Map, Some(map)) if U::PRESENT => specular_color(s, maps, &map, m.specular),
             _ => s.specular_color = Column3::splat(m.specular),
         }
-        if let (true, Some(map)) = (v.glow_map, m.glow_map) {
+        if let (true, true, Some(map)) = (U::PRESENT, v.glow_map, m.glow_map) {
             glow(s, maps, &map);
         }
         let out = &mut colors[..s.len];
@@ -142,7 +172,7 @@ where
     }
 }
 
-impl<A, B, U, T> Shader for SurfaceShader<'_, A, B, U, T>
+impl<A, B, U, T, const CAPS: u32> Shader for SurfaceShader<'_, A, B, U, T, CAPS>
 where
     A: Slot<Vec3>,
     B: Slot<Vec3>,
@@ -167,7 +197,7 @@ where
     fn varyings(&self, mesh: &Mesh<'_>, i: usize) -> Self::Varyings {
         let (t, v, layout) = (&self.transforms, &self.variant, &self.layout);
         let (first, second) = match v.shading {
-            ShadingModel::Phong => (
+            ShadingModel::Phong if has(CAPS, capabilities::PER_PIXEL) => (
                 A::capture(|| world_normal(&t.normal, mesh.normal(i))),
                 B::capture(|| if layout.second { t.model.transform_point(mesh.position(i)) } else { Vec3::ZERO }),
             ),
@@ -177,7 +207,7 @@ where
             ShadingModel::Unlit => {
                 (A::capture(|| if layout.first { mesh.color(i) } else { Vec3::ZERO }), B::capture(|| Vec3::ZERO))
             }
-            ShadingModel::Gouraud => {
+            ShadingModel::Gouraud if has(CAPS, capabilities::GOURAUD) => {
                 let n = world_normal(&t.normal, mesh.normal(i));
                 let highlights = v.specular != SpecularSource::None;
                 // The world position only where a light or the highlight needs it.
@@ -192,7 +222,8 @@ where
                 let diffuse = if n.is_finite() { light.diffuse } else { n };
                 (A::capture(|| diffuse), B::capture(|| light.specular))
             }
-            ShadingModel::Flat | ShadingModel::Depth { .. } => (A::capture(|| Vec3::ZERO), B::capture(|| Vec3::ZERO)),
+            // Flat shading and the depth view read no slot (nor do models this shader leaves out: `new` refuses them).
+            _ => (A::capture(|| Vec3::ZERO), B::capture(|| Vec3::ZERO)),
         };
         SurfaceVaryings {
             first,
@@ -213,7 +244,7 @@ where
     /// Flat shading's light: the face normal (through the normal matrix), the highlight at the world centroid.
     #[inline(always)]
     fn face(&self, mesh: &Mesh<'_>, [a, b, c]: [usize; 3]) -> LightTerms {
-        if self.variant.shading != ShadingModel::Flat {
+        if !has(CAPS, capabilities::FLAT) || self.variant.shading != ShadingModel::Flat {
             return LightTerms { diffuse: Vec3::ZERO, specular: Vec3::ZERO };
         }
         let t = &self.transforms;
@@ -253,8 +284,9 @@ where
             _ => Column2::ZERO,
         };
         let (len, m, v) = (batch.len(), &self.material, &self.variant);
+        const COARSE: u32 = capabilities::UNLIT | capabilities::FLAT | capabilities::GOURAUD;
         match v.shading {
-            ShadingModel::Phong => {
+            ShadingModel::Phong if has(CAPS, capabilities::PER_PIXEL) => {
                 let mut s = Scratch::new(len);
                 s.normal = first();
                 if self.layout.second {
@@ -271,9 +303,11 @@ where
                 }
                 self.shade(&mut s, colors);
             }
-            ShadingModel::Depth { near, far } => views::depth(batch.depths(), len, near, far, colors),
-            ShadingModel::Normals => views::normals(first(), len, colors),
-            ShadingModel::Unlit | ShadingModel::Flat | ShadingModel::Gouraud => {
+            ShadingModel::Depth { near, far } if has(CAPS, capabilities::VIEWS) => {
+                views::depth(batch.depths(), len, near, far, colors);
+            }
+            ShadingModel::Normals if has(CAPS, capabilities::VIEWS) => views::normals(first(), len, colors),
+            ShadingModel::Unlit | ShadingModel::Flat | ShadingModel::Gouraud if has(CAPS, COARSE) => {
                 let albedo = if self.variant.vertex_colors { first() } else { Column3::splat(m.color) };
                 let uv = if self.layout.uvs { uv() } else { Column2::ZERO };
                 let (diffuse, specular) = match v.shading {
@@ -287,22 +321,24 @@ where
                 };
                 match (v.filter, v.wrap) {
                     (_, _) if !U::PRESENT => {
-                        coarse::shade::<Nearest, Clamp>(v, m, albedo, &uv, &light, len, colors);
+                        coarse::shade::<Nearest, Clamp>(v, m, albedo, &uv, &light, len, colors, U::PRESENT);
                     }
                     (FilterMode::Nearest, WrapMode::Repeat) => {
-                        coarse::shade::<Nearest, Repeat>(v, m, albedo, &uv, &light, len, colors);
+                        coarse::shade::<Nearest, Repeat>(v, m, albedo, &uv, &light, len, colors, U::PRESENT);
                     }
                     (FilterMode::Nearest, WrapMode::Clamp) => {
-                        coarse::shade::<Nearest, Clamp>(v, m, albedo, &uv, &light, len, colors);
+                        coarse::shade::<Nearest, Clamp>(v, m, albedo, &uv, &light, len, colors, U::PRESENT);
                     }
                     (FilterMode::Bilinear, WrapMode::Repeat) => {
-                        coarse::shade::<Bilinear, Repeat>(v, m, albedo, &uv, &light, len, colors);
+                        coarse::shade::<Bilinear, Repeat>(v, m, albedo, &uv, &light, len, colors, U::PRESENT);
                     }
                     (FilterMode::Bilinear, WrapMode::Clamp) => {
-                        coarse::shade::<Bilinear, Clamp>(v, m, albedo, &uv, &light, len, colors);
+                        coarse::shade::<Bilinear, Clamp>(v, m, albedo, &uv, &light, len, colors, U::PRESENT);
                     }
                 }
             }
+            // A model this shader leaves out: `new` refuses its variant.
+            _ => {}
         }
     }
 }

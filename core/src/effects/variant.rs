@@ -50,6 +50,9 @@ pub enum SurfaceError {
         /// Tangents given (0 for none).
         actual: usize,
     },
+    /// A surface shader whose slot types do not carry the variant's layout, or whose capabilities leave out what
+    /// the variant uses ([`super::SurfaceShader::new`]).
+    Unsupported,
 }
 
 impl fmt::Display for SurfaceError {
@@ -61,6 +64,9 @@ impl fmt::Display for SurfaceError {
                 "a tangent-space normal map needs one tangent per vertex ({expected}), {actual} given \
                  (see mesh::compute_tangents)"
             ),
+            Self::Unsupported => {
+                f.write_str("the surface shader was not compiled for this draw's varyings, shading model or lights")
+            }
         }
     }
 }

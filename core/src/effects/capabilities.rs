@@ -1,0 +1,30 @@
+//! What a compiled surface shader can draw: the shading models and light kinds its code includes.
+//!
+//! [`super::SurfaceShader`]'s last parameter is a set of these bits (by default [`ALL`]). A draw compiled for
+//! fewer leaves the other stages out of the program: a firmware that draws one kind of surface links the code of
+//! that one (its variant is checked against the set when the shader is made). Maps need no bit: a draw without
+//! texture coordinates (`U` absent) compiles no map code at all.
+
+/// Unlit shading (material or vertex colours).
+pub const UNLIT: u32 = 1;
+/// Flat shading: light once per triangle.
+pub const FLAT: u32 = 1 << 1;
+/// Gouraud shading: light once per vertex.
+pub const GOURAUD: u32 = 1 << 2;
+/// Per-pixel lighting.
+pub const PER_PIXEL: u32 = 1 << 3;
+/// The depth and normals views.
+pub const VIEWS: u32 = 1 << 4;
+/// Point lights (directional lights are always compiled in).
+pub const POINT_LIGHTS: u32 = 1 << 5;
+/// Shadow maps (read by per-pixel lighting).
+pub const SHADOWS: u32 = 1 << 6;
+/// Everything: what [`super::draw_surface`] compiles.
+pub const ALL: u32 = UNLIT | FLAT | GOURAUD | PER_PIXEL | VIEWS | POINT_LIGHTS | SHADOWS;
+
+/// True when `caps` holds `bit`: a constant in a shader compiled for `caps`, so the code it guards is left out
+/// when false.
+#[inline(always)]
+pub(crate) const fn has(caps: u32, bit: u32) -> bool {
+    caps & bit != 0
+}
