@@ -37,7 +37,7 @@ pub(crate) fn shade<F: Filter, W: Wrap>(
     let maps = &mut MapReader::<F, W>::new();
     if let (true, true, Some(map)) = (maps_read, v.albedo_map, m.diffuse) {
         let base = albedo;
-        modulated(&mut albedo, uv, maps, &map, Some(&base));
+        modulated(&mut albedo, uv, maps, &map, Some(&base), len);
     }
     let out = &mut colors[..len];
     let (diffuse, specular) = match light {
@@ -54,7 +54,7 @@ pub(crate) fn shade<F: Filter, W: Wrap>(
     if v.specular != SpecularSource::None {
         let mut color = Column3::splat(m.specular);
         if let (true, SpecularSource::Map, Some(map)) = (maps_read, v.specular, m.specular_map) {
-            modulated(&mut color, uv, maps, &map, Some(&Column3::splat(m.specular)));
+            modulated(&mut color, uv, maps, &map, Some(&Column3::splat(m.specular)), len);
         }
         for (i, c) in out.iter_mut().enumerate() {
             *c += color.get(i).mul_elem(specular.get(i));
@@ -62,7 +62,7 @@ pub(crate) fn shade<F: Filter, W: Wrap>(
     }
     if let (true, true, Some(map)) = (maps_read, v.glow_map, m.glow_map) {
         let mut glow = Column3::ZERO;
-        modulated(&mut glow, uv, maps, &map, None);
+        modulated(&mut glow, uv, maps, &map, None, len);
         for (i, c) in out.iter_mut().enumerate() {
             *c += glow.get(i);
         }

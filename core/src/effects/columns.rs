@@ -1,9 +1,9 @@
 //! Per-fragment vectors of a batch stored as three columns (all x, all y, all z), and the lane-wise operations
 //! the fragment stages share.
 //!
-//! The arithmetic loops run over every lane of a batch, a constant count with no branch, so the compiler turns
-//! them into SIMD instructions (SSE or AVX on x86-64, four or eight lanes at a time); lanes past a batch's length
-//! hold values nobody reads. Normalising needs no square root ([`float::inv_sqrt`] is plain arithmetic), so it
+//! The arithmetic loops run over [`lanes`]`(len)` lanes: on a target with SIMD registers every lane of a batch, a
+//! constant count with no branch, so the compiler turns them into SIMD instructions (SSE or AVX on x86-64, four or
+//! eight lanes at a time; lanes past a batch's length hold values nobody reads); elsewhere only the filled ones. Normalising needs no square root ([`float::inv_sqrt`] is plain arithmetic), so it
 //! widens too; the one square root left, a length, runs in a scalar pass of its own: `libm`'s square root is one
 //! instruction the compiler cannot widen, and inside a loop it would keep the rest of the loop scalar too. Every
 //! lane computes exactly what the scalar [`Vec3`] operations compute, in the same order, so the pixels do not
@@ -13,21 +13,21 @@
 #![allow(clippy::needless_range_loop)]
 
 use crate::math::{Vec2, Vec3, float};
-use crate::pipeline::{BATCH_SIZE, Lanes};
+use crate::pipeline::{BATCH_SIZE, Lanes, lanes};
 
 /// One `f32` per fragment of a batch.
 pub(crate) type Column = Lanes;
 
 /// A batch's interpolation weights of its triangle's second and third vertex (see
-/// [`crate::pipeline::FragmentBatch::weights`]).
-pub(crate) type Weights<'a> = (&'a Column, &'a Column);
+/// [`crate::pipeline::FragmentBatch::weights`]), and the batch's length.
+pub(crate) type Weights<'a> = (&'a Column, &'a Column, usize);
 
 /// `v0 + d1 * w1 + d2 * w2` in every lane: what [`crate::pipeline::Varyings::interpolate`] computes for an `f32`,
 /// in the same order.
 #[inline(always)]
-pub(crate) fn interpolated(v0: f32, d1: f32, d2: f32, (w1, w2): Weights<'_>) -> Column {
+pub(crate) fn interpolated(v0: f32, d1: f32, d2: f32, (w1, w2, len): Weights<'_>) -> Column {
     let mut out = [0.0; BATCH_SIZE];
-    for i in 0..BATCH_SIZE {
+    for i in 0..lanes(len) {
         out[i] = v0 + d1 * w1[i] + d2 * w2[i];
     }
     out
@@ -79,11 +79,11 @@ impl Column3 {
         }
     }
 
-    /// `to - from[i]` in every lane: the vectors from the lanes' points to one point.
+    /// `to - from[i]` in the lanes of a batch of `len`: the vectors from the lanes' points to one point.
     #[inline(always)]
-    pub fn toward(to: Vec3, from: &Self) -> Self {
+    pub fn toward(to: Vec3, from: &Self, len: usize) -> Self {
         let mut d = Self::ZERO;
-        for i in 0..BATCH_SIZE {
+        for i in 0..lanes(len) {
             d.x[i] = to.x - from.x[i];
             d.y[i] = to.y - from.y[i];
             d.z[i] = to.z - from.z[i];
@@ -105,18 +105,19 @@ impl Column3 {
         self.z[i] = v.z;
     }
 
-    /// Lane-wise [`Vec3::dot`].
+    /// Lane-wise [`Vec3::dot`], over the lanes of a batch of `len`.
     #[inline(always)]
-    pub fn dot(&self, o: &Self, out: &mut Column) {
-        for i in 0..BATCH_SIZE {
+    pub fn dot(&self, o: &Self, out: &mut Column, len: usize) {
+        for i in 0..lanes(len) {
             out[i] = self.x[i] * o.x[i] + self.y[i] * o.y[i] + self.z[i] * o.z[i];
         }
     }
 
-    /// `self += color * k` lane by lane, where `k[i]` multiplies each channel of `color` (`Vec3 * f32`).
+    /// `self += color * k` lane by lane over a batch of `len`, where `k[i]` multiplies each channel of `color`
+    /// (`Vec3 * f32`).
     #[inline(always)]
-    pub fn add_scaled(&mut self, color: Vec3, k: &Column) {
-        for i in 0..BATCH_SIZE {
+    pub fn add_scaled(&mut self, color: Vec3, k: &Column, len: usize) {
+        for i in 0..lanes(len) {
             self.x[i] += color.x * k[i];
             self.y[i] += color.y * k[i];
             self.z[i] += color.z * k[i];
@@ -127,8 +128,8 @@ impl Column3 {
     /// are normalised; the others are set to zero.
     #[inline(always)]
     pub fn normalize(&mut self, len: usize, squared: &mut Column) {
-        self.dot(&*self, squared);
-        for i in 0..BATCH_SIZE {
+        self.dot(&*self, squared, len);
+        for i in 0..lanes(len) {
             let d = squared[i];
             // `0 < d < inf`, as `Vec3::try_normalize` asks (NaN fails both); lanes past `len` fail. Non-short-circuit
             // `&` and products computed before the choice: written with `&&` and the products inside it, the loop
@@ -160,11 +161,11 @@ pub(crate) fn pow_lanes(x: &mut Column, y: f32, len: usize) {
         let mut result = [1.0; BATCH_SIZE];
         while n > 0 {
             if n & 1 == 1 {
-                for i in 0..BATCH_SIZE {
+                for i in 0..lanes(len) {
                     result[i] *= x[i];
                 }
             }
-            for v in x.iter_mut() {
+            for v in &mut x[..lanes(len)] {
                 *v *= *v;
             }
             n >>= 1;
@@ -202,7 +203,7 @@ mod tests {
         out.normalize(BATCH_SIZE, &mut lengths);
         let mut d = [0.0; BATCH_SIZE];
         let l = Vec3::new(0.25, -0.5, 0.75);
-        c.dot(&Column3::splat(l), &mut d);
+        c.dot(&Column3::splat(l), &mut d, BATCH_SIZE);
         let bits = |v: Vec3| [v.x, v.y, v.z].map(f32::to_bits);
         for i in 0..BATCH_SIZE {
             let v = c.get(i);

@@ -11,7 +11,7 @@ use super::columns::{self, Column, Column3};
 use super::scratch::Scratch;
 use super::{LightKind, SceneLights};
 use crate::math::{Vec3, float};
-use crate::pipeline::BATCH_SIZE;
+use crate::pipeline::{BATCH_SIZE, lanes};
 
 /// Fills `s.diffuse` (and `s.specular` when `specular`) with the light arriving at each fragment.
 ///
@@ -32,36 +32,39 @@ pub(crate) fn light<const CAPS: u32>(
     if specular {
         s.specular = Column3::ZERO;
         // The direction to the eye, once for every light.
-        s.view = Column3::toward(eye, &s.world);
+        s.view = Column3::toward(eye, &s.world, len);
         s.view.normalize(len, &mut s.lane);
     }
     for light in lights.lights {
         let to_light = match light.kind {
             LightKind::Directional { to_light } => Column3::splat(to_light),
             LightKind::Point { position } if has(CAPS, capabilities::POINT_LIGHTS) => {
-                let mut l = Column3::toward(position, &s.world);
+                let mut l = Column3::toward(position, &s.world, len);
                 l.normalize(len, &mut s.lane);
                 l
             }
             LightKind::Point { .. } => Column3::ZERO,
         };
         let mut n_dot_l = [0.0; BATCH_SIZE];
-        s.shading.dot(&to_light, &mut n_dot_l);
+        s.shading.dot(&to_light, &mut n_dot_l, len);
         // The share of the light its shadow map lets through, if it has one.
         let shares = light.shadow.filter(|_| has(CAPS, capabilities::SHADOWS)).map(|map| {
-            s.geometric.dot(&to_light, &mut s.lane);
+            s.geometric.dot(&to_light, &mut s.lane, len);
             let mut shares = [0.0; BATCH_SIZE];
             map.light_reaching_lanes(&s.world, &s.geometric, &s.lane, len, &mut shares);
             shares
         });
         // max(0, n . l) times the share: the diffuse factor.
-        let mut arriving: Column = n_dot_l.map(|d| float::max(d, 0.0));
+        let mut arriving: Column = [0.0; BATCH_SIZE];
+        for i in 0..lanes(len) {
+            arriving[i] = float::max(n_dot_l[i], 0.0);
+        }
         if let Some(shares) = &shares {
-            for (a, share) in arriving.iter_mut().zip(shares) {
-                *a *= share;
+            for i in 0..lanes(len) {
+                arriving[i] *= shares[i];
             }
         }
-        s.diffuse.add_scaled(light.color, &arriving);
+        s.diffuse.add_scaled(light.color, &arriving, len);
         if specular {
             let shares = shares.as_ref();
             highlight(s.len, &s.shading, &s.view, &to_light, &n_dot_l, shares, light.color, shininess, &mut s.specular);
@@ -85,27 +88,30 @@ fn highlight(
     specular: &mut Column3,
 ) {
     let mut h = Column3::ZERO;
-    for i in 0..BATCH_SIZE {
+    for i in 0..lanes(len) {
         h.x[i] = l.x[i] + v.x[i];
         h.y[i] = l.y[i] + v.y[i];
         h.z[i] = l.z[i] + v.z[i];
     }
     let mut n_dot_h = [0.0; BATCH_SIZE];
     h.normalize(len, &mut n_dot_h);
-    n.dot(&h, &mut n_dot_h);
+    n.dot(&h, &mut n_dot_h, len);
     // Into a new column, not in place: `x = max(x, 0)` in place compiled to masked stores (`vmaskmovps`), slow on
     // some x86 processors.
-    let mut k = n_dot_h.map(|x| float::max(x, 0.0));
+    let mut k = [0.0; BATCH_SIZE];
+    for i in 0..lanes(len) {
+        k[i] = float::max(n_dot_h[i], 0.0);
+    }
     columns::pow_lanes(&mut k, shininess, len);
     if let Some(shares) = shares {
-        for i in 0..BATCH_SIZE {
+        for i in 0..lanes(len) {
             k[i] *= shares[i];
         }
     }
     // Adding +0.0 where unlit leaves the sum as it was (it starts at +0.0 and never holds -0.0). The +0.0 comes
     // from clearing the bits under a mask, not from a select: LLVM turned "add this or 0.0" into two masked
     // stores (`vmaskmovps`, slow on x86 processors) for some channels; an `and` it keeps as one.
-    for i in 0..BATCH_SIZE {
+    for i in 0..lanes(len) {
         let mask = 0u32.wrapping_sub(u32::from(n_dot_l[i] > 0.0));
         let lit = |v: f32| f32::from_bits(v.to_bits() & mask);
         specular.x[i] += lit(color.x * k[i]);

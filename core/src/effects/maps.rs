@@ -6,7 +6,7 @@ use super::columns::{Column2, Column3};
 use super::scratch::Scratch;
 use crate::color::unpack_rgb888;
 use crate::math::Vec3;
-use crate::pipeline::BATCH_SIZE;
+use crate::pipeline::{BATCH_SIZE, lanes};
 use crate::texture::{Filter, Texture, Wrap};
 
 /// A batch's reads of the draw's maps at its texture coordinates, with one filter and wrap mode: the texel
@@ -37,7 +37,7 @@ impl<F: Filter, W: Wrap> MapReader<F, W> {
 
 /// Albedo: `color` times the diffuse map.
 pub(crate) fn albedo<F: Filter, W: Wrap>(s: &mut Scratch, maps: &mut MapReader<F, W>, map: &Texture<'_>, color: Vec3) {
-    modulated(&mut s.albedo, &s.uv, maps, map, Some(&Column3::splat(color)));
+    modulated(&mut s.albedo, &s.uv, maps, map, Some(&Column3::splat(color)), s.len);
 }
 
 /// Specular colour: `specular` times the specular map.
@@ -47,15 +47,16 @@ pub(crate) fn specular_color<F: Filter, W: Wrap>(
     map: &Texture<'_>,
     specular: Vec3,
 ) {
-    modulated(&mut s.specular_color, &s.uv, maps, map, Some(&Column3::splat(specular)));
+    modulated(&mut s.specular_color, &s.uv, maps, map, Some(&Column3::splat(specular)), s.len);
 }
 
 /// Emission: the glow map.
 pub(crate) fn glow<F: Filter, W: Wrap>(s: &mut Scratch, maps: &mut MapReader<F, W>, map: &Texture<'_>) {
-    modulated(&mut s.emission, &s.uv, maps, map, None);
+    modulated(&mut s.emission, &s.uv, maps, map, None, s.len);
 }
 
-/// The map at every lane's texture coordinates, times that lane's `color` if given, into `out`.
+/// The map at the texture coordinates of each lane of a batch of `len`, times that lane's `color` if given, into
+/// `out`.
 #[allow(clippy::needless_range_loop)] // lanes: one index into every column
 #[inline(always)]
 pub(crate) fn modulated<F: Filter, W: Wrap>(
@@ -64,13 +65,14 @@ pub(crate) fn modulated<F: Filter, W: Wrap>(
     maps: &mut MapReader<F, W>,
     map: &Texture<'_>,
     color: Option<&Column3>,
+    len: usize,
 ) {
     let mut texels = [0; BATCH_SIZE];
     maps.read(map, uv, &mut texels);
     match color {
         // `color.mul_elem(texel)`, lane by lane.
         Some(color) => {
-            for i in 0..BATCH_SIZE {
+            for i in 0..lanes(len) {
                 let c = unpack_rgb888(texels[i]);
                 out.x[i] = color.x[i] * c.x;
                 out.y[i] = color.y[i] * c.y;
@@ -78,7 +80,7 @@ pub(crate) fn modulated<F: Filter, W: Wrap>(
             }
         }
         None => {
-            for i in 0..BATCH_SIZE {
+            for i in 0..lanes(len) {
                 out.set(i, unpack_rgb888(texels[i]));
             }
         }

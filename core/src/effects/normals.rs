@@ -4,7 +4,7 @@ use super::maps::MapReader;
 use super::material::decode_normal;
 use super::scratch::Scratch;
 use crate::math::{Mat3, Vec3};
-use crate::pipeline::BATCH_SIZE;
+use crate::pipeline::{BATCH_SIZE, lanes};
 use crate::texture::{Filter, Texture, Wrap};
 
 /// The geometric normal (the interpolated one, normalised) and, without a normal map, the shading normal too.
@@ -25,7 +25,7 @@ pub(crate) fn interpolated(s: &mut Scratch, shading_too: bool) {
 pub(crate) fn tangent_map<F: Filter, W: Wrap>(s: &mut Scratch, maps: &mut MapReader<F, W>, map: &Texture<'_>) {
     let mut texels = [0; BATCH_SIZE];
     maps.read(map, &s.uv, &mut texels);
-    for (i, &texel) in texels.iter().enumerate() {
+    for (i, &texel) in texels.iter().enumerate().take(lanes(s.len)) {
         let (n, t) = (s.normal.get(i), s.tangent.get(i));
         let b = n.cross(t) * s.handedness[i];
         let m = decode_normal(texel);
@@ -43,7 +43,7 @@ pub(crate) fn object_map<F: Filter, W: Wrap>(
 ) {
     let mut texels = [0; BATCH_SIZE];
     maps.read(map, &s.uv, &mut texels);
-    for (i, &texel) in texels.iter().enumerate() {
+    for (i, &texel) in texels.iter().enumerate().take(lanes(s.len)) {
         let m: Vec3 = decode_normal(texel);
         s.shading.set(i, *normal_matrix * m);
     }

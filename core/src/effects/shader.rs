@@ -270,7 +270,8 @@ where
     #[inline(always)]
     fn shade_batch(&self, face: &LightTerms, batch: &FragmentBatch<Self::Varyings>, colors: &mut [Vec3; BATCH_SIZE]) {
         let [v0, d1, d2] = batch.triangle();
-        let w = batch.weights();
+        let (w1, w2) = batch.weights();
+        let w = (w1, w2, batch.len());
         let first = || match (v0.first.get(), d1.first.get(), d2.first.get()) {
             (Some(v0), Some(d1), Some(d2)) => Column3::interpolated(v0, d1, d2, w),
             _ => Column3::ZERO,

@@ -39,7 +39,7 @@ mod stats;
 mod varyings;
 mod vertex_cache;
 
-pub use batch::{BATCH_SIZE, FragmentBatch, Lanes};
+pub use batch::{BATCH_SIZE, FragmentBatch, Lanes, lanes};
 pub use clip::GUARD_BAND;
 pub use draw::{DrawError, draw, draw_unspecialised};
 pub use line::{LineStyle, draw_wireframe};

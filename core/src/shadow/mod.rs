@@ -14,7 +14,7 @@ use crate::effects::LightKind;
 use crate::effects::columns::{self, Column, Column3};
 use crate::math::{Mat4, Vec3, Vec4, float};
 use crate::mesh::{Attributes, Mesh};
-use crate::pipeline::{BATCH_SIZE, Cull, DrawState, DrawStats, Fragment, Shader, draw};
+use crate::pipeline::{BATCH_SIZE, Cull, DrawState, DrawStats, Fragment, Shader, draw, lanes};
 use crate::target::{MAX_DIMENSION, NoColor, Target};
 
 mod windows;
@@ -348,9 +348,9 @@ impl<'a> ShadowMap<'a> {
             TexelSize::Constant(t) => [t; BATCH_SIZE],
             TexelSize::Perspective { eye, per_distance } => {
                 // `texel_at`, lane by lane: `|p - eye|`, which is `|eye - p|` bit for bit (squares lose the sign).
-                let d = Column3::toward(eye, p);
+                let d = Column3::toward(eye, p, len);
                 let mut length = [0.0; BATCH_SIZE];
-                d.dot(&d, &mut length);
+                d.dot(&d, &mut length, len);
                 columns::sqrt_lanes(&mut length, len);
                 length.map(|l| per_distance * l)
             }
@@ -360,11 +360,11 @@ impl<'a> ShadowMap<'a> {
         // One decision per batch: an orthographic map (a directional light's) needs no division. The two loops
         // are written out: a helper returning the four columns made the batch 7% slower (copies of the columns).
         if self.affine() {
-            for i in 0..BATCH_SIZE {
+            for i in 0..lanes(len) {
                 (in_front[i], tx[i], ty[i], z[i]) = self.lookup::<true>(p.get(i), n.get(i), n_dot_l[i], texel[i]);
             }
         } else {
-            for i in 0..BATCH_SIZE {
+            for i in 0..lanes(len) {
                 (in_front[i], tx[i], ty[i], z[i]) = self.lookup::<false>(p.get(i), n.get(i), n_dot_l[i], texel[i]);
             }
         }

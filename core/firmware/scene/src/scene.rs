@@ -1,22 +1,21 @@
 //! What each frame shows: Spot turned by [`YAWS`]`[frame]`, lit, seen from a fixed camera; and how it is drawn.
 //!
-//! # One shader, not `draw_mesh`
-//! [`Scene::draw`] resolves the scene's [`Effects`] and runs the one shader they call for through
-//! [`rastty_core::pipeline::draw`]. [`draw_mesh`] gives the same pixels (the host test checks it), but it picks
-//! the shader at run time, so a firmware calling it links every variant of the pipeline: 3.1 MB of Cortex-M4 code
-//! (`.text`) at `opt-level = 3`, against 51 KB this way (one build each, 2026-11-21; docs/firmware.md).
+//! # One shader, compiled for what the scene uses
+//! [`Scene::draw`] resolves the scene's variant and runs the surface shader compiled for its one layout (the
+//! normal and the world position carried) and for per-pixel lighting from directional lights only
+//! ([`capabilities::PER_PIXEL`]), through [`rastty_core::pipeline::draw`]. [`draw_surface`] gives the same pixels
+//! (the host test checks it), but it picks the shader at run time, so a firmware calling it links every variant
+//! of the pipeline.
 
 use rastty_core::camera::{look_at, perspective};
 use rastty_core::effects::{
     Absent, Layout, LightSource, LightUse, SceneLights, SurfaceDraw, SurfaceError, SurfaceMaterial, SurfaceShader,
-    SurfaceVariant, capabilities,
+    SurfaceVariant, capabilities, draw_surface,
 };
 use rastty_core::math::{Mat4, Quat, Vec3};
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::{DrawState, DrawStats, draw};
-use rastty_core::shading::{
-    Effects, Light, Lighting, Material, PhongShader, ShadingModel, Specular, Surface, Transforms, Untextured, draw_mesh,
-};
+use rastty_core::shading::{ShadingModel, Transforms};
 use rastty_core::target::{ColorBuffer, DepthBuffer, Target};
 
 use crate::{HEIGHT, SceneError, WIDTH, spot};
@@ -38,26 +37,33 @@ const FOVY: f32 = 0.7;
 const NEAR: f32 = 1.0;
 /// Far plane: just behind Spot's bounding sphere.
 const FAR: f32 = 4.5;
-/// From the surface toward the one light, in world space (normalised by [`Light::directional`]).
+/// From the surface toward the one light, in world space (normalised by [`LightSource::directional`]).
 const TO_LIGHT: Vec3 = Vec3::new(0.5, 0.8, 0.6);
 /// The light's colour.
 const LIGHT_COLOR: Vec3 = Vec3::new(1.0, 0.97, 0.9);
+/// Light reaching every surface from every direction.
+const AMBIENT: Vec3 = Vec3::new(0.12, 0.12, 0.15);
 
 /// Fixed-function state: the core's default (back faces culled, depth test, perspective-correct, fixed-point
 /// edges with full sub-pixel precision).
 const STATE: DrawState = DrawState::DEFAULT;
 
-/// One frame's scene: the mesh, its transforms and the light, built once and drawn into each strip.
+/// The slots the scene's variant carries: the normal and the world position (for the highlight), nothing else.
+const LAYOUT: Layout = Layout { first: true, second: true, uvs: false, tangents: false };
+
+/// The shader the firmware links: per-pixel lighting from directional lights, the normal and the world position
+/// carried.
+type SpotShader<'a> = SurfaceShader<'a, Vec3, Vec3, Absent, Absent, { capabilities::PER_PIXEL }>;
+
+/// One frame's scene: Spot, its place and the light, built once and drawn into each strip.
 #[derive(Clone, Copy, Debug)]
 pub struct Scene {
-    mesh: Mesh<'static>,
-    transforms: Transforms,
-    lights: [Light; 1],
-    sources: [LightSource<'static>; 1],
+    object: SurfaceDraw<'static>,
+    lights: [LightSource<'static>; 1],
 }
 
 impl Scene {
-    /// The scene of frame `frame`.
+    /// The scene of frame `frame`: Spot lit per pixel with a highlight, untextured.
     ///
     /// # Panics
     /// If `frame >= FRAMES`.
@@ -66,108 +72,68 @@ impl Scene {
     /// [`SceneError::Mesh`] if the model arrays do not make a mesh, [`SceneError::Camera`] if the camera constants
     /// do not make a camera (neither happens).
     pub fn new(frame: usize) -> Result<Self, SceneError> {
+        let material = SurfaceMaterial {
+            specular: Vec3::splat(0.35),
+            shininess: 24.0,
+            ..SurfaceMaterial::plain(Vec3::new(0.85, 0.78, 0.7))
+        };
         Ok(Self {
-            mesh: spot_mesh()?,
-            transforms: transforms(YAWS[frame])?,
-            lights: [Light::directional(TO_LIGHT, LIGHT_COLOR)],
-            sources: [LightSource::directional(TO_LIGHT, LIGHT_COLOR)],
+            object: SurfaceDraw {
+                mesh: spot_mesh()?,
+                tangents: None,
+                transforms: transforms(YAWS[frame])?,
+                shading: ShadingModel::Phong,
+                material,
+            },
+            lights: [LightSource::directional(TO_LIGHT, LIGHT_COLOR)],
         })
     }
 
-    /// Per-pixel lighting with a highlight, untextured.
-    fn effects(&self) -> Effects<'_> {
-        Effects {
-            shading: ShadingModel::Phong,
-            material: Material { color: Vec3::new(0.85, 0.78, 0.7), specular: Vec3::splat(0.35), shininess: 24.0 },
-            lighting: Lighting { ambient: Vec3::new(0.12, 0.12, 0.15), lights: &self.lights },
-            texture: None,
-        }
+    /// The scene's lights.
+    fn lights(&self) -> SceneLights<'_> {
+        SceneLights { ambient: AMBIENT, lights: &self.lights }
     }
 
     /// Clears `target` to [`BACKGROUND`] and draws Spot: into a band, or a whole frame (the same pixels).
     ///
-    /// Runs the one shader the scene's [`Effects`] resolve to, [`PhongShader`] untextured with [`Specular`]
-    /// highlights, through [`draw`]: the pixels of [`draw_mesh`], without linking its other variants (see the
-    /// module docs).
-    ///
-    /// # Errors
-    /// [`SceneError::Draw`] if the draw fails, [`SceneError::Variant`] if the effects resolve to another variant
-    /// (neither happens).
-    pub fn draw<C: ColorBuffer, D: DepthBuffer>(&self, target: &mut Target<C, D>) -> Result<DrawStats, SceneError> {
-        let effects = self.effects();
-        let variant = effects.resolve(&self.mesh, &self.transforms, &STATE).map_err(SceneError::Draw)?;
-        let phong_untextured_specular = variant.shading == ShadingModel::Phong
-            && !variant.vertex_colors
-            && variant.texture.is_none()
-            && variant.specular;
-        if !phong_untextured_specular || variant.state != STATE {
-            return Err(SceneError::Variant);
-        }
-        let surface = Surface { transforms: self.transforms, material: effects.material, lighting: effects.lighting };
-        let shader = PhongShader::<_, Specular>::new(surface, Untextured);
-        target.clear(BACKGROUND);
-        draw(target, &self.mesh, &shader, &STATE).map_err(SceneError::Draw)
-    }
-
-    /// [`Scene::draw`] through the batched surface shader, compiled for the one layout the scene's variant
-    /// resolves to (per-pixel lighting with a highlight, untextured: the normal and the world position carried)
-    /// and for per-pixel lighting from directional lights only: the same pixels, for the host test to prove it
-    /// while the core moves every shading model onto that shader. (On the Cortex-M4 it takes 121.9 M instructions
-    /// a frame and 38,848 bytes of the core's code, against the per-pixel shader's 84.6 M and 25,348; 2026-11-26.)
+    /// Runs [`SpotShader`] through [`draw`]: the pixels of [`draw_surface`], without linking its other variants
+    /// (see the module docs).
     ///
     /// # Errors
     /// [`SceneError::Draw`] if the draw fails, [`SceneError::Variant`] if the scene resolves to another variant
-    /// (neither happens).
-    pub fn draw_through_surface_shader<C: ColorBuffer, D: DepthBuffer>(
-        &self,
-        target: &mut Target<C, D>,
-    ) -> Result<DrawStats, SceneError> {
-        let effects = self.effects();
-        let m = effects.material;
-        let material =
-            SurfaceMaterial { specular: m.specular, shininess: m.shininess, ..SurfaceMaterial::plain(m.color) };
-        let object = SurfaceDraw {
-            mesh: self.mesh,
-            tangents: None,
-            transforms: self.transforms,
-            shading: ShadingModel::Phong,
-            material,
-        };
-        let lights = SceneLights { ambient: effects.lighting.ambient, lights: &self.sources };
-        let variant =
-            SurfaceVariant::resolve(&object, self.sources.iter().map(LightUse::from), &STATE).map_err(|e| match e {
-                SurfaceError::Draw(e) => SceneError::Draw(e),
-                _ => SceneError::Variant,
-            })?;
-        let expected = Layout { first: true, second: true, uvs: false, tangents: false };
-        if variant.layout() != expected || variant.state != STATE {
+    /// than [`SpotShader`] draws (neither happens).
+    pub fn draw<C: ColorBuffer, D: DepthBuffer>(&self, target: &mut Target<C, D>) -> Result<DrawStats, SceneError> {
+        let variant = SurfaceVariant::resolve(&self.object, self.lights.iter().map(LightUse::from), &STATE)
+            .map_err(draw_error)?;
+        if variant.layout() != LAYOUT || variant.state != STATE {
             return Err(SceneError::Variant);
         }
-        // Compiled for per-pixel lighting from directional lights only: the code of the other models, point lights,
-        // shadow maps and maps is left out of the firmware.
-        let shader = SurfaceShader::<Vec3, Vec3, Absent, Absent, { capabilities::PER_PIXEL }>::new(
-            variant,
-            self.transforms,
-            &[],
-            material,
-            lights,
-        )
-        .map_err(|_| SceneError::Variant)?;
+        let o = &self.object;
+        let shader = SpotShader::new(variant, o.transforms, &[], o.material, self.lights()).map_err(draw_error)?;
         target.clear(BACKGROUND);
-        draw(target, &self.mesh, &shader, &STATE).map_err(SceneError::Draw)
+        draw(target, &o.mesh, &shader, &STATE).map_err(SceneError::Draw)
     }
 
-    /// [`Scene::draw`] through [`draw_mesh`], which picks the shader at run time: the same pixels, for the host
+    /// [`Scene::draw`] through [`draw_surface`], which picks the shader at run time: the same pixels, for the host
     /// test to prove it. (A firmware calling this links every variant of the pipeline.)
     ///
     /// # Errors
     /// [`SceneError::Draw`] if the draw fails (it does not).
-    pub fn draw_through_draw_mesh<C: ColorBuffer, D: DepthBuffer>(
+    pub fn draw_through_draw_surface<C: ColorBuffer, D: DepthBuffer>(
         &self,
         target: &mut Target<C, D>,
     ) -> Result<DrawStats, SceneError> {
         target.clear(BACKGROUND);
-        draw_mesh(target, &self.mesh, &self.transforms, &self.effects(), &STATE).map_err(SceneError::Draw)
+        let (_, stats) = draw_surface(target, &self.object, &self.lights(), &STATE).map_err(draw_error)?;
+        Ok(stats)
+    }
+}
+
+/// A draw's error as the scene's: [`SceneError::Variant`] when the variant is not the one the scene draws.
+fn draw_error(e: SurfaceError) -> SceneError {
+    match e {
+        SurfaceError::Draw(e) => SceneError::Draw(e),
+        _ => SceneError::Variant,
     }
 }
 
