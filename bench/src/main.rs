@@ -8,9 +8,8 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser};
 use rastty::escaped::{Escaped, path_text};
-use rastty::headless::parse_size;
 use rastty::scene_file::SceneData;
-use rastty::scene_render::PreparedScene;
+use rastty::scene_render::{PreparedScene, parse_size};
 use rastty_bench::report::terminal::{DEFAULT_FRAMES, TerminalReport};
 use rastty_bench::report::{effects, frames};
 

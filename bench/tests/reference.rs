@@ -1,12 +1,16 @@
 //! The reference renderer against closed-form answers: coverage of an edge through a pixel, exact interior
 //! colours, depth order, the near-plane cut, perspective-correct texture coordinates, bilinear sampling, Blinn-Phong
-//! lighting; and against rastty itself (the same scene from a model, within 8-bit rounding).
+//! lighting; and against rastty itself (the same scene from a model shown without a scene file, within 8-bit
+//! rounding).
 //!
 //! `cargo test --release -p rastty-bench --test integration reference:: -- --ignored --nocapture` also renders the built-in model at
 //! 320x240, writes `/tmp/reference.png` and `/tmp/rastty_default.png`, and prints the time and the PSNR.
 
+use std::path::PathBuf;
+
 use rastty::model::{DEFAULT_DIFFUSE, Material as ModelMaterial, Model, Part, TextureImage};
-use rastty::scene::{Appearance, OrbitCamera, ShadingMode};
+use rastty::scene_file::{SceneCamera, SceneData};
+use rastty::scene_render::{CameraOptions, PlanOptions, PreparedScene, ShadingMode, render_scene_image};
 use rastty_bench::reference::{
     Camera, Light, Lighting, Material, Object, Projection, ReferenceError, ReferenceImage, Renderer, SAMPLES_PER_AXIS,
     Scene, Shading, render,
@@ -14,7 +18,6 @@ use rastty_bench::reference::{
 use rastty_core::camera::CameraError;
 use rastty_core::math::{Vec2, Vec3};
 use rastty_core::pipeline::Cull;
-use rastty_core::target::{Rgb888, Target};
 use rastty_core::texture::WrapMode;
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -473,12 +476,15 @@ fn bad_scenes_are_errors() {
     let e = render(&Scene { objects: vec![bad], ..Scene::new(2, 2, camera) }).unwrap_err();
     assert!(matches!(&e, ReferenceError::Object { object: 0, .. }), "{e}");
     assert_eq!(e.to_string(), "object 0: index 1 is out of range for 1 vertices");
-    let model = one_quad_model();
-    let depth = Appearance { shading: ShadingMode::Depth, ..Appearance::default() };
-    assert!(matches!(
-        Scene::from_model(&model, &OrbitCamera::default(), &depth, (4, 4), 1.0),
-        Err(ReferenceError::Unsupported(_))
-    ));
+    let scene = model_scene(one_quad_model());
+    let depth = PlanOptions { shading: ShadingMode::Depth, ..PlanOptions::default() };
+    let wireframe = PlanOptions { wireframe: true, ..PlanOptions::default() };
+    for options in [depth, wireframe] {
+        assert!(matches!(
+            Scene::from_scene(&scene, &scene.camera(), &options, (4, 4), 1.0),
+            Err(ReferenceError::Unsupported(_))
+        ));
+    }
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -508,20 +514,47 @@ fn one_quad_model() -> Model {
     }
 }
 
-/// rastty's picture of `model` (one sample per pixel), as `0x00RRGGBB` pixels.
-fn rastty_pixels(model: Model, (w, h): (u32, u32), camera: &OrbitCamera, appearance: &Appearance) -> Vec<u32> {
-    let mut pixels = vec![0u32; w as usize * h as usize];
-    let mut depth = vec![0f32; pixels.len()];
-    let mut target = Target::new(Rgb888(&mut pixels), &mut depth[..], w, h).unwrap();
-    rastty::scene::Scene::new(model).render(&mut target, camera, appearance, w as f32 / h as f32).unwrap();
-    pixels
+/// `model` shown without a scene file, as rastty prepares it: one object fitted into the unit sphere, the viewer's
+/// camera and lights.
+fn model_scene(model: Model) -> PreparedScene {
+    PreparedScene::new(SceneData::from_model(model, PathBuf::from("test.obj"))).unwrap()
+}
+
+/// The camera of `--yaw`, `--pitch` and `--distance` (in radii), and `--fov` or `--ortho`.
+fn camera(scene: &PreparedScene, yaw: f32, pitch: f32, distance: f32, fov: f32, orthographic: bool) -> SceneCamera {
+    let options = CameraOptions {
+        yaw_degrees: Some(yaw),
+        pitch_degrees: Some(pitch),
+        distance: Some(distance),
+        fov_degrees: Some(fov),
+        orthographic,
+        ..CameraOptions::default()
+    };
+    options.orbit(scene).camera
+}
+
+/// rastty's picture of `scene` (one sample per pixel), as `0x00RRGGBB` pixels, and its background packed the same
+/// way.
+fn rastty_pixels(
+    scene: &PreparedScene,
+    size: (u32, u32),
+    camera: &SceneCamera,
+    options: &PlanOptions,
+) -> (Vec<u32>, u32) {
+    let image = render_scene_image(scene, camera, size, 1, options).unwrap();
+    (image.pixels, rastty_core::color::pack_rgb888(image.plan.background))
 }
 
 /// rastty's image and the reference of the same scene.
-fn both(model: Model, size: (u32, u32), camera: &OrbitCamera, appearance: &Appearance) -> (Vec<u32>, ReferenceImage) {
-    let reference = Scene::from_model(&model, camera, appearance, size, f64::from(size.0) / f64::from(size.1));
+fn both(
+    scene: &PreparedScene,
+    size: (u32, u32),
+    camera: &SceneCamera,
+    options: &PlanOptions,
+) -> (Vec<u32>, ReferenceImage) {
+    let reference = Scene::from_scene(scene, camera, options, size, f64::from(size.0) / f64::from(size.1));
     let reference = render(&reference.unwrap()).unwrap();
-    (rastty_pixels(model, size, camera, appearance), reference)
+    (rastty_pixels(scene, size, camera, options).0, reference)
 }
 
 /// Compares rastty's pixels with the reference: at every pixel centre the reference's probe and rastty agree on
@@ -529,25 +562,24 @@ fn both(model: Model, size: (u32, u32), camera: &OrbitCamera, appearance: &Appea
 /// may decide a centre near an edge the other way) and on colour within `centre_levels` (8-bit rounding, rastty's
 /// f32 and 8-bit texture filter). Returns how many centres were compared and the largest difference, in levels.
 fn agree(
-    model: Model,
+    scene: &PreparedScene,
     size: (u32, u32),
-    camera: &OrbitCamera,
-    appearance: &Appearance,
+    camera: &SceneCamera,
+    options: &PlanOptions,
     centre_levels: f64,
 ) -> (usize, f64) {
-    let scene = Scene::from_model(&model, camera, appearance, size, f64::from(size.0) / f64::from(size.1)).unwrap();
-    let renderer = Renderer::new(&scene).unwrap();
-    let reference = renderer.render();
-    let pixels = rastty_pixels(model, size, camera, appearance);
-    let background = rastty_core::color::pack_rgb888(appearance.background);
+    let reference = Scene::from_scene(scene, camera, options, size, f64::from(size.0) / f64::from(size.1)).unwrap();
+    let renderer = Renderer::new(&reference).unwrap();
+    let image = renderer.render();
+    let (pixels, background) = rastty_pixels(scene, size, camera, options);
     let (mut compared, mut worst) = (0, 0.0f64);
     for y in 0..size.1 {
         for x in 0..size.0 {
-            let p = reference.index(x, y);
+            let p = image.index(x, y);
             let got = [16, 8, 0].map(|s| f64::from((pixels[p] >> s) & 0xFF) / 255.0);
             let hit = renderer.probe(f64::from(x) + 0.5, f64::from(y) + 0.5);
-            assert_eq!(hit.is_some(), reference.centre_covered[p]);
-            let partial = reference.coverage[p] > 0.0 && reference.coverage[p] < 1.0;
+            assert_eq!(hit.is_some(), image.centre_covered[p]);
+            let partial = image.coverage[p] > 0.0 && image.coverage[p] < 1.0;
             match hit {
                 Some(hit) if pixels[p] != background => {
                     let d = (0..3).map(|c| (got[c] - hit.color[c]).abs() * 255.0).fold(0.0, f64::max);
@@ -563,16 +595,17 @@ fn agree(
 }
 
 #[test]
-fn from_model_draws_what_rastty_draws() {
-    let ortho = OrbitCamera::new(-20.0, 35.0, 3.5, rastty::scene::Lens::Orthographic { fov_degrees: 30.0 });
+fn from_scene_draws_what_rastty_draws() {
+    let scene = model_scene(one_quad_model());
+    let ortho = camera(&scene, -20.0, 35.0, 3.5, 30.0, true);
     for shading in [ShadingMode::Phong, ShadingMode::Unlit] {
-        for camera in [OrbitCamera::default(), ortho] {
-            let appearance = Appearance { shading, ..Appearance::default() };
-            let (compared, worst) = agree(one_quad_model(), (24, 18), &camera, &appearance, 1.5);
+        for camera in [scene.camera(), ortho] {
+            let options = PlanOptions { shading, ..PlanOptions::default() };
+            let (compared, worst) = agree(&scene, (24, 18), &camera, &options, 1.5);
             assert!(compared > 50, "{compared}");
             assert!(worst > 0.0 || shading == ShadingMode::Unlit);
             // Whole pixels: within a few levels (the light and the checker vary a little across a pixel).
-            let (pixels, reference) = both(one_quad_model(), (24, 18), &camera, &appearance);
+            let (pixels, reference) = both(&scene, (24, 18), &camera, &options);
             for (p, &c) in pixels.iter().enumerate() {
                 let got = [16, 8, 0].map(|s| f64::from((c >> s) & 0xFF) / 255.0);
                 if reference.coverage[p] == 1.0 {
@@ -584,26 +617,96 @@ fn from_model_draws_what_rastty_draws() {
 }
 
 #[test]
-fn from_model_draws_the_builtin_model_as_rastty_does() {
-    let model = rastty::builtin::builtin_model().unwrap();
-    let (compared, worst) = agree(model, (40, 30), &OrbitCamera::default(), &Appearance::default(), 2.0);
+fn from_scene_draws_the_builtin_model_as_rastty_does() {
+    let scene = model_scene(rastty::builtin::builtin_model().unwrap());
+    let (compared, worst) = agree(&scene, (40, 30), &scene.camera(), &PlanOptions::default(), 2.0);
     assert!(compared > 150, "{compared}");
     println!("{compared} pixel centres within {worst:.2} levels");
+}
+
+/// Two placed Spots (one with her own material, one bronze over her texture and clamped), a placed camera, a
+/// world light and the viewer's lights in camera space, a background and an ambient light of the file's.
+const TWO_SPOTS: &str = r#"
+background = "203040"
+ambient = [0.1, 0.12, 0.15]
+viewer_lights = true
+
+[camera]
+position = [0.5, 1.5, 4]
+target = [0, 0.3, 0]
+fov = 45
+
+[[lights]]
+type = "directional"
+direction = [-1, -2, -1.5]
+color = [1, 0.9, 0.8]
+intensity = 0.8
+
+[[objects]]
+mesh = "builtin:spot"
+translate = [-0.6, 0, 0]
+rotate = [0, 30, 0]
+scale = 0.8
+
+[[objects]]
+mesh = "builtin:spot"
+translate = [0.7, 0.2, -0.5]
+rotate = [10, -40, 0]
+scale = [0.7, 0.9, 0.7]
+
+[objects.material]
+color = [0.8, 0.5, 0.25]
+specular = [0.9, 0.7, 0.4]
+shininess = 60
+wrap = "clamp"
+"#;
+
+fn scene_file(text: &str) -> PreparedScene {
+    PreparedScene::new(rastty::scene_file::parse(text, "test.toml").unwrap().load().unwrap()).unwrap()
+}
+
+#[test]
+fn from_scene_draws_a_scene_file_as_rastty_does() {
+    let scene = scene_file(TWO_SPOTS);
+    let orbited = CameraOptions { yaw_degrees: Some(50.0), orthographic: true, ..CameraOptions::default() };
+    let orbited = orbited.orbit(&scene).camera;
+    // Untextured: Spot's texture, minified here, has edges so sharp that moving a pixel centre by rastty's
+    // sub-pixel step (1/256 pixel) can change the colour by 35 levels. (So can a crease of the bronze Spot's
+    // normals under its sharp highlight: these views have no pixel centre on one.)
+    let options = PlanOptions { textures: false, ..PlanOptions::default() };
+    // Landscape and portrait (the field of view, or height, spans the shorter side), perspective and orthographic.
+    for (camera, size) in [(scene.camera(), (40, 30)), (scene.camera(), (24, 36)), (orbited, (36, 24))] {
+        let reference = Scene::from_scene(&scene, &camera, &options, size, 1.0).unwrap();
+        assert_eq!(reference.objects.len(), 2);
+        assert_eq!(reference.lighting.lights.len(), 3);
+        let (compared, worst) = agree(&scene, size, &camera, &options, 2.0);
+        assert!(compared > 50, "{size:?}: {compared}");
+        println!("{size:?}: {compared} pixel centres within {worst:.2} levels");
+    }
+    // What the reference does not draw.
+    let point = TWO_SPOTS
+        .replace("type = \"directional\"\ndirection = [-1, -2, -1.5]", "type = \"point\"\nposition = [0, 3, 2]");
+    let shadows = TWO_SPOTS.replace("intensity = 0.8", "intensity = 0.8\nshadows = true");
+    for (text, what) in [(point, "point lights"), (shadows, "shadows")] {
+        let scene = scene_file(&text);
+        let refused = Scene::from_scene(&scene, &scene.camera(), &PlanOptions::default(), (8, 8), 1.0);
+        assert_eq!(refused.unwrap_err(), ReferenceError::Unsupported(what));
+    }
 }
 
 #[test]
 #[ignore = "slow in debug builds: run with --release -- --ignored"]
 fn builtin_model_320x240() {
-    let model = rastty::builtin::builtin_model().unwrap();
-    let (camera, appearance, size) = (OrbitCamera::default(), Appearance::default(), (320, 240));
-    let (compared, worst) = agree(model.clone(), size, &camera, &appearance, 2.0);
+    let scene = model_scene(rastty::builtin::builtin_model().unwrap());
+    let (camera, options, size) = (scene.camera(), PlanOptions::default(), (320, 240));
+    let (compared, worst) = agree(&scene, size, &camera, &options, 2.0);
     println!("single samples at pixel centres: {compared} within {worst:.2} levels of rastty");
-    let scene = Scene::from_model(&model, &camera, &appearance, size, 320.0 / 240.0).unwrap();
-    let triangles: usize = scene.objects.iter().map(|o| o.indices.len() / 3).sum();
+    let reference_scene = Scene::from_scene(&scene, &camera, &options, size, 320.0 / 240.0).unwrap();
+    let triangles: usize = reference_scene.objects.iter().map(|o| o.indices.len() / 3).sum();
     let start = std::time::Instant::now();
-    let reference = render(&scene).unwrap();
+    let reference = render(&reference_scene).unwrap();
     let elapsed = start.elapsed();
-    let pixels = rastty_pixels(model, size, &camera, &appearance);
+    let (pixels, background) = rastty_pixels(&scene, size, &camera, &options);
     let psnr = reference.psnr_rgb888(&pixels).unwrap();
     // Fully covered pixels only (no edge in them): shading and texture differences without anti-aliasing.
     let inside: Vec<usize> = (0..pixels.len()).filter(|&p| reference.coverage[p] == 1.0).collect();
@@ -616,7 +719,6 @@ fn builtin_model_320x240() {
     };
     let interior_psnr = interior.psnr_rgb888(&inside.iter().map(|&p| pixels[p]).collect::<Vec<_>>()).unwrap();
     // Pixel centres rastty decided differently (it leaves exactly the background where it draws nothing).
-    let background = rastty_core::color::pack_rgb888(appearance.background);
     let disagree = (0..pixels.len()).filter(|&p| reference.centre_covered[p] != (pixels[p] != background)).count();
     let centres = reference.centre_covered.iter().filter(|&&c| c).count();
     let covered: f64 = reference.coverage.iter().sum();

@@ -18,7 +18,8 @@
 //! orthographic lens (bit 5).
 
 use rastty::model::{COORDINATE_LIMIT, Embedded, MAX_TEXTURE_SIDE, Model, load_obj_bytes};
-use rastty::scene::{Appearance, Lens, OrbitCamera, Scene, ShadingMode};
+use rastty::scene_file::SceneData;
+use rastty::scene_render::{CameraOptions, PlanOptions, PreparedScene, ScenePlan, SceneRenderer, ShadingMode};
 use rastty_core::target::{Rgb888, Target};
 
 const WIDTH: u32 = 32;
@@ -150,23 +151,26 @@ pub fn run(data: &[u8]) -> bool {
     };
     check_model(&model);
 
-    let appearance = Appearance {
+    let options = PlanOptions {
         shading: ShadingMode::ALL[usize::from(config & 7) % ShadingMode::ALL.len()],
         wireframe: config & 8 != 0,
         textures: config & 16 != 0,
-        ..Appearance::default()
+        ..PlanOptions::default()
     };
-    let mut camera = OrbitCamera::default();
-    if config & 32 != 0 {
-        camera.lens = Lens::Orthographic { fov_degrees: OrbitCamera::DEFAULT_FOV_DEGREES };
-    }
+    let camera = CameraOptions { orthographic: config & 32 != 0, ..CameraOptions::default() };
     let triangles = model.triangle_count() as u64;
-    let scene = Scene::new(model);
+    // The model as `rastty` shows it: a scene of one object, planned and drawn by the scene renderer.
+    let scene = PreparedScene::new(SceneData::from_model(model, "fuzz.obj".into()))
+        .unwrap_or_else(|e| panic!("a loaded model does not prepare: {e}"));
+    let camera = camera.orbit(&scene).camera;
+    let plan = ScenePlan::new(&scene, &camera, (WIDTH, HEIGHT), &options)
+        .unwrap_or_else(|e| panic!("a loaded model does not plan: {e}"));
     let (mut pixels, mut depth) = (vec![0u32; (WIDTH * HEIGHT) as usize], vec![0f32; (WIDTH * HEIGHT) as usize]);
     let mut target = Target::new(Rgb888(&mut pixels), &mut depth[..], WIDTH, HEIGHT).expect("a valid frame");
-    let s = scene
-        .render(&mut target, &camera, &appearance, WIDTH as f32 / HEIGHT as f32)
+    let report = SceneRenderer::with_threads(1)
+        .render(&scene, &plan, &mut target)
         .unwrap_or_else(|e| panic!("a loaded model does not render: {e}"));
+    let s = report.forward;
     assert_eq!(s.triangles_in, triangles, "{s:?}");
     assert_eq!(s.invalid + s.outside + s.culled + s.degenerate + s.rasterized, s.triangles_in, "{s:?}");
     true

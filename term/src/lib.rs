@@ -1,24 +1,22 @@
-//! rastty: load models, render them with `rastty-core`, and show them in a terminal or write PNG files.
+//! rastty: load models and scene files, render them with `rastty-core`, and show them in a terminal or write PNG
+//! files.
 //!
-//! | module | holds |
-//! |---|---|
-//! | [`model`] | OBJ/MTL/texture loading into a [`model::Model`] |
-//! | [`builtin`] | the model compiled into the binary |
-//! | [`escaped`] | text from input files made safe for a terminal |
-//! | [`scene`] | camera, lights and shading choices; drawing a model into a core target |
-//! | [`scene_file`] | TOML scene files: camera, lights, placed and textured meshes; parsed, checked and loaded |
-//! | [`scene_render`] | drawing scene files: a plan of passes (shadow maps, forward draws, ambient occlusion), explained and run |
-//! | [`headless`] | `rastty render`: a scene to a PNG file |
-//! | [`png_file`] | writing PNG files safely |
-//! | [`screen`] | terminal cells, colour modes and the frame-diff encoder |
-//! | [`viewer`] | the interactive terminal viewer |
+//! One road from a file to the terminal, the same for a model and a scene file:
+//!
+//! | step | module | what happens |
+//! |---|---|---|
+//! | file | [`model`], [`scene_file`] | an OBJ model (with its MTL and textures) or a TOML scene file, checked and loaded; [`scene_file::open`] takes either |
+//! | scene | [`scene_file`], [`scene_render`] | a [`scene_file::SceneData`] (a model alone is one fitted object under the viewer's camera and lights), prepared once ([`scene_render::PreparedScene`]) |
+//! | frame | [`scene_render`] | a plan of passes (shadow maps, forward draws, ambient occlusion) for a camera ([`scene_render::Orbit`]) and the look asked for, run in bands of rows on threads |
+//! | cells | [`screen`], [`viewer`] | the frame as terminal cells, diffed against the last one and written; or a PNG file ([`png_file`]) |
+//!
+//! Beside them: [`builtin`] (the model compiled into the binary) and [`escaped`] (text from input files made safe
+//! for a terminal).
 
 pub mod builtin;
 pub mod escaped;
-pub mod headless;
 pub mod model;
 pub mod png_file;
-pub mod scene;
 pub mod scene_file;
 pub mod scene_render;
 pub mod screen;

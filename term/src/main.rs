@@ -7,16 +7,16 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::str::FromStr;
 
-use clap::parser::ValueSource;
-use clap::{ArgMatches, Args, CommandFactory, FromArgMatches, Parser, Subcommand};
-use rastty::escaped::{Escaped, path_text};
-use rastty::headless::{ModelSource, RenderRequest, TextureChoice, parse_size, render_to_png};
+use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
+use rastty::escaped::Escaped;
 use rastty::png_file::write_png;
-use rastty::scene::{Appearance, Lens, OrbitCamera, ShadingMode, parse_hex_color};
-use rastty::scene_file::SceneData;
-use rastty::scene_render::{EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, render_scene_image};
+use rastty::scene_file::{open, parse_hex_color};
+use rastty::scene_render::{
+    CameraOptions, EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, ShadingMode, parse_size,
+    render_scene_image,
+};
 use rastty::screen::{CellMode, ColorMode};
-use rastty::viewer::{ColorChoice, ViewerExit, ViewerOptions, ViewerSubject};
+use rastty::viewer::{ColorChoice, ViewerExit, ViewerOptions};
 use rastty_core::math::Vec3;
 
 /// Render 3D models in the terminal, or to PNG files.
@@ -65,7 +65,7 @@ struct RenderArgs {
     /// The PNG file to write (may be left out with --explain).
     #[arg(short, long, value_name = "OUT.png", required_unless_present = "explain")]
     output: Option<PathBuf>,
-    /// Scene files: print the passes the frame runs and what each draw computes; with -o, render too.
+    /// Print the passes the frame runs and what each draw computes; with -o, render too.
     #[arg(long)]
     explain: bool,
     /// Image size.
@@ -81,139 +81,95 @@ struct RenderArgs {
     stats: bool,
 }
 
-/// Camera and look, shared by the viewer and the renderer.
+/// Camera and look, shared by the viewer and the renderer, for a model and a scene file alike. Each camera option
+/// left out keeps the scene's camera (a model's: yaw 30, pitch 15, distance 2.8, fov 40); lengths are in radii of
+/// the scene's bounding sphere.
 #[derive(Args, Debug)]
 struct SceneArgs {
-    /// Turn the model about the vertical axis, in degrees.
-    #[arg(long, default_value_t = 30.0, allow_negative_numbers = true, value_parser = finite)]
-    yaw: f32,
-    /// Tilt the model toward the camera, in degrees.
-    #[arg(long, default_value_t = 15.0, allow_negative_numbers = true, value_parser = finite)]
-    pitch: f32,
-    /// Camera distance from the model's centre, in model radii.
-    #[arg(long, default_value_t = OrbitCamera::DEFAULT_DISTANCE, allow_negative_numbers = true, value_parser = positive)]
-    distance: f32,
-    /// Vertical field of view in degrees.
-    #[arg(long, default_value_t = OrbitCamera::DEFAULT_FOV_DEGREES, allow_negative_numbers = true, value_parser = field_of_view, conflicts_with = "ortho")]
-    fov: f32,
+    /// Turn the scene about the vertical axis, in degrees (the eye goes round it; a model: 30).
+    #[arg(long, allow_negative_numbers = true, value_parser = finite)]
+    yaw: Option<f32>,
+    /// Look from this far above the horizontal plane through the scene's centre, in degrees (a model: 15).
+    #[arg(long, allow_negative_numbers = true, value_parser = finite)]
+    pitch: Option<f32>,
+    /// Camera distance from what it looks at, in radii of the scene's bounding sphere (a model: 2.8).
+    #[arg(long, allow_negative_numbers = true, value_parser = positive)]
+    distance: Option<f32>,
+    /// Field of view across the image's shorter side, in degrees (a model: 40).
+    #[arg(long, allow_negative_numbers = true, value_parser = field_of_view, conflicts_with = "ortho")]
+    fov: Option<f32>,
     /// Orthographic projection instead of perspective.
     #[arg(long)]
     ortho: bool,
-    /// Near clipping plane distance (default: just in front of the model).
+    /// Near clipping plane distance, in radii (default: just in front of the scene).
     #[arg(long, allow_negative_numbers = true, value_parser = positive)]
     near: Option<f32>,
-    /// Far clipping plane distance (default: just behind the model).
+    /// Far clipping plane distance, in radii (default: just behind the scene).
     #[arg(long, allow_negative_numbers = true, value_parser = positive)]
     far: Option<f32>,
     /// unlit, flat, gouraud, phong, depth or normals.
     #[arg(long, default_value = "phong", value_parser = ShadingMode::from_str)]
     shading: ShadingMode,
-    /// Use this image as the texture of every part.
+    /// Use this image as the texture of every object.
     #[arg(long, value_name = "FILE", conflicts_with = "no_texture")]
     texture: Option<PathBuf>,
     /// Draw without textures.
     #[arg(long)]
     no_texture: bool,
-    /// Draw triangle edges over the model.
+    /// Draw triangle edges over the surfaces.
     #[arg(long)]
     wireframe: bool,
-    /// Background colour, RRGGBB.
+    /// Background colour, RRGGBB (default: the scene's).
     #[arg(long, value_name = "RRGGBB", value_parser = parse_hex_color)]
     background: Option<Vec3>,
-    /// Scene files: leave effects out (normal-maps, specular, glow-maps, shadows, ambient-occlusion).
+    /// Leave effects out (normal-maps, specular, glow-maps, shadows, ambient-occlusion).
     #[arg(long, value_name = "EFFECT,...", value_delimiter = ',', value_parser = SceneEffect::from_str)]
     without: Vec<SceneEffect>,
 }
 
 impl SceneArgs {
-    fn camera(&self) -> OrbitCamera {
-        let lens = if self.ortho {
-            Lens::Orthographic { fov_degrees: OrbitCamera::DEFAULT_FOV_DEGREES }
-        } else {
-            Lens::Perspective { fov_degrees: self.fov }
-        };
-        let mut camera = OrbitCamera::new(self.yaw, self.pitch, self.distance, lens);
-        camera.near = self.near;
-        camera.far = self.far;
-        camera
-    }
-
-    fn appearance(&self) -> Appearance {
-        Appearance {
-            shading: self.shading,
-            textures: !self.no_texture,
-            wireframe: self.wireframe,
-            background: self.background.unwrap_or(Appearance::DEFAULT_BACKGROUND),
+    fn camera(&self) -> CameraOptions {
+        CameraOptions {
+            yaw_degrees: self.yaw,
+            pitch_degrees: self.pitch,
+            distance: self.distance,
+            fov_degrees: self.fov,
+            orthographic: self.ortho,
+            near: self.near,
+            far: self.far,
         }
     }
 
-    /// Where textures come from; `--no-texture` is part of the appearance, so the viewer's `t` key can turn
-    /// them back on.
-    fn texture(&self) -> TextureChoice {
-        self.texture.clone().map_or(TextureChoice::FromModel, TextureChoice::File)
+    /// The look asked for; `textures` false when the `--texture` image could not be loaded.
+    fn plan(&self, textures: bool) -> PlanOptions {
+        PlanOptions {
+            shading: self.shading,
+            effects: EffectToggles::all_but(&self.without),
+            textures: textures && !self.no_texture,
+            wireframe: self.wireframe,
+            background: self.background,
+        }
     }
-}
 
-fn model_source(path: &Option<PathBuf>) -> ModelSource {
-    path.clone().map_or(ModelSource::BuiltIn, ModelSource::File)
-}
-
-/// A scene file: a path ending in `.toml` (any case). Everything else is a model.
-fn scene_path(path: &Option<PathBuf>) -> Option<&Path> {
-    path.as_deref().filter(|p| p.extension().is_some_and(|e| e.eq_ignore_ascii_case("toml")))
-}
-
-/// Options of [`SceneArgs`] that place or shade a single model; a scene file sets these itself.
-const MODEL_ONLY: [(&str, &str); 9] = [
-    ("yaw", "--yaw"),
-    ("pitch", "--pitch"),
-    ("distance", "--distance"),
-    ("fov", "--fov"),
-    ("ortho", "--ortho"),
-    ("near", "--near"),
-    ("far", "--far"),
-    ("shading", "--shading"),
-    ("texture", "--texture"),
-];
-
-/// Refuses model-only options given on the command line with a scene file (defaults do not count).
-fn refuse_model_options(matches: &ArgMatches) -> Result<(), String> {
-    let given: Vec<&str> = MODEL_ONLY
-        .iter()
-        .filter(|(id, _)| matches.value_source(id) == Some(ValueSource::CommandLine))
-        .map(|(_, flag)| *flag)
-        .collect();
-    if given.is_empty() {
-        return Ok(());
-    }
-    Err(format!(
-        "{} cannot be used with a scene file: its [camera], [[lights]] and materials set them (scene files take \
-         --background, --no-texture, --wireframe and --without)",
-        given.join(", ")
-    ))
-}
-
-/// Refuses options that only scene files take, given with a model.
-fn refuse_scene_options(args: &SceneArgs) -> Result<(), String> {
-    if args.without.is_empty() {
-        Ok(())
-    } else {
-        Err("--without needs a scene file (.toml): a model has no effects to leave out (see --shading)".into())
-    }
-}
-
-/// Loads a scene file and prints its warnings and its meshes'.
-fn load_scene_file(path: &Path) -> Result<PreparedScene, String> {
-    let data: SceneData = rastty::scene_file::load(path).map_err(|e| e.to_string())?;
-    for warning in &data.warnings {
-        eprintln!("rastty: warning: {}", Escaped(warning));
-    }
-    for object in &data.objects {
-        for warning in &object.model.warnings {
+    /// Loads the model or scene file at `path` (the built-in model when `None`) with the `--texture` image,
+    /// prints the warnings, and prepares it. Returns it with its name and the look to draw it with: an image that
+    /// cannot be loaded is a warning, and the scene is then drawn untextured.
+    fn load(&self, path: Option<&Path>) -> Result<(PreparedScene, String, PlanOptions), String> {
+        let mut opened = open(path).map_err(|e| e.to_string())?;
+        let mut textures = true;
+        if let Some(texture) = &self.texture {
+            if let Err(e) = opened.data.use_texture(texture) {
+                let reason = e.to_string();
+                opened.data.warnings.push(format!("{}; rendering untextured", reason.trim_end_matches('.')));
+                textures = false;
+            }
+        }
+        for warning in opened.warnings() {
             eprintln!("rastty: warning: {}", Escaped(warning));
         }
+        let scene = PreparedScene::new(opened.data).map_err(|e| format!("{}: {e}", opened.name))?;
+        Ok((scene, opened.name, self.plan(textures)))
     }
-    PreparedScene::new(data).map_err(|e| format!("{}: {e}", path_text(path)))
 }
 
 fn finite(s: &str) -> Result<f32, String> {
@@ -244,8 +200,8 @@ fn parse_color_choice(s: &str) -> Result<ColorChoice, String> {
 }
 
 fn main() -> ExitCode {
-    let parsed = Cli::command().try_get_matches().and_then(|m| Cli::from_arg_matches(&m).map(|cli| (cli, m)));
-    let (cli, matches) = match parsed {
+    let parsed = Cli::command().try_get_matches().and_then(|m| Cli::from_arg_matches(&m));
+    let cli = match parsed {
         Ok(parsed) => parsed,
         Err(e) => {
             // Usage errors quote arguments as typed: escape control characters before they reach a terminal. The
@@ -266,11 +222,8 @@ fn main() -> ExitCode {
         }
     };
     let result = match cli.command {
-        Some(Command::Render(args)) => {
-            let sub = matches.subcommand_matches("render").unwrap_or(&matches);
-            render(&args, sub).map(|()| ExitCode::SUCCESS)
-        }
-        None => view(&cli.viewer, &matches),
+        Some(Command::Render(args)) => render(&args).map(|()| ExitCode::SUCCESS),
+        None => view(&cli.viewer),
     };
     result.unwrap_or_else(|message| {
         eprintln!("rastty: error: {}", Escaped(&message));
@@ -278,63 +231,12 @@ fn main() -> ExitCode {
     })
 }
 
-fn render(args: &RenderArgs, matches: &ArgMatches) -> Result<(), String> {
-    if let Some(path) = scene_path(&args.model) {
-        return render_scene(args, path, matches);
-    }
-    if args.explain {
-        return Err(
-            "--explain needs a scene file (.toml); for a model, --stats prints what its draws compile to".into()
-        );
-    }
-    refuse_scene_options(&args.scene)?;
-    let Some(output) = args.output.clone() else {
-        return Err("no output file: give -o OUT.png".into());
-    };
-    let request = RenderRequest {
-        model: model_source(&args.model),
-        texture: args.scene.texture(),
-        size: args.size,
-        supersample: args.supersample,
-        camera: args.scene.camera(),
-        appearance: args.scene.appearance(),
-        output,
-    };
-    let report = render_to_png(&request).map_err(|e| e.to_string())?;
-    for warning in &report.warnings {
-        eprintln!("rastty: warning: {}", Escaped(warning));
-    }
-    if args.stats {
-        let s = &report.image.stats;
-        let image = &report.image;
-        let plural = if s.triangles_in == 1 { "" } else { "s" };
-        println!("model: {} ({} triangle{plural})", Escaped(&report.name), s.triangles_in);
-        println!(
-            "triangles: {} in, {} culled, {} clipped, {} drawn ({} outside, {} degenerate, {} invalid)",
-            s.triangles_in, s.culled, s.clipped, s.rasterized, s.outside, s.degenerate, s.invalid
-        );
-        println!("fragments: {}", s.fragments);
-        for variant in &report.variants {
-            println!("pipeline: {variant}");
-        }
-        println!("render: {:.2} ms at {}x{}", image.render_time.as_secs_f64() * 1e3, image.width, image.height);
-    }
-    Ok(())
-}
-
-/// `rastty render SCENE.toml`: `--explain` alone prints the plan without rendering; with `-o` the frame is
-/// rendered (and the plan printed first when `--explain` is given too).
-fn render_scene(args: &RenderArgs, path: &Path, matches: &ArgMatches) -> Result<(), String> {
-    refuse_model_options(matches)?;
-    let scene = load_scene_file(path)?;
-    let options = PlanOptions {
-        effects: EffectToggles::all_but(&args.scene.without),
-        textures: !args.scene.no_texture,
-        wireframe: args.scene.wireframe,
-        background: args.scene.background,
-    };
-    let camera = scene.data().camera;
-    let in_file = |e: rastty::scene_render::SceneRenderError| format!("{}: {e}", path_text(path));
+/// `rastty render [MODEL | SCENE.toml]`: `--explain` alone prints the plan without rendering; with `-o` the frame
+/// is rendered (and the plan printed first when `--explain` is given too).
+fn render(args: &RenderArgs) -> Result<(), String> {
+    let (scene, name, options) = args.scene.load(args.model.as_deref())?;
+    let camera = args.scene.camera().orbit(&scene).camera;
+    let in_scene = |e: rastty::scene_render::SceneRenderError| format!("{}: {e}", Escaped(&name));
     let Some(output) = &args.output else {
         if args.stats {
             return Err("--stats needs -o OUT.png: --explain alone plans the frame without rendering it".into());
@@ -342,11 +244,11 @@ fn render_scene(args: &RenderArgs, path: &Path, matches: &ArgMatches) -> Result<
         // --explain alone: plan the frame at the size asked for, draw nothing.
         let k = args.supersample;
         let size = (args.size.0.saturating_mul(k), args.size.1.saturating_mul(k));
-        let plan = ScenePlan::new(&scene, &camera, size, &options).map_err(in_file)?;
+        let plan = ScenePlan::new(&scene, &camera, size, &options).map_err(in_scene)?;
         print!("{plan}");
         return Ok(());
     };
-    let image = render_scene_image(&scene, &camera, args.size, args.supersample, &options).map_err(in_file)?;
+    let image = render_scene_image(&scene, &camera, args.size, args.supersample, &options).map_err(in_scene)?;
     if args.explain {
         print!("{}", image.plan);
     }
@@ -354,6 +256,10 @@ fn render_scene(args: &RenderArgs, path: &Path, matches: &ArgMatches) -> Result<
     if args.stats {
         let r = &image.report;
         let ms = |d: std::time::Duration| d.as_secs_f64() * 1e3;
+        let objects = scene.data().objects.len();
+        let triangles: usize = scene.data().objects.iter().map(|o| o.model.triangle_count()).sum();
+        let (o, t) = (if objects == 1 { "" } else { "s" }, if triangles == 1 { "" } else { "s" });
+        println!("scene: {} ({objects} object{o}, {triangles} triangle{t})", Escaped(&name));
         let bands = match r.bands {
             1 => String::new(),
             n => format!(" (in {n} bands of rows: a triangle counts once per band it may reach)"),
@@ -379,6 +285,13 @@ fn render_scene(args: &RenderArgs, path: &Path, matches: &ArgMatches) -> Result<
             s.invalid,
             s.fragments
         );
+        let mut pipelines: Vec<String> = Vec::new();
+        for variant in r.variants.iter().map(ToString::to_string) {
+            if !pipelines.contains(&variant) {
+                println!("pipeline: {variant}");
+                pipelines.push(variant);
+            }
+        }
         let samples = if args.supersample > 1 {
             format!(" ({0}x{0} samples per pixel)", args.supersample)
         } else {
@@ -397,32 +310,19 @@ fn render_scene(args: &RenderArgs, path: &Path, matches: &ArgMatches) -> Result<
     Ok(())
 }
 
-fn view(args: &ViewerArgs, matches: &ArgMatches) -> Result<ExitCode, String> {
-    let subject = match scene_path(&args.model) {
-        Some(path) => {
-            refuse_model_options(matches)?;
-            ViewerSubject::Scene(path.to_path_buf())
-        }
-        None => {
-            refuse_scene_options(&args.scene)?;
-            ViewerSubject::Model {
-                model: model_source(&args.model),
-                texture: args.scene.texture(),
-                camera: args.scene.camera(),
-            }
-        }
-    };
+fn view(args: &ViewerArgs) -> Result<ExitCode, String> {
+    // Before loading: a large model need not be read to learn that there is no terminal to show it in.
+    rastty::viewer::ensure_terminal().map_err(|e| e.to_string())?;
+    let (scene, name, plan) = args.scene.load(args.model.as_deref())?;
     let options = ViewerOptions {
-        subject,
-        background: args.scene.background,
-        effects: EffectToggles::all_but(&args.scene.without),
-        appearance: args.scene.appearance(),
+        orbit: args.scene.camera().orbit(&scene),
+        plan,
         cell_mode: args.mode,
         color: args.color,
         cell_aspect: args.cell_aspect,
         pacing: !args.no_pacing,
     };
-    match rastty::viewer::run(&options).map_err(|e| e.to_string())? {
+    match rastty::viewer::run(&scene, &name, &options).map_err(|e| e.to_string())? {
         // Killed by a signal: exit as the shell expects, 128 + the signal number.
         ViewerExit::Signal(signal) => Ok(ExitCode::from(128u8.saturating_add(u8::try_from(signal).unwrap_or(0)))),
         ViewerExit::Quit | ViewerExit::TerminalGone => Ok(ExitCode::SUCCESS),

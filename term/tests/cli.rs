@@ -369,7 +369,7 @@ fn control_characters_in_file_names_are_escaped() {
     let run = rastty(dir.path(), ["render", "e\x1bvil.obj", "--size", "8x6", "-o", "out.png", "--stats"]);
     run.expect_success();
     no_control(&run);
-    assert!(run.stdout_text().starts_with(r"model: e\u{1b}vil.obj "), "{}", run.stdout_text());
+    assert!(run.stdout_text().starts_with(r"scene: e\u{1b}vil.obj "), "{}", run.stdout_text());
 }
 
 /// Clap quotes a rejected option value raw (`invalid value 'a\rb' for '--size <WxH>'`): only ANSI escape sequences
@@ -428,18 +428,19 @@ fn render_without_a_model_writes_an_800x600_png_of_the_built_in_model() {
 }
 
 #[test]
-fn stats_prints_model_triangles_fragments_pipeline_and_render_lines() {
+fn stats_prints_scene_forward_pipeline_and_render_lines() {
     let dir = dir_with(&[("tri.obj", TRIANGLE.as_bytes())]);
     let run = rastty(dir.path(), ["render", "tri.obj", "--size", "64x48", "-o", "out.png", "--stats"]);
     assert_eq!(run.expect_success(), Vec::<String>::new());
     let stdout = run.stdout_text();
     let lines: Vec<&str> = stdout.lines().collect();
-    for prefix in ["model:", "triangles:", "fragments:", "pipeline:", "render:"] {
+    for prefix in ["scene:", "forward:", "pipeline:", "render:"] {
         assert!(lines.iter().any(|l| l.starts_with(prefix)), "no {prefix:?} line in {stdout}");
     }
     assert!(lines.iter().all(|l| l.split_once(':').is_some()), "{stdout}");
-    assert!(lines[0].starts_with("model: tri.obj "), "{stdout}");
-    assert!(lines.iter().any(|l| l.starts_with("triangles: 1 in")), "{stdout}");
-    assert!(lines.iter().any(|l| l.starts_with("render: ") && l.ends_with(" at 64x48")), "{stdout}");
+    assert_eq!(lines[0], "scene: tri.obj (1 object, 1 triangle)", "{stdout}");
+    assert!(lines.iter().any(|l| l.starts_with("forward: 1 draws; triangles ")), "{stdout}");
+    assert!(lines.iter().any(|l| l.starts_with("pipeline: phong; ")), "{stdout}");
+    assert!(lines.iter().any(|l| l.starts_with("render: ") && l.contains(" at 64x48")), "{stdout}");
     png_pixels(&dir.path().join("out.png"), 64, 48);
 }

@@ -11,13 +11,22 @@ use std::sync::Arc;
 
 use rastty::model::TextureImage;
 use rastty::scene_file::{
-    LightKind, NormalSpace, Projection, SceneFileError, SceneFileErrorKind, load, object_transform, parse,
+    CameraPlacement, FramedCamera, LightKind, LightSpace, NormalSpace, Projection, SceneCamera, SceneData,
+    SceneFileError, SceneFileErrorKind, defaults, load, object_transform, parse,
 };
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::texture::{FilterMode, WrapMode};
 
 // ---------------------------------------------------------------------------------------------------------------
 // Helpers
+
+/// The scene's camera, which must be placed by the file.
+fn placed(scene: &SceneData) -> SceneCamera {
+    match scene.camera {
+        CameraPlacement::Placed(camera) => camera,
+        CameraPlacement::Framed(framed) => panic!("a framed camera: {framed:?}"),
+    }
+}
 
 /// A temporary directory holding the given files.
 fn dir_with(files: &[(&str, &[u8])]) -> tempfile::TempDir {
@@ -82,7 +91,9 @@ fn every_example_scene_loads() {
             assert!(object.model.warnings.is_empty(), "{:?}", object.model.warnings);
             assert!(object.transform.is_finite());
         }
-        assert!(scene.camera.view().unwrap().is_finite());
+        if let CameraPlacement::Placed(camera) = scene.camera {
+            assert!(camera.view().unwrap().is_finite());
+        }
     }
 }
 
@@ -90,7 +101,7 @@ fn every_example_scene_loads() {
 fn the_example_scenes_show_what_they_say() {
     let dir = root().join("assets/scenes");
     let sun = load(dir.join("spot_sun.toml")).unwrap();
-    assert!(matches!(sun.camera.projection, Projection::Perspective { .. }));
+    assert!(matches!(placed(&sun).projection, Projection::Perspective { .. }));
     assert!(sun.lights.iter().any(|l| l.shadows && matches!(l.kind, LightKind::Directional { .. })));
     assert!(!sun.ambient_occlusion);
 
@@ -102,7 +113,7 @@ fn the_example_scenes_show_what_they_say() {
     assert_eq!(ground.normal_map.as_ref().unwrap().space, NormalSpace::Tangent);
 
     let herd = load(dir.join("spot_herd.toml")).unwrap();
-    assert!(matches!(herd.camera.projection, Projection::Orthographic { .. }));
+    assert!(matches!(placed(&herd).projection, Projection::Orthographic { .. }));
     // Three cows from one OBJ file, loaded once; the texture named by two of them, loaded once.
     let cows: Vec<_> = herd.objects.iter().filter(|o| o.mesh_path.ends_with("spot.obj")).collect();
     assert_eq!(cows.len(), 3);
@@ -175,12 +186,12 @@ fn unknown_keys_are_named_with_their_table() {
     assert_eq!(
         error(&format!("backgruond = \"000000\"\n{CAMERA}{SPOT}")),
         "scene.toml:1:1: backgruond: unknown key, expected one of `background`, `ambient`, `ambient_occlusion`, \
-         `camera`, `lights`, `objects`"
+         `camera`, `lights`, `viewer_lights`, `objects`"
     );
     assert_eq!(
         error(&format!("{CAMERA}fvo = 30\n{SPOT}")),
-        "scene.toml:5:1: camera.fvo: unknown key, expected one of `position`, `target`, `up`, `fov`, \
-         `orthographic`, `near`, `far`"
+        "scene.toml:5:1: camera.fvo: unknown key, expected one of `position`, `target`, `yaw`, `pitch`, \
+         `distance`, `up`, `fov`, `orthographic`, `near`, `far`"
     );
     assert_eq!(
         error(&format!("{CAMERA}{SPOT}{SPOT}[objects.material]\ncolour = [1, 0, 0]\n")),
@@ -250,14 +261,17 @@ fn wrong_types_name_the_value() {
 fn missing_keys_are_named_at_their_table() {
     assert_eq!(
         error(&format!("[camera]\nposition = [0, 1, 4]\nfov = 40\n{SPOT}")),
-        "scene.toml:1:1: camera.target: required, but missing"
+        "scene.toml:1:1: camera.target: required with camera.position (or leave both out to frame the scene)"
+    );
+    assert_eq!(
+        error(&format!("[camera]\ntarget = [0, 1, 4]\n{SPOT}")),
+        "scene.toml:1:1: camera.position: required with camera.target (or leave both out to frame the scene)"
     );
     assert_eq!(
         error(&format!("{CAMERA}{SPOT}[[objects]]\nscale = 2\n")),
         "scene.toml:7:1: objects[1].mesh: required, but missing"
     );
-    assert_eq!(error(SPOT), "scene.toml:1:1: camera: required, but missing");
-    assert_eq!(error(""), "scene.toml:1:1: camera: required, but missing");
+    assert_eq!(error(""), "scene.toml:1:1: objects: required, but missing");
     assert_eq!(error(CAMERA), "scene.toml:1:1: objects: required, but missing");
     assert_eq!(
         error(&format!("{CAMERA}[[lights]]\ndirection = [0, -1, 0]\n{SPOT}")),
@@ -276,10 +290,26 @@ fn invalid_camera_values_name_the_value() {
         "scene.toml:5:16: camera.orthographic: cannot be given with camera.fov: choose a perspective (fov) or an \
          orthographic lens"
     );
-    assert_eq!(camera(""), "scene.toml:1:1: camera: needs fov (a perspective lens) or orthographic (a parallel one)");
     assert_eq!(
         camera("orthographic = -2\n"),
-        "scene.toml:4:16: camera.orthographic: must be positive (the view's height in world units), got -2"
+        "scene.toml:4:16: camera.orthographic: must be positive (the height shown across the frame's shorter side), \
+         got -2"
+    );
+    assert_eq!(
+        camera("yaw = 10\n"),
+        "scene.toml:4:7: camera.yaw: frames the scene, so it cannot be given with camera.position and camera.target"
+    );
+    let framed = |lines: &str| error(&format!("[camera]\n{lines}{SPOT}"));
+    assert_eq!(framed("pitch = 90\n"), "scene.toml:2:9: camera.pitch: must be between -90 and 90 degrees, got 90");
+    assert_eq!(framed("yaw = inf\n"), "scene.toml:2:7: camera.yaw: must be a finite number of degrees, got inf");
+    assert_eq!(
+        framed("distance = 0\n"),
+        "scene.toml:2:12: camera.distance: must be positive (in radii of the scene's bounding sphere), got 0"
+    );
+    assert_eq!(
+        framed("up = [0, 0, 1]\n"),
+        "scene.toml:2:6: camera.up: a framed camera's up is [0, 1, 0]; give camera.position and camera.target to \
+         choose"
     );
     assert_eq!(camera("fov = 40\nnear = 0\n"), "scene.toml:5:8: camera.near: must be positive, got 0");
     assert_eq!(
@@ -586,6 +616,31 @@ fn rotation_order_and_scale_give_the_documented_matrix() {
 }
 
 #[test]
+fn a_framed_camera_and_the_viewer_lights_arrive_as_written() {
+    let scene = parse(SPOT, "scene.toml").unwrap().load().unwrap();
+    assert_eq!(scene.camera, CameraPlacement::Framed(FramedCamera::DEFAULT), "no [camera]: the viewer's");
+    assert!(scene.lights.is_empty());
+    let text = format!(
+        "viewer_lights = true\n[camera]\nyaw = -20\npitch = 40\ndistance = 4\northographic = 2.5\nfar = 9\n\
+         [[lights]]\ntype = \"point\"\nposition = [0, 0, 1]\nspace = \"camera\"\n{SPOT}"
+    );
+    let scene = parse(text, "scene.toml").unwrap().load().unwrap();
+    let framed = FramedCamera {
+        yaw_degrees: -20.0,
+        pitch_degrees: 40.0,
+        distance: 4.0,
+        projection: Projection::Orthographic { height: 2.5 },
+        near: None,
+        far: Some(9.0),
+    };
+    assert_eq!(scene.camera, CameraPlacement::Framed(framed));
+    assert_eq!(scene.lights.len(), 3, "the file's light, then the viewer's two");
+    assert_eq!(scene.lights[0].space, LightSpace::Camera);
+    assert_eq!(scene.lights[0].kind, LightKind::Point { position: Vec3::Z });
+    assert_eq!(scene.lights[1..], defaults::VIEWER_LIGHTS);
+}
+
+#[test]
 fn defaults_and_values_arrive_as_written() {
     let text = format!(
         "[camera]\nposition = [0, 1, 4]\ntarget = [0, 0, 0]\northographic = 3\nnear = 0.5\nfar = 20\n\
@@ -593,9 +648,10 @@ fn defaults_and_values_arrive_as_written() {
          [[lights]]\ntype = \"point\"\nposition = [1, 2, 3]\ncolor = [1, 0.5, 0]\nintensity = 2\nshadows = true\n{SPOT}"
     );
     let scene = parse(text, "scene.toml").unwrap().load().unwrap();
-    assert_eq!(scene.camera.projection, Projection::Orthographic { height: 3.0 });
-    assert_eq!((scene.camera.near, scene.camera.far), (Some(0.5), Some(20.0)));
-    assert_eq!(scene.camera.up, Vec3::Y);
+    let camera = placed(&scene);
+    assert_eq!(camera.projection, Projection::Orthographic { height: 3.0 });
+    assert_eq!((camera.near, camera.far), (Some(0.5), Some(20.0)));
+    assert_eq!(camera.up, Vec3::Y);
     assert_eq!(scene.lights[0].kind, LightKind::Directional { direction: -Vec3::Y });
     // Directions too long (or too short) for f32 squares still have one.
     let text = format!(
@@ -603,14 +659,14 @@ fn defaults_and_values_arrive_as_written() {
          [[lights]]\ntype = \"directional\"\ndirection = [1e-30, 0, 0]\n{SPOT}"
     );
     let huge = parse(text, "scene.toml").unwrap().load().unwrap();
-    assert_eq!(huge.camera.up, Vec3::Y);
+    assert_eq!(placed(&huge).up, Vec3::Y);
     assert_eq!(huge.lights[0].kind, LightKind::Directional { direction: Vec3::X });
     assert_eq!((scene.lights[0].color, scene.lights[0].intensity, scene.lights[0].shadows), (Vec3::ONE, 1.0, false));
     assert_eq!(scene.lights[1].kind, LightKind::Point { position: Vec3::new(1.0, 2.0, 3.0) });
     assert_eq!((scene.lights[1].color, scene.lights[1].intensity), (Vec3::new(1.0, 0.5, 0.0), 2.0));
     assert!(scene.lights[1].shadows);
-    assert_eq!(scene.background, rastty::scene::Appearance::DEFAULT_BACKGROUND);
-    assert_eq!(scene.ambient, rastty::scene::AMBIENT);
+    assert_eq!(scene.background, defaults::BACKGROUND);
+    assert_eq!(scene.ambient, defaults::AMBIENT);
     assert!(!scene.ambient_occlusion);
     let m = &scene.objects[0].material;
     assert_eq!((m.filter, m.wrap), (FilterMode::Bilinear, WrapMode::Repeat));

@@ -28,7 +28,7 @@ fn from_text(text: &str) -> PreparedScene {
 }
 
 fn plan(scene: &PreparedScene, options: &PlanOptions) -> ScenePlan {
-    ScenePlan::new(scene, &scene.data().camera, (160, 120), options).unwrap_or_else(|e| panic!("{e}"))
+    ScenePlan::new(scene, &scene.camera(), (160, 120), options).unwrap_or_else(|e| panic!("{e}"))
 }
 
 fn without(effect: SceneEffect) -> PlanOptions {
@@ -52,7 +52,7 @@ fn every_example_scene_renders_a_picture() {
     assert_eq!(scenes.len(), 3, "{scenes:?}");
     for path in &scenes {
         let scene = prepared(path);
-        let image = render_scene_image(&scene, &scene.data().camera, (96, 72), 1, &PlanOptions::default())
+        let image = render_scene_image(&scene, &scene.camera(), (96, 72), 1, &PlanOptions::default())
             .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         assert_eq!((image.width, image.height, image.pixels.len()), (96, 72, 96 * 72));
         assert_not_blank(&path.display().to_string(), &image.pixels, scene.data().background);
@@ -69,7 +69,7 @@ fn the_docs_scenes_render_when_their_models_are_there() {
     }
     for path in scenes_in(&root().join("docs/scenes")) {
         let scene = prepared(&path);
-        let image = render_scene_image(&scene, &scene.data().camera, (64, 64), 1, &PlanOptions::default()).unwrap();
+        let image = render_scene_image(&scene, &scene.camera(), (64, 64), 1, &PlanOptions::default()).unwrap();
         assert_not_blank(&path.display().to_string(), &image.pixels, scene.data().background);
         let text = image.plan.to_string();
         assert!(text.contains("normals tangent-space map") && text.contains("shadow map of light 1"), "{text}");
@@ -168,7 +168,7 @@ fn switching_an_effect_off_draws_the_scene_as_if_it_did_not_ask_for_it() {
     let file_off =
         PreparedScene::new(parse(no_shadows, root().join("assets/scenes/x.toml")).unwrap().load().unwrap()).unwrap();
     let render = |scene: &PreparedScene, options: &PlanOptions| {
-        render_scene_image(scene, &scene.data().camera, (120, 90), 1, options).unwrap().pixels
+        render_scene_image(scene, &scene.camera(), (120, 90), 1, options).unwrap().pixels
     };
     let switched_off = render(&on, &without(SceneEffect::Shadows));
     assert_eq!(switched_off, render(&file_off, &PlanOptions::default()));
@@ -182,7 +182,7 @@ fn switching_an_effect_off_draws_the_scene_as_if_it_did_not_ask_for_it() {
 fn the_planned_variants_are_the_ones_drawn() {
     for name in ["spot_sun.toml", "spot_lamp.toml", "spot_herd.toml"] {
         let scene = example(name);
-        let image = render_scene_image(&scene, &scene.data().camera, (80, 60), 1, &PlanOptions::default()).unwrap();
+        let image = render_scene_image(&scene, &scene.camera(), (80, 60), 1, &PlanOptions::default()).unwrap();
         let planned: Vec<_> = image.plan.draws.iter().map(|d| d.variant).collect();
         assert_eq!(planned, image.report.variants, "{name}");
     }
@@ -198,7 +198,7 @@ struct Frame {
 /// Renders `scene` from its file's camera at `w x h` on `threads` threads.
 fn render_on_threads(scene: &PreparedScene, (w, h): (u32, u32), options: &PlanOptions, threads: usize) -> Frame {
     let (mut color, mut depth) = (vec![0u32; (w * h) as usize], vec![0f32; (w * h) as usize]);
-    let plan = ScenePlan::new(scene, &scene.data().camera, (w, h), options).unwrap();
+    let plan = ScenePlan::new(scene, &scene.camera(), (w, h), options).unwrap();
     let mut target = Target::new(Rgb888(&mut color), &mut depth[..], w, h).unwrap();
     SceneRenderer::with_threads(threads).render(scene, &plan, &mut target).unwrap();
     Frame { pixels: color, depth_bits: depth.iter().map(|d| d.to_bits()).collect() }
@@ -256,7 +256,7 @@ fn shadow_maps_are_kept_while_only_the_camera_moves() {
         let report = renderer.render(&scene, &plan, &mut target).unwrap();
         (report.shadow_passes[0].reused, color.clone())
     };
-    let camera = scene.data().camera;
+    let camera = scene.camera();
     let (reused, first) = frame(&camera);
     assert!(!reused, "the first frame draws its map");
     let (reused, again) = frame(&camera);
@@ -297,19 +297,19 @@ fn a_shadow_casting_point_light_inside_the_scene_is_an_error_naming_it() {
          [[lights]]\ntype = \"point\"\nposition = [0.1, 0.2, 0]\nshadows = true\n\
          [[objects]]\nmesh = \"builtin:spot\"\n",
     );
-    let error = ScenePlan::new(&scene, &scene.data().camera, (64, 64), &PlanOptions::default()).unwrap_err();
+    let error = ScenePlan::new(&scene, &scene.camera(), (64, 64), &PlanOptions::default()).unwrap_err();
     assert!(matches!(error, SceneRenderError::Shadow { .. }));
     let text = error.to_string();
     assert!(text.starts_with("light 2 (point at [0.1, 0.2, 0]): cannot cast shadows from inside"), "{text}");
     // Without shadows, the same light is fine.
-    assert!(ScenePlan::new(&scene, &scene.data().camera, (64, 64), &without(SceneEffect::Shadows)).is_ok());
+    assert!(ScenePlan::new(&scene, &scene.camera(), (64, 64), &without(SceneEffect::Shadows)).is_ok());
 }
 
 #[test]
 fn shadow_maps_follow_the_frame_size() {
     let scene = example("spot_sun.toml");
     let size = |w, h| {
-        ScenePlan::new(&scene, &scene.data().camera, (w, h), &PlanOptions::default()).unwrap().shadow_passes[0].map_size
+        ScenePlan::new(&scene, &scene.camera(), (w, h), &PlanOptions::default()).unwrap().shadow_passes[0].map_size
     };
     assert_eq!(size(200, 120), 512, "the smallest map");
     assert_eq!(size(512, 300), 512);

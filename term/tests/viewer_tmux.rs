@@ -7,7 +7,6 @@ use crate::common;
 
 use std::path::Path;
 use std::process::Command;
-use std::thread;
 use std::time::{Duration, Instant};
 
 use common::tmux::{SESSION, Tmux, process_gone, tmux_wanted};
@@ -125,7 +124,7 @@ fn a_scene_file_shows_and_its_effects_switch_off() {
         let screen = tmux.screen();
         (screen.contains("spot_sun.toml") && screen.contains("4 shadows on")).then_some(screen)
     });
-    assert!(hud.contains("scene perspective texture on wire off"), "HUD:\n{hud}");
+    assert!(hud.contains("phong perspective texture on wire off"), "HUD:\n{hud}");
     assert!(hud.contains("passes: 1 shadow"), "HUD:\n{hud}");
 
     // Shadows off: no shadow pass, and the picture changes (the ground under Spot is lit).
@@ -135,7 +134,8 @@ fn a_scene_file_shows_and_its_effects_switch_off() {
         (screen.contains("4 shadows off") && screen.contains("passes: 0 shadow")).then_some(screen)
     });
     assert_ne!(off, hud);
-    // m is for models: nothing changes; orbiting does.
+    // m switches the whole scene to the next shading mode (the depth view); m five more times comes back to the
+    // scene's own look; orbiting changes the picture.
     tmux.send_keys("i");
     let mut last = String::new();
     let plain = tmux.wait_for("the HUD to go", || {
@@ -146,8 +146,17 @@ fn a_scene_file_shows_and_its_effects_switch_off() {
     });
     assert_ne!(plain, first, "switching shadows off changed nothing");
     tmux.send_keys("m");
-    thread::sleep(Duration::from_millis(300));
-    assert_eq!(tmux.wait_for_picture(), plain, "m changed a scene's picture");
+    tmux.wait_for("the depth view after m", || (tmux.screen_escaped() != plain).then_some(()));
+    for _ in 0..5 {
+        tmux.send_keys("m");
+    }
+    let mut last = String::new();
+    tmux.wait_for("the scene's own look after a whole cycle of m", || {
+        let screen = tmux.screen_escaped();
+        let steady = screen == plain && screen == last;
+        last = screen;
+        steady.then_some(())
+    });
     tmux.send_keys("Left");
     tmux.wait_for("the picture to change after Left", || (tmux.screen_escaped() != plain).then_some(()));
 

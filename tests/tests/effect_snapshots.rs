@@ -42,7 +42,7 @@ static SPOT_SUN: LazyLock<PreparedScene> = LazyLock::new(|| example("spot_sun.to
 /// `scene` through its own camera at [`SIZE`], with the effects `effects` allows (textures on, no wireframe).
 fn render(scene: &PreparedScene, effects: EffectToggles) -> Image {
     let options = PlanOptions { effects, ..PlanOptions::default() };
-    let image = render_scene_image(scene, &scene.data().camera, SIZE, 1, &options).unwrap_or_else(|e| panic!("{e}"));
+    let image = render_scene_image(scene, &scene.camera(), SIZE, 1, &options).unwrap_or_else(|e| panic!("{e}"));
     Image { width: image.width, height: image.height, pixels: image.pixels }
 }
 

@@ -2,8 +2,10 @@
 //! image cannot pass) in every shading mode, textured and not, through both lenses, with wireframe, cut by the
 //! near plane, from behind, and at non-square sizes.
 //!
-//! Every scene is rendered twice, as a whole frame (`Target::new`) and as 16-row bands (`Target::band` over one
-//! 16-row buffer, rows assembled), and both must match the golden `tests/snapshots/NAME.png`. A failure writes
+//! The model is drawn as `rastty` draws it: loaded as a scene of one object ([`SceneData::from_model`]), planned
+//! and drawn by the scene renderer. Every scene is rendered twice, as a whole frame on one thread and as 16-row
+//! bands (a `Target::band` over one 16-row buffer, rows assembled), and both must match the golden
+//! `tests/snapshots/NAME.png`. A failure writes
 //! `NAME.actual.png` and `NAME.diff.png` (or `NAME.bands.actual.png` and `NAME.bands.diff.png` for the banded
 //! rendering) beside the golden. `UPDATE_SNAPSHOTS=1 cargo test -p rastty-tests` re-blesses the goldens.
 
@@ -12,7 +14,8 @@ use crate::snapshot;
 use std::sync::LazyLock;
 
 use rastty::builtin::builtin_model;
-use rastty::scene::{Appearance, Lens, OrbitCamera, Scene, ShadingMode};
+use rastty::scene_file::SceneData;
+use rastty::scene_render::{CameraOptions, PlanOptions, PreparedScene, ScenePlan, SceneRenderer, ShadingMode};
 use rastty_core::target::{Rgb888, Target};
 
 use snapshot::{Comparison, Failure, Image, Mode, Passed, Snapshot, TOLERANCE, compare, golden_dir};
@@ -20,16 +23,19 @@ use snapshot::{Comparison, Failure, Image, Mode, Passed, Snapshot, TOLERANCE, co
 /// Rows of the band buffer used for the banded rendering.
 const BAND_ROWS: u32 = 16;
 
-/// The built-in model, loaded once for all tests.
-static SPOT: LazyLock<Scene> = LazyLock::new(|| Scene::new(builtin_model().expect("the built-in model loads")));
+/// The built-in model as a scene, loaded once for all tests.
+static SPOT: LazyLock<PreparedScene> = LazyLock::new(|| {
+    let model = builtin_model().expect("the built-in model loads");
+    PreparedScene::new(SceneData::from_model(model, "builtin:spot".into())).expect("the scene prepares")
+});
 
 /// One scene of the matrix.
 #[derive(Clone, Copy, Debug)]
 struct Shot {
     width: u32,
     height: u32,
-    camera: OrbitCamera,
-    appearance: Appearance,
+    camera: CameraOptions,
+    options: PlanOptions,
 }
 
 impl Shot {
@@ -38,29 +44,32 @@ impl Shot {
         Self {
             width: 200,
             height: 150,
-            camera: OrbitCamera::default(),
-            appearance: Appearance { shading, textures, ..Appearance::default() },
+            camera: CameraOptions::default(),
+            options: PlanOptions { shading, textures, ..PlanOptions::default() },
         }
     }
 
-    fn aspect(&self) -> f32 {
-        self.width as f32 / self.height as f32
+    /// The frame's plan.
+    fn plan(&self) -> ScenePlan {
+        let camera = self.camera.orbit(&SPOT).camera;
+        ScenePlan::new(&SPOT, &camera, (self.width, self.height), &self.options).expect("the scene plans")
     }
 
-    /// The whole frame in one target.
+    /// The whole frame in one target, on one thread.
     fn render_full(&self) -> Image {
         let n = self.width as usize * self.height as usize;
         let mut pixels = vec![0u32; n];
         let mut depth = vec![0f32; n];
         let mut target =
             Target::new(Rgb888(&mut pixels), &mut depth[..], self.width, self.height).expect("a valid frame");
-        SPOT.render(&mut target, &self.camera, &self.appearance, self.aspect()).expect("the scene renders");
+        SceneRenderer::with_threads(1).render(&SPOT, &self.plan(), &mut target).expect("the scene renders");
         Image { width: self.width, height: self.height, pixels }
     }
 
     /// The frame as bands of [`BAND_ROWS`] rows (the last one shorter when the height is not a multiple), each
     /// rendered into the same small buffers, which hold a garbage colour before every band.
     fn render_bands(&self) -> Image {
+        let (plan, mut renderer) = (self.plan(), SceneRenderer::new());
         let width = self.width as usize;
         let mut color = vec![0u32; width * BAND_ROWS as usize];
         let mut depth = vec![0f32; width * BAND_ROWS as usize];
@@ -71,7 +80,7 @@ impl Shot {
             color.fill(0x00ff_00ff);
             let mut band = Target::band(Rgb888(&mut color[..n]), &mut depth[..n], self.width, self.height, y0..y1)
                 .expect("a valid band");
-            SPOT.render(&mut band, &self.camera, &self.appearance, self.aspect()).expect("the band renders");
+            renderer.render(&SPOT, &plan, &mut band).expect("the band renders");
             pixels.extend_from_slice(&color[..n]);
         }
         Image { width: self.width, height: self.height, pixels }
@@ -159,8 +168,8 @@ fn normals() {
 // Lens, wireframe, near plane, viewpoint, size
 
 /// The default view's framing through a parallel projection.
-fn orthographic() -> OrbitCamera {
-    OrbitCamera { lens: Lens::Orthographic { fov_degrees: OrbitCamera::DEFAULT_FOV_DEGREES }, ..OrbitCamera::default() }
+fn orthographic() -> CameraOptions {
+    CameraOptions { orthographic: true, ..CameraOptions::default() }
 }
 
 #[test]
@@ -177,9 +186,9 @@ fn orthographic_depth() {
 fn wireframe() {
     // Larger and closer than the other scenes, so that Spot's triangles are several pixels wide and the lines
     // stay apart.
-    let camera = OrbitCamera { distance: 2.0, ..OrbitCamera::default() };
+    let camera = CameraOptions { distance: Some(2.0), ..CameraOptions::default() };
     let mut shot = Shot { width: 320, height: 240, camera, ..Shot::new(ShadingMode::Flat, false) };
-    shot.appearance.wireframe = true;
+    shot.options.wireframe = true;
     shot.check("wireframe");
 }
 
@@ -187,13 +196,13 @@ fn wireframe() {
 fn near_plane_cut() {
     // The near plane 0.6 fitted radii in front of the model's centre slices through the face: with back faces
     // culled, the background shows through the opened head.
-    let camera = OrbitCamera { near: Some(2.2), ..OrbitCamera::default() };
+    let camera = CameraOptions { near: Some(2.2), ..CameraOptions::default() };
     Shot { camera, ..Shot::new(ShadingMode::Phong, true) }.check("near_plane_cut");
 }
 
 #[test]
 fn behind() {
-    let camera = OrbitCamera::new(180.0, 15.0, OrbitCamera::DEFAULT_DISTANCE, OrbitCamera::default().lens);
+    let camera = CameraOptions { yaw_degrees: Some(180.0), ..CameraOptions::default() };
     Shot { camera, ..Shot::new(ShadingMode::Phong, true) }.check("behind");
 }
 

@@ -38,9 +38,10 @@
 //!
 //! # Use
 //!
-//! Build a [`Scene`] by hand, or from a rastty model and camera with [`Scene::from_model`] (the same picture as
-//! [`rastty::scene::Scene::draw`] draws), then call [`render`] for a [`ReferenceImage`], or make a [`Renderer`] to
-//! render and also [`Renderer::probe`] single points.
+//! Build a [`Scene`] by hand, or from a rastty scene, camera and plan options with [`Scene::from_scene`] (the
+//! same picture as rastty's scene renderer, [`rastty::scene_render::SceneRenderer`], draws: a model shown without
+//! a scene file is a scene too, [`rastty::scene_file::SceneData::from_model`]), then call [`render`] for a
+//! [`ReferenceImage`], or make a [`Renderer`] to render and also [`Renderer::probe`] single points.
 //!
 //! ```
 //! use rastty_bench::reference::{Camera, Object, Projection, Scene, Shading, render};
@@ -64,7 +65,7 @@
 //! assert_eq!(image.coverage[3], 0.0);
 //! ```
 
-mod from_model;
+mod from_scene;
 mod image;
 pub mod math;
 mod render;
@@ -82,6 +83,7 @@ pub use texture::sample_bilinear;
 
 use math::Mat4;
 use rastty::model::TextureImage;
+use rastty::scene_render::SceneRenderError;
 
 /// Everything the reference renderer draws: image size, camera, lights, background and objects.
 #[derive(Clone, Debug, PartialEq)]
@@ -277,8 +279,10 @@ pub enum ReferenceError {
         /// What is wrong.
         reason: String,
     },
-    /// [`Scene::from_model`] was asked for something the reference does not draw.
+    /// [`Scene::from_scene`] was asked for something the reference does not draw.
     Unsupported(&'static str),
+    /// rastty refuses to plan the frame [`Scene::from_scene`] was asked for (other than for its camera).
+    Plan(SceneRenderError),
 }
 
 impl fmt::Display for ReferenceError {
@@ -288,6 +292,7 @@ impl fmt::Display for ReferenceError {
             Self::Camera(e) => write!(f, "bad camera: {e}"),
             Self::Object { object, reason } => write!(f, "object {object}: {reason}"),
             Self::Unsupported(what) => write!(f, "the reference renderer does not draw {what}"),
+            Self::Plan(e) => write!(f, "rastty cannot plan the frame: {e}"),
         }
     }
 }

@@ -218,13 +218,13 @@ impl Samples {
     }
 }
 
-/// The plan of `scene`'s frame at `size` with its file's camera and `effects` allowed.
+/// The plan of `scene`'s frame at `size` with its own camera ([`PreparedScene::camera`]) and `effects` allowed.
 pub(super) fn plan(
     scene: &PreparedScene,
     size: (u32, u32),
     effects: EffectToggles,
 ) -> Result<ScenePlan, SceneRenderError> {
-    ScenePlan::new(scene, &scene.data().camera, size, &PlanOptions { effects, ..PlanOptions::default() })
+    ScenePlan::new(scene, &scene.camera(), size, &PlanOptions { effects, ..PlanOptions::default() })
 }
 
 /// Frames of one scene at one size, drawn into one colour and one depth buffer and timed: what the timing reports
@@ -468,7 +468,7 @@ pub fn run(report: &EffectsReport, scene: &PreparedScene, out: &mut dyn Write) -
     let plans = report
         .sizes
         .iter()
-        .map(|&size| ScenePlan::new(scene, &scene.data().camera, size, &PlanOptions::default()))
+        .map(|&size| ScenePlan::new(scene, &scene.camera(), size, &PlanOptions::default()))
         .collect::<Result<Vec<_>, _>>()?;
     let threads = report.thread_count();
     writeln!(out, "{}", header(report, &plans, threads, &super::machine_description()))?;

@@ -11,7 +11,7 @@
 use std::io::Write;
 
 use super::terminal::{ReportError, Turntable};
-use rastty::scene::Scene;
+use rastty::scene_render::PreparedScene;
 use rastty::screen::tolerance::color_distance;
 use rastty::screen::{CellGrid, ColorMode, Encoder, Tolerance};
 use rastty::viewer::TOLERANCES;
@@ -44,7 +44,7 @@ pub struct ToleranceRow {
 }
 
 /// Renders `frames` frames, turning the built-in model by `step` radians each (the first unturned).
-fn frames(scene: &Scene, frames: usize, step: f32) -> Result<Vec<CellGrid>, ReportError> {
+fn frames(scene: &PreparedScene, frames: usize, step: f32) -> Result<Vec<CellGrid>, ReportError> {
     let mut turntable = Turntable::with_step(scene, SIZE, ColorMode::TrueColor, step);
     (0..=frames).map(|_| turntable.next_frame().map(|(grid, _)| grid)).collect()
 }
@@ -83,7 +83,11 @@ fn moving(grids: &[CellGrid], tolerance: Tolerance) -> Moving {
 ///
 /// # Errors
 /// [`ReportError`] when a frame cannot be drawn.
-pub fn measure(scene: &Scene, turntable_frames: usize, key_presses: usize) -> Result<Vec<ToleranceRow>, ReportError> {
+pub fn measure(
+    scene: &PreparedScene,
+    turntable_frames: usize,
+    key_presses: usize,
+) -> Result<Vec<ToleranceRow>, ReportError> {
     let step = std::f32::consts::TAU / turntable_frames.max(1) as f32;
     let turntable = frames(scene, turntable_frames, step)?;
     let keys = frames(scene, key_presses, KEY_STEP_DEGREES.to_radians())?;
@@ -147,13 +151,13 @@ pub fn write_table(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rastty::builtin::builtin_model;
+    use crate::report::terminal::builtin_scene;
 
     /// Exact is exact and costs the most; every error stays within its tolerance; more tolerance never costs
     /// more bytes on these frames.
     #[test]
     fn tolerances_trade_bytes_for_bounded_error() {
-        let scene = Scene::new(builtin_model().expect("built-in model"));
+        let scene = builtin_scene().expect("built-in model");
         let rows = measure(&scene, 12, 3).expect("measured");
         assert_eq!(rows.len(), TOLERANCES.len());
         assert_eq!(rows[0].delta_e, 0.0);

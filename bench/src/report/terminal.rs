@@ -1,8 +1,9 @@
 //! `rastty-bench terminal`: what the viewer's frames cost, for a turntable of the built-in model.
 //!
-//! For each terminal size and colour mode, the built-in model is turned once around (the default camera, turned
-//! with [`OrbitCamera::rotate`] in equal steps about the screen's vertical axis) and every frame goes through the
-//! viewer's pipeline: [`Scene::render`] into a pixel buffer of the terminal's pixel size, half-block cells
+//! For each terminal size and colour mode, the built-in model is turned once around (the viewer's camera for a
+//! model, [`FramedCamera::DEFAULT`], turned with [`Orbit::rotate`] in equal steps about the scene's vertical axis)
+//! and every frame goes through the viewer's pipeline: a [`ScenePlan`] for the terminal's physical aspect and a
+//! [`SceneRenderer`] (as the viewer keeps one) into a pixel buffer of the terminal's pixel size, half-block cells
 //! ([`CellMode::HalfBlock`]), then the [`Encoder`] (a delta against the frame before) and, for comparison,
 //! [`naive_full_frame`].
 //!
@@ -17,9 +18,9 @@ use std::time::{Duration, Instant};
 use rastty_core::target::{Rgb888, Target};
 
 use super::median;
-use rastty::builtin::{BUILTIN_NAME, builtin_model};
-use rastty::model::LoadError;
-use rastty::scene::{Appearance, OrbitCamera, RenderError, Scene};
+use rastty::builtin::BUILTIN_NAME;
+use rastty::scene_file::{FramedCamera, OpenError, Projection, open};
+use rastty::scene_render::{Orbit, PlanOptions, PreparedScene, ScenePlan, SceneRenderError, SceneRenderer};
 use rastty::screen::{CellGrid, CellMode, ColorMode, Encoder, PixelFrame, naive_full_frame};
 
 /// Terminal sizes measured, in cells (columns, rows).
@@ -77,9 +78,9 @@ impl TerminalReport {
 #[derive(Debug)]
 pub enum ReportError {
     /// The built-in model did not load.
-    Load(LoadError),
-    /// A frame could not be drawn.
-    Render(RenderError),
+    Load(OpenError),
+    /// A frame could not be planned or drawn.
+    Render(SceneRenderError),
     /// The frame size is not one the renderer takes, or the frame count is zero.
     Setup(String),
     /// The report could not be written.
@@ -120,7 +121,7 @@ pub struct Measurement {
     pub delta_bytes: Vec<usize>,
     /// [`naive_full_frame`] bytes of the same frames.
     pub naive_bytes: Vec<usize>,
-    /// Render time ([`Scene::render`], clearing included) of the same frames.
+    /// Render time (the [`ScenePlan`] and [`SceneRenderer::render`], clearing included) of the same frames.
     pub render_times: Vec<Duration>,
     /// Encode time ([`Encoder::encode`]) of the same frames.
     pub encode_times: Vec<Duration>,
@@ -175,9 +176,11 @@ fn mean(values: &[usize]) -> f64 {
 
 /// The turntable frames of one terminal size and colour mode, as the viewer would make them.
 pub(super) struct Turntable<'a> {
-    scene: &'a Scene,
-    camera: OrbitCamera,
-    appearance: Appearance,
+    scene: &'a PreparedScene,
+    orbit: Orbit,
+    options: PlanOptions,
+    /// Kept from frame to frame, as the viewer keeps its renderer.
+    renderer: SceneRenderer,
     /// Radians turned between two frames.
     step: f32,
     colors: ColorMode,
@@ -190,17 +193,18 @@ pub(super) struct Turntable<'a> {
 
 impl<'a> Turntable<'a> {
     /// `frames` frames per turn at `cols` x `rows` cells.
-    fn new(scene: &'a Scene, size: (u16, u16), colors: ColorMode, frames: usize) -> Self {
+    fn new(scene: &'a PreparedScene, size: (u16, u16), colors: ColorMode, frames: usize) -> Self {
         Self::with_step(scene, size, colors, std::f32::consts::TAU / frames.max(1) as f32)
     }
 
     /// Frames `step` radians apart at `cols` x `rows` cells.
-    pub(super) fn with_step(scene: &'a Scene, (cols, rows): (u16, u16), colors: ColorMode, step: f32) -> Self {
+    pub(super) fn with_step(scene: &'a PreparedScene, (cols, rows): (u16, u16), colors: ColorMode, step: f32) -> Self {
         let (width, height) = CellMode::HalfBlock.pixel_size(usize::from(cols), usize::from(rows));
         Self {
             scene,
-            camera: OrbitCamera::default(),
-            appearance: Appearance::default(),
+            orbit: Orbit::new(scene.camera()),
+            options: PlanOptions::default(),
+            renderer: SceneRenderer::new(),
             step,
             colors,
             width,
@@ -218,13 +222,16 @@ impl<'a> Turntable<'a> {
         let mut target =
             Target::new(Rgb888(&mut self.pixels), &mut self.depth[..], self.width as u32, self.height as u32)
                 .map_err(too_big)?;
+        let size = (self.width as u32, self.height as u32);
         let start = Instant::now();
-        self.scene.render(&mut target, &self.camera, &self.appearance, self.aspect).map_err(ReportError::Render)?;
+        let plan = ScenePlan::with_aspect(self.scene, &self.orbit.camera, size, self.aspect, &self.options)
+            .map_err(ReportError::Render)?;
+        self.renderer.render(self.scene, &plan, &mut target).map_err(ReportError::Render)?;
         let render_time = start.elapsed();
-        let background = rastty_core::color::pack_rgb888(self.appearance.background);
+        let background = rastty_core::color::pack_rgb888(plan.background);
         let frame = PixelFrame::new(&self.pixels, self.width, self.height);
         let grid = CellMode::HalfBlock.to_cells(frame, self.colors, background);
-        self.camera.rotate(self.step, 0.0);
+        self.orbit.rotate(self.step, 0.0);
         Ok((grid, render_time))
     }
 }
@@ -233,7 +240,12 @@ impl<'a> Turntable<'a> {
 ///
 /// # Errors
 /// [`ReportError::Setup`] for zero frames or a size the renderer does not take; [`ReportError::Render`].
-pub fn measure(scene: &Scene, size: (u16, u16), colors: ColorMode, frames: usize) -> Result<Measurement, ReportError> {
+pub fn measure(
+    scene: &PreparedScene,
+    size: (u16, u16),
+    colors: ColorMode,
+    frames: usize,
+) -> Result<Measurement, ReportError> {
     if frames == 0 {
         return Err(ReportError::Setup("the turntable needs at least one frame".into()));
     }
@@ -273,15 +285,25 @@ pub fn header(report: &TerminalReport, machine: &str) -> String {
     let degrees = 360.0 / frames.max(1) as f64;
     let encode_goal = GOAL_ENCODE_TIME.as_secs_f64() * 1e3;
     let (goal_cols, goal_rows) = GOAL_ENCODE_SIZE;
+    let camera = FramedCamera::DEFAULT;
     [
         "### Terminal frames: a turntable of the built-in model".to_owned(),
         String::new(),
         format!("- command: `{}` ({build})", report.command_line()),
         format!("- machine: {machine}"),
         format!(
-            "- scene: {BUILTIN_NAME}, `OrbitCamera::default()` turned {frames} times by {degrees:.3}° about the \
-             screen's vertical axis (one full turn); default look (Phong, textured); half-block cells, cell aspect \
-             {CELL_ASPECT}"
+            "- scene: {BUILTIN_NAME} as the viewer shows it, its camera (yaw {}°, pitch {}°, {} radii away, {}) \
+             turned {frames} times by {degrees:.3}° about the vertical axis (`Orbit::rotate`, one full turn); \
+             default look (Phong, textured, the viewer's lights); half-block cells, cell aspect {CELL_ASPECT}; drawn \
+             by one `SceneRenderer` on {} threads",
+            camera.yaw_degrees,
+            camera.pitch_degrees,
+            camera.distance,
+            match camera.projection {
+                Projection::Perspective { fov_degrees } => format!("{fov_degrees}° lens"),
+                Projection::Orthographic { height } => format!("orthographic, {height} radii high"),
+            },
+            SceneRenderer::new().threads(),
         ),
         format!(
             "- first frame: the encoder's full redraw (clear + every non-blank cell), in its own column and in no \
@@ -324,13 +346,22 @@ pub fn table_row(m: &Measurement) -> String {
     )
 }
 
+/// The built-in model as the viewer shows it without a scene file ([`open`]`(None)`).
+///
+/// # Errors
+/// [`ReportError::Load`], [`ReportError::Render`] (a model without a finite vertex).
+pub fn builtin_scene() -> Result<PreparedScene, ReportError> {
+    let opened = open(None).map_err(ReportError::Load)?;
+    PreparedScene::new(opened.data).map_err(ReportError::Render)
+}
+
 /// Measures everything `report` asks for and writes the Markdown report to `out`, a row as soon as it is
 /// measured; returns the measurements.
 ///
 /// # Errors
 /// [`ReportError`].
 pub fn run(report: &TerminalReport, out: &mut dyn Write) -> Result<Vec<Measurement>, ReportError> {
-    let scene = Scene::new(builtin_model().map_err(ReportError::Load)?);
+    let scene = builtin_scene()?;
     writeln!(out, "{}", header(report, &super::machine_description()))?;
     out.flush()?;
     let mut results = Vec::new();
@@ -362,8 +393,8 @@ pub fn run(report: &TerminalReport, out: &mut dyn Write) -> Result<Vec<Measureme
 mod tests {
     use super::*;
 
-    fn scene() -> Scene {
-        Scene::new(builtin_model().expect("built-in model"))
+    fn scene() -> PreparedScene {
+        builtin_scene().expect("built-in model")
     }
 
     /// The byte figures are the encoder's and `naive_full_frame`'s own lengths for the same frames, and the

@@ -10,9 +10,12 @@ use rastty_core::texture::{FilterMode, WrapMode};
 use toml::Spanned;
 
 use super::SceneFile;
+use super::defaults;
 use super::error::{SceneFileError, SceneFileErrorKind};
+use super::hex_color::parse_hex_color;
 use super::loaded::{
-    LightKind, NormalMap, ObjectMaterial, Projection, SceneCamera, SceneData, SceneLight, SceneObject,
+    CameraPlacement, FramedCamera, LightKind, NormalMap, ObjectMaterial, Projection, SceneCamera, SceneData,
+    SceneLight, SceneObject,
 };
 use super::schema::{CameraSpec, Filter, LightSpec, LightType, MaterialSpec, ObjectSpec, Triple, Wrap};
 use super::transform::object_transform;
@@ -20,7 +23,6 @@ use super::validate::{BUILTIN_PREFIX, Checker, unit};
 use crate::builtin::builtin_model;
 use crate::escaped::{Escaped, path_text};
 use crate::model::{Model, TextureImage, load_obj};
-use crate::scene::{AMBIENT, Appearance, parse_hex_color};
 
 fn vec3(t: Triple) -> Vec3 {
     Vec3::new(t[0], t[1], t[2])
@@ -46,38 +48,53 @@ pub(crate) fn load_scene_file(file: &SceneFile) -> Result<SceneData, SceneFileEr
     for (i, object) in spec.objects.get_ref().iter().enumerate() {
         objects.push(loader.object(object.get_ref(), &format!("objects[{i}]"))?);
     }
-    let background = spec
-        .background
-        .as_ref()
-        .and_then(|b| parse_hex_color(b.get_ref()).ok())
-        .unwrap_or(Appearance::DEFAULT_BACKGROUND);
+    let background =
+        spec.background.as_ref().and_then(|b| parse_hex_color(b.get_ref()).ok()).unwrap_or(defaults::BACKGROUND);
     let Loader { images, warnings, .. } = loader;
+    let mut lights: Vec<SceneLight> = spec.lights.iter().map(|l| light(l.get_ref())).collect();
+    if spec.viewer_lights {
+        lights.extend(defaults::VIEWER_LIGHTS);
+    }
     Ok(SceneData {
-        camera: camera(spec.camera.get_ref()),
-        lights: spec.lights.iter().map(|l| light(l.get_ref())).collect(),
+        camera: spec.camera.as_ref().map_or(CameraPlacement::Framed(FramedCamera::DEFAULT), |c| camera(c.get_ref())),
+        lights,
         objects,
         background,
-        ambient: vec3_or(&spec.ambient, AMBIENT),
+        ambient: vec3_or(&spec.ambient, defaults::AMBIENT),
         ambient_occlusion: spec.ambient_occlusion,
         images,
         warnings,
     })
 }
 
-fn camera(c: &CameraSpec) -> SceneCamera {
+fn camera(c: &CameraSpec) -> CameraPlacement {
     let projection = match (&c.fov, &c.orthographic) {
+        (_, Some(height)) if c.fov.is_none() => Projection::Orthographic { height: *height.get_ref() },
         (Some(fov), _) => Projection::Perspective { fov_degrees: *fov.get_ref() },
-        (None, Some(height)) => Projection::Orthographic { height: *height.get_ref() },
-        // Refused by validation; a default lens keeps this total.
-        (None, None) => Projection::Perspective { fov_degrees: crate::scene::OrbitCamera::DEFAULT_FOV_DEGREES },
+        _ => FramedCamera::DEFAULT.projection,
     };
-    SceneCamera {
-        position: vec3(*c.position.get_ref()),
-        target: vec3(*c.target.get_ref()),
-        up: c.up.as_ref().and_then(|u| unit(*u.get_ref())).unwrap_or(Vec3::Y),
-        projection,
-        near: c.near.as_ref().map(|v| *v.get_ref()),
-        far: c.far.as_ref().map(|v| *v.get_ref()),
+    let (near, far) = (c.near.as_ref().map(|v| *v.get_ref()), c.far.as_ref().map(|v| *v.get_ref()));
+    match (&c.position, &c.target) {
+        (Some(position), Some(target)) => CameraPlacement::Placed(SceneCamera {
+            position: vec3(*position.get_ref()),
+            target: vec3(*target.get_ref()),
+            up: c.up.as_ref().and_then(|u| unit(*u.get_ref())).unwrap_or(Vec3::Y),
+            projection,
+            near,
+            far,
+        }),
+        // Validation admits a framed camera only without `position` and `target`.
+        _ => {
+            let d = FramedCamera::DEFAULT;
+            CameraPlacement::Framed(FramedCamera {
+                yaw_degrees: c.yaw.as_ref().map_or(d.yaw_degrees, |v| *v.get_ref()),
+                pitch_degrees: c.pitch.as_ref().map_or(d.pitch_degrees, |v| *v.get_ref()),
+                distance: c.distance.as_ref().map_or(d.distance, |v| *v.get_ref()),
+                projection,
+                near,
+                far,
+            })
+        }
     }
 }
 
@@ -93,6 +110,7 @@ fn light(l: &LightSpec) -> SceneLight {
         color: vec3_or(&l.color, Vec3::ONE),
         intensity: l.intensity.as_ref().map_or(1.0, |v| *v.get_ref()),
         shadows: l.shadows,
+        space: l.space,
     }
 }
 

@@ -7,21 +7,21 @@ use rastty_core::camera::{CameraError, look_at};
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::texture::{FilterMode, WrapMode};
 
-use super::schema::NormalSpace;
+use super::schema::{LightSpace, NormalSpace};
 use crate::model::{self, Model, TextureImage};
 
 /// Everything a scene file describes, loaded and checked, ready for a renderer.
 #[derive(Clone, Debug)]
 pub struct SceneData {
-    /// The camera.
-    pub camera: SceneCamera,
+    /// The camera: placed by the file, or framed around the scene.
+    pub camera: CameraPlacement,
     /// The lights, in file order (possibly none).
     pub lights: Vec<SceneLight>,
     /// The objects, in file order (at least one).
     pub objects: Vec<SceneObject>,
-    /// The background colour (the file's, or [`crate::scene::Appearance::DEFAULT_BACKGROUND`]).
+    /// The background colour (the file's, or [`super::defaults::BACKGROUND`]).
     pub background: Vec3,
-    /// The ambient light (the file's, or [`crate::scene::AMBIENT`]).
+    /// The ambient light (the file's, or [`super::defaults::AMBIENT`]).
     pub ambient: Vec3,
     /// Whether ambient occlusion is wanted.
     pub ambient_occlusion: bool,
@@ -34,7 +34,56 @@ pub struct SceneData {
     pub warnings: Vec<String>,
 }
 
-/// The camera of a scene file.
+/// Where a scene's camera is: placed at a point, or framed around the scene (resolved once its bounds are known:
+/// [`crate::scene_render::PreparedScene::camera`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum CameraPlacement {
+    /// At a position, looking at a target.
+    Placed(SceneCamera),
+    /// Around the scene's bounding sphere.
+    Framed(FramedCamera),
+}
+
+/// A camera looking at the centre of the scene's bounding sphere from outside it, every length in radii of the
+/// sphere: the viewer's camera for a model, and a scene file's `[camera]` without `position` and `target`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FramedCamera {
+    /// The scene turned about the vertical axis, in degrees: positive turns its front to the right (the eye goes
+    /// round to the left).
+    pub yaw_degrees: f32,
+    /// The eye's elevation above the horizontal plane through the centre, in degrees.
+    pub pitch_degrees: f32,
+    /// The eye's distance from the centre, in radii.
+    pub distance: f32,
+    /// The lens (an orthographic height in radii).
+    pub projection: Projection,
+    /// The near plane's distance in radii, if given.
+    pub near: Option<f32>,
+    /// The far plane's distance in radii, if given.
+    pub far: Option<f32>,
+}
+
+impl FramedCamera {
+    /// The viewer's camera: yaw 30, pitch 15, 2.8 radii away, a 40 degree perspective lens, planes around the
+    /// scene.
+    pub const DEFAULT: Self = Self {
+        yaw_degrees: 30.0,
+        pitch_degrees: 15.0,
+        distance: 2.8,
+        projection: Projection::Perspective { fov_degrees: 40.0 },
+        near: None,
+        far: None,
+    };
+}
+
+impl Default for FramedCamera {
+    /// [`Self::DEFAULT`].
+    fn default() -> Self {
+        Self::DEFAULT
+    }
+}
+
+/// A camera at a point: a scene file's placed camera, or a framed or orbited one resolved.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SceneCamera {
     /// The eye.
@@ -67,12 +116,12 @@ impl SceneCamera {
 pub enum Projection {
     /// Perspective.
     Perspective {
-        /// The vertical field of view in degrees, strictly between 0 and 180.
+        /// The field of view across the frame's shorter side in degrees, strictly between 0 and 180.
         fov_degrees: f32,
     },
     /// Orthographic (parallel rays).
     Orthographic {
-        /// How much of the world the view shows vertically, in world units (positive).
+        /// How much of the world the view shows across the frame's shorter side, in world units (positive).
         height: f32,
     },
 }
@@ -88,6 +137,8 @@ pub struct SceneLight {
     pub intensity: f32,
     /// Whether it casts shadows.
     pub shadows: bool,
+    /// Whether its direction or position is in world or camera coordinates.
+    pub space: LightSpace,
 }
 
 /// The kind of a light and where it is.
@@ -96,7 +147,7 @@ pub enum LightKind {
     /// Parallel rays.
     Directional {
         /// The unit direction the light travels, from the light toward the scene (the opposite of the core's
-        /// [`rastty_core::shading::Light::to_light`]).
+        /// `to_light`).
         direction: Vec3,
     },
     /// Rays from one point.

@@ -1,4 +1,5 @@
-//! Scene files: a camera, lights and any number of placed, textured meshes, written in TOML.
+//! Scene files: a camera, lights and any number of placed, textured meshes, written in TOML; and a model file
+//! loaded as the scene of that one model ([`SceneData::from_model`]), so that one renderer draws both ([`open`]).
 //!
 //! [`load`] reads a scene file, checks it, and loads every mesh and image it names, giving a [`SceneData`] of
 //! owned data. [`parse`] only parses and checks text (no file is touched), giving a [`SceneFile`] whose
@@ -12,7 +13,7 @@
 //!
 //! # Example
 //! ```
-//! use rastty::scene_file::{LightKind, Projection, parse};
+//! use rastty::scene_file::{CameraPlacement, LightKind, Projection, parse};
 //!
 //! let text = r#"
 //! [camera]
@@ -30,7 +31,8 @@
 //! scale = 2
 //! "#;
 //! let scene = parse(text, "example.toml").unwrap().load().unwrap();
-//! assert_eq!(scene.camera.projection, Projection::Perspective { fov_degrees: 40.0 });
+//! let CameraPlacement::Placed(camera) = scene.camera else { panic!("a placed camera") };
+//! assert_eq!(camera.projection, Projection::Perspective { fov_degrees: 40.0 });
 //! assert!(matches!(scene.lights[0].kind, LightKind::Directional { .. }));
 //! assert!(scene.lights[0].shadows);
 //! assert!(scene.objects[0].model.triangle_count() > 0);
@@ -40,19 +42,28 @@
 //! assert_eq!(error.to_string(), "bad.toml:5:7: camera.fov: must be between 0 and 180 degrees, got 200");
 //! ```
 
+pub mod defaults;
 mod error;
+mod hex_color;
 mod key_path;
 mod load;
 mod loaded;
 mod location;
+mod model_scene;
+mod open;
 pub mod schema;
 mod transform;
 mod validate;
 
 pub use error::{SceneFileError, SceneFileErrorKind};
-pub use loaded::{LightKind, NormalMap, ObjectMaterial, Projection, SceneCamera, SceneData, SceneLight, SceneObject};
+pub use hex_color::parse_hex_color;
+pub use loaded::{
+    CameraPlacement, FramedCamera, LightKind, NormalMap, ObjectMaterial, Projection, SceneCamera, SceneData,
+    SceneLight, SceneObject,
+};
 pub use location::Location;
-pub use schema::{NormalSpace, SceneSpec};
+pub use open::{OpenError, OpenedScene, is_scene_file, open};
+pub use schema::{LightSpace, NormalSpace, SceneSpec};
 pub use transform::object_transform;
 pub use validate::{BUILTIN_MODELS, BUILTIN_PREFIX};
 

@@ -23,36 +23,59 @@ pub struct SceneSpec {
     /// dark blue-grey (`16191f`) when absent.
     pub background: Option<Spanned<String>>,
     /// `ambient = [r, g, b]`: light reaching every surface from every direction, each component finite and not
-    /// negative. Optional; the viewer's ambient light ([`crate::scene::AMBIENT`]) when absent.
+    /// negative. Optional; the viewer's ambient light ([`super::defaults::AMBIENT`]) when absent.
     pub ambient: Option<Spanned<Triple>>,
     /// `ambient_occlusion = true|false`: darken creases and contact areas. Default `false`.
     #[serde(default)]
     pub ambient_occlusion: bool,
-    /// `[camera]`: where the scene is seen from. Required.
-    pub camera: Spanned<CameraSpec>,
-    /// `[[lights]]`: any number of lights, in file order. Optional; with none, only the ambient light shows.
+    /// `[camera]`: where the scene is seen from. Optional; the viewer's framed camera when absent (yaw 30, pitch
+    /// 15, distance 2.8, fov 40: see [`CameraSpec`]).
+    pub camera: Option<Spanned<CameraSpec>>,
+    /// `[[lights]]`: any number of lights, in file order. Optional; with none (and no `viewer_lights`), only the
+    /// ambient light shows.
     #[serde(default)]
     pub lights: Vec<Spanned<LightSpec>>,
+    /// `viewer_lights = true|false`: add the viewer's two lights after the file's: a warm key light from the upper
+    /// left and a cool fill light from the right, both in camera space (they follow the camera), without shadows.
+    /// Default `false`; a model shown without a scene file has them.
+    #[serde(default)]
+    pub viewer_lights: bool,
     /// `[[objects]]`: the meshes to draw, at least one, in file order.
     pub objects: Spanned<Vec<Spanned<ObjectSpec>>>,
 }
 
-/// `[camera]`: a camera at `position` looking at `target`, with either a perspective (`fov`) or an orthographic
-/// (`orthographic`) lens: exactly one of the two must be given.
+/// `[camera]`: either placed, at `position` looking at `target` (both given, in world units), or framed around
+/// the scene (neither given): looking at the centre of the sphere around every object, from `distance` times its
+/// radius, turned by `yaw` and `pitch`. A perspective (`fov`) or an orthographic (`orthographic`) lens, at most one
+/// of the two; perspective with a 40 degree field of view when neither is given.
+///
+/// A framed camera measures every length in radii of the scene's bounding sphere (`distance`, `orthographic`,
+/// `near`, `far`), so the same keys frame any scene; a placed one measures them in world units.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields, expecting = "a table of camera keys")]
 pub struct CameraSpec {
-    /// `position = [x, y, z]`: the eye, in world coordinates. Required.
-    pub position: Spanned<Triple>,
-    /// `target = [x, y, z]`: the point looked at; must differ from `position`. Required.
-    pub target: Spanned<Triple>,
-    /// `up = [x, y, z]`: which way is up in the image; not zero. Default `[0, 1, 0]`. When it is parallel to the
-    /// view direction, another axis is used (as [`rastty_core::camera::look_at`] does).
+    /// `position = [x, y, z]`: the eye, in world coordinates. Given with `target`, not with the framing keys.
+    pub position: Option<Spanned<Triple>>,
+    /// `target = [x, y, z]`: the point looked at; must differ from `position`. Given with `position`.
+    pub target: Option<Spanned<Triple>>,
+    /// `yaw = DEGREES`, framed cameras: the scene turned about the vertical axis (its front to the right for a
+    /// positive angle: the eye goes round to the left). Finite. Default 30.
+    pub yaw: Option<Spanned<f32>>,
+    /// `pitch = DEGREES`, framed cameras: the eye raised above the horizontal plane through the centre, from -89.9
+    /// to 89.9. Default 15.
+    pub pitch: Option<Spanned<f32>>,
+    /// `distance = RADII`, framed cameras: the eye's distance from the centre, in radii of the scene's bounding
+    /// sphere; positive. Default 2.8.
+    pub distance: Option<Spanned<f32>>,
+    /// `up = [x, y, z]`, placed cameras: which way is up in the image; not zero. Default `[0, 1, 0]` (always, for a
+    /// framed camera). When it is parallel to the view direction, another axis is used (as
+    /// [`rastty_core::camera::look_at`] does).
     pub up: Option<Spanned<Triple>>,
-    /// `fov = DEGREES`: a perspective lens with this vertical field of view, strictly between 0 and 180.
+    /// `fov = DEGREES`: a perspective lens with this field of view across the frame's shorter side (vertical in a
+    /// landscape frame), strictly between 0 and 180.
     pub fov: Option<Spanned<f32>>,
-    /// `orthographic = HEIGHT`: an orthographic (parallel) lens showing this much of the world vertically, in world
-    /// units; positive.
+    /// `orthographic = HEIGHT`: an orthographic (parallel) lens showing this much of the world across the frame's
+    /// shorter side; positive.
     pub orthographic: Option<Spanned<f32>>,
     /// `near = DISTANCE`: the near clipping plane's distance from the eye, positive. Optional; the renderer chooses
     /// when absent.
@@ -82,6 +105,22 @@ pub struct LightSpec {
     /// `shadows = true|false`: whether this light casts shadows. Default `false`.
     #[serde(default)]
     pub shadows: bool,
+    /// `space = "world" | "camera"`: what `direction` and `position` are relative to: the world, or the camera (x
+    /// to the right of the image, y up, z toward the viewer), so that the light follows the camera as it orbits.
+    /// Default `"world"`.
+    #[serde(default)]
+    pub space: LightSpace,
+}
+
+/// What a light's direction and position are given in (`space = "..."` of a `[[lights]]` table).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase", expecting = "\"world\" or \"camera\"")]
+pub enum LightSpace {
+    /// `"world"`: world coordinates.
+    #[default]
+    World,
+    /// `"camera"`: the camera's coordinates, x right, y up, z toward the viewer.
+    Camera,
 }
 
 /// The kinds of light (`type = "..."` of a `[[lights]]` table).

@@ -8,9 +8,9 @@ use rastty_core::math::Vec3;
 use toml::Spanned;
 
 use super::error::{SceneFileError, SceneFileErrorKind};
+use super::hex_color::parse_hex_color;
 use super::location::Location;
 use super::schema::{CameraSpec, LightSpec, LightType, MaterialSpec, NumberOrTriple, ObjectSpec, SceneSpec, Triple};
-use crate::scene::parse_hex_color;
 
 /// The prefix of a mesh naming a model built into `rastty`.
 pub const BUILTIN_PREFIX: &str = "builtin:";
@@ -140,7 +140,9 @@ pub(crate) fn validate(c: &Checker<'_>, scene: &SceneSpec) -> Result<(), SceneFi
     if let Some(ambient) = &scene.ambient {
         c.not_negative3(ambient, "ambient")?;
     }
-    camera(c, &scene.camera)?;
+    if let Some(spec) = &scene.camera {
+        camera(c, spec)?;
+    }
     for (i, light_spec) in scene.lights.iter().enumerate() {
         light(c, light_spec, &format!("lights[{i}]"))?;
     }
@@ -155,19 +157,58 @@ pub(crate) fn validate(c: &Checker<'_>, scene: &SceneSpec) -> Result<(), SceneFi
 
 fn camera(c: &Checker<'_>, spec: &Spanned<CameraSpec>) -> Result<(), SceneFileError> {
     let cam = spec.get_ref();
-    c.finite3(&cam.position, "camera.position")?;
-    c.finite3(&cam.target, "camera.target")?;
-    // As `look_at` computes the view direction, in `f32`.
-    if (vec3(*cam.target.get_ref()) - vec3(*cam.position.get_ref())).try_normalize().is_none() {
-        let message = if cam.target.get_ref() == cam.position.get_ref() {
-            "is the same point as camera.position"
-        } else {
-            "is too close to or too far from camera.position for a view direction"
-        };
-        return Err(c.invalid(&cam.target.span(), "camera.target", message));
-    }
-    if let Some(up) = &cam.up {
-        c.nonzero3(up, "camera.up")?;
+    match (&cam.position, &cam.target) {
+        (Some(position), Some(target)) => {
+            let framing = [("camera.yaw", &cam.yaw), ("camera.pitch", &cam.pitch), ("camera.distance", &cam.distance)];
+            if let Some((key, value)) = framing.iter().find_map(|(k, v)| v.as_ref().map(|v| (k, v))) {
+                let message = "frames the scene, so it cannot be given with camera.position and camera.target";
+                return Err(c.invalid(&value.span(), *key, message));
+            }
+            c.finite3(position, "camera.position")?;
+            c.finite3(target, "camera.target")?;
+            // As `look_at` computes the view direction, in `f32`.
+            if (vec3(*target.get_ref()) - vec3(*position.get_ref())).try_normalize().is_none() {
+                let message = if target.get_ref() == position.get_ref() {
+                    "is the same point as camera.position"
+                } else {
+                    "is too close to or too far from camera.position for a view direction"
+                };
+                return Err(c.invalid(&target.span(), "camera.target", message));
+            }
+            if let Some(up) = &cam.up {
+                c.nonzero3(up, "camera.up")?;
+            }
+        }
+        (Some(_), None) => {
+            let message = "required with camera.position (or leave both out to frame the scene)";
+            return Err(c.invalid(&spec.span(), "camera.target", message));
+        }
+        (None, Some(_)) => {
+            let message = "required with camera.target (or leave both out to frame the scene)";
+            return Err(c.invalid(&spec.span(), "camera.position", message));
+        }
+        (None, None) => {
+            if let Some(up) = &cam.up {
+                let message = "a framed camera's up is [0, 1, 0]; give camera.position and camera.target to choose";
+                return Err(c.invalid(&up.span(), "camera.up", message));
+            }
+            if let Some(yaw) = &cam.yaw {
+                if !yaw.get_ref().is_finite() {
+                    let message = format!("must be a finite number of degrees, got {}", num(*yaw.get_ref()));
+                    return Err(c.invalid(&yaw.span(), "camera.yaw", message));
+                }
+            }
+            if let Some(pitch) = &cam.pitch {
+                let v = *pitch.get_ref();
+                if !(v > -90.0 && v < 90.0) {
+                    let message = format!("must be between -90 and 90 degrees, got {}", num(v));
+                    return Err(c.invalid(&pitch.span(), "camera.pitch", message));
+                }
+            }
+            if let Some(distance) = &cam.distance {
+                c.positive(distance, "camera.distance", " (in radii of the scene's bounding sphere)")?;
+            }
+        }
     }
     match (&cam.fov, &cam.orthographic) {
         (Some(_), Some(ortho)) => {
@@ -177,13 +218,6 @@ fn camera(c: &Checker<'_>, spec: &Spanned<CameraSpec>) -> Result<(), SceneFileEr
                 "cannot be given with camera.fov: choose a perspective (fov) or an orthographic lens",
             ));
         }
-        (None, None) => {
-            return Err(c.invalid(
-                &spec.span(),
-                "camera",
-                "needs fov (a perspective lens) or orthographic (a parallel one)",
-            ));
-        }
         (Some(fov), None) => {
             let v = *fov.get_ref();
             if !(v > 0.0 && v < 180.0) {
@@ -191,7 +225,10 @@ fn camera(c: &Checker<'_>, spec: &Spanned<CameraSpec>) -> Result<(), SceneFileEr
                 return Err(c.invalid(&fov.span(), "camera.fov", message));
             }
         }
-        (None, Some(ortho)) => c.positive(ortho, "camera.orthographic", " (the view's height in world units)")?,
+        (None, Some(ortho)) => {
+            c.positive(ortho, "camera.orthographic", " (the height shown across the frame's shorter side)")?;
+        }
+        (None, None) => {}
     }
     if let Some(near) = &cam.near {
         c.positive(near, "camera.near", "")?;

@@ -16,8 +16,8 @@ const MIN_NEAR_RATIO: f32 = 1e-3;
 /// Where a clipping plane's distance came from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum PlaneSource {
-    /// The scene file's `near` or `far`.
-    File,
+    /// Given: the scene file's `near` or `far`, or the command line's `--near` or `--far`.
+    Given,
     /// Around the scene's bounding sphere, so that nothing is clipped.
     Derived,
 }
@@ -51,8 +51,8 @@ impl FrameCamera {
     /// - orthographic: both sides of the sphere, so `near` may be negative (the box then starts behind the eye).
     ///
     /// A derived plane that would contradict the file's other plane gives way (`far` becomes twice `near`, or
-    /// `near` a thousandth of `far`). The vertical field of view (or height) is the file's; the width follows
-    /// `aspect`.
+    /// `near` a thousandth of `far`). The field of view (or height) spans the frame's shorter side: vertically in
+    /// a landscape frame, horizontally in a portrait one, so a scene framed in one stays framed in the other.
     ///
     /// # Errors
     /// [`CameraError`] for a camera the core refuses (the eye at the target, a non-positive aspect).
@@ -74,22 +74,35 @@ impl FrameCamera {
             Projection::Orthographic { .. } => (centre_depth - r, centre_depth + r),
         };
         let (near, far, near_source, far_source) = match (camera.near, camera.far) {
-            (Some(n), Some(f)) => (n, f, PlaneSource::File, PlaneSource::File),
+            (Some(n), Some(f)) => (n, f, PlaneSource::Given, PlaneSource::Given),
             (Some(n), None) => {
-                (n, if far_fit > n { far_fit } else { 2.0 * n }, PlaneSource::File, PlaneSource::Derived)
+                (n, if far_fit > n { far_fit } else { 2.0 * n }, PlaneSource::Given, PlaneSource::Derived)
             }
             (None, Some(f)) => {
-                (if near_fit < f { near_fit } else { f * MIN_NEAR_RATIO }, f, PlaneSource::Derived, PlaneSource::File)
+                (if near_fit < f { near_fit } else { f * MIN_NEAR_RATIO }, f, PlaneSource::Derived, PlaneSource::Given)
             }
             (None, None) => (near_fit, far_fit, PlaneSource::Derived, PlaneSource::Derived),
         };
+        // The share of the shorter side the frame's height is: 1 in landscape, the aspect in portrait.
+        let portrait = float::min(aspect, 1.0);
         let projection = match camera.projection {
-            Projection::Perspective { fov_degrees } => perspective(fov_degrees.to_radians(), aspect, near, far)?,
+            Projection::Perspective { fov_degrees } => {
+                let fov = fov_degrees.to_radians();
+                let fovy = if aspect >= 1.0 { fov } else { 2.0 * float::atan(float::tan(fov * 0.5) / portrait) };
+                perspective(fovy, aspect, near, far)?
+            }
             Projection::Orthographic { height } => {
                 if aspect.is_nan() || aspect <= 0.0 {
                     return Err(CameraError::Aspect);
                 }
-                let half_height = height * 0.5;
+                if !height.is_finite() {
+                    return Err(CameraError::NotFinite);
+                }
+                // A negative height would mirror the picture.
+                if height <= 0.0 {
+                    return Err(CameraError::EmptyBox);
+                }
+                let half_height = height * 0.5 / portrait;
                 let half_width = half_height * aspect;
                 orthographic(-half_width, half_width, -half_height, half_height, near, far)?
             }

@@ -22,7 +22,7 @@ impl fmt::Display for ScenePlan {
             Projection::Orthographic { height } => format!("orthographic, {} units high", Number(height)),
         };
         let source = |s: PlaneSource| match s {
-            PlaneSource::File => "from the file",
+            PlaneSource::Given => "given",
             PlaneSource::Derived => "around the scene",
         };
         writeln!(

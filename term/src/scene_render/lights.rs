@@ -1,12 +1,13 @@
 //! A scene file's lights as the core's: colour times intensity, the direction of travel turned into the direction
-//! toward the light, dark lights left out; and how lights are named in messages.
+//! toward the light, lights in camera space turned into the world, dark lights left out; and how lights are named
+//! in messages.
 
 use std::fmt;
 
 use rastty_core::effects::LightKind as CoreLightKind;
-use rastty_core::math::Vec3;
+use rastty_core::math::{Mat4, Vec3};
 
-use crate::scene_file::{LightKind, SceneLight};
+use crate::scene_file::{LightKind, LightSpace, SceneLight};
 
 /// A light the frame uses.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -32,17 +33,30 @@ pub struct DroppedLight {
     pub source: SceneLight,
 }
 
-/// The light as the core takes it, or `None` when it sheds nothing (intensity 0 or a black colour): such a light
-/// would add zero to every pixel, so it is left out of the frame rather than computed.
-pub fn core_light(light: &SceneLight) -> Option<(CoreLightKind, Vec3)> {
+/// The light as the core takes it, in world space, for a frame whose camera has the view matrix `view` and the
+/// eye `eye`; or `None` when it sheds nothing (intensity 0 or a black colour): such a light would add zero to every
+/// pixel, so it is left out of the frame rather than computed.
+///
+/// A light in camera space is turned into the world by the inverse of the view's rotation (its transpose: the
+/// rows of a `look_at` matrix are orthonormal), and a point light's position moved by the eye.
+pub fn core_light(light: &SceneLight, view: &Mat4, eye: Vec3) -> Option<(CoreLightKind, Vec3)> {
     let color = light.color * light.intensity;
     if color == Vec3::ZERO {
         return None;
     }
-    let kind = match light.kind {
+    let to_world = view.to_mat3().transpose();
+    let kind = match (light.kind, light.space) {
         // The file gives the way the light travels; the core wants the way toward it.
-        LightKind::Directional { direction } => CoreLightKind::Directional { to_light: -direction },
-        LightKind::Point { position } => CoreLightKind::Point { position },
+        (LightKind::Directional { direction }, LightSpace::World) => {
+            CoreLightKind::Directional { to_light: -direction }
+        }
+        (LightKind::Directional { direction }, LightSpace::Camera) => {
+            CoreLightKind::Directional { to_light: (to_world * -direction).normalize_or_zero() }
+        }
+        (LightKind::Point { position }, LightSpace::World) => CoreLightKind::Point { position },
+        (LightKind::Point { position }, LightSpace::Camera) => {
+            CoreLightKind::Point { position: eye + to_world * position }
+        }
     };
     Some((kind, color))
 }
@@ -96,22 +110,45 @@ mod tests {
     use super::*;
 
     fn light(kind: LightKind, intensity: f32) -> SceneLight {
-        SceneLight { kind, color: Vec3::new(1.0, 0.5, 0.25), intensity, shadows: false }
+        SceneLight { kind, color: Vec3::new(1.0, 0.5, 0.25), intensity, shadows: false, space: LightSpace::World }
     }
 
     #[test]
     fn colour_times_intensity_and_the_direction_reversed() {
         let l = light(LightKind::Directional { direction: -Vec3::Y }, 2.0);
-        let (kind, color) = core_light(&l).unwrap();
+        let (kind, color) = core_light(&l, &Mat4::IDENTITY, Vec3::ZERO).unwrap();
         assert_eq!(kind, CoreLightKind::Directional { to_light: Vec3::Y });
         assert_eq!(color, Vec3::new(2.0, 1.0, 0.5));
     }
 
     #[test]
+    fn lights_in_camera_space_follow_the_camera() {
+        // The eye at +x looking at the origin: the camera's z (toward the viewer) is the world's +x, its x (to the
+        // right) the world's -z.
+        let eye = Vec3::new(5.0, 0.0, 0.0);
+        let view = rastty_core::camera::look_at(eye, Vec3::ZERO, Vec3::Y).unwrap();
+        let close = |a: Vec3, b: Vec3| (a - b).length() < 1e-6;
+        let toward_viewer = SceneLight {
+            space: LightSpace::Camera,
+            ..light(LightKind::Directional { direction: Vec3::new(0.0, 0.0, -1.0) }, 1.0)
+        };
+        let Some((CoreLightKind::Directional { to_light }, _)) = core_light(&toward_viewer, &view, eye) else {
+            panic!("a directional light")
+        };
+        assert!(close(to_light, Vec3::X), "{to_light:?}");
+        let right = SceneLight { space: LightSpace::Camera, ..light(LightKind::Point { position: Vec3::X }, 1.0) };
+        let Some((CoreLightKind::Point { position }, _)) = core_light(&right, &view, eye) else {
+            panic!("a point light")
+        };
+        assert!(close(position, Vec3::new(5.0, 0.0, -1.0)), "{position:?}");
+    }
+
+    #[test]
     fn dark_lights_are_left_out() {
-        assert!(core_light(&light(LightKind::Point { position: Vec3::ONE }, 0.0)).is_none());
+        let (view, eye) = (Mat4::IDENTITY, Vec3::ZERO);
+        assert!(core_light(&light(LightKind::Point { position: Vec3::ONE }, 0.0), &view, eye).is_none());
         let black = SceneLight { color: Vec3::ZERO, ..light(LightKind::Point { position: Vec3::ONE }, 1.0) };
-        assert!(core_light(&black).is_none());
+        assert!(core_light(&black, &view, eye).is_none());
     }
 
     #[test]

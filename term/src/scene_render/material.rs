@@ -8,7 +8,7 @@ use rastty_core::texture::TextureError;
 use super::PlanOptions;
 use super::interleaved::{MapRole, PartMaps};
 use crate::model::TextureImage;
-use crate::scene::{SHININESS, SPECULAR};
+use crate::scene_file::defaults::{SHININESS, SPECULAR};
 use crate::scene_file::{NormalSpace, SceneObject};
 
 /// The material of part `part` of `object`:

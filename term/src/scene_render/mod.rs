@@ -1,17 +1,21 @@
-//! Drawing scene files: a loaded [`SceneData`](crate::scene_file::SceneData) turned into frames, running exactly
-//! the passes the scene calls for.
+//! Drawing scenes: a loaded [`SceneData`](crate::scene_file::SceneData), from a scene file or a model alone,
+//! turned into frames, running exactly the passes the scene calls for. The viewer, `rastty render`, `--explain`
+//! and `--stats` all go this way.
 //!
 //! ```text
-//! SceneData ──PreparedScene::new──▶ PreparedScene (world bounds; tangents of tangent-space normal-mapped meshes;
-//!                                       each part's maps of one size interleaved texel by texel)
+//! SceneData ──PreparedScene::new──▶ PreparedScene (world bounds; the camera, framed around them if asked;
+//!                                       tangents of tangent-space normal-mapped meshes; each part's maps of one
+//!                                       size interleaved texel by texel)
 //!                                       │
-//!   SceneCamera (the file's, or orbited) + frame size + PlanOptions (effects on/off, textures, wireframe)
+//!   SceneCamera (the scene's, through an Orbit: the command line's options, the viewer's keys) + frame size
+//!     + PlanOptions (shading mode, effects on/off, textures, wireframe, background)
 //!                                       ▼  ScenePlan::new: nothing drawn, nothing allocated but the plan
-//!          ScenePlan: camera matrices, lights (colour × intensity; dark ones dropped), shadow passes,
-//!                     forward draws (one per part, SurfaceVariant resolved), ambient occlusion step
+//!          ScenePlan: camera matrices, lights (colour × intensity, camera-space ones turned into the world; dark
+//!                     ones dropped), shadow passes, forward draws (one per part, SurfaceVariant resolved for
+//!                     the shading mode), ambient occlusion step
 //!                                       │                       │
 //!                                       ▼                       ▼  Display: `rastty render --explain`
-//!   SceneRenderer::render(scene, plan, target)
+//!   SceneRenderer::render(scene, plan, target: a whole frame or a band of its rows)
 //!     1. shadow passes, in bands of map rows: clear_shadow_depth + draw_shadow_caster_band per object
 //!        (maps kept and reused across frames)
 //!     2. forward pass, in bands of rows: clear to the background, draw_surface per part
@@ -24,9 +28,11 @@
 //!   ([`EffectToggles`]: the viewer's keys `1` to `5`). A switched-off effect is not in the plan, so it costs
 //!   nothing. Its `Display` is the explanation, one line per pass and per draw.
 //! - [`SceneRenderer`]: runs plans, keeping shadow maps from frame to frame (they depend on the scene and the
-//!   lights, not the camera).
+//!   lights, not the camera), into a whole frame or a band of its rows.
 //! - [`render_scene_image`]: plan and render into fresh buffers, with supersampling: `rastty render`.
-//! - [`SceneOrbit`]: the viewer's camera for scenes: orbit about the file's target, zoom, switch the lens.
+//! - [`Orbit`]: the one camera of the viewer and `rastty render`: orbit about the scene's target, zoom, switch the
+//!   lens; [`CameraOptions`] sets it from the command line's `--yaw`, `--pitch`, `--distance`, `--fov`, `--ortho`,
+//!   `--near` and `--far`. [`ShadingMode`]: the `--shading` option and the viewer's `m` key, for every object.
 //!
 //! Policies, each documented where it is decided: shadow map size ([`shadow_map_size`]: the frame's longer side
 //! rounded up to a power of two, 512 to 2048), shadow bounds ([`scene_bounds`]: the sphere around every object's
@@ -54,11 +60,11 @@
 //! "#;
 //! let scene = PreparedScene::new(parse(text, "example.toml")?.load()?)?;
 //! let options = PlanOptions::default();
-//! let plan = ScenePlan::new(&scene, &scene.data().camera, (64, 48), &options)?;
+//! let plan = ScenePlan::new(&scene, &scene.camera(), (64, 48), &options)?;
 //! assert_eq!(plan.shadow_passes.len(), 1);
 //! assert!(plan.to_string().contains("shadow map of light 1 (directional"));
 //!
-//! let image = render_scene_image(&scene, &scene.data().camera, (64, 48), 1, &options)?;
+//! let image = render_scene_image(&scene, &scene.camera(), (64, 48), 1, &options)?;
 //! assert!(image.pixels.iter().any(|&p| p != image.pixels[0]));
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
@@ -66,6 +72,7 @@
 mod bins;
 mod bounds;
 mod camera;
+mod camera_options;
 mod error;
 mod explain;
 mod image;
@@ -76,19 +83,22 @@ mod orbit;
 mod plan;
 mod prepared;
 mod render;
+mod shading_mode;
 mod toggles;
 
 pub use bounds::scene_bounds;
 pub use camera::{FrameCamera, PlaneSource};
+pub use camera_options::CameraOptions;
 pub use error::SceneRenderError;
-pub use image::{SceneImage, render_scene_image};
+pub use image::{SampledFrame, SceneImage, parse_size, render_scene_image, render_supersampled};
 pub use interleaved::{InterleavedBuffers, MapRole, PartMaps};
 pub use lights::{DroppedLight, LightName, Number, PlannedLight, Triple, core_light};
 pub use material::part_material;
-pub use orbit::SceneOrbit;
+pub use orbit::Orbit;
 pub use plan::{
     AMBIENT_OCCLUSION, MAX_SHADOW_MAP, MIN_SHADOW_MAP, PCF_RADIUS, PlannedDraw, ScenePlan, ShadowPass, shadow_map_size,
 };
 pub use prepared::PreparedScene;
-pub use render::{BAND_PIXELS, BANDS_PER_THREAD, FrameReport, SceneRenderer, ShadowPassReport};
+pub use render::{BAND_PIXELS, BANDS_PER_THREAD, FrameReport, SceneRenderer, ShadowPassReport, WIREFRAME};
+pub use shading_mode::ShadingMode;
 pub use toggles::{EffectToggles, PlanOptions, SceneEffect};

@@ -1,8 +1,10 @@
-//! Moving a scene file's camera in the viewer: orbiting about its target, zooming, switching the lens.
+//! The one camera of the viewer and of `rastty render`: a scene's camera orbited about its target, zoomed, its
+//! lens switched, and set from the command line's `--yaw`, `--pitch` and `--distance`.
 
-use rastty_core::math::{Quat, float};
+use rastty_core::math::{Quat, Vec3, float};
+use rastty_core::shadow::Bounds;
 
-use crate::scene_file::{Projection, SceneCamera};
+use crate::scene_file::{FramedCamera, Projection, SceneCamera};
 
 /// How close to straight above or below the target the eye may orbit: the cosine of the smallest angle between
 /// the view direction and `up` (about 2.6 degrees). Beyond it, "up" on screen would flip.
@@ -10,46 +12,136 @@ const POLE_COSINE: f32 = 0.999;
 /// How far zooming may go, as a factor of the starting distance (or orthographic height), each way.
 const ZOOM_RANGE: f32 = 20.0;
 
-/// A scene file's camera that the viewer turns and zooms. It starts as the file's; rotations orbit the eye about
-/// the target (yaw about the camera's `up`, pitch about the screen's horizontal axis), zooming moves the eye along
-/// the view direction (or, for an orthographic lens, scales the height shown).
+/// A scene's camera that the viewer turns and zooms. It starts as the scene's (placed by the file, or framed
+/// around the scene); rotations orbit the eye about the target (yaw about the camera's `up`, pitch about the
+/// screen's horizontal axis), zooming moves the eye along the view direction (or, for an orthographic lens,
+/// scales the height shown).
+///
+/// Angles are measured in a frame of `up`: yaw 0 looks from the `+z` side (the projection of `+z` on the plane
+/// across `up`, or `+x` when `up` is along `z`), positive yaw moves the eye round to the left (the scene's front
+/// turns to the right), positive pitch raises it.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SceneOrbit {
+pub struct Orbit {
     /// The camera now.
     pub camera: SceneCamera,
+    /// The eye's distance from the target and its elevation in radians: kept here rather than measured again after
+    /// each rotation, so that rounding cannot add up over many of them.
+    distance: f32,
+    pitch: f32,
     /// The distance from eye to target at the start, which zooming is limited around.
     start_distance: f32,
     /// The orthographic height at the start (or the one a perspective lens turns into).
     start_height: Option<f32>,
 }
 
-impl SceneOrbit {
+impl Orbit {
     /// Starts at `camera`.
     pub fn new(camera: SceneCamera) -> Self {
         let start_height = match camera.projection {
             Projection::Orthographic { height } => Some(height),
             Projection::Perspective { .. } => None,
         };
-        Self { camera, start_distance: camera_distance(&camera), start_height }
+        let distance = camera_distance(&camera);
+        let mut orbit = Self { camera, distance, pitch: 0.0, start_distance: distance, start_height };
+        orbit.pitch = orbit.measured_angles().1;
+        orbit
     }
 
-    /// Orbits by `yaw` and `pitch` radians, as the model viewer's keys turn a model: positive yaw turns the scene's
-    /// front to the right (the eye moves left about `up`), positive pitch tilts its top toward the eye (the eye
-    /// rises). The pitch stops short of straight above or below the target, where "up" on screen would flip.
-    pub fn rotate(&mut self, yaw: f32, pitch: f32) {
-        let c = &mut self.camera;
-        let mut offset = Quat::from_axis_angle(c.up, -yaw).rotate(c.position - c.target);
-        if let Some(right) = (-offset).cross(c.up).try_normalize() {
-            // Elevation of the eye above the plane through the target perpendicular to `up`.
-            let elevation = float::asin(float::clamp(offset.normalize_or_zero().dot(c.up), -1.0, 1.0));
-            let limit = float::asin(POLE_COSINE);
-            let wanted = float::clamp(elevation + pitch, -limit, limit);
-            // Rotating about `right` by a negative angle raises the eye.
-            offset = Quat::from_axis_angle(right, elevation - wanted).rotate(offset);
-        }
+    /// Starts at `framed` around `bounds`: looking at the centre with `up` along `+y`, every length of `framed`
+    /// (in radii) times the radius.
+    pub fn framed(framed: &FramedCamera, bounds: &Bounds) -> Self {
+        let r = bounds.radius;
+        let projection = match framed.projection {
+            Projection::Orthographic { height } => Projection::Orthographic { height: height * r },
+            lens @ Projection::Perspective { .. } => lens,
+        };
+        let camera = SceneCamera {
+            position: bounds.centre + Vec3::Z * (framed.distance * r),
+            target: bounds.centre,
+            up: Vec3::Y,
+            projection,
+            near: framed.near.map(|n| n * r),
+            far: framed.far.map(|f| f * r),
+        };
+        let mut orbit = Self::new(camera);
+        orbit.set_angles(framed.yaw_degrees.to_radians(), framed.pitch_degrees.to_radians());
+        orbit
+    }
+
+    /// The reference frame of the angles, both across `up`: the direction of the eye at yaw 0, and the screen's
+    /// right seen from there.
+    fn frame(&self) -> (Vec3, Vec3) {
+        let up = self.up();
+        let front = (Vec3::Z - up * Vec3::Z.dot(up)).try_normalize().unwrap_or(Vec3::X);
+        (front, up.cross(front))
+    }
+
+    /// The camera's `up`, of unit length.
+    fn up(&self) -> Vec3 {
+        self.camera.up.try_normalize().unwrap_or(Vec3::Y)
+    }
+
+    /// The eye's yaw and pitch now, in radians.
+    pub fn angles(&self) -> (f32, f32) {
+        (self.measured_angles().0, self.pitch)
+    }
+
+    /// The eye's yaw and pitch measured from its position.
+    fn measured_angles(&self) -> (f32, f32) {
+        let c = &self.camera;
+        let offset = (c.position - c.target).normalize_or_zero();
+        let (front, right) = self.frame();
+        let pitch = float::asin(float::clamp(offset.dot(self.up()), -1.0, 1.0));
+        let yaw = (-offset.dot(right)).atan2(offset.dot(front));
+        (yaw, pitch)
+    }
+
+    /// Puts the eye at `yaw` and `pitch` radians (see [`Orbit`]) at its distance from the target; the pitch stops
+    /// short of straight above or below.
+    pub fn set_angles(&mut self, yaw: f32, pitch: f32) {
+        let (front, right) = self.frame();
+        self.place(front * float::cos(yaw) - right * float::sin(yaw), pitch);
+    }
+
+    /// Puts the eye `pitch` radians (within the poles' limit) above the horizontal unit direction `horizontal`, at
+    /// its distance.
+    fn place(&mut self, horizontal: Vec3, pitch: f32) {
+        let limit = float::asin(POLE_COSINE);
+        let pitch = float::clamp(pitch, -limit, limit);
+        let direction = horizontal * float::cos(pitch) + self.up() * float::sin(pitch);
+        let offset = direction * self.distance;
         if offset.is_finite() && offset.length() > 0.0 {
-            c.position = c.target + offset;
+            self.camera.position = self.camera.target + offset;
+            self.pitch = pitch;
         }
+    }
+
+    /// Moves the eye to `distance` from the target along the view direction, and makes that the distance zooming
+    /// is limited around (`--distance`).
+    pub fn set_distance(&mut self, distance: f32) {
+        let c = &mut self.camera;
+        let offset = c.position - c.target;
+        let before = offset.length();
+        if before > 0.0 && distance.is_finite() && distance > 0.0 {
+            c.position = c.target + offset * (distance / before);
+            (self.distance, self.start_distance) = (distance, distance);
+        }
+    }
+
+    /// Orbits by `yaw` and `pitch` radians: positive yaw turns the scene's front to the right (the eye moves left
+    /// about `up`), positive pitch tilts its top toward the eye (the eye rises). The pitch stops short of straight
+    /// above or below the target, where "up" on screen would flip.
+    ///
+    /// Only the eye's horizontal direction is turned; its elevation and distance are set again from the values
+    /// kept, so that the rounding of a million turntable steps cannot move it up, down, in or out.
+    pub fn rotate(&mut self, yaw: f32, pitch: f32) {
+        let up = self.up();
+        let offset = self.camera.position - self.camera.target;
+        // Straight above or below the target (a file's camera may look straight down): no horizontal direction,
+        // so the one of yaw 0 is used.
+        let horizontal = (offset - up * offset.dot(up)).try_normalize().unwrap_or(self.frame().0);
+        let turned = Quat::from_axis_angle(up, -yaw).rotate(horizontal).try_normalize().unwrap_or(horizontal);
+        self.place(turned, self.pitch + pitch);
     }
 
     /// Zooms by `factor` (below 1 closer): the eye moves toward the target for a perspective lens, within
@@ -71,6 +163,7 @@ impl SceneOrbit {
                     return;
                 }
                 c.position = c.target + offset * (after / before);
+                self.distance = after;
                 let near = c.near.map(|n| n * after / before);
                 c.far = c.far.map(|f| {
                     let moved = f + (after - before);
@@ -119,8 +212,8 @@ mod tests {
 
     use super::*;
 
-    fn orbit() -> SceneOrbit {
-        SceneOrbit::new(SceneCamera {
+    fn orbit() -> Orbit {
+        Orbit::new(SceneCamera {
             position: Vec3::new(0.0, 0.0, 5.0),
             target: Vec3::ZERO,
             up: Vec3::Y,
@@ -164,6 +257,31 @@ mod tests {
         assert_eq!(o.camera.far, Some(7.5));
         o.zoom(1e-6);
         assert!((o.camera.position.length() - 0.25).abs() < 1e-5);
+    }
+
+    #[test]
+    fn angles_place_the_eye_and_read_back() {
+        let mut o = orbit();
+        assert!(close(Vec3::new(o.angles().0, o.angles().1, 0.0), Vec3::ZERO));
+        o.set_angles(30f32.to_radians(), 15f32.to_radians());
+        // Yaw 30 moves the eye round to the left, pitch 15 raises it: the model viewer's default view.
+        let (s, c) = (30f32.to_radians().sin_cos(), 15f32.to_radians().sin_cos());
+        let expected = Vec3::new(-s.0 * c.1, c.0, s.1 * c.1) * 5.0;
+        assert!(close(o.camera.position, expected), "{:?}", o.camera.position);
+        let (yaw, pitch) = o.angles();
+        assert!((yaw - 30f32.to_radians()).abs() < 1e-5 && (pitch - 15f32.to_radians()).abs() < 1e-5);
+        o.set_distance(2.0);
+        assert!((o.camera.position.length() - 2.0).abs() < 1e-5);
+    }
+
+    #[test]
+    fn a_framed_camera_measures_in_radii() {
+        let bounds = Bounds { centre: Vec3::new(1.0, 2.0, 3.0), radius: 10.0 };
+        let framed = FramedCamera { yaw_degrees: 0.0, pitch_degrees: 0.0, near: Some(1.0), ..FramedCamera::DEFAULT };
+        let o = Orbit::framed(&framed, &bounds);
+        assert!(close(o.camera.position, Vec3::new(1.0, 2.0, 31.0)));
+        assert_eq!(o.camera.target, bounds.centre);
+        assert_eq!(o.camera.near, Some(10.0));
     }
 
     #[test]

@@ -1,10 +1,10 @@
 //! The plan of one frame: which passes run, with which lights, and what each draw computes.
 
 use rastty_core::effects::{LightKind, LightUse, SurfaceDraw, SurfaceMaterial, SurfaceVariant};
-use rastty_core::math::Vec3;
+use rastty_core::math::{Vec3, float};
 use rastty_core::occlusion::AmbientOcclusion;
 use rastty_core::pipeline::DrawState;
-use rastty_core::shading::{ShadingModel, Transforms};
+use rastty_core::shading::Transforms;
 use rastty_core::shadow::{Bounds, ShadowView};
 
 use super::camera::FrameCamera;
@@ -144,7 +144,7 @@ impl ScenePlan {
         let mut shadow_passes = Vec::new();
         for (i, light) in data.lights.iter().enumerate() {
             let number = i + 1;
-            let Some((kind, color)) = core_light(light) else {
+            let Some((kind, color)) = core_light(light, &frame_camera.view, camera.position) else {
                 dropped_lights.push(DroppedLight { number, source: *light });
                 continue;
             };
@@ -178,12 +178,27 @@ impl ScenePlan {
             textures: options.textures,
             options: *options,
         };
-        plan.draws = plan.plan_draws(scene)?;
+        plan.draws = plan.plan_draws(scene, camera)?;
         Ok(plan)
     }
 
+    /// The NDC depths of the near and far side of the scene's bounding sphere along the view, within the clipping
+    /// planes: what the depth view maps to white and black.
+    fn depth_range(&self, camera: &SceneCamera) -> (f32, f32) {
+        let c = &self.camera;
+        let forward = (camera.target - camera.position).normalize_or_zero();
+        let centre = (self.bounds.centre - camera.position).dot(forward);
+        let ndc = |distance: f32| {
+            let p = c.projection.project_point(Vec3::new(0.0, 0.0, -distance));
+            p.z / p.w
+        };
+        let r = self.bounds.radius;
+        (ndc(float::max(centre - r, c.near)), ndc(float::min(centre + r, c.far)))
+    }
+
     /// The forward pass's draws, with their variants resolved for the planned lights.
-    fn plan_draws(&self, scene: &PreparedScene) -> Result<Vec<PlannedDraw>, SceneRenderError> {
+    fn plan_draws(&self, scene: &PreparedScene, camera: &SceneCamera) -> Result<Vec<PlannedDraw>, SceneRenderError> {
+        let shading = self.options.shading.model(self.depth_range(camera));
         let lights: Vec<LightUse> = self
             .lights
             .iter()
@@ -204,7 +219,7 @@ impl ScenePlan {
                 let material = part_material(object, scene.part_maps(index, part_index), part_index, &self.options)
                     .map_err(|error| SceneRenderError::Texture { draw: label.clone(), error })?;
                 let tangents = tangents_for(scene, index, &material);
-                let object = SurfaceDraw { mesh, tangents, transforms, shading: ShadingModel::Phong, material };
+                let object = SurfaceDraw { mesh, tangents, transforms, shading, material };
                 let variant = SurfaceVariant::resolve(&object, lights.iter().copied(), &DrawState::DEFAULT)
                     .map_err(|error| SceneRenderError::Draw { draw: label.clone(), error })?;
                 draws.push(PlannedDraw { object: index, part: part_index, label, transforms, variant });

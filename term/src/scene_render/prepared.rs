@@ -9,11 +9,11 @@ use rastty_core::math::Vec4;
 use rastty_core::mesh::{TangentError, compute_tangents};
 use rastty_core::shadow::Bounds;
 
-use super::SceneRenderError;
 use super::bounds::scene_bounds;
 use super::interleaved::{InterleavedBuffers, PartMaps};
+use super::{Orbit, SceneRenderError};
 use crate::model::Model;
-use crate::scene_file::{NormalSpace, SceneData, SceneObject};
+use crate::scene_file::{CameraPlacement, NormalSpace, SceneCamera, SceneData, SceneObject};
 
 /// Gives each prepared scene its own number, so that cached shadow maps are never taken for another scene's.
 static NEXT_ID: AtomicU64 = AtomicU64::new(0);
@@ -27,6 +27,8 @@ static NEXT_ID: AtomicU64 = AtomicU64::new(0);
 pub struct PreparedScene {
     data: SceneData,
     bounds: Bounds,
+    /// The scene's camera, framed around `bounds` when the scene asks for that.
+    camera: SceneCamera,
     /// Per object: the tangents of its mesh, when it has a tangent-space normal map and texture coordinates.
     tangents: Vec<Option<Arc<[Vec4]>>>,
     /// Per object, per part: its maps, interleaved.
@@ -74,7 +76,16 @@ impl PreparedScene {
             .map(|object| (0..object.model.parts.len()).map(|part| PartMaps::new(object, part, &mut buffers)).collect())
             .collect();
         let id = NEXT_ID.fetch_add(1, Ordering::Relaxed);
-        Ok(Self { data, bounds, tangents, maps, labels, id })
+        let camera = match &data.camera {
+            CameraPlacement::Placed(camera) => *camera,
+            CameraPlacement::Framed(framed) => Orbit::framed(framed, &bounds).camera,
+        };
+        Ok(Self { data, bounds, camera, tangents, maps, labels, id })
+    }
+
+    /// The scene's camera: the file's placed camera, or its framed camera placed around [`Self::bounds`].
+    pub fn camera(&self) -> SceneCamera {
+        self.camera
     }
 
     /// The scene.

@@ -7,8 +7,9 @@ use std::thread;
 use std::time::{Duration, Instant};
 
 use rastty_core::effects::{LightSource, SceneLights, SurfaceDraw, SurfaceVariant, draw_surface};
+use rastty_core::math::Vec3;
 use rastty_core::mesh::{Indices, Mesh};
-use rastty_core::pipeline::{DrawState, DrawStats, draw_wireframe};
+use rastty_core::pipeline::{DrawState, DrawStats, LineStyle, draw_wireframe};
 use rastty_core::shadow::{
     ShadowBias, ShadowError, ShadowMap, ShadowView, WindowRanges, clear_shadow_depth, draw_shadow_caster_band,
     window_ranges_band,
@@ -19,8 +20,10 @@ use super::bins::TriangleBins;
 use super::material::part_material;
 use super::plan::{PlannedDraw, ShadowPass, tangents_for};
 use super::{PreparedScene, ScenePlan, SceneRenderError};
-use crate::scene::WIREFRAME;
 use crate::scene_file::SceneObject;
+
+/// Wireframe lines (`--wireframe`, the viewer's `x` key): a pale cyan drawn just in front of the surface.
+pub const WIREFRAME: LineStyle = LineStyle { color: Vec3::new(0.55, 0.9, 1.0), depth_bias: 2e-4 };
 
 /// What one shadow pass did.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -158,13 +161,15 @@ impl SceneRenderer {
         (pixels / BAND_PIXELS).clamp(self.threads, self.threads * BANDS_PER_THREAD)
     }
 
-    /// Runs `plan` (made for `scene`) into `target`, which must be the plan's size: the shadow passes (each skipped
-    /// when its kept map is still right), then, in bands on [`Self::threads`] threads, clears the target to the
-    /// background and draws every part, then the ambient occlusion step when planned.
+    /// Runs `plan` (made for `scene`) into `target`, a frame of the plan's size or a band of its rows: the shadow
+    /// passes (each skipped when its kept map is still right), then, in bands on [`Self::threads`] threads, clears
+    /// the target's rows to the background and draws every part, then the ambient occlusion step when planned.
+    /// The frame drawn band by band has the pixels of the whole frame.
     ///
     /// # Errors
-    /// [`SceneRenderError::Target`] when the target is not the plan's size or the plan names objects the scene does
-    /// not have; the core's refusals as [`SceneRenderError::Shadow`], [`SceneRenderError::Texture`],
+    /// [`SceneRenderError::Target`] when the target is not the plan's size, when it is a band and the plan has
+    /// ambient occlusion (which reads the whole frame's depth), or when the plan names objects the scene does not
+    /// have; the core's refusals as [`SceneRenderError::Shadow`], [`SceneRenderError::Texture`],
     /// [`SceneRenderError::Draw`] and [`SceneRenderError::Occlusion`].
     pub fn render(
         &mut self,
@@ -172,17 +177,21 @@ impl SceneRenderer {
         plan: &ScenePlan,
         target: &mut Target<Rgb888<'_>, &mut [f32]>,
     ) -> Result<FrameReport, SceneRenderError> {
-        let (width, height) = (target.width(), target.height());
-        if (width, height) != plan.size || target.rows() != (0..height) {
+        let (width, height, rows) = (target.width(), target.height(), target.rows());
+        if (width, height) != plan.size {
             return Err(SceneRenderError::Target(format!(
-                "the plan is for {}x{} pixels, the target is {width}x{height} (rows {:?})",
-                plan.size.0,
-                plan.size.1,
-                target.rows()
+                "the plan is for {}x{} pixels, the target is {width}x{height}",
+                plan.size.0, plan.size.1
             )));
         }
-        let band_count = self.bands(width as usize * height as usize);
-        let mut report = FrameReport { bands: band_count.clamp(1, height as usize), ..FrameReport::default() };
+        if plan.ambient_occlusion.is_some() && rows != (0..height) {
+            return Err(SceneRenderError::Target(format!(
+                "ambient occlusion reads the whole frame's depth: draw the plan into the whole frame, not rows {}..{}",
+                rows.start, rows.end
+            )));
+        }
+        let band_count = self.bands(width as usize * rows.len());
+        let mut report = FrameReport { bands: band_count.clamp(1, rows.len()), ..FrameReport::default() };
         let start = Instant::now();
         self.shadow_passes(scene, plan, &mut report)?;
         report.shadow_time = start.elapsed();
@@ -192,8 +201,8 @@ impl SceneRenderer {
         let lights = SceneLights { ambient: plan.ambient, lights: &sources };
         let (color, depth) = target.buffers_mut();
         let (pixels, depth) = (&mut *color.0, &mut **depth);
-        let bands = split_rows(pixels, width, height, band_count);
-        let bands = bands.into_iter().zip(split_rows(depth, width, height, band_count)).enumerate();
+        let bands = split_rows(pixels, width, rows.clone(), band_count);
+        let bands = bands.into_iter().zip(split_rows(depth, width, rows.clone(), band_count)).enumerate();
         let mut bands: Vec<_> =
             bands.map(|(index, ((rows, pixels), (_, depth)))| Band { index, rows, pixels, depth }).collect();
         let rows: Vec<_> = bands.iter().map(|band| band.rows.clone()).collect();
@@ -225,7 +234,7 @@ impl SceneRenderer {
             let projection = plan.camera.projection;
             let whole_depth: &[f32] = depth;
             let margin = occlusion.margin_rows(&projection, width, height);
-            let bands = split_rows(pixels, width, height, band_count);
+            let bands = split_rows(pixels, width, 0..height, band_count);
             let results = on_threads(bands, self.threads, |(rows, pixels)| {
                 // The band's rows of depth and `margin` more on each side: exactly the whole frame's result.
                 let depth_rows = rows.start.saturating_sub(margin)..(rows.end + margin).min(height);
@@ -303,7 +312,7 @@ impl SceneRenderer {
                 slot.depth = vec![0.0; side * side];
             }
             // One band per thread: casters are few fragments for their vertex work, which every band repeats.
-            let bands = split_rows(&mut slot.depth, pass.map_size, pass.map_size, threads);
+            let bands = split_rows(&mut slot.depth, pass.map_size, 0..pass.map_size, threads);
             let results = on_threads(bands, threads, |(rows, depth)| {
                 clear_shadow_depth(depth);
                 let mut stats = DrawStats::default();
@@ -336,8 +345,8 @@ impl ShadowSlot {
             }
         }
         let depth = &self.depth;
-        let near = split_rows(&mut self.near, pass.map_size, pass.map_size, threads);
-        let far = split_rows(&mut self.far, pass.map_size, pass.map_size, threads);
+        let near = split_rows(&mut self.near, pass.map_size, 0..pass.map_size, threads);
+        let far = split_rows(&mut self.far, pass.map_size, 0..pass.map_size, threads);
         let bands: Vec<_> = near.into_iter().zip(far).collect();
         let results = on_threads(bands, threads, |((rows, near), (_, far))| {
             window_ranges_band(depth, pass.map_size, pass.pcf_radius, rows, near, far)
@@ -346,13 +355,14 @@ impl ShadowSlot {
     }
 }
 
-/// Splits `buffer`, the `width x height` values of a frame, into at most `count` bands of nearly equal rows (at
-/// least one row each), top first, each with its rows.
-fn split_rows<T>(mut buffer: &mut [T], width: u32, height: u32, count: usize) -> Vec<(Range<u32>, &mut [T])> {
-    let count = count.clamp(1, height as usize) as u32;
+/// Splits `buffer`, the values of the frame rows `rows`, `width` a row, into at most `count` bands of nearly equal
+/// rows (at least one row each), top first, each with its rows.
+fn split_rows<T>(mut buffer: &mut [T], width: u32, rows: Range<u32>, count: usize) -> Vec<(Range<u32>, &mut [T])> {
+    let (first, height) = (rows.start, rows.end - rows.start);
+    let count = count.clamp(1, height.max(1) as usize) as u32;
     let mut bands = Vec::with_capacity(count as usize);
     for i in 0..count {
-        let rows = height * i / count..height * (i + 1) / count;
+        let rows = first + height * i / count..first + height * (i + 1) / count;
         let (band, rest) = std::mem::take(&mut buffer).split_at_mut(rows.len() * width as usize);
         buffer = rest;
         bands.push((rows, band));

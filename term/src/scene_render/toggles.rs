@@ -1,7 +1,9 @@
-//! Which effects a frame may use: the switches the viewer's digit keys flip, and the other choices (textures,
-//! wireframe, background) a front end makes for a scene.
+//! Which effects a frame may use: the switches the viewer's digit keys flip, and the other choices (shading mode,
+//! textures, wireframe, background) a front end makes for a scene.
 
 use rastty_core::math::Vec3;
+
+use super::ShadingMode;
 
 /// An effect a scene may call for, which can be switched off.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -144,6 +146,8 @@ impl Default for EffectToggles {
 /// Everything a front end chooses about a scene's frame besides the camera and the size.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PlanOptions {
+    /// How every object is shaded.
+    pub shading: ShadingMode,
     /// The effects allowed.
     pub effects: EffectToggles,
     /// Diffuse textures (the scene's and the MTL files'); off draws each part in its colour.
@@ -155,9 +159,15 @@ pub struct PlanOptions {
 }
 
 impl Default for PlanOptions {
-    /// The scene as written: every effect, textures, no wireframe, the scene's background.
+    /// The scene as written: lit per pixel, every effect, textures, no wireframe, the scene's background.
     fn default() -> Self {
-        Self { effects: EffectToggles::ALL_ON, textures: true, wireframe: false, background: None }
+        Self {
+            shading: ShadingMode::Phong,
+            effects: EffectToggles::ALL_ON,
+            textures: true,
+            wireframe: false,
+            background: None,
+        }
     }
 }
 

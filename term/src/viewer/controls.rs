@@ -7,7 +7,7 @@ use crate::scene_render::SceneEffect;
 /// Something the user asked for.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Action {
-    /// Turn the model: yaw and pitch steps (in units of the key step).
+    /// Orbit the camera: yaw and pitch steps (in units of the key step).
     Rotate {
         /// Steps about the vertical axis (+ turns the front to the right).
         yaw: f32,
@@ -26,9 +26,9 @@ pub enum Action {
     Reset,
     /// Perspective / orthographic.
     ToggleProjection,
-    /// Next shading mode (models only).
+    /// Next shading mode, for every object.
     CycleShading,
-    /// Switch one of a scene's effects on or off (scenes only).
+    /// Switch one of the effects on or off.
     ToggleEffect(SceneEffect),
     /// Textures on / off.
     ToggleTexture,
@@ -53,12 +53,11 @@ pub const HELP: &[&str] = &[
     "drag with the mouse   orbit",
     "r                     reset view",
     "p                     perspective / ortho",
-    "m                     shading mode (models)",
+    "m                     shading mode",
     "t                     texture on / off",
     "x                     wireframe",
     "1 2 3                 normal maps, specular, glow",
     "4 5                   shadows, ambient occlusion",
-    "                      (1-5: scene files only)",
     "space                 turntable",
     "i                     info (HUD)",
     "?                     this help",

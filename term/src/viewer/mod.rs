@@ -4,9 +4,9 @@
 //! turns it into terminal cells; a [`FrameWriter`] thread encodes the newest frame as a delta and writes it.
 //! Idle, the viewer sleeps in `poll`: no frames, no bytes, no CPU.
 //!
-//! A model is drawn by [`crate::scene::Scene`] with the orbit camera; a scene file by
-//! [`crate::scene_render`]: each frame is planned from the orbited camera and the effects switched on (keys `1`
-//! to `5`), so a switched-off effect is not computed, and the shadow maps are kept from frame to frame (they do not
+//! A model and a scene file are both a scene ([`crate::scene_file::open`]) drawn by [`crate::scene_render`]: each
+//! frame is planned from the orbited camera, the shading mode (key `m`) and the effects switched on (keys `1` to
+//! `5`), so a switched-off effect is not computed, and the shadow maps are kept from frame to frame (they do not
 //! depend on the camera).
 
 mod controls;
@@ -22,13 +22,12 @@ pub use controls::{Action, HELP, action_for};
 pub use frame_writer::{FrameWriter, REFINE_AFTER, TOLERANCES, WriterStats};
 pub use input_decoder::{ESCAPE_WAIT, Input, InputDecoder, Key, MouseKind};
 pub use link_meter::{ANSWER_TIMEOUT, FRAME_LINK_TIME, LinkMeter, MAX_IN_FLIGHT, MIN_LINK_TIME, STATUS_REQUEST};
-pub use state::{Effect, ViewerCamera, ViewerState};
+pub use state::{Effect, ViewerState};
 pub use terminal_session::{TerminalSession, restore};
 pub use tty::{Gone, Tty, Woken, write_until, write_while};
 
 use std::fmt;
 use std::io::{self, IsTerminal};
-use std::path::PathBuf;
 use std::sync::atomic::Ordering;
 use std::time::{Duration, Instant};
 
@@ -36,14 +35,9 @@ use rastty_core::math::Vec3;
 use rastty_core::pipeline::DrawStats;
 use rastty_core::target::{Rgb888, Target};
 
-use crate::escaped::{Escaped, path_text};
-use crate::headless::{ModelSource, TextureChoice, load_scene};
-use crate::model::LoadError;
-use crate::scene::{Appearance, OrbitCamera, RenderError, Scene};
-use crate::scene_file::SceneFileError;
+use crate::escaped::Escaped;
 use crate::scene_render::{
-    EffectToggles, FrameReport, PlanOptions, PreparedScene, SceneEffect, SceneOrbit, ScenePlan, SceneRenderError,
-    SceneRenderer,
+    FrameReport, Orbit, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError, SceneRenderer,
 };
 use crate::screen::{CellGrid, CellMode, ColorMode, PixelFrame};
 
@@ -67,34 +61,13 @@ pub enum ColorChoice {
     Fixed(ColorMode),
 }
 
-/// What the viewer shows.
-#[derive(Clone, Debug)]
-pub enum ViewerSubject {
-    /// A single model, fitted to the view, with the viewer's lights.
-    Model {
-        /// The model.
-        model: ModelSource,
-        /// The textures.
-        texture: TextureChoice,
-        /// The starting camera.
-        camera: OrbitCamera,
-    },
-    /// A scene file: its camera, lights, objects and effects.
-    Scene(PathBuf),
-}
-
-/// Everything the viewer is started with.
+/// Everything the viewer is started with, besides the scene.
 #[derive(Clone, Debug)]
 pub struct ViewerOptions {
-    /// What to show.
-    pub subject: ViewerSubject,
-    /// The starting look. For a scene, only textures and wireframe are used; its background is the scene's unless
-    /// [`Self::background`] is given.
-    pub appearance: Appearance,
-    /// A background given on the command line, which a scene's own gives way to.
-    pub background: Option<Vec3>,
-    /// The effects switched on at the start (scenes only; keys `1` to `5` switch them).
-    pub effects: EffectToggles,
+    /// The camera at the start (and after a reset).
+    pub orbit: Orbit,
+    /// The shading mode, effects, textures, wireframe and background at the start (and after a reset).
+    pub plan: PlanOptions,
     /// Half-block or ASCII cells.
     pub cell_mode: CellMode,
     /// Colours.
@@ -111,16 +84,10 @@ pub struct ViewerOptions {
 pub enum ViewerError {
     /// Standard output is not a terminal.
     NotATerminal,
-    /// The model could not be loaded.
-    Load(LoadError),
-    /// The scene file could not be loaded.
-    SceneFile(SceneFileError),
     /// The scene could not be planned or drawn.
-    Scene(PathBuf, SceneRenderError),
+    Scene(String, SceneRenderError),
     /// The terminal failed.
     Terminal(String),
-    /// A frame could not be drawn.
-    Render(RenderError),
 }
 
 impl fmt::Display for ViewerError {
@@ -129,11 +96,8 @@ impl fmt::Display for ViewerError {
             Self::NotATerminal => {
                 f.write_str("standard output is not a terminal; to render to a file use `rastty render -o FILE.png`")
             }
-            Self::Load(e) => e.fmt(f),
-            Self::SceneFile(e) => e.fmt(f),
-            Self::Scene(path, e) => write!(f, "{}: {e}", path_text(path)),
+            Self::Scene(name, e) => write!(f, "{}: {e}", Escaped(name)),
             Self::Terminal(e) => write!(f, "terminal error: {e}"),
-            Self::Render(e) => e.fmt(f),
         }
     }
 }
@@ -151,27 +115,29 @@ pub enum ViewerExit {
     TerminalGone,
 }
 
+/// Checks that standard output is a terminal the viewer can draw in.
+///
+/// # Errors
+/// [`ViewerError::NotATerminal`] when it is not (a pipe, a file).
+pub fn ensure_terminal() -> Result<(), ViewerError> {
+    if io::stdout().is_terminal() { Ok(()) } else { Err(ViewerError::NotATerminal) }
+}
+
 fn terminal_error(e: io::Error) -> ViewerError {
     ViewerError::Terminal(e.to_string())
 }
 
-/// Runs the viewer until the user quits, a signal arrives or the terminal goes away.
+/// Shows `scene` (called `name` in the HUD and in errors) until the user quits, a signal arrives or the terminal
+/// goes away.
 ///
 /// # Errors
 /// [`ViewerError`]; the terminal is restored in every case.
-pub fn run(options: &ViewerOptions) -> Result<ViewerExit, ViewerError> {
-    if !io::stdout().is_terminal() {
-        return Err(ViewerError::NotATerminal);
-    }
-    let (content, camera, name) = load_content(options)?;
-    let mut appearance = options.appearance;
-    if let Content::Scene { scene, .. } = &content {
-        appearance.background = options.background.unwrap_or(scene.data().background);
-        // The first frame is planned now, so a scene that cannot be drawn (a point light inside its bounds casting
-        // shadows) is reported before the terminal is taken over.
-        ScenePlan::new(scene, &scene.data().camera, (64, 64), &PlanOptions::default())
-            .map_err(|e| ViewerError::Scene(scene_path(options), e))?;
-    }
+pub fn run(scene: &PreparedScene, name: &str, options: &ViewerOptions) -> Result<ViewerExit, ViewerError> {
+    ensure_terminal()?;
+    let orbit = options.orbit;
+    // The first frame is planned now, so a scene that cannot be drawn (a point light inside its bounds casting
+    // shadows) is reported before the terminal is taken over.
+    ScenePlan::new(scene, &orbit.camera, (64, 64), &options.plan).map_err(|e| ViewerError::Scene(name.into(), e))?;
     let colors = match options.color {
         ColorChoice::Auto => ColorMode::from_process_env(),
         ColorChoice::Fixed(mode) => mode,
@@ -179,15 +145,17 @@ pub fn run(options: &ViewerOptions) -> Result<ViewerExit, ViewerError> {
     let session = TerminalSession::enter().map_err(terminal_error)?;
     let writer = FrameWriter::start(session.tty.output_clone().map_err(terminal_error)?, options.pacing);
     let mut viewer = Viewer {
-        content,
-        name,
-        state: ViewerState::new(camera, appearance, options.cell_aspect).with_effects(options.effects),
+        scene,
+        renderer: SceneRenderer::new(),
+        name: name.into(),
+        state: ViewerState::new(orbit, options.plan, options.cell_aspect),
         canvas: Canvas::default(),
         cell_mode: options.cell_mode,
         colors,
         cell_aspect: options.cell_aspect,
         size: session.tty.size().map_err(terminal_error)?,
         last_stats: DrawStats::default(),
+        background: Vec3::ZERO,
         last_report: None,
         render_time: Duration::ZERO,
         frame_times: FrameClock::default(),
@@ -196,43 +164,6 @@ pub fn run(options: &ViewerOptions) -> Result<ViewerExit, ViewerError> {
     writer.finish(Instant::now() + FINISH_TIME);
     drop(session);
     result
-}
-
-/// What the viewer draws: a model, or a scene with its renderer (which keeps the shadow maps).
-enum Content {
-    Model(Scene),
-    Scene { scene: PreparedScene, renderer: SceneRenderer },
-}
-
-fn scene_path(options: &ViewerOptions) -> PathBuf {
-    match &options.subject {
-        ViewerSubject::Scene(path) => path.clone(),
-        ViewerSubject::Model { .. } => PathBuf::new(),
-    }
-}
-
-/// Loads what `options` name, printing the warnings (the terminal is not taken over yet).
-fn load_content(options: &ViewerOptions) -> Result<(Content, ViewerCamera, String), ViewerError> {
-    match &options.subject {
-        ViewerSubject::Model { model, texture, camera } => {
-            let loaded = load_scene(model, texture).map_err(ViewerError::Load)?;
-            for warning in &loaded.warnings {
-                eprintln!("rastty: warning: {}", Escaped(warning));
-            }
-            Ok((Content::Model(loaded.scene), ViewerCamera::Model(*camera), loaded.name))
-        }
-        ViewerSubject::Scene(path) => {
-            let data = crate::scene_file::load(path).map_err(ViewerError::SceneFile)?;
-            let warnings = data.objects.iter().flat_map(|o| o.model.warnings.iter());
-            for warning in data.warnings.iter().chain(warnings) {
-                eprintln!("rastty: warning: {}", Escaped(warning));
-            }
-            let scene = PreparedScene::new(data).map_err(|e| ViewerError::Scene(path.clone(), e))?;
-            let camera = ViewerCamera::Scene(SceneOrbit::new(scene.data().camera));
-            let content = Content::Scene { scene, renderer: SceneRenderer::new() };
-            Ok((content, camera, path.to_string_lossy().into_owned()))
-        }
-    }
 }
 
 /// Pixel and depth buffers, reused from frame to frame.
@@ -266,8 +197,10 @@ impl FrameClock {
     }
 }
 
-struct Viewer {
-    content: Content,
+struct Viewer<'a> {
+    scene: &'a PreparedScene,
+    /// Keeps the shadow maps from frame to frame.
+    renderer: SceneRenderer,
     name: String,
     state: ViewerState,
     canvas: Canvas,
@@ -276,13 +209,15 @@ struct Viewer {
     cell_aspect: f32,
     size: (u16, u16),
     last_stats: DrawStats,
-    /// The passes of the last frame of a scene.
+    /// The colour the last frame was cleared to.
+    background: Vec3,
+    /// The passes of the last frame.
     last_report: Option<FrameReport>,
     render_time: Duration,
     frame_times: FrameClock,
 }
 
-impl Viewer {
+impl Viewer<'_> {
     fn run_loop(&mut self, session: &TerminalSession, writer: &FrameWriter) -> Result<ViewerExit, ViewerError> {
         let mut dirty = true;
         let mut last_spin = Instant::now();
@@ -364,32 +299,17 @@ impl Viewer {
         let mut target =
             Target::new(Rgb888(&mut self.canvas.pixels), &mut self.canvas.depth[..], width as u32, height as u32)
                 .map_err(|e| ViewerError::Terminal(e.to_string()))?;
-        match (&mut self.content, &self.state.camera) {
-            (Content::Model(scene), ViewerCamera::Model(camera)) => {
-                self.last_stats =
-                    scene.render(&mut target, camera, &self.state.appearance, aspect).map_err(ViewerError::Render)?;
-            }
-            (Content::Scene { scene, renderer }, ViewerCamera::Scene(orbit)) => {
-                let a = &self.state.appearance;
-                let options = PlanOptions {
-                    effects: self.state.effects,
-                    textures: a.textures,
-                    wireframe: a.wireframe,
-                    background: Some(a.background),
-                };
-                let size = (width as u32, height as u32);
-                let to_error = |e| ViewerError::Scene(self.name.clone().into(), e);
-                let plan = ScenePlan::with_aspect(scene, &orbit.camera, size, aspect, &options).map_err(to_error)?;
-                let report = renderer.render(scene, &plan, &mut target).map_err(to_error)?;
-                self.last_stats = report.forward;
-                self.last_report = Some(report);
-            }
-            // The camera is made with the content (`load_content`): the pairs above are the only ones.
-            _ => return Err(ViewerError::Terminal("the camera does not fit what is shown".into())),
-        }
+        let size = (width as u32, height as u32);
+        let to_error = |e| ViewerError::Scene(self.name.clone(), e);
+        let plan = ScenePlan::with_aspect(self.scene, &self.state.orbit.camera, size, aspect, &self.state.options)
+            .map_err(to_error)?;
+        let report = self.renderer.render(self.scene, &plan, &mut target).map_err(to_error)?;
+        self.last_stats = report.forward;
+        self.last_report = Some(report);
+        self.background = plan.background;
         self.render_time = start.elapsed();
         self.frame_times.tick();
-        let background = rastty_core::color::pack_rgb888(self.state.appearance.background);
+        let background = rastty_core::color::pack_rgb888(self.background);
         let mut grid =
             self.cell_mode.to_cells(PixelFrame::new(&self.canvas.pixels, width, height), self.colors, background);
         if self.state.hud {
@@ -404,9 +324,9 @@ impl Viewer {
     fn hud_lines(&self, written: WriterStats) -> Vec<String> {
         let s = &self.last_stats;
         let (cols, rows) = self.size;
-        let a = &self.state.appearance;
-        let lens = if self.state.camera.is_orthographic() { "ortho" } else { "perspective" };
-        let mode = if self.state.is_scene() { "scene" } else { a.shading.name() };
+        let a = &self.state.options;
+        let lens = if self.state.orbit.is_orthographic() { "ortho" } else { "perspective" };
+        let mode = a.shading.name();
         let mut lines = vec![
             format!("{}", Escaped(&self.name)),
             format!(
@@ -436,7 +356,7 @@ impl Viewer {
                 self.colors.name()
             ),
         ];
-        if let Some(report) = self.last_report.as_ref().filter(|_| self.state.is_scene()) {
+        if let Some(report) = &self.last_report {
             let ms = |d: Duration| d.as_secs_f64() * 1e3;
             let kept = report.shadow_passes.iter().filter(|p| p.reused).count();
             lines.push(format!(
@@ -449,7 +369,7 @@ impl Viewer {
             ));
             let effects: Vec<String> = SceneEffect::ALL
                 .iter()
-                .map(|&e| format!("{} {} {}", e.key(), e.name(), if self.state.effects.get(e) { "on" } else { "off" }))
+                .map(|&e| format!("{} {} {}", e.key(), e.name(), if a.effects.get(e) { "on" } else { "off" }))
                 .collect();
             lines.push(effects[..3].join("  "));
             lines.push(effects[3..].join("  "));

@@ -112,7 +112,7 @@ pub struct AccuracyReport {
 pub fn measure(options: &AccuracyOptions) -> Result<AccuracyReport, String> {
     let (w, h) = options.size;
     let mut results = Vec::new();
-    for scene in scenes::all(w, h).map_err(|e| e.to_string())? {
+    for scene in scenes::all(w, h)? {
         let start = std::time::Instant::now();
         let truth = reference::render(&scene.scene).map_err(|e| format!("{}: reference: {e}", scene.name))?;
         let reference_time = start.elapsed();

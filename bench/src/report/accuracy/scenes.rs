@@ -5,9 +5,9 @@ use rastty_core::pipeline::Cull;
 use rastty_core::texture::WrapMode;
 
 use crate::reference::{Camera, Light, Lighting, Object, Projection, Scene, Shading, math};
-use rastty::builtin::builtin_model;
-use rastty::model::{LoadError, TextureImage};
-use rastty::scene::{Appearance, Lens, OrbitCamera};
+use rastty::model::TextureImage;
+use rastty::scene_file::open;
+use rastty::scene_render::{CameraOptions, PlanOptions, PreparedScene};
 
 /// A named scene and what it is for.
 pub struct AccuracyScene {
@@ -22,8 +22,8 @@ pub struct AccuracyScene {
 /// All scenes at `width x height`.
 ///
 /// # Errors
-/// Only if the built-in model cannot be loaded.
-pub fn all(width: u32, height: u32) -> Result<Vec<AccuracyScene>, LoadError> {
+/// A message when the built-in model cannot be loaded or its reference scene built.
+pub fn all(width: u32, height: u32) -> Result<Vec<AccuracyScene>, String> {
     Ok(vec![floor(width, height), model(width, height)?, slivers(width, height), far_surfaces(width, height)])
 }
 
@@ -76,12 +76,24 @@ fn floor(w: u32, h: u32) -> AccuracyScene {
     }
 }
 
-/// The built-in model, textured and lit, at an oblique angle: shading frequency and texture filtering.
-fn model(w: u32, h: u32) -> Result<AccuracyScene, LoadError> {
-    let camera = OrbitCamera::new(65.0, 35.0, 2.4, Lens::Perspective { fov_degrees: 40.0 });
+/// The built-in model, textured and lit, at an oblique angle: shading frequency and texture filtering. It is the
+/// reference scene of what `rastty render --yaw 65 --pitch 35 --distance 2.4` draws (the viewer's lights, material
+/// and 40-degree lens).
+fn model(w: u32, h: u32) -> Result<AccuracyScene, String> {
+    let failed = |e: &dyn std::fmt::Display| format!("model: {e}");
+    let opened = open(None).map_err(|e| failed(&e))?;
+    let scene = PreparedScene::new(opened.data).map_err(|e| failed(&e))?;
+    let camera = CameraOptions {
+        yaw_degrees: Some(65.0),
+        pitch_degrees: Some(35.0),
+        distance: Some(2.4),
+        ..CameraOptions::default()
+    }
+    .orbit(&scene)
+    .camera;
+    let options = PlanOptions::default();
     let scene =
-        Scene::from_model(&builtin_model()?, &camera, &Appearance::default(), (w, h), f64::from(w) / f64::from(h))
-            .map_err(|e| LoadError::new("built-in Spot", rastty::model::LoadErrorKind::Parser(e.to_string())))?;
+        Scene::from_scene(&scene, &camera, &options, (w, h), f64::from(w) / f64::from(h)).map_err(|e| failed(&e))?;
     Ok(AccuracyScene {
         name: "model",
         purpose: "the built-in model, textured and lit, seen obliquely: shading and texture filtering",

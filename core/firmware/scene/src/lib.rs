@@ -25,4 +25,4 @@ pub use bands::{BAND_BUFFER_BYTES, BAND_PIXELS, BandBuffers};
 pub use error::SceneError;
 pub use fnv1a::Fnv1a;
 pub use frame::{BAND_ROWS, FrameReport, HEIGHT, STRIPS, Strip, WIDTH, checksum_frame, render_frame};
-pub use scene::{BACKGROUND, FRAMES, Scene, YAWS};
+pub use scene::{BACKGROUND, FRAMES, Scene, SpotShader, YAWS};

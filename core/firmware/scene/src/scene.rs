@@ -53,7 +53,7 @@ const LAYOUT: Layout = Layout { first: true, second: true, uvs: false, tangents:
 
 /// The shader the firmware links: per-pixel lighting from directional lights, the normal and the world position
 /// carried.
-type SpotShader<'a> = SurfaceShader<'a, Vec3, Vec3, Absent, Absent, { capabilities::PER_PIXEL }>;
+pub type SpotShader<'a> = SurfaceShader<'a, Vec3, Vec3, Absent, Absent, { capabilities::PER_PIXEL }>;
 
 /// One frame's scene: Spot, its place and the light, built once and drawn into each strip.
 #[derive(Clone, Copy, Debug)]

@@ -1,8 +1,9 @@
-//! How a scene is drawn: shading mode, textures, wireframe, background.
+//! The shading modes a frame may be drawn in: the `--shading` option and the viewer's `m` key.
 
-use rastty_core::math::Vec3;
+use rastty_core::shading::ShadingModel;
 
-/// The shading modes offered to users.
+/// The shading modes offered to users. A scene's surfaces are lit per pixel ([`Self::Phong`]) unless a front end
+/// asks for another mode; the mode applies to every object.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum ShadingMode {
     /// Colours and textures, no lighting.
@@ -54,39 +55,16 @@ impl std::str::FromStr for ShadingMode {
     }
 }
 
-/// Everything about a frame's look that is not the camera.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Appearance {
-    /// The shading mode.
-    pub shading: ShadingMode,
-    /// Use the model's textures (when it has texture coordinates and textures).
-    pub textures: bool,
-    /// Draw triangle edges over the shaded model.
-    pub wireframe: bool,
-    /// Background colour.
-    pub background: Vec3,
-}
-
-impl Appearance {
-    /// The default background, a dark blue-grey (`#16191f`).
-    pub const DEFAULT_BACKGROUND: Vec3 = Vec3::new(22.0 / 255.0, 25.0 / 255.0, 31.0 / 255.0);
-}
-
-impl Default for Appearance {
-    fn default() -> Self {
-        Self { shading: ShadingMode::Phong, textures: true, wireframe: false, background: Self::DEFAULT_BACKGROUND }
+impl ShadingMode {
+    /// The core's shading model for this mode; the depth view maps the NDC depths `near` (white) to `far` (black).
+    pub fn model(self, (near, far): (f32, f32)) -> ShadingModel {
+        match self {
+            Self::Unlit => ShadingModel::Unlit,
+            Self::Flat => ShadingModel::Flat,
+            Self::Gouraud => ShadingModel::Gouraud,
+            Self::Phong => ShadingModel::Phong,
+            Self::Depth => ShadingModel::Depth { near, far },
+            Self::Normals => ShadingModel::Normals,
+        }
     }
-}
-
-/// Parses a colour written `RRGGBB` (an optional leading `#` is accepted).
-///
-/// # Errors
-/// A message naming the text when it is not six hexadecimal digits.
-pub fn parse_hex_color(text: &str) -> Result<Vec3, String> {
-    let hex = text.strip_prefix('#').unwrap_or(text);
-    if hex.len() != 6 || !hex.bytes().all(|b| b.is_ascii_hexdigit()) {
-        return Err(format!("{text:?} is not a colour written RRGGBB"));
-    }
-    let value = u32::from_str_radix(hex, 16).map_err(|e| e.to_string())?;
-    Ok(rastty_core::color::unpack_rgb888(value))
 }
