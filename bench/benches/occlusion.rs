@@ -9,7 +9,7 @@ use rastty_core::math::{Mat4, Vec3};
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::occlusion::AmbientOcclusion;
 use rastty_core::pipeline::DrawState;
-use rastty_core::shading::{Effects, Light, Lighting, Material, ShadingModel, Transforms, draw_mesh};
+use rastty_core::shading::{Light, LightKind, Lighting, Material, Object, ShadingModel, Transforms, draw_mesh};
 use rastty_core::target::{Rgb888, Target};
 
 fn main() {
@@ -86,20 +86,19 @@ fn render(geometry: &Geometry, eye: Vec3, target: Vec3) -> Frame {
     let view = look_at(eye, target, Vec3::Y).unwrap();
     let projection = perspective(0.9, 1.0, 0.1, 100.0).unwrap();
     let transforms = Transforms::new(Mat4::IDENTITY, view, projection);
-    let lights = [Light { to_light: Vec3::new(0.408_248_3, 0.816_496_6, 0.408_248_3), color: Vec3::ONE }];
-    let effects = Effects {
-        shading: ShadingModel::Phong,
-        material: Material { color: Vec3::new(0.9, 0.8, 0.7), specular: Vec3::ZERO, shininess: 32.0 },
-        lighting: Lighting { ambient: Vec3::splat(0.1), lights: &lights },
-        texture: None,
-    };
+    // Already unit length: built as is rather than normalised again.
+    let to_light = Vec3::new(0.408_248_3, 0.816_496_6, 0.408_248_3);
+    let lights = [Light { kind: LightKind::Directional { to_light }, color: Vec3::ONE, shadow: None }];
+    let lighting = Lighting { ambient: Vec3::splat(0.1), lights: &lights };
     let mesh = Mesh::new(&geometry.positions, Indices::U32(&geometry.indices))
         .unwrap()
         .with_normals(&geometry.normals)
         .unwrap();
+    let material = Material::plain(Vec3::new(0.9, 0.8, 0.7));
+    let object = Object { mesh, tangents: None, transforms, shading: ShadingModel::Phong, material };
     let mut frame = Target::new(Rgb888(&mut color), &mut depth[..], SIZE, SIZE).unwrap();
     frame.clear(Vec3::ZERO);
-    draw_mesh(&mut frame, &mesh, &transforms, &effects, &DrawState::default()).unwrap();
+    draw_mesh(&mut frame, &object, &lighting, &DrawState::default()).unwrap();
     Frame { projection, depth, color }
 }
 

@@ -14,22 +14,19 @@
 //! | clip | [`pipeline`] (`clip.rs`) | near/far planes and a guard band, in homogeneous coordinates |
 //! | raster | [`pipeline`] (`raster.rs`) | fixed-point snapping, exact edge functions, top-left rule |
 //! | vertex stage | [`pipeline::Shader::varyings`] | per-vertex values, only for triangles that reach the pixel loop or need clipping |
-//! | fragment | [`pipeline::Shader::fragment`], [`shading`], [`texture`] | depth test, interpolation, shading, texturing |
+//! | fragment | [`pipeline::FragmentBatch`], [`shading`], [`texture`] | depth test, then the fragments of a triangle in batches: interpolation, shading, texturing |
 //! | target | [`target`] | RGB888 or RGB565 colour, `f32` or `u16` depth, whole frames or bands |
 //!
-//! [`pipeline::draw`] runs a [`pipeline::Shader`] of your own; [`shading::draw_mesh`] picks one of the built-in
-//! shaders for the effects a scene calls for, and compiles exactly those. [`effects`] adds material maps and point
-//! lights, computed only by the draws that use them; shadow maps ([`shadow`]) and ambient occlusion ([`occlusion`])
-//! are passes of their own.
+//! [`draw_mesh`] draws an [`Object`] under [`Lighting`]: it resolves the [`shading::Variant`] the object and the
+//! lights call for, once per draw, and runs the pipeline compiled for exactly that (see [`shading`]). Shadow maps
+//! ([`shadow`]) and ambient occlusion ([`occlusion`]) are passes of their own. [`pipeline::draw`] runs a
+//! [`pipeline::Shader`] of your own: the low-level way in.
+//!
+//! The crate root re-exports what a typical draw needs, so one `use` line does.
 //!
 //! # Example
 //! ```
-//! use rastty_core::camera::{look_at, perspective};
-//! use rastty_core::math::{Mat4, Vec3};
-//! use rastty_core::mesh::{Indices, Mesh};
-//! use rastty_core::pipeline::DrawState;
-//! use rastty_core::shading::{draw_mesh, Effects, Light, Lighting, Material, ShadingModel, Transforms};
-//! use rastty_core::target::{Rgb888, Target};
+//! use rastty_core::*;
 //!
 //! // One triangle facing the camera.
 //! let positions = [Vec3::new(-1.0, -1.0, 0.0), Vec3::new(1.0, -1.0, 0.0), Vec3::new(0.0, 1.0, 0.0)];
@@ -39,18 +36,14 @@
 //! let view = look_at(Vec3::new(0.0, 0.0, 3.0), Vec3::ZERO, Vec3::Y).unwrap();
 //! let projection = perspective(1.0, 1.0, 0.1, 10.0).unwrap();
 //! let transforms = Transforms::new(Mat4::IDENTITY, view, projection);
-//! let lights = [Light::directional(Vec3::Z, Vec3::ONE)];
-//! let effects = Effects {
-//!     shading: ShadingModel::Phong,
-//!     material: Material::default(),
-//!     lighting: Lighting { ambient: Vec3::splat(0.1), lights: &lights },
-//!     texture: None,
-//! };
+//! let object = Object { mesh, tangents: None, transforms, shading: ShadingModel::Phong, material: Material::default() };
+//! let sun = [Light::directional(Vec3::Z, Vec3::ONE)];
+//! let lights = Lighting { ambient: Vec3::splat(0.1), lights: &sun };
 //!
 //! let (mut color, mut depth) = ([0u32; 32 * 32], [0f32; 32 * 32]);
 //! let mut target = Target::new(Rgb888(&mut color), &mut depth[..], 32, 32).unwrap();
 //! target.clear(Vec3::ZERO);
-//! let stats = draw_mesh(&mut target, &mesh, &transforms, &effects, &DrawState::default()).unwrap();
+//! let (_, stats) = draw_mesh(&mut target, &object, &lights, &DrawState::default()).unwrap();
 //! assert_eq!(stats.rasterized, 1);
 //! assert_eq!(color[16 * 32 + 16], 0x00E0E0E0); // (0.1 ambient + 1.0 diffuse) * 0.8 = 0.88 -> 224
 //! ```
@@ -63,7 +56,6 @@
 
 pub mod camera;
 pub mod color;
-pub mod effects;
 pub mod math;
 pub mod mesh;
 pub mod occlusion;
@@ -71,4 +63,14 @@ pub mod pipeline;
 pub mod shading;
 pub mod shadow;
 pub mod target;
+#[doc(hidden)]
+pub mod testing;
 pub mod texture;
+
+pub use camera::{CameraError, look_at, orthographic, perspective};
+pub use math::{Mat3, Mat4, Quat, Vec2, Vec3, Vec4};
+pub use mesh::{Indices, Mesh, MeshError};
+pub use pipeline::{DrawError, DrawState, DrawStats};
+pub use shading::{Light, LightKind, Lighting, Material, Object, ShadingError, ShadingModel, Transforms, draw_mesh};
+pub use target::{Rgb565, Rgb888, Target, TargetError};
+pub use texture::{FilterMode, Texture, WrapMode};

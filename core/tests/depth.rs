@@ -5,10 +5,9 @@ use crate::common;
 use common::ScreenSpace;
 use rastty_core::math::{Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh};
-use rastty_core::pipeline::{
-    DepthTest, DrawState, DrawStats, EdgeArithmetic, Fragment, Shader, draw, draw_unspecialised,
-};
+use rastty_core::pipeline::{DepthTest, DrawState, DrawStats, EdgeArithmetic, Fragment, Shader, draw};
 use rastty_core::target::{DepthBuffer, Rgb888, Target, depth_to_u16};
+use rastty_core::testing::draw_unspecialised;
 
 /// Colours each triangle by its first vertex's index, so the winner of each pixel is visible.
 struct ByTriangle(ScreenSpace);

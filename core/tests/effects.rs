@@ -1,24 +1,23 @@
 //! "Simulate only what a scene calls for", for the effects: each effect switched off by data (a white map, a flat
 //! normal map, a black glow or specular map, a zero-strength light, an empty shadow map) gives exactly the pixels
-//! of the draw that leaves it out, the leaner draw computes only what it needs, and without maps the mapped shader
-//! equals the classic Phong shader bit for bit: colours and depths. The general loop draws into a caller's own
-//! depth buffer (`PlainDepth`), every other draw into the library's `&mut [f32]`.
+//! of the draw that leaves it out, and the leaner draw computes only what it needs: colours and depths. The general
+//! path draws into a caller's own depth buffer (`PlainDepth`), every other draw into the library's `&mut [f32]`.
 
 use crate::common;
 
 use common::{ExactColor, PlainDepth, Torus, assert_same_depths, checker_texels};
 use rastty_core::camera::{look_at, perspective};
-use rastty_core::effects::{
-    LightSource, NormalMap, NormalSource, NormalSpace, SceneLights, SpecularSource, SurfaceDraw, SurfaceError,
-    SurfaceMaterial, SurfaceVariant, draw_surface, draw_surface_unspecialised,
-};
 use rastty_core::math::{Mat4, Vec3, Vec4};
 use rastty_core::mesh::{Mesh, compute_tangents};
 use rastty_core::pipeline::{DrawState, DrawStats};
-use rastty_core::shading::{Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh};
+use rastty_core::shading::{
+    Light, Lighting, Material, NormalMap, NormalSource, NormalSpace, Object, ShadingError, ShadingModel,
+    SpecularSource, Transforms, Variant, draw_mesh,
+};
 use rastty_core::shadow::{Bounds, ShadowBias, ShadowMap, ShadowView, clear_shadow_depth};
 use rastty_core::target::Target;
-use rastty_core::texture::{FilterMode, Texture, WrapMode};
+use rastty_core::testing::draw_mesh_general;
+use rastty_core::texture::{FilterMode, Texture};
 
 const W: u32 = 64;
 const H: u32 = 48;
@@ -54,18 +53,18 @@ fn solid(texel: &[u32; 1]) -> Texture<'_> {
     Texture::new(texel, 1, 1).unwrap()
 }
 
-fn base_material(f: &Fixture) -> SurfaceMaterial<'_> {
-    SurfaceMaterial {
+fn base_material(f: &Fixture) -> Material<'_> {
+    Material {
         color: Vec3::new(0.9, 0.8, 0.7),
         specular: Vec3::splat(0.4),
         shininess: 24.0,
         diffuse: Some(f.checker()),
-        ..SurfaceMaterial::plain(Vec3::ONE)
+        ..Material::plain(Vec3::ONE)
     }
 }
 
-fn sun() -> LightSource<'static> {
-    LightSource::directional(Vec3::new(0.5, 1.0, 0.8), Vec3::new(0.9, 0.85, 0.8))
+fn sun() -> Light<'static> {
+    Light::directional(Vec3::new(0.5, 1.0, 0.8), Vec3::new(0.9, 0.85, 0.8))
 }
 
 /// A frame's exact colours and depths.
@@ -74,32 +73,27 @@ struct Picture {
     depth: Vec<f32>,
 }
 
-fn render(
-    f: &Fixture,
-    material: SurfaceMaterial<'_>,
-    lights: &[LightSource<'_>],
-    general: bool,
-) -> (Picture, SurfaceVariant, DrawStats) {
+fn render(f: &Fixture, material: Material<'_>, lights: &[Light<'_>], general: bool) -> (Picture, Variant, DrawStats) {
     let mut color = vec![[0u32; 3]; (W * H) as usize];
     let mut depth = vec![0f32; (W * H) as usize];
-    let object = SurfaceDraw {
+    let object = Object {
         mesh: f.torus.mesh(),
         tangents: Some(&f.tangents),
         transforms: transforms(),
         shading: ShadingModel::Phong,
         material,
     };
-    let lights = SceneLights { ambient: Vec3::splat(0.08), lights };
+    let lights = Lighting { ambient: Vec3::splat(0.08), lights };
     let background = Vec3::new(0.1, 0.2, 0.3);
     let state = DrawState::default();
     let (variant, stats) = if general {
         let mut target = Target::new(ExactColor(&mut color), PlainDepth(&mut depth), W, H).unwrap();
         target.clear(background);
-        draw_surface_unspecialised(&mut target, &object, &lights, &state)
+        draw_mesh_general(&mut target, &object, &lights, &state)
     } else {
         let mut target = Target::new(ExactColor(&mut color), &mut depth[..], W, H).unwrap();
         target.clear(background);
-        draw_surface(&mut target, &object, &lights, &state)
+        draw_mesh(&mut target, &object, &lights, &state)
     }
     .unwrap();
     (Picture { color, depth }, variant, stats)
@@ -112,49 +106,12 @@ fn assert_same(a: &Picture, b: &Picture, what: &str) {
 }
 
 #[test]
-fn without_maps_the_mapped_shader_equals_the_phong_shader() {
-    let f = Fixture::new();
-    let lights = [sun(), LightSource::directional(Vec3::new(-1.0, -0.2, 0.3), Vec3::new(0.2, 0.25, 0.4))];
-    let classic_lights = [
-        Light::directional(Vec3::new(0.5, 1.0, 0.8), Vec3::new(0.9, 0.85, 0.8)),
-        Light::directional(Vec3::new(-1.0, -0.2, 0.3), Vec3::new(0.2, 0.25, 0.4)),
-    ];
-    for (specular, textured) in [(0.0, false), (0.4, false), (0.0, true), (0.4, true)] {
-        let material = SurfaceMaterial {
-            specular: Vec3::splat(specular),
-            diffuse: textured.then(|| f.checker()),
-            ..base_material(&f)
-        };
-        let (mapped, variant, _) = render(&f, material, &lights, false);
-        assert_eq!(variant.world, specular > 0.0, "the world position only for highlights");
-        assert_eq!(variant.uvs, textured, "texture coordinates only for a texture");
-
-        let mut classic = Picture { color: vec![[0u32; 3]; (W * H) as usize], depth: vec![0f32; (W * H) as usize] };
-        let mut target = Target::new(ExactColor(&mut classic.color), &mut classic.depth[..], W, H).unwrap();
-        target.clear(Vec3::new(0.1, 0.2, 0.3));
-        let effects = Effects {
-            shading: ShadingModel::Phong,
-            material: Material { color: material.color, specular: material.specular, shininess: material.shininess },
-            lighting: Lighting { ambient: Vec3::splat(0.08), lights: &classic_lights },
-            texture: material.diffuse.map(|texture| TextureBinding {
-                texture,
-                filter: FilterMode::Bilinear,
-                wrap: WrapMode::Repeat,
-            }),
-        };
-        draw_mesh(&mut target, &f.torus.mesh(), &transforms(), &effects, &DrawState::default()).unwrap();
-        assert_same(&mapped, &classic, &format!("specular {specular}, textured {textured}"));
-    }
-}
-
-#[test]
 fn a_white_diffuse_map_changes_nothing() {
     let f = Fixture::new();
     let white = [0xFFFFFF];
-    let (plain, v, _) = render(&f, SurfaceMaterial { diffuse: None, ..base_material(&f) }, &[sun()], false);
+    let (plain, v, _) = render(&f, Material { diffuse: None, ..base_material(&f) }, &[sun()], false);
     assert!(!v.albedo_map && !v.uvs);
-    let (mapped, v, _) =
-        render(&f, SurfaceMaterial { diffuse: Some(solid(&white)), ..base_material(&f) }, &[sun()], false);
+    let (mapped, v, _) = render(&f, Material { diffuse: Some(solid(&white)), ..base_material(&f) }, &[sun()], false);
     assert!(v.albedo_map && v.uvs);
     assert_same(&plain, &mapped, "white diffuse map");
 }
@@ -167,7 +124,7 @@ fn a_flat_tangent_space_normal_map_changes_nothing() {
     assert_eq!(v.normals, NormalSource::Interpolated);
     assert!(!v.tangents);
     let normal_map = Some(NormalMap { texture: solid(&flat), space: NormalSpace::Tangent });
-    let (mapped, v, _) = render(&f, SurfaceMaterial { normal_map, ..base_material(&f) }, &[sun()], false);
+    let (mapped, v, _) = render(&f, Material { normal_map, ..base_material(&f) }, &[sun()], false);
     assert_eq!(v.normals, NormalSource::TangentMap);
     assert!(v.tangents);
     assert_same(&plain, &mapped, "flat tangent-space normal map");
@@ -181,7 +138,7 @@ fn a_normal_map_changes_the_picture() {
     let (plain, _, _) = render(&f, base_material(&f), &[sun()], false);
     for space in [NormalSpace::Tangent, NormalSpace::Object] {
         let normal_map = Some(NormalMap { texture: Texture::new(&bumps, 8, 8).unwrap(), space });
-        let (mapped, _, _) = render(&f, SurfaceMaterial { normal_map, ..base_material(&f) }, &[sun()], false);
+        let (mapped, _, _) = render(&f, Material { normal_map, ..base_material(&f) }, &[sun()], false);
         let differing = plain.color.iter().zip(&mapped.color).filter(|(p, q)| p != q).count();
         let covered = plain.color.iter().filter(|p| **p != plain.color[0]).count();
         assert!(differing > covered / 2, "{space:?}: only {differing} of {covered} pixels changed");
@@ -195,15 +152,15 @@ fn a_white_specular_map_equals_the_constant_and_a_black_one_no_highlights() {
     let (constant, v, _) = render(&f, base_material(&f), &[sun()], false);
     assert_eq!(v.specular, SpecularSource::Constant);
     let (mapped, v, _) =
-        render(&f, SurfaceMaterial { specular_map: Some(solid(&white)), ..base_material(&f) }, &[sun()], false);
+        render(&f, Material { specular_map: Some(solid(&white)), ..base_material(&f) }, &[sun()], false);
     assert_eq!(v.specular, SpecularSource::Map);
     assert_same(&constant, &mapped, "white specular map");
 
-    let (none, v, _) = render(&f, SurfaceMaterial { specular: Vec3::ZERO, ..base_material(&f) }, &[sun()], false);
+    let (none, v, _) = render(&f, Material { specular: Vec3::ZERO, ..base_material(&f) }, &[sun()], false);
     assert_eq!(v.specular, SpecularSource::None);
     assert!(!v.world, "no highlights, no point lights, no shadows: no world position");
     let (blackened, _, _) =
-        render(&f, SurfaceMaterial { specular_map: Some(solid(&black)), ..base_material(&f) }, &[sun()], false);
+        render(&f, Material { specular_map: Some(solid(&black)), ..base_material(&f) }, &[sun()], false);
     assert_same(&none, &blackened, "black specular map");
     assert!(none.color != constant.color, "highlights must show");
 }
@@ -214,8 +171,7 @@ fn a_black_glow_map_changes_nothing() {
     let black = [0x000000];
     let (plain, v, _) = render(&f, base_material(&f), &[sun()], false);
     assert!(!v.glow_map);
-    let (glowing, v, _) =
-        render(&f, SurfaceMaterial { glow_map: Some(solid(&black)), ..base_material(&f) }, &[sun()], false);
+    let (glowing, v, _) = render(&f, Material { glow_map: Some(solid(&black)), ..base_material(&f) }, &[sun()], false);
     assert!(v.glow_map);
     assert_same(&plain, &glowing, "black glow map");
 }
@@ -223,10 +179,10 @@ fn a_black_glow_map_changes_nothing() {
 #[test]
 fn a_zero_strength_point_light_changes_nothing() {
     let f = Fixture::new();
-    let (one, v, _) = render(&f, SurfaceMaterial { specular: Vec3::ZERO, ..base_material(&f) }, &[sun()], false);
+    let (one, v, _) = render(&f, Material { specular: Vec3::ZERO, ..base_material(&f) }, &[sun()], false);
     assert_eq!((v.directional_lights, v.point_lights, v.world), (1, 0, false));
-    let dark = LightSource::point(Vec3::new(0.0, 2.0, 1.0), Vec3::ZERO);
-    let (two, v, _) = render(&f, SurfaceMaterial { specular: Vec3::ZERO, ..base_material(&f) }, &[sun(), dark], false);
+    let dark = Light::point(Vec3::new(0.0, 2.0, 1.0), Vec3::ZERO);
+    let (two, v, _) = render(&f, Material { specular: Vec3::ZERO, ..base_material(&f) }, &[sun(), dark], false);
     assert_eq!((v.directional_lights, v.point_lights, v.world), (1, 1, true));
     assert_same(&one, &two, "zero-strength point light");
 }
@@ -249,7 +205,7 @@ fn an_empty_shadow_map_changes_nothing() {
 }
 
 #[test]
-fn every_effect_off_by_data_equals_none_through_the_general_loop_too() {
+fn every_effect_off_by_data_equals_none_through_the_general_path_too() {
     let f = Fixture::new();
     let (white, flat, black) = ([0xFFFFFF], [0x8080FF], [0x000000]);
     let mut depth = vec![0.0; 64 * 64];
@@ -257,21 +213,21 @@ fn every_effect_off_by_data_equals_none_through_the_general_loop_too() {
     let mut shadowed_sun = sun();
     let view = ShadowView::fit(shadowed_sun.kind, Bounds { centre: Vec3::ZERO, radius: 1.5 }, 64).unwrap();
     shadowed_sun.shadow = Some(ShadowMap::new(view, &depth, ShadowBias::DEFAULT, 1).unwrap());
-    let dark_point = LightSource::point(Vec3::new(0.0, 2.0, 1.0), Vec3::ZERO);
-    let everything = SurfaceMaterial {
+    let dark_point = Light::point(Vec3::new(0.0, 2.0, 1.0), Vec3::ZERO);
+    let everything = Material {
         diffuse: Some(solid(&white)),
         normal_map: Some(NormalMap { texture: solid(&flat), space: NormalSpace::Tangent }),
         specular_map: Some(solid(&white)),
         glow_map: Some(solid(&black)),
         ..base_material(&f)
     };
-    let leanest = SurfaceMaterial { diffuse: None, ..base_material(&f) };
+    let leanest = Material { diffuse: None, ..base_material(&f) };
     let (none, lean, lean_stats) = render(&f, leanest, &[sun()], false);
     for general in [false, true] {
         let (all, v, stats) = render(&f, everything, &[shadowed_sun, dark_point], general);
         assert!(v.uvs && v.tangents && v.world && v.glow_map);
         assert_eq!(stats, lean_stats);
-        assert_same(&none, &all, &format!("every effect off by data (general loop: {general})"));
+        assert_same(&none, &all, &format!("every effect off by data (general path: {general})"));
     }
     assert!(!lean.uvs && !lean.tangents);
 }
@@ -280,14 +236,14 @@ fn every_effect_off_by_data_equals_none_through_the_general_loop_too() {
 fn the_explanation_lists_only_what_is_used() {
     let f = Fixture::new();
     let (_, lean, _) =
-        render(&f, SurfaceMaterial { diffuse: None, specular: Vec3::ZERO, ..base_material(&f) }, &[sun()], false);
+        render(&f, Material { diffuse: None, specular: Vec3::ZERO, ..base_material(&f) }, &[sun()], false);
     assert_eq!(
         lean.to_string(),
         "phong; varyings normal; albedo colour; normals interpolated; no specular; lights 1 directional; \
          perspective-correct, depth less, cull back"
     );
     let flat = [0x8080FF];
-    let material = SurfaceMaterial {
+    let material = Material {
         normal_map: Some(NormalMap { texture: solid(&flat), space: NormalSpace::Tangent }),
         specular_map: Some(f.checker()),
         glow_map: Some(f.checker()),
@@ -299,7 +255,7 @@ fn the_explanation_lists_only_what_is_used() {
     let mut shadowed = sun();
     let view = ShadowView::fit(shadowed.kind, Bounds { centre: Vec3::ZERO, radius: 1.5 }, 16).unwrap();
     shadowed.shadow = Some(ShadowMap::new(view, &depth, ShadowBias::DEFAULT, 1).unwrap());
-    let lamp = LightSource::point(Vec3::new(0.0, 3.0, 0.0), Vec3::ONE);
+    let lamp = Light::point(Vec3::new(0.0, 3.0, 0.0), Vec3::ONE);
     let (_, full, _) = render(&f, material, &[shadowed, lamp], false);
     assert_eq!(
         full.to_string(),
@@ -313,15 +269,15 @@ fn the_explanation_lists_only_what_is_used() {
 fn a_tangent_space_map_without_tangents_is_refused() {
     let f = Fixture::new();
     let flat = [0x8080FF];
-    let material = SurfaceMaterial {
+    let material = Material {
         normal_map: Some(NormalMap { texture: solid(&flat), space: NormalSpace::Tangent }),
         ..base_material(&f)
     };
     let mesh: Mesh<'_> = f.torus.mesh();
     for tangents in [None, Some(&f.tangents[1..])] {
-        let object = SurfaceDraw { mesh, tangents, transforms: transforms(), shading: ShadingModel::Phong, material };
-        let result = SurfaceVariant::resolve(&object, [], &DrawState::default());
-        let expected = rastty_core::effects::SurfaceError::Tangents {
+        let object = Object { mesh, tangents, transforms: transforms(), shading: ShadingModel::Phong, material };
+        let result = Variant::resolve(&object, [], &DrawState::default());
+        let expected = rastty_core::shading::ShadingError::Tangents {
             expected: mesh.vertex_count(),
             actual: tangents.map_or(0, <[Vec4]>::len),
         };
@@ -331,22 +287,21 @@ fn a_tangent_space_map_without_tangents_is_refused() {
 
 #[test]
 fn a_surface_shader_refuses_a_variant_it_was_not_compiled_for() {
-    use rastty_core::effects::{Absent, LightUse, SurfaceShader, capabilities};
+    use rastty_core::shading::{Absent, LightUse, SurfaceShader, capabilities};
     let f = Fixture::new();
-    let material = SurfaceMaterial { specular: Vec3::splat(0.3), ..SurfaceMaterial::plain(Vec3::ONE) };
-    let sources =
-        [LightSource::directional(Vec3::Z, Vec3::ONE), LightSource::point(Vec3::new(0.0, 2.0, 2.0), Vec3::ONE)];
-    let lights = SceneLights { ambient: Vec3::ZERO, lights: &sources };
-    let variant = |shading, lights: &[LightSource<'_>]| {
-        let object = SurfaceDraw { mesh: f.torus.mesh(), tangents: None, transforms: transforms(), shading, material };
-        SurfaceVariant::resolve(&object, lights.iter().map(LightUse::from), &DrawState::default()).unwrap()
+    let material = Material { specular: Vec3::splat(0.3), ..Material::plain(Vec3::ONE) };
+    let sources = [Light::directional(Vec3::Z, Vec3::ONE), Light::point(Vec3::new(0.0, 2.0, 2.0), Vec3::ONE)];
+    let lights = Lighting { ambient: Vec3::ZERO, lights: &sources };
+    let variant = |shading, lights: &[Light<'_>]| {
+        let object = Object { mesh: f.torus.mesh(), tangents: None, transforms: transforms(), shading, material };
+        Variant::resolve(&object, lights.iter().map(LightUse::from), &DrawState::default()).unwrap()
     };
     type PerPixel<'a, const CAPS: u32> = SurfaceShader<'a, Vec3, Vec3, Absent, Absent, CAPS>;
     let new = |v| PerPixel::<{ capabilities::PER_PIXEL }>::new(v, transforms(), &[], material, lights).map(|_| ());
     assert_eq!(new(variant(ShadingModel::Phong, &sources[..1])), Ok(()));
     // Another model, or a point light, is not compiled in.
-    assert_eq!(new(variant(ShadingModel::Flat, &sources[..1])), Err(SurfaceError::Unsupported));
-    assert_eq!(new(variant(ShadingModel::Phong, &sources)), Err(SurfaceError::Unsupported));
+    assert_eq!(new(variant(ShadingModel::Flat, &sources[..1])), Err(ShadingError::Unsupported));
+    assert_eq!(new(variant(ShadingModel::Phong, &sources)), Err(ShadingError::Unsupported));
     let all = |v| PerPixel::<{ capabilities::ALL }>::new(v, transforms(), &[], material, lights).map(|_| ());
     assert_eq!(all(variant(ShadingModel::Phong, &sources)), Ok(()));
     // Slots that do not carry the layout: per-pixel lighting needs the normal.
@@ -357,5 +312,5 @@ fn a_surface_shader_refuses_a_variant_it_was_not_compiled_for() {
         material,
         lights,
     );
-    assert_eq!(bare.map(|_| ()), Err(SurfaceError::Unsupported));
+    assert_eq!(bare.map(|_| ()), Err(ShadingError::Unsupported));
 }

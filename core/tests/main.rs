@@ -19,6 +19,5 @@ mod strips;
 mod supersample;
 mod tangents;
 mod texture;
-mod unification;
 mod vertex_cache;
 mod wireframe;

@@ -8,10 +8,9 @@ use rastty_core::camera::{look_at, perspective};
 use rastty_core::math::{Mat4, Vec2, Vec3};
 use rastty_core::mesh::{Attributes, Indices, Mesh, MeshError};
 use rastty_core::pipeline::{DrawError, DrawState, DrawStats, draw};
-use rastty_core::shading::{
-    Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh, draw_mesh_unspecialised,
-};
+use rastty_core::shading::{Light, Lighting, Material, Object, ShadingModel, Transforms, draw_mesh};
 use rastty_core::target::{MAX_DIMENSION, NoColor, NoDepth, Rgb888, Target, TargetError};
+use rastty_core::testing::draw_mesh_general;
 use rastty_core::texture::{FilterMode, Texture, WrapMode};
 
 fn quad_positions() -> Vec<Vec3> {
@@ -69,14 +68,15 @@ fn non_finite_attributes_skip_triangles_only_where_used() {
         torus.indices.chunks(3).filter(|t| !t.iter().any(|i| bad.contains(i))).flatten().copied().collect()
     };
     let texels = common::checker_texels();
-    let texture = TextureBinding {
-        texture: Texture::new(&texels, 8, 8).unwrap(),
+    let texture = Material {
+        diffuse: Some(Texture::new(&texels, 8, 8).unwrap()),
         filter: FilterMode::Nearest,
         wrap: WrapMode::Repeat,
+        ..Material::default()
     };
     let view = look_at(Vec3::new(0.0, 0.0, 4.0), Vec3::ZERO, Vec3::Y).unwrap();
     let transforms = Transforms::new(Mat4::IDENTITY, view, perspective(1.0, 1.0, 0.1, 10.0).unwrap());
-    let render = |indices: &[u16], shading, texture| {
+    let render = |indices: &[u16], shading, material: Option<Material<'_>>| {
         let mesh = Mesh::new(&torus.positions, Indices::U16(indices))
             .unwrap()
             .with_normals(&normals)
@@ -85,15 +85,16 @@ fn non_finite_attributes_skip_triangles_only_where_used() {
             .unwrap();
         let lights = [Light::directional(Vec3::new(1.0, 1.0, 1.0), Vec3::splat(0.7))];
         let lighting = Lighting { ambient: Vec3::splat(0.3), lights: &lights };
-        let effects = Effects { shading, material: Material::default(), lighting, texture };
+        let material = material.unwrap_or_default();
+        let object = Object { mesh, tangents: None, transforms, shading, material };
         let state = DrawState { cull: rastty_core::pipeline::Cull::None, ..DrawState::default() };
         let [(color, stats), (general_color, general_stats)] = [false, true].map(|general| {
             let mut color = vec![0u32; 48 * 48];
             let mut depth = vec![0f32; 48 * 48];
             let mut target = Target::new(Rgb888(&mut color), &mut depth[..], 48, 48).unwrap();
             target.clear(Vec3::ZERO);
-            let draw = if general { draw_mesh_unspecialised } else { draw_mesh };
-            let stats = draw(&mut target, &mesh, &transforms, &effects, &state).unwrap();
+            let draw = if general { draw_mesh_general } else { draw_mesh };
+            let (_, stats) = draw(&mut target, &object, &lighting, &state).unwrap();
             (color, stats)
         });
         assert!(color == general_color, "{shading:?}: the specialised and general draws differ");
@@ -125,15 +126,17 @@ fn every_triangle_is_counted_exactly_once() {
     // Close enough that the near plane cuts the ring.
     let view = look_at(Vec3::new(0.0, 0.9, 0.5), Vec3::ZERO, Vec3::Y).unwrap();
     let transforms = Transforms::new(Mat4::IDENTITY, view, perspective(1.4, 1.0, 0.8, 10.0).unwrap());
-    let effects = Effects {
+    let object = Object {
+        mesh: torus.mesh(),
+        tangents: None,
+        transforms,
         shading: ShadingModel::Flat,
         material: Material::default(),
-        lighting: Lighting { ambient: Vec3::ONE, lights: &[] },
-        texture: None,
     };
+    let lighting = Lighting { ambient: Vec3::ONE, lights: &[] };
     let mut color = vec![0u32; 24 * 24];
     let mut target = Target::new(Rgb888(&mut color), NoDepth, 24, 24).unwrap();
-    let s = draw_mesh(&mut target, &torus.mesh(), &transforms, &effects, &DrawState::default()).unwrap();
+    let (_, s) = draw_mesh(&mut target, &object, &lighting, &DrawState::default()).unwrap();
     assert_eq!(s.triangles_in, torus.indices.len() as u64 / 3);
     assert_eq!(s.invalid + s.outside + s.culled + s.degenerate + s.rasterized, s.triangles_in, "{s:?}");
     assert!(s.culled > 0 && s.rasterized > 0 && s.clipped > 0 && s.outside > 0, "{s:?}");

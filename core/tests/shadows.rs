@@ -5,11 +5,10 @@
 //! orthographic camera, so that each pixel is a known point of the ground: 32 pixels per world unit.
 
 use rastty_core::camera::{look_at, orthographic};
-use rastty_core::effects::{LightSource, SceneLights, SurfaceDraw, SurfaceMaterial, draw_surface};
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::DrawState;
-use rastty_core::shading::{ShadingModel, Transforms};
+use rastty_core::shading::{Light, Lighting, Material, Object, ShadingModel, Transforms, draw_mesh};
 use rastty_core::shadow::{
     Bounds, ShadowBias, ShadowError, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster,
     draw_shadow_caster_band,
@@ -75,7 +74,7 @@ fn camera() -> (Mat4, Mat4) {
 /// Renders the objects lit by one directional light shining from `to_light`, with a shadow map of the given
 /// bias and PCF radius, or without shadows. Returns the pixels (row 0 at `z = -2`, column 0 at `x = -2`).
 fn render(objects: &[&Quads], to_light: Vec3, shadow: Option<(ShadowBias, u32)>) -> Vec<u32> {
-    let light = LightSource::directional(to_light, Vec3::splat(0.8));
+    let light = Light::directional(to_light, Vec3::splat(0.8));
     let mut depth_map = vec![0.0; (MAP * MAP) as usize];
     let light = match shadow {
         None => light,
@@ -86,25 +85,25 @@ fn render(objects: &[&Quads], to_light: Vec3, shadow: Option<(ShadowBias, u32)>)
             for o in objects {
                 draw_shadow_caster(&view, &mut depth_map, &o.mesh(), &Mat4::IDENTITY).unwrap();
             }
-            LightSource { shadow: Some(ShadowMap::new(view, &depth_map, bias, pcf).unwrap()), ..light }
+            Light { shadow: Some(ShadowMap::new(view, &depth_map, bias, pcf).unwrap()), ..light }
         }
     };
     let lights = [light];
-    let scene = SceneLights { ambient: Vec3::splat(0.2), lights: &lights };
+    let scene = Lighting { ambient: Vec3::splat(0.2), lights: &lights };
     let (view, projection) = camera();
     let mut color = vec![0u32; (SIZE * SIZE) as usize];
     let mut depth = vec![0f32; (SIZE * SIZE) as usize];
     let mut target = Target::new(Rgb888(&mut color), &mut depth[..], SIZE, SIZE).unwrap();
     target.clear(Vec3::ZERO);
     for o in objects {
-        let object = SurfaceDraw {
+        let object = Object {
             mesh: o.mesh(),
             tangents: None,
             transforms: Transforms::new(Mat4::IDENTITY, view, projection),
             shading: ShadingModel::Phong,
-            material: SurfaceMaterial::plain(Vec3::ONE),
+            material: Material::plain(Vec3::ONE),
         };
-        draw_surface(&mut target, &object, &scene, &DrawState::default()).unwrap();
+        draw_mesh(&mut target, &object, &scene, &DrawState::default()).unwrap();
     }
     color
 }
@@ -227,7 +226,7 @@ fn pcf_softens_the_edge_and_nothing_else() {
 #[test]
 fn a_map_drawn_in_bands_is_the_map_drawn_whole() {
     let (ground, cube) = (ground(), cube());
-    let kind = LightSource::directional(Vec3::new(0.4, 1.0, 0.3), Vec3::ONE).kind;
+    let kind = Light::directional(Vec3::new(0.4, 1.0, 0.3), Vec3::ONE).kind;
     let view = ShadowView::fit(kind, Bounds { centre: Vec3::new(0.0, 0.5, 0.0), radius: 3.0 }, 64).unwrap();
     // The ground and the cube inside the bounds, and the cube four times larger, reaching past the map's near and
     // far planes (cut there, its depths clamped to the map's range).

@@ -1,68 +1,138 @@
-//! "Only the effects a scene calls for": every combination of effects rendered through the specialised pipelines
-//! and through the general one must give identical pixels, depths and statistics. The general path draws into a
-//! caller's own depth buffer (`PlainDepth`), the specialised ones into the library's `&mut [f32]`.
+//! "Only the effects a scene calls for", proven: every choice a draw's variant makes, rendered through the
+//! specialised path (`draw_mesh`: the pixel loop compiled for the state and the varyings carried, the fragment
+//! stages run over batches) and through the general one (`testing::draw_mesh_general`: one scalar shader deciding
+//! everything per fragment, through the pixel loop that decides interpolation and depth test per pixel), gives
+//! identical colours (exact `f32` bits), depths and statistics. The general path draws into a caller's own depth
+//! buffer (`PlainDepth`), the specialised one into the library's `&mut [f32]`.
 
 use crate::common;
 
 use common::{ExactColor, PlainDepth, Torus, assert_same_depths, checker_texels};
 use rastty_core::camera::{look_at, orthographic, perspective};
-use rastty_core::math::{Mat4, Vec3};
-use rastty_core::mesh::{Indices, Mesh};
-use rastty_core::pipeline::{Cull, DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation};
+use rastty_core::math::{Mat4, Vec3, Vec4};
+use rastty_core::mesh::{Indices, Mesh, compute_tangents};
+use rastty_core::pipeline::{Cull, DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation, Winding};
 use rastty_core::shading::{
-    Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh, draw_mesh_unspecialised,
+    Light, Lighting, Material, NormalMap, NormalSource, NormalSpace, Object, ShadingModel, SpecularSource, Transforms,
+    Variant, draw_mesh,
 };
+use rastty_core::shadow::{Bounds, ShadowBias, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster};
 use rastty_core::target::Target;
+use rastty_core::testing::draw_mesh_general;
 use rastty_core::texture::{FilterMode, Texture, WrapMode};
 
 const W: u32 = 48;
 const H: u32 = 40;
 
-/// The exact colours, the depths and the statistics of one draw.
-type Rendered = (Vec<[u32; 3]>, Vec<f32>, DrawStats);
+/// The exact colours, the depths and the statistics of one draw, with its variant.
+type Rendered = (Vec<[u32; 3]>, Vec<f32>, DrawStats, Variant);
 
-fn render(
-    mesh: &Mesh<'_>,
-    transforms: &Transforms,
-    effects: &Effects<'_>,
-    state: &DrawState,
-    specialised: bool,
-) -> Rendered {
+fn render(object: &Object<'_>, lights: &Lighting<'_>, state: &DrawState, specialised: bool) -> Rendered {
     // Exact f32 colours: a difference in the last bit counts.
     let mut color = vec![[0u32; 3]; (W * H) as usize];
     let mut depth = vec![0f32; (W * H) as usize];
     let background = Vec3::new(0.1, 0.2, 0.3);
-    let stats = if specialised {
+    let (variant, stats) = if specialised {
         let mut target = Target::new(ExactColor(&mut color), &mut depth[..], W, H).unwrap();
         target.clear(background);
-        draw_mesh(&mut target, mesh, transforms, effects, state)
+        draw_mesh(&mut target, object, lights, state)
     } else {
         let mut target = Target::new(ExactColor(&mut color), PlainDepth(&mut depth), W, H).unwrap();
         target.clear(background);
-        draw_mesh_unspecialised(&mut target, mesh, transforms, effects, state)
+        draw_mesh_general(&mut target, object, lights, state)
     }
     .unwrap();
-    (color, depth, stats)
+    (color, depth, stats, variant)
 }
 
+/// The five fixed-function states, which between them use every value of interpolation, depth test, culling and
+/// edge arithmetic.
+const STATES: [(Interpolation, DepthTest, Cull, EdgeArithmetic); 5] = [
+    (Interpolation::PerspectiveCorrect, DepthTest::Less, Cull::Back, EdgeArithmetic::FixedPoint),
+    (Interpolation::Affine, DepthTest::Less, Cull::None, EdgeArithmetic::Float),
+    (Interpolation::PerspectiveCorrect, DepthTest::Off, Cull::None, EdgeArithmetic::Float),
+    (Interpolation::Affine, DepthTest::Off, Cull::Front, EdgeArithmetic::FixedPoint),
+    (Interpolation::PerspectiveCorrect, DepthTest::Less, Cull::Back, EdgeArithmetic::Float),
+];
+
+/// Every choice of a variant, each against the general path: 6 shading models, meshes with and without vertex
+/// colours, 10 materials (highlights or none; a diffuse map under each filter and wrap mode; a tangent-space
+/// normal map; an object-space one with a glow map; a specular map; everything at once), 5 sets of lights (none;
+/// two directional; directional and point; a shadowed sun (filter radius 0) and a fill light; a shadowed sun
+/// (radius 2) and a shadowed lamp (radius 1)) and 2 projections; the fixed-function states of [`STATES`] in turn.
+/// 1,200 draws, clipped ones among them.
 #[test]
-fn specialised_pipelines_equal_the_general_one_for_every_combination() {
+fn every_choice_of_a_variant_equals_the_general_path() {
     let torus = Torus::new(1.0, 0.4, 24, 12);
+    let mut tangents = vec![Vec4::ZERO; torus.positions.len()];
+    compute_tangents(&torus.mesh(), &mut tangents).unwrap();
     let with_colors = torus.mesh();
-    let positions_only = Mesh::new(&torus.positions, Indices::U16(&torus.indices))
+    let without_colors = Mesh::new(&torus.positions, Indices::U16(&torus.indices))
         .unwrap()
         .with_normals(&torus.normals)
         .unwrap()
         .with_uvs(&torus.uvs)
         .unwrap();
     let texels = checker_texels();
-    let texture = Texture::new(&texels, 8, 8).unwrap();
-    let lights = [
-        Light::directional(Vec3::new(0.5, 1.0, 0.8), Vec3::new(0.9, 0.85, 0.8)),
-        Light::directional(Vec3::new(-1.0, -0.2, 0.3), Vec3::new(0.2, 0.25, 0.4)),
-    ];
-    let lighting = Lighting { ambient: Vec3::splat(0.08), lights: &lights };
+    let checker = Texture::new(&texels, 8, 8).unwrap();
+    let bumps: Vec<u32> = (0..64).map(|i| if (i % 8 + i / 8) % 2 == 0 { 0xC080E0 } else { 0x4080E0 }).collect();
+    let bumps = Texture::new(&bumps, 8, 8).unwrap();
+
+    // Shadow maps of the torus from a sun and from a lamp outside it, drawn once.
     let model = Mat4::from_axis_angle(Vec3::new(1.0, 0.3, 0.0), 1.1);
+    let sun = Light::directional(Vec3::new(0.5, 1.0, 0.8), Vec3::new(0.9, 0.85, 0.8));
+    let lamp = Light::point(Vec3::new(-1.2, 2.5, 2.0), Vec3::new(0.5, 0.45, 0.3));
+    let fill = Light::directional(Vec3::new(-1.0, -0.2, 0.3), Vec3::new(0.2, 0.25, 0.4));
+    let bounds = Bounds { centre: Vec3::ZERO, radius: 1.5 };
+    let map_of = |light: &Light<'_>| {
+        let view = ShadowView::fit(light.kind, bounds, 96).unwrap();
+        let mut depth = vec![0.0; 96 * 96];
+        clear_shadow_depth(&mut depth);
+        draw_shadow_caster(&view, &mut depth, &torus.mesh(), &model).unwrap();
+        (view, depth)
+    };
+    let (sun_view, sun_depth) = map_of(&sun);
+    let (lamp_view, lamp_depth) = map_of(&lamp);
+    let shadowed = |light: Light<'_>, view, depth, pcf| Light {
+        shadow: Some(ShadowMap::new(view, depth, ShadowBias::DEFAULT, pcf).unwrap()),
+        ..light
+    };
+    let light_sets = [
+        vec![],
+        vec![sun, fill],
+        vec![sun, lamp],
+        vec![shadowed(sun, sun_view, &sun_depth, 0), fill],
+        vec![shadowed(sun, sun_view, &sun_depth, 2), shadowed(lamp, lamp_view, &lamp_depth, 1)],
+    ];
+
+    let base = Material {
+        color: Vec3::new(0.9, 0.7, 0.5),
+        specular: Vec3::splat(0.6),
+        shininess: 24.0,
+        ..Material::plain(Vec3::ONE)
+    };
+    let mut materials = vec![base, Material { specular: Vec3::ZERO, ..base }];
+    for filter in [FilterMode::Nearest, FilterMode::Bilinear] {
+        for wrap in [WrapMode::Repeat, WrapMode::Clamp] {
+            materials.push(Material { diffuse: Some(checker), filter, wrap, ..base });
+        }
+    }
+    materials.push(Material { normal_map: Some(NormalMap { texture: bumps, space: NormalSpace::Tangent }), ..base });
+    materials.push(Material {
+        normal_map: Some(NormalMap { texture: bumps, space: NormalSpace::Object }),
+        glow_map: Some(bumps),
+        ..base
+    });
+    materials.push(Material { specular_map: Some(checker), filter: FilterMode::Nearest, ..base });
+    materials.push(Material {
+        diffuse: Some(checker),
+        normal_map: Some(NormalMap { texture: bumps, space: NormalSpace::Tangent }),
+        specular_map: Some(bumps),
+        glow_map: Some(checker),
+        wrap: WrapMode::Clamp,
+        ..base
+    });
+
     // A camera close enough that the near plane cuts the torus, so clipped varyings are compared too.
     let view = look_at(Vec3::new(0.3, 0.5, 1.6), Vec3::ZERO, Vec3::Y).unwrap();
     let projections = [
@@ -77,59 +147,83 @@ fn specialised_pipelines_equal_the_general_one_for_every_combination() {
         ShadingModel::Depth { near: 0.2, far: 0.9 },
         ShadingModel::Normals,
     ];
-    let textures = [
-        None,
-        Some((FilterMode::Nearest, WrapMode::Repeat)),
-        Some((FilterMode::Nearest, WrapMode::Clamp)),
-        Some((FilterMode::Bilinear, WrapMode::Repeat)),
-        Some((FilterMode::Bilinear, WrapMode::Clamp)),
-    ];
-    let mut combinations = 0;
-    let mut clipped = 0;
+    let (mut draws, mut clipped) = (0, 0);
+    let mut seen = Seen::default();
     for projection in projections {
         let transforms = Transforms::new(model, view, projection);
         for shading in shadings {
-            for texture_mode in textures {
-                for specular in [Vec3::ZERO, Vec3::splat(0.6)] {
-                    for mesh in [&with_colors, &positions_only] {
-                        for (interpolation, depth_test, cull, edges) in [
-                            (
-                                Interpolation::PerspectiveCorrect,
-                                DepthTest::Less,
-                                Cull::Back,
-                                EdgeArithmetic::FixedPoint,
-                            ),
-                            (Interpolation::Affine, DepthTest::Less, Cull::None, EdgeArithmetic::Float),
-                            (Interpolation::PerspectiveCorrect, DepthTest::Off, Cull::None, EdgeArithmetic::Float),
-                            (Interpolation::Affine, DepthTest::Off, Cull::Front, EdgeArithmetic::FixedPoint),
-                            (Interpolation::PerspectiveCorrect, DepthTest::Less, Cull::Back, EdgeArithmetic::Float),
-                        ] {
-                            let effects = Effects {
-                                shading,
-                                material: Material { color: Vec3::new(0.9, 0.7, 0.5), specular, shininess: 24.0 },
-                                lighting,
-                                texture: texture_mode.map(|(filter, wrap)| TextureBinding { texture, filter, wrap }),
-                            };
-                            let state = DrawState { interpolation, depth_test, cull, edges, ..DrawState::default() };
-                            let (fast, fast_depth, fast_stats) = render(mesh, &transforms, &effects, &state, true);
-                            let (general, general_depth, general_stats) =
-                                render(mesh, &transforms, &effects, &state, false);
-                            let variant = effects.resolve(mesh, &transforms, &state).unwrap();
-                            assert_eq!(fast_stats, general_stats, "{variant}");
-                            let differing = fast.iter().zip(&general).filter(|(a, b)| a != b).count();
-                            assert_eq!(differing, 0, "{variant}: {differing} pixels differ");
-                            assert_same_depths(&variant.to_string(), &general_depth, &fast_depth, W as usize, 0);
-                            assert!(fast_stats.fragments > 100, "{variant}: the scene must cover pixels");
-                            combinations += 1;
-                            clipped += u64::from(fast_stats.clipped > 0);
-                        }
+            for mesh in [with_colors, without_colors] {
+                for material in &materials {
+                    for lights in &light_sets {
+                        let (interpolation, depth_test, cull, edges) = STATES[draws % STATES.len()];
+                        let state = DrawState { interpolation, depth_test, cull, edges, ..DrawState::default() };
+                        let object =
+                            Object { mesh, tangents: Some(&tangents), transforms, shading, material: *material };
+                        let lights = Lighting { ambient: Vec3::splat(0.08), lights };
+                        let (fast, fast_depth, fast_stats, variant) = render(&object, &lights, &state, true);
+                        let (general, general_depth, general_stats, general_variant) =
+                            render(&object, &lights, &state, false);
+                        assert_eq!(variant, general_variant);
+                        assert_eq!(fast_stats, general_stats, "{variant}");
+                        let differing = fast.iter().zip(&general).filter(|(a, b)| a != b).count();
+                        assert_eq!(differing, 0, "{variant}: {differing} pixels differ");
+                        assert_same_depths(&variant.to_string(), &general_depth, &fast_depth, W as usize, 0);
+                        assert!(fast_stats.fragments > 100, "{variant}: the scene must cover pixels");
+                        seen.note(&variant);
+                        draws += 1;
+                        clipped += u64::from(fast_stats.clipped > 0);
                     }
                 }
             }
         }
     }
-    assert_eq!(combinations, 2 * 6 * 5 * 2 * 2 * 5);
+    assert_eq!(draws, 2 * 6 * 2 * 10 * 5);
     assert!(clipped > 0);
+    seen.assert_every_choice();
+}
+
+/// Which values of each of a variant's choices the matrix reached: a choice it never made proves nothing.
+#[derive(Default)]
+struct Seen {
+    vertex_colors: bool,
+    albedo_map: bool,
+    normals: Vec<NormalSource>,
+    specular: Vec<SpecularSource>,
+    glow_map: bool,
+    filters: Vec<(FilterMode, WrapMode)>,
+    point_lights: bool,
+    shadows: Vec<u32>,
+    affine: bool,
+}
+
+impl Seen {
+    fn note(&mut self, v: &Variant) {
+        self.vertex_colors |= v.vertex_colors;
+        self.albedo_map |= v.albedo_map;
+        self.glow_map |= v.glow_map;
+        self.point_lights |= v.point_lights > 0;
+        self.affine |= v.state.interpolation == Interpolation::Affine;
+        if !self.normals.contains(&v.normals) {
+            self.normals.push(v.normals);
+        }
+        if !self.specular.contains(&v.specular) {
+            self.specular.push(v.specular);
+        }
+        if v.uvs && !self.filters.contains(&(v.filter, v.wrap)) {
+            self.filters.push((v.filter, v.wrap));
+        }
+        if v.shadowed_lights > 0 && !self.shadows.contains(&v.pcf_radius) {
+            self.shadows.push(v.pcf_radius);
+        }
+    }
+
+    fn assert_every_choice(&self) {
+        assert!(self.vertex_colors && self.albedo_map && self.glow_map && self.point_lights && self.affine);
+        assert_eq!(self.normals.len(), 6, "normal sources: {:?}", self.normals);
+        assert_eq!(self.specular.len(), 3, "specular sources: {:?}", self.specular);
+        assert_eq!(self.filters.len(), 4, "filter and wrap modes: {:?}", self.filters);
+        assert_eq!(self.shadows.len(), 2, "shadow filter radii: {:?}", self.shadows);
+    }
 }
 
 #[test]
@@ -137,54 +231,62 @@ fn resolve_keeps_only_what_the_scene_uses() {
     let torus = Torus::new(1.0, 0.4, 8, 6);
     let texels = checker_texels();
     let texture = Texture::new(&texels, 8, 8).unwrap();
-    let lighting = Lighting { ambient: Vec3::ZERO, lights: &[] };
     let view = look_at(Vec3::new(0.0, 0.0, 4.0), Vec3::ZERO, Vec3::Y).unwrap();
     let persp = Transforms::new(Mat4::IDENTITY, view, perspective(1.0, 1.0, 0.1, 10.0).unwrap());
     let ortho = Transforms::new(Mat4::IDENTITY, view, orthographic(-2.0, 2.0, -2.0, 2.0, 0.1, 10.0).unwrap());
     let mirrored =
         Transforms::new(Mat4::from_scale(Vec3::new(-1.0, 1.0, 1.0)), view, perspective(1.0, 1.0, 0.1, 10.0).unwrap());
-    let binding = TextureBinding { texture, filter: FilterMode::Bilinear, wrap: WrapMode::Repeat };
-    let effects = |shading, specular| Effects {
-        shading,
-        material: Material { specular, ..Material::default() },
-        lighting,
-        texture: Some(binding),
-    };
+    let sun = [Light::directional(Vec3::Z, Vec3::ONE)];
     let state = DrawState::default();
-    let explain = |e: Effects<'_>, mesh: &Mesh<'_>, t: &Transforms| e.resolve(mesh, t, &state).unwrap().to_string();
+    let explain = |shading, specular, mesh: Mesh<'_>, transforms| {
+        let material = Material { specular, diffuse: Some(texture), ..Material::default() };
+        let object = Object { mesh, tangents: None, transforms, shading, material };
+        Variant::resolve(&object, sun.iter().map(Into::into), &state).map(|v| v.to_string())
+    };
 
     let full = torus.mesh();
     let no_uv =
         Mesh::new(&torus.positions, Indices::U16(&torus.indices)).unwrap().with_normals(&torus.normals).unwrap();
     assert_eq!(
-        explain(effects(ShadingModel::Phong, Vec3::ONE), &full, &persp),
-        "phong, texture bilinear/repeat, specular, perspective-correct, depth less, cull back"
+        explain(ShadingModel::Phong, Vec3::ONE, full, persp).unwrap(),
+        "phong; varyings normal+world+uv; albedo texture; normals interpolated; specular constant; maps \
+         bilinear/repeat; lights 1 directional; perspective-correct, depth less, cull back"
     );
     // No texture coordinates: untextured, whatever was asked.
     assert_eq!(
-        explain(effects(ShadingModel::Phong, Vec3::ZERO), &no_uv, &persp),
-        "phong, untextured, no specular, perspective-correct, depth less, cull back"
+        explain(ShadingModel::Phong, Vec3::ZERO, no_uv, persp).unwrap(),
+        "phong; varyings normal; albedo colour; normals interpolated; no specular; lights 1 directional; \
+         perspective-correct, depth less, cull back"
     );
     // Orthographic: affine interpolation, no per-pixel division.
     assert_eq!(
-        explain(effects(ShadingModel::Gouraud, Vec3::ZERO), &full, &ortho),
-        "gouraud, texture bilinear/repeat, no specular, affine, depth less, cull back"
+        explain(ShadingModel::Gouraud, Vec3::ZERO, full, ortho).unwrap(),
+        "gouraud; varyings light+uv; albedo texture; normals per vertex; no specular; maps bilinear/repeat; \
+         lights 1 directional; affine, depth less, cull back"
     );
     // Unlit never lights; with vertex colours it uses them.
     assert_eq!(
-        explain(effects(ShadingModel::Unlit, Vec3::ONE), &full, &persp),
-        "unlit, vertex colours, texture bilinear/repeat, perspective-correct, depth less, cull back"
+        explain(ShadingModel::Unlit, Vec3::ONE, full, persp).unwrap(),
+        "unlit; varyings colour+uv; albedo vertex colours x texture; maps bilinear/repeat; perspective-correct, \
+         depth less, cull back"
     );
-    // Debug views never sample textures.
+    // The views never sample maps.
     assert_eq!(
-        explain(effects(ShadingModel::Normals, Vec3::ONE), &full, &persp),
-        "normals, perspective-correct, depth less, cull back"
+        explain(ShadingModel::Normals, Vec3::ONE, full, persp).unwrap(),
+        "normals; varyings normal; perspective-correct, depth less, cull back"
     );
     // A mirroring model matrix flips the front face.
-    let v = effects(ShadingModel::Flat, Vec3::ZERO).resolve(&full, &mirrored, &state).unwrap();
-    assert_eq!(v.state.front_face, rastty_core::pipeline::Winding::Clockwise);
+    let object = Object {
+        mesh: full,
+        tangents: None,
+        transforms: mirrored,
+        shading: ShadingModel::Flat,
+        material: Material::default(),
+    };
+    let v = Variant::resolve(&object, [], &state).unwrap();
+    assert_eq!(v.state.front_face, Winding::Clockwise);
     // Normals are required where they are used.
     let positions_only = Mesh::new(&torus.positions, Indices::U16(&torus.indices)).unwrap();
-    assert!(effects(ShadingModel::Gouraud, Vec3::ZERO).resolve(&positions_only, &persp, &state).is_err());
-    assert!(effects(ShadingModel::Flat, Vec3::ZERO).resolve(&positions_only, &persp, &state).is_ok());
+    assert!(explain(ShadingModel::Gouraud, Vec3::ZERO, positions_only, persp).is_err());
+    assert!(explain(ShadingModel::Flat, Vec3::ZERO, positions_only, persp).is_ok());
 }

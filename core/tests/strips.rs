@@ -13,20 +13,17 @@ use crate::common;
 
 use common::{ExactColor, PlainDepth, PlainDepth16, Torus, Transformed, assert_same_depths, checker_texels};
 use rastty_core::camera::{look_at, perspective};
-use rastty_core::effects::{
-    LightSource, NormalMap, NormalSpace, SceneLights, SurfaceDraw, SurfaceMaterial, draw_surface,
-    draw_surface_unspecialised,
-};
 use rastty_core::math::{Mat4, Vec3, Vec4};
 use rastty_core::mesh::{Mesh, compute_tangents};
 use rastty_core::pipeline::{
     DepthTest, DrawState, DrawStats, EdgeArithmetic, Fragment, LineStyle, Shader, draw, draw_wireframe,
 };
 use rastty_core::shading::{
-    Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh, draw_mesh_unspecialised,
+    Light, Lighting, Material, NormalMap, NormalSpace, Object, ShadingModel, Transforms, draw_mesh,
 };
 use rastty_core::shadow::{Bounds, ShadowBias, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster};
 use rastty_core::target::{DEPTH_LANES, DepthBuffer, NoColor, Rgb565, Target};
+use rastty_core::testing::draw_mesh_general;
 use rastty_core::texture::{FilterMode, Texture, WrapMode};
 
 const W: u32 = 37;
@@ -172,12 +169,14 @@ fn every_band_of_a_shaded_frame_with_its_wireframe_equals_the_frame() {
         (ShadingModel::Flat, None),
         (ShadingModel::Depth { near: 0.3, far: 0.95 }, None),
     ] {
-        let effects = Effects {
-            shading,
-            material: Material { specular: Vec3::splat(0.5), ..Material::default() },
-            lighting: Lighting { ambient: Vec3::splat(0.1), lights: &lights },
-            texture: filter.map(|filter| TextureBinding { texture, filter, wrap: WrapMode::Repeat }),
+        let material = Material {
+            specular: Vec3::splat(0.5),
+            diffuse: filter.map(|_| texture),
+            filter: filter.unwrap_or_default(),
+            wrap: WrapMode::Repeat,
+            ..Material::default()
         };
+        let lighting = Lighting { ambient: Vec3::splat(0.1), lights: &lights };
         for edges in [EdgeArithmetic::FixedPoint, EdgeArithmetic::Float] {
             for depth_test in [DepthTest::Less, DepthTest::Off] {
                 for general in [false, true] {
@@ -186,12 +185,13 @@ fn every_band_of_a_shaded_frame_with_its_wireframe_equals_the_frame() {
                     let depth = assert_every_band_equals_the_frame(&name, |target| {
                         target.clear(BACKGROUND);
                         let (mesh, transforms) = (torus.mesh(), transforms());
-                        let stats = if general {
-                            draw_mesh_unspecialised(target, &mesh, &transforms, &effects, &state)
+                        let object = Object { mesh, tangents: None, transforms, shading, material };
+                        let drawn = if general {
+                            draw_mesh_general(target, &object, &lighting, &state)
                         } else {
-                            draw_mesh(target, &mesh, &transforms, &effects, &state)
+                            draw_mesh(target, &object, &lighting, &state)
                         };
-                        let stats = stats.unwrap();
+                        let (_, stats) = drawn.unwrap();
                         stats.fragments + wireframes(target, &mesh, &transforms.clip_from_object, &state)
                     });
                     match depth_test {
@@ -246,7 +246,7 @@ fn every_band_of_a_mapped_surface_with_shadows_equals_the_frame() {
     compute_tangents(&torus.mesh(), &mut tangents).unwrap();
     let checker = checker_texels();
     let bumps: Vec<u32> = (0..64).map(|i| if i % 3 == 0 { 0x60A0F0 } else { 0x8080FF }).collect();
-    let material = SurfaceMaterial {
+    let material = Material {
         color: Vec3::new(0.9, 0.8, 0.7),
         specular: Vec3::splat(0.4),
         shininess: 24.0,
@@ -254,9 +254,9 @@ fn every_band_of_a_mapped_surface_with_shadows_equals_the_frame() {
         normal_map: Some(NormalMap { texture: Texture::new(&bumps, 8, 8).unwrap(), space: NormalSpace::Tangent }),
         specular_map: Some(Texture::new(&checker, 8, 8).unwrap()),
         glow_map: Some(Texture::new(&bumps, 8, 8).unwrap()),
-        ..SurfaceMaterial::plain(Vec3::ONE)
+        ..Material::plain(Vec3::ONE)
     };
-    let object = SurfaceDraw {
+    let object = Object {
         mesh: torus.mesh(),
         tangents: Some(&tangents),
         transforms: transforms(),
@@ -265,25 +265,25 @@ fn every_band_of_a_mapped_surface_with_shadows_equals_the_frame() {
     };
 
     // The torus casts its own shadow from the sun.
-    let mut sun = LightSource::directional(Vec3::new(0.5, 1.0, 0.8), Vec3::new(0.9, 0.85, 0.8));
+    let mut sun = Light::directional(Vec3::new(0.5, 1.0, 0.8), Vec3::new(0.9, 0.85, 0.8));
     let view = ShadowView::fit(sun.kind, Bounds { centre: Vec3::ZERO, radius: 1.5 }, 64).unwrap();
     let mut map = vec![0.0; 64 * 64];
     clear_shadow_depth(&mut map);
     let cast = draw_shadow_caster(&view, &mut map, &object.mesh, &object.transforms.model).unwrap();
     assert!(cast.fragments > 0);
     sun.shadow = Some(ShadowMap::new(view, &map, ShadowBias::DEFAULT, 1).unwrap());
-    let lamp = LightSource::point(Vec3::new(0.0, 2.0, 1.0), Vec3::new(0.5, 0.4, 0.3));
+    let lamp = Light::point(Vec3::new(0.0, 2.0, 1.0), Vec3::new(0.5, 0.4, 0.3));
     let lights = [sun, lamp];
-    let lights = SceneLights { ambient: Vec3::splat(0.08), lights: &lights };
+    let lights = Lighting { ambient: Vec3::splat(0.08), lights: &lights };
     for edges in [EdgeArithmetic::FixedPoint, EdgeArithmetic::Float] {
         for general in [false, true] {
             let state = DrawState { edges, ..DrawState::default() };
             assert_every_band_equals_the_frame(&format!("mapped surface, {edges:?}, general {general}"), |target| {
                 target.clear(BACKGROUND);
                 let drawn = if general {
-                    draw_surface_unspecialised(target, &object, &lights, &state)
+                    draw_mesh_general(target, &object, &lights, &state)
                 } else {
-                    draw_surface(target, &object, &lights, &state)
+                    draw_mesh(target, &object, &lights, &state)
                 };
                 let (_, stats) = drawn.unwrap();
                 stats.fragments + wireframes(target, &object.mesh, &object.transforms.clip_from_object, &state)
@@ -301,16 +301,17 @@ fn a_320x240_rgb565_frame_in_16_row_bands_uses_20_kib() {
     let lights = [Light::directional(Vec3::new(0.3, 1.0, 0.6), Vec3::ONE)];
     let view = look_at(Vec3::new(0.0, 1.2, 2.6), Vec3::ZERO, Vec3::Y).unwrap();
     let transforms = Transforms::new(Mat4::IDENTITY, view, perspective(1.0, BW as f32 / BH as f32, 0.5, 20.0).unwrap());
-    let effects = Effects {
+    let object = Object {
+        mesh: torus.mesh(),
+        tangents: None,
+        transforms,
         shading: ShadingModel::Gouraud,
         material: Material::default(),
-        lighting: Lighting { ambient: Vec3::splat(0.1), lights: &lights },
-        texture: None,
     };
-    let mesh = torus.mesh();
+    let lighting = Lighting { ambient: Vec3::splat(0.1), lights: &lights };
     let render = |target: &mut Target<Rgb565<'_>, &mut [u16]>| {
         target.clear(Vec3::ZERO);
-        draw_mesh(target, &mesh, &transforms, &effects, &DrawState::default()).unwrap()
+        draw_mesh(target, &object, &lighting, &DrawState::default()).unwrap().1
     };
     let (mut whole, mut whole_depth) = (vec![0u16; (BW * BH) as usize], vec![0u16; (BW * BH) as usize]);
     let full: DrawStats = render(&mut Target::new(Rgb565(&mut whole), &mut whole_depth[..], BW, BH).unwrap());

@@ -1,31 +1,41 @@
-//! The `raster` target: a small arbitrary scene through `rastty_core::shading::draw_mesh`,
-//! `draw_mesh_unspecialised`, `pipeline::draw_wireframe` and depth-only `pipeline::draw` passes, with `f32` and
-//! `u16` depth, whole and in bands, checking the core's documented invariants.
+//! The `raster` target: a small arbitrary scene through `rastty_core::shading::draw_mesh`, its general path
+//! `rastty_core::testing::draw_mesh_general`, `pipeline::draw_wireframe`, shadow-map depth passes
+//! (`shadow::draw_shadow_caster`) and depth-only `pipeline::draw` / `testing::draw_unspecialised` passes, with `f32`
+//! and `u16` depth, whole and in bands, checking the core's documented invariants.
 //!
 //! [`Input`] decodes (with `arbitrary`) into a camera, a model matrix, a frame of 1..=64 x 1..=64 pixels with an
 //! optional band of rows, a `DrawState` (sub-pixel bits mostly 0..=8, sometimes above; fixed-point or `f32` edge
 //! arithmetic), a few vertices with normals, UVs and colours, `u16`/`u32` indices (some out of range), an optional
-//! tiny texture, a shading model, a material, lights and a wireframe style. Every float may be anything: small values, NaN, infinities, huge,
-//! tiny or raw bit patterns. [`run`] draws it and panics when an invariant fails; docs/fuzzing.md lists them.
+//! tiny texture, a shading model, a material, lights and a wireframe style, then ([`ExtrasIn`]) which lights are
+//! point lights and which cast shadows, and which maps the tiny texture serves as (diffuse, normal, specular, glow)
+//! with tangents computed, missing or given. Every float may be anything: small values, NaN, infinities, huge, tiny
+//! or raw bit patterns. [`run`] draws it and panics when an invariant fails; docs/fuzzing.md lists them.
 
 use arbitrary::{Arbitrary, Result, Unstructured};
 use rastty_core::camera::{look_at, orthographic, perspective};
 use rastty_core::color::pack_rgb888;
 use rastty_core::math::{Mat4, Vec2, Vec3, Vec4};
-use rastty_core::mesh::{Attributes, Indices, Mesh};
+use rastty_core::mesh::{Attributes, Indices, Mesh, compute_tangents};
 use rastty_core::pipeline::{
     Cull, DepthTest, DrawError, DrawState, DrawStats, EdgeArithmetic, Fragment, Interpolation, LineStyle,
-    MAX_SUBPIXEL_BITS, Shader, Winding, draw, draw_unspecialised, draw_wireframe,
+    MAX_SUBPIXEL_BITS, Shader, Winding, draw, draw_wireframe,
 };
 use rastty_core::shading::{
-    Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh, draw_mesh_unspecialised,
+    Light, LightKind, Lighting, Material, NormalMap, NormalSpace, Object, ShadingError, ShadingModel, Transforms,
+    Variant, draw_mesh,
+};
+use rastty_core::shadow::{
+    Bounds, ShadowBias, ShadowMap, ShadowView, WindowRanges, clear_shadow_depth, draw_shadow_caster, window_ranges_band,
 };
 use rastty_core::target::{ColorBuffer, DepthBuffer, NoColor, Rgb888, Target, depth_to_u16};
+use rastty_core::testing::{draw_mesh_general, draw_unspecialised};
 use rastty_core::texture::{FilterMode, Texture, WrapMode};
 
 const MAX_VERTICES: usize = 24;
 const MAX_TRIANGLES: usize = 16;
 const MAX_LIGHTS: usize = 3;
+/// Largest side of a shadow map, in texels.
+const MAX_SHADOW_SIZE: u32 = 16;
 /// The colour targets are cleared to (its packed form is `0x4080BF`).
 const CLEAR: Vec3 = Vec3::new(0.25, 0.5, 0.75);
 /// Most pieces a clipped triangle is cut into: a polygon of at most 3 + 6 vertices, fanned (the core's
@@ -200,10 +210,61 @@ enum ShadingIn {
 
 #[derive(Arbitrary, Debug)]
 enum LightIn {
-    /// Through `Light::directional` (normalised).
+    /// Through `Light::directional` (normalised), or `Light::point` at the vector for a point light.
     Directional(V3, V3),
     /// Built by hand: any vector, even NaN.
     Raw(V3, V3),
+}
+
+/// A shadow map of a light (see [`ExtrasIn::shadowed`]).
+#[derive(Arbitrary, Debug)]
+struct ShadowIn {
+    /// Side `1 + size % 16` texels.
+    size: u8,
+    /// Percentage-closer radius `pcf % 4` (3 takes the general loop over taps).
+    pcf: u8,
+    /// The bounds the view is fitted to; `None`: the sphere around the mesh's world positions. Bounds that
+    /// `ShadowView::fit` refuses leave the light without shadows (refusing is its contract).
+    bounds: Option<(V3, F)>,
+    /// Normal offset, slope offset and depth margin; `None`: `ShadowBias::DEFAULT`.
+    bias: Option<(F, F, F)>,
+    /// The specialised draws' maps carry window ranges (`ShadowMap::with_windows`); the general path's never do.
+    windows: bool,
+}
+
+/// Tangents for a tangent-space normal map.
+#[derive(Arbitrary, Debug)]
+enum TangentsIn {
+    /// `mesh::compute_tangents` (none when the mesh lacks normals or texture coordinates).
+    Computed,
+    /// None given.
+    Missing,
+    /// These, as many as decoded (up to one more than the vertices): any other count than the vertices' is refused.
+    Given(Vec<(F, F, F, F)>),
+}
+
+/// The tiny texture as a normal map.
+#[derive(Arbitrary, Debug)]
+enum NormalMapIn {
+    Object,
+    Tangent(TangentsIn),
+}
+
+/// What the unified shading added to the scene: point lights, shadow maps, and the tiny texture as normal,
+/// specular and glow map. Decoded after everything else, so that an input from before (whose bytes end earlier,
+/// and `arbitrary` then gives zeros) decodes to the same scene with none of it.
+#[derive(Arbitrary, Debug)]
+struct ExtrasIn {
+    /// Bit `i`: light `i` is a point light at its vector.
+    point_lights: u8,
+    /// Bit `i`: light `i` casts shadows.
+    shadowed: u8,
+    shadow: ShadowIn,
+    /// The tiny texture is not the diffuse map.
+    no_diffuse: bool,
+    normal_map: Option<NormalMapIn>,
+    specular_map: bool,
+    glow_map: bool,
 }
 
 /// One fuzz input: a scene to draw.
@@ -228,11 +289,12 @@ pub struct Input {
     ambient: V3,
     lights: Vec<LightIn>,
     wireframe: Option<(V3, F)>,
+    extras: ExtrasIn,
 }
 
 impl Input {
     /// A small number naming the kind of scene (shading model, texture, depth test, band, wireframe, projection,
-    /// index type), for picking varied seeds.
+    /// index type, point lights or shadows, maps beyond the diffuse one), for picking varied seeds.
     pub fn kind(&self) -> u32 {
         let shading = match self.shading {
             ShadingIn::Unlit => 0,
@@ -254,6 +316,20 @@ impl Input {
             | u32::from(self.wireframe.is_some()) << 6
             | u32::from(matches!(self.camera.projection, ProjectionIn::Orthographic { .. })) << 7
             | indices << 8
+            | u32::from(self.point_or_shadowed_lights()) << 11
+            | u32::from(self.texture.is_some() && self.uvs && self.extra_maps()) << 12
+    }
+
+    /// Some light is a point light or casts shadows.
+    fn point_or_shadowed_lights(&self) -> bool {
+        let lights = (1u8 << self.lights.len().min(MAX_LIGHTS)) - 1;
+        (self.extras.point_lights | self.extras.shadowed) & lights != 0
+    }
+
+    /// The tiny texture is a normal, specular or glow map.
+    fn extra_maps(&self) -> bool {
+        let e = &self.extras;
+        e.normal_map.is_some() || e.specular_map || e.glow_map
     }
 }
 
@@ -392,6 +468,12 @@ fn check_depth_range(what: &str, depth: &[f32], depth_test: DepthTest) {
     }
 }
 
+/// Two draws of one scene resolve the same variant (compared by its `Debug` form, which shows a NaN depth-view
+/// bound as equal to itself).
+fn assert_same_variant(what: &str, variant: &Variant, expected: &Variant) {
+    assert_eq!(format!("{variant:?}"), format!("{expected:?}"), "{what}: another variant than draw_mesh's whole frame");
+}
+
 fn bits(depth: &[f32]) -> Vec<u32> {
     depth.iter().map(|d| d.to_bits()).collect()
 }
@@ -400,38 +482,115 @@ fn bits(depth: &[f32]) -> Vec<u32> {
 // The target
 // ---------------------------------------------------------------------------------------------------------------
 
-/// The frame drawn by `draw_mesh_unspecialised` (into checked buffers) must equal `draw_mesh`'s: pixels, depth
-/// bits and statistics.
-fn compare_unspecialised(
-    mesh: &Mesh<'_>,
-    transforms: &Transforms,
-    effects: &Effects<'_>,
+/// The frame drawn by `testing::draw_mesh_general` (into checked buffers, under `lights`: the shadow maps without
+/// window ranges) must equal `draw_mesh`'s: variant, pixels, depth bits and statistics.
+fn compare_general(
+    object: &Object<'_>,
+    lights: &Lighting<'_>,
     state: &DrawState,
     (width, height): (u32, u32),
     (color, depth): (&[u32], &[f32]),
-    full_stats: &DrawStats,
+    (full_variant, full_stats): (&Variant, &DrawStats),
 ) {
     let (w, h) = (width as usize, height as usize);
-    let mut color_u = vec![0u32; w * h];
-    let mut depth_u = vec![0f32; w * h];
+    let mut color_g = vec![0u32; w * h];
+    let mut depth_g = vec![0f32; w * h];
     {
         let mut target =
-            Target::new(CheckedColor(&mut color_u), CheckedDepth(&mut depth_u), width, height).expect("a valid frame");
+            Target::new(CheckedColor(&mut color_g), CheckedDepth(&mut depth_g), width, height).expect("a valid frame");
         target.clear(CLEAR);
-        let stats = draw_mesh_unspecialised(&mut target, mesh, transforms, effects, state)
-            .expect("draw_mesh accepted the draw, draw_mesh_unspecialised must too");
-        assert_eq!(&stats, full_stats, "draw_mesh_unspecialised stats differ from draw_mesh");
+        let (variant, stats) = draw_mesh_general(&mut target, object, lights, state)
+            .expect("draw_mesh accepted the draw, draw_mesh_general must too");
+        assert_same_variant("draw_mesh_general", &variant, full_variant);
+        assert_eq!(&stats, full_stats, "draw_mesh_general stats differ from draw_mesh ({full_variant})");
     }
-    if let Some(i) = (0..w * h).find(|&i| color[i] != color_u[i]) {
+    if let Some(i) = (0..w * h).find(|&i| color[i] != color_g[i]) {
         panic!(
-            "draw_mesh_unspecialised pixel ({}, {}) = {:#08x}, draw_mesh gave {:#08x}",
+            "draw_mesh_general pixel ({}, {}) = {:#08x}, draw_mesh gave {:#08x} ({full_variant})",
             i % w,
             i / w,
-            color_u[i],
+            color_g[i],
             color[i]
         );
     }
-    assert_eq!(bits(depth), bits(&depth_u), "draw_mesh_unspecialised depth differs from draw_mesh");
+    assert_eq!(bits(depth), bits(&depth_g), "draw_mesh_general depth differs from draw_mesh ({full_variant})");
+}
+
+/// What a draw of the scene must answer when it is refused, in the order the core checks.
+#[derive(Clone, Copy, Debug)]
+enum Refusal {
+    /// The shading model reads normals (Gouraud, Phong, normals) and the mesh has none.
+    MissingNormals,
+    /// A tangent-space normal map in use with a tangent count other than the vertex count.
+    Tangents { expected: usize, actual: usize },
+    /// Sub-pixel bits above `MAX_SUBPIXEL_BITS`.
+    SubpixelBits(u8),
+}
+
+/// One shadow map's depth pass and window ranges, owned here so that the lights can borrow them.
+struct ShadowBuffers {
+    view: ShadowView,
+    depth: Vec<f32>,
+    bias: ShadowBias,
+    pcf: u32,
+    /// Nearest and farthest depths of each filter window, when the specialised draws use them.
+    windows: Option<(Vec<f32>, Vec<f32>)>,
+}
+
+/// The shadow map of `light` as `input` asks for it, its depth pass drawn (its statistics checked), or `None` when
+/// the view cannot be fitted.
+fn shadow_buffers(
+    input: &ShadowIn,
+    light: &Light<'_>,
+    (mesh, triangles): (&Mesh<'_>, u64),
+    model: &Mat4,
+) -> Option<ShadowBuffers> {
+    let size = 1 + u32::from(input.size) % MAX_SHADOW_SIZE;
+    let pcf = u32::from(input.pcf % 4);
+    let bounds = match input.bounds {
+        Some((centre, radius)) => Bounds { centre: centre.get(), radius: radius.0 },
+        None => {
+            let world: Vec<Vec3> = mesh.positions().iter().map(|&p| model.transform_point(p)).collect();
+            let centre = world.iter().fold(Vec3::ZERO, |sum, &p| sum + p) / world.len() as f32;
+            let radius = world.iter().fold(0f32, |r, &p| r.max((p - centre).length()));
+            Bounds { centre, radius: radius * 1.01 }
+        }
+    };
+    let view = ShadowView::fit(light.kind, bounds, size).ok()?;
+    let mut depth = vec![0f32; (size * size) as usize];
+    clear_shadow_depth(&mut depth);
+    let stats = draw_shadow_caster(&view, &mut depth, mesh, model).expect("a buffer of the map's size");
+    check_stats("shadow caster", &stats, triangles);
+    check_fill_fragments("shadow caster", &stats, u64::from(size * size));
+    assert!(depth.iter().all(|d| (0.0..=1.0).contains(d)), "shadow caster: a depth outside [0, 1]");
+    let bias = input.bias.map_or(ShadowBias::DEFAULT, |(n, s, d)| ShadowBias {
+        normal_offset: n.0,
+        slope_offset: s.0,
+        depth: d.0,
+    });
+    let windows = input.windows.then(|| {
+        let n = depth.len();
+        let (mut near, mut far) = (vec![0f32; n], vec![0f32; n]);
+        window_ranges_band(&depth, size, pcf, 0..size, &mut near, &mut far).expect("buffers of the map's size");
+        (near, far)
+    });
+    Some(ShadowBuffers { view, depth, bias, pcf, windows })
+}
+
+/// `light` with the shadow map of `buffers` (with its window ranges when `windows` and the buffers have them).
+fn with_shadow<'a>(light: &Light<'a>, buffers: Option<&'a ShadowBuffers>, windows: bool) -> Light<'a> {
+    let shadow = buffers.map(|b| {
+        let map = ShadowMap::new(b.view, &b.depth, b.bias, b.pcf).expect("a buffer of the map's size");
+        match (&b.windows, windows) {
+            (Some((near, far)), true) => {
+                let size = b.view.size();
+                let ranges = WindowRanges::new(near, far, size, b.pcf).expect("buffers of the map's size");
+                map.with_windows(ranges).expect("ranges of this map")
+            }
+            _ => map,
+        }
+    });
+    Light { kind: light.kind, color: light.color, shadow }
 }
 
 /// Draws `input` every way the target compares and checks the invariants (a failure is a panic).
@@ -497,30 +656,81 @@ pub fn run(input: Input) -> Option<DrawStats> {
     }
     let triangles = mesh.triangle_count() as u64;
 
-    // Effects.
+    // Tangents, even when no normal map uses them.
+    let extras = &input.extras;
+    let mut tangents = Vec::new();
+    let tangents = match &extras.normal_map {
+        Some(NormalMapIn::Tangent(TangentsIn::Computed)) => {
+            tangents.resize(m, Vec4::ZERO);
+            compute_tangents(&mesh, &mut tangents).ok().map(|()| &tangents[..])
+        }
+        Some(NormalMapIn::Tangent(TangentsIn::Given(given))) => {
+            tangents.extend(given.iter().take(MAX_VERTICES + 1).map(|t| Vec4::new(t.0.0, t.1.0, t.2.0, t.3.0)));
+            Some(&tangents[..])
+        }
+        _ => None,
+    };
+
+    // Material.
     let texels: Vec<u32>;
-    let texture = match &input.texture {
-        None => None,
+    let (texture, filter, wrap) = match &input.texture {
+        None => (None, FilterMode::Bilinear, WrapMode::Repeat),
         Some(t) => {
             let (tw, th) = (1 + u32::from(t.width) % 4, 1 + u32::from(t.height) % 4);
             let count = (tw * th) as usize;
             texels = (0..count).map(|i| if t.texels.is_empty() { 0 } else { t.texels[i % t.texels.len()] }).collect();
-            Some(TextureBinding {
-                texture: Texture::new(&texels, tw, th).expect("a valid tiny texture"),
-                filter: if t.bilinear { FilterMode::Bilinear } else { FilterMode::Nearest },
-                wrap: if t.clamp { WrapMode::Clamp } else { WrapMode::Repeat },
-            })
+            (
+                Some(Texture::new(&texels, tw, th).expect("a valid tiny texture")),
+                if t.bilinear { FilterMode::Bilinear } else { FilterMode::Nearest },
+                if t.clamp { WrapMode::Clamp } else { WrapMode::Repeat },
+            )
         }
     };
+    let material = Material {
+        color: input.material_color.get(),
+        specular: input.material_specular.get(),
+        shininess: input.shininess.0,
+        diffuse: texture.filter(|_| !extras.no_diffuse),
+        normal_map: extras.normal_map.as_ref().and(texture).map(|texture| NormalMap {
+            texture,
+            space: match extras.normal_map {
+                Some(NormalMapIn::Object) => NormalSpace::Object,
+                _ => NormalSpace::Tangent,
+            },
+        }),
+        specular_map: texture.filter(|_| extras.specular_map),
+        glow_map: texture.filter(|_| extras.glow_map),
+        filter,
+        wrap,
+    };
+
+    // Lights: directional or point, each with its shadow map if it casts one.
     let lights: Vec<Light> = input
         .lights
         .iter()
         .take(MAX_LIGHTS)
-        .map(|l| match l {
-            LightIn::Directional(d, c) => Light::directional(d.get(), c.get()),
-            LightIn::Raw(d, c) => Light { to_light: d.get(), color: c.get() },
+        .enumerate()
+        .map(|(i, l)| match (l, extras.point_lights >> i & 1 == 1) {
+            (LightIn::Directional(d, c), false) => Light::directional(d.get(), c.get()),
+            (LightIn::Directional(p, c), true) => Light::point(p.get(), c.get()),
+            (LightIn::Raw(d, c), false) => {
+                Light { kind: LightKind::Directional { to_light: d.get() }, color: c.get(), shadow: None }
+            }
+            (LightIn::Raw(p, c), true) => {
+                Light { kind: LightKind::Point { position: p.get() }, color: c.get(), shadow: None }
+            }
         })
         .collect();
+    let shadows: Vec<Option<ShadowBuffers>> = (lights.iter().enumerate())
+        .map(|(i, light)| {
+            let shadowed = extras.shadowed >> i & 1 == 1;
+            shadowed.then(|| shadow_buffers(&extras.shadow, light, (&mesh, triangles), &model)).flatten()
+        })
+        .collect();
+    // The specialised draws' lights (with window ranges where asked for) and the general path's (never).
+    let general_lights: Vec<Light> =
+        lights.iter().zip(&shadows).map(|(l, s)| with_shadow(l, s.as_ref(), false)).collect();
+    let lights: Vec<Light> = lights.iter().zip(&shadows).map(|(l, s)| with_shadow(l, s.as_ref(), true)).collect();
     let shading = match input.shading {
         ShadingIn::Unlit => ShadingModel::Unlit,
         ShadingIn::Flat => ShadingModel::Flat,
@@ -529,33 +739,38 @@ pub fn run(input: Input) -> Option<DrawStats> {
         ShadingIn::Depth { near, far } => ShadingModel::Depth { near: near.0, far: far.0 },
         ShadingIn::Normals => ShadingModel::Normals,
     };
-    let effects = Effects {
-        shading,
-        material: Material {
-            color: input.material_color.get(),
-            specular: input.material_specular.get(),
-            shininess: input.shininess.0,
-        },
-        lighting: Lighting { ambient: input.ambient.get(), lights: &lights },
-        texture,
-    };
+    let object = Object { mesh, tangents, transforms, shading, material };
+    let ambient = input.ambient.get();
+    let lighting = Lighting { ambient, lights: &lights };
+    let general_lighting = Lighting { ambient, lights: &general_lights };
     let state = input.state.get();
     let style = input.wireframe.map(|(c, bias)| LineStyle { color: c.get(), depth_bias: bias.0 });
 
     // What the draw must answer.
     let needs_normals = matches!(shading, ShadingModel::Gouraud | ShadingModel::Phong | ShadingModel::Normals);
+    let tangent_map = shading == ShadingModel::Phong
+        && input.uvs
+        && matches!(object.material.normal_map, Some(NormalMap { space: NormalSpace::Tangent, .. }));
+    let given_tangents = tangents.map_or(0, <[Vec4]>::len);
     let expected_error = if needs_normals && !input.normals {
-        Some("missing")
+        Some(Refusal::MissingNormals)
+    } else if tangent_map && given_tangents != m {
+        Some(Refusal::Tangents { expected: m, actual: given_tangents })
     } else if state.subpixel_bits > MAX_SUBPIXEL_BITS {
-        Some("bits")
+        Some(Refusal::SubpixelBits(state.subpixel_bits))
     } else {
         None
     };
-    let check_error = |what: &str, e: DrawError| match (expected_error, e) {
-        (Some("missing"), DrawError::MissingAttributes { needed, present }) => {
+    let check_error = |what: &str, e: ShadingError| match (expected_error, e) {
+        (Some(Refusal::MissingNormals), ShadingError::Draw(DrawError::MissingAttributes { needed, present })) => {
             assert!(needed.normals && !present.normals, "{what}: {e:?}")
         }
-        (Some("bits"), DrawError::SubpixelBits(b)) => assert_eq!(b, state.subpixel_bits, "{what}"),
+        (Some(Refusal::Tangents { expected, actual }), ShadingError::Tangents { expected: e1, actual: a1 }) => {
+            assert_eq!((e1, a1), (expected, actual), "{what}: tangent counts")
+        }
+        (Some(Refusal::SubpixelBits(bits)), ShadingError::Draw(DrawError::SubpixelBits(b))) => {
+            assert_eq!(b, bits, "{what}")
+        }
         _ => panic!("{what}: unexpected {e:?}, expected {expected_error:?} (state {state:?})"),
     };
     let clear_color = pack_rgb888(CLEAR);
@@ -563,14 +778,19 @@ pub fn run(input: Input) -> Option<DrawStats> {
     // 1. The whole frame through the specialised pipeline, into Rgb888 + f32.
     let mut color = vec![0u32; w * h];
     let mut depth = vec![0f32; w * h];
-    let full_stats;
+    let (full_variant, full_stats);
     {
         let mut target = Target::new(Rgb888(&mut color), &mut depth[..], width, height).expect("a valid frame");
         target.clear(CLEAR);
-        match draw_mesh(&mut target, &mesh, &transforms, &effects, &state) {
-            Ok(stats) => {
-                assert!(expected_error.is_none(), "draw_mesh accepted {state:?} / {shading:?}, expected an error");
-                full_stats = stats;
+        match draw_mesh(&mut target, &object, &lighting, &state) {
+            Ok((variant, stats)) => {
+                assert!(
+                    expected_error.is_none(),
+                    "draw_mesh accepted {state:?} / {shading:?} ({variant}), expected {expected_error:?}"
+                );
+                // The explanation `rastty render --explain` prints: it must format.
+                let _ = variant.to_string();
+                (full_variant, full_stats) = (variant, stats);
             }
             Err(e) => {
                 check_error("draw_mesh", e);
@@ -580,8 +800,8 @@ pub fn run(input: Input) -> Option<DrawStats> {
                 let (mut c2, mut d2) = (vec![0u32; w * h], vec![0f32; w * h]);
                 let mut t2 = Target::new(Rgb888(&mut c2), &mut d2[..], width, height).expect("a valid frame");
                 t2.clear(CLEAR);
-                match draw_mesh_unspecialised(&mut t2, &mesh, &transforms, &effects, &state) {
-                    Ok(s) => panic!("draw_mesh refused with {e:?} but draw_mesh_unspecialised drew {s:?}"),
+                match draw_mesh_general(&mut t2, &object, &general_lighting, &state) {
+                    Ok(s) => panic!("draw_mesh refused with {e:?} but draw_mesh_general drew {s:?}"),
                     Err(e2) => assert_eq!(e, e2, "the two paths refuse differently"),
                 }
                 return None;
@@ -593,14 +813,16 @@ pub fn run(input: Input) -> Option<DrawStats> {
     check_fill_fragments("draw_mesh", &full_stats, pixels);
     check_depth_range("draw_mesh", &depth, state.depth_test);
 
-    // 2. The same frame through the general pixel loop and GeneralShader: identical pixels, depth and stats.
-    compare_unspecialised(&mesh, &transforms, &effects, &state, (width, height), (&color, &depth), &full_stats);
+    // 2. The same frame through the general path (GeneralShader through the general pixel loop, shadow maps without
+    //    window ranges): the same variant, identical pixels, depth and stats.
+    let full = (&full_variant, &full_stats);
+    compare_general(&object, &general_lighting, &state, (width, height), (&color, &depth), full);
 
     // 3. The wireframe over it.
     let mut line_stats = DrawStats::default();
     if let Some(style) = &style {
         let mut target = Target::new(Rgb888(&mut color), &mut depth[..], width, height).expect("a valid frame");
-        let stats = draw_wireframe(&mut target, &mesh, &transforms.clip_from_object, style, &state);
+        let stats = draw_wireframe(&mut target, &object.mesh, &transforms.clip_from_object, style, &state);
         check_stats("draw_wireframe", &stats, triangles);
         check_line_fragments("draw_wireframe", &stats, width.into(), height.into());
         line_stats = stats;
@@ -612,8 +834,8 @@ pub fn run(input: Input) -> Option<DrawStats> {
     let (mut color16, mut depth16) = (vec![0u32; w * h], vec![0u16; w * h]);
     let frame16 = {
         let mut target = Target::new(Rgb888(&mut color16), &mut depth16[..], width, height).expect("a valid frame");
-        let draws = (&transforms, &effects, &state);
-        draw_band(&mut target, (&mesh, triangles), draws, style.as_ref(), "the frame, u16 depth")
+        let draws = (&object, &lighting, &state);
+        draw_band(&mut target, (&full_variant, triangles), draws, style.as_ref(), "the frame, u16 depth")
     };
 
     // 5. Bands: the chosen band and the rows above and below it partition the frame. Each band, drawn into
@@ -634,13 +856,13 @@ pub fn run(input: Input) -> Option<DrawStats> {
         }
         let rows = (y1 - y0) as usize;
         let frame_rows = y0 as usize * w..y1 as usize * w;
-        let draws = (&transforms, &effects, &state);
+        let draws = (&object, &lighting, &state);
         let (mut band_color, mut band_depth) = (vec![0u32; w * rows], vec![0f32; w * rows]);
         let mut target =
             Target::band(CheckedColor(&mut band_color), CheckedDepth(&mut band_depth), width, height, y0..y1)
                 .expect("a valid band");
         let what = format!("band {y0}..{y1}");
-        let (f, l) = draw_band(&mut target, (&mesh, triangles), draws, style.as_ref(), &what);
+        let (f, l) = draw_band(&mut target, (&full_variant, triangles), draws, style.as_ref(), &what);
         fragments = (fragments.0 + f, fragments.1 + l);
         compare_pixels(&what, &band_color, &color[frame_rows.clone()], w, y0);
         compare_depths(&what, &bits(&band_depth), &bits(&depth[frame_rows.clone()]), w, y0);
@@ -650,7 +872,7 @@ pub fn run(input: Input) -> Option<DrawStats> {
             Target::band(CheckedColor(&mut band_color), CheckedDepth16(&mut band_depth), width, height, y0..y1)
                 .expect("a valid band");
         let what = format!("band {y0}..{y1}, u16 depth");
-        let (f, l) = draw_band(&mut target, (&mesh, triangles), draws, style.as_ref(), &what);
+        let (f, l) = draw_band(&mut target, (&full_variant, triangles), draws, style.as_ref(), &what);
         fragments16 = (fragments16.0 + f, fragments16.1 + l);
         compare_pixels(&what, &band_color, &color16[frame_rows.clone()], w, y0);
         let widen = |d: &[u16]| d.iter().map(|&q| u32::from(q)).collect::<Vec<_>>();
@@ -661,26 +883,27 @@ pub fn run(input: Input) -> Option<DrawStats> {
 
     // 6. Depth-only passes of the same positions and state: the lane-wise pass, the general pixel loop's and every
     //    band's store the depths of a shaded pass bit for bit, and count its fragments.
-    check_depth_only(&mesh, &transforms.clip_from_object, &state, (width, height), &bands);
+    check_depth_only(&object.mesh, &transforms.clip_from_object, &state, (width, height), &bands);
     Some(full_stats)
 }
 
 /// `draw_mesh` then, if there is a `style`, `draw_wireframe` into `target` (cleared first), with their statistics
-/// checked; returns their fragments.
+/// checked and the frame's variant; returns their fragments.
 fn draw_band<C: ColorBuffer, D: DepthBuffer>(
     target: &mut Target<C, D>,
-    (mesh, triangles): (&Mesh<'_>, u64),
-    (transforms, effects, state): (&Transforms, &Effects<'_>, &DrawState),
+    (frame_variant, triangles): (&Variant, u64),
+    (object, lights, state): (&Object<'_>, &Lighting<'_>, &DrawState),
     style: Option<&LineStyle>,
     what: &str,
 ) -> (u64, u64) {
     target.clear(CLEAR);
     let (width, rows) = (u64::from(target.width()), target.rows().len() as u64);
-    let stats = draw_mesh(target, mesh, transforms, effects, state).expect("the frame's draw was accepted");
+    let (variant, stats) = draw_mesh(target, object, lights, state).expect("the frame's draw was accepted");
+    assert_same_variant(what, &variant, frame_variant);
     check_stats(what, &stats, triangles);
     check_fill_fragments(what, &stats, width * rows);
     let Some(style) = style else { return (stats.fragments, 0) };
-    let lines = draw_wireframe(target, mesh, &transforms.clip_from_object, style, state);
+    let lines = draw_wireframe(target, &object.mesh, &object.transforms.clip_from_object, style, state);
     check_stats(what, &lines, triangles);
     check_line_fragments(what, &lines, width, rows);
     (stats.fragments, lines.fragments)

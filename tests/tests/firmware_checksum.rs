@@ -74,8 +74,8 @@ fn the_strips_add_up_to_the_whole_frame_and_draw_mesh_agrees() {
     for report in reports() {
         let scene = Scene::new(report.frame).unwrap();
         let direct = whole_frame(|target| scene.draw(target).unwrap());
-        let through_draw_surface = whole_frame(|target| scene.draw_through_draw_surface(target).unwrap());
-        for (checksum, stats) in [direct, through_draw_surface] {
+        let through_draw_mesh = whole_frame(|target| scene.draw_through_draw_mesh(target).unwrap());
+        for (checksum, stats) in [direct, through_draw_mesh] {
             assert_eq!(checksum, report.checksum, "frame {}: strips and whole frame agree", report.frame);
             assert_eq!(stats.fragments, report.stats.fragments, "frame {}: the same fragments", report.frame);
         }

@@ -31,7 +31,7 @@
 //!
 //! The albedo is [`Material::color`] times the bilinearly sampled texture ([`sample_bilinear`]) when the object
 //! has one and has texture coordinates. [`Shading::Unlit`] draws the albedo; [`Shading::Lit`] is rastty's
-//! per-pixel Blinn-Phong ([`rastty_core::shading::PhongShader`]) in `f64`, with the interpolated vertex normal
+//! per-pixel Blinn-Phong (`ShadingModel::Phong` of [`rastty_core::draw_mesh`]) in `f64`, with the interpolated vertex normal
 //! renormalised:
 //! `albedo * (ambient + sum c max(0, n.l)) + specular * sum over lights with n.l > 0 of c max(0, n.h)^shininess`,
 //! `h = normalize(l + v)`, `v = normalize(eye - p)`.

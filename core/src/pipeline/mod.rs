@@ -28,7 +28,7 @@
 mod batch;
 mod clip;
 mod depth_stage;
-mod draw;
+pub(crate) mod draw;
 mod edges;
 mod interpolator;
 mod line;
@@ -41,7 +41,7 @@ mod vertex_cache;
 
 pub use batch::{BATCH_SIZE, FragmentBatch, Lanes, lanes};
 pub use clip::GUARD_BAND;
-pub use draw::{DrawError, draw, draw_unspecialised};
+pub use draw::{DrawError, draw};
 pub use line::{LineStyle, draw_wireframe};
 pub use shader::{Fragment, Shader};
 pub use state::{Cull, DepthTest, DrawState, EdgeArithmetic, FixedFunction, Interpolation, MAX_SUBPIXEL_BITS, Winding};

@@ -1,121 +1,232 @@
-//! One shader that does every shading model, deciding per vertex and per pixel: the general path that the
-//! specialised shaders are proven equal to.
+//! The general path: one shader for every variant, deciding at run time, per vertex and per fragment, in scalar
+//! maths one fragment at a time. The batched [`super::SurfaceShader`] is proven to give its pixels bit for bit
+//! (`core/tests/specialisation.rs`), so this is a test oracle, reached through [`crate::testing`].
+//!
+//! It is written from the maths each stage documents, not from the lane code: `Vec3` operations in the order the
+//! lane loops promise to keep ([`super::columns`]), scalar texture samples, and the scalar shadow lookup
+//! ([`crate::shadow::ShadowMap::light_reaching`]). It shares with the surface shader only the per-vertex and
+//! per-triangle light ([`super::light_terms::light_at`]), which is scalar already.
 
-use super::flat::face_light;
-use super::light::LightTerms;
-use super::{DepthShader, ShadingModel, Surface, Variant};
-use crate::math::{Vec2, Vec3, Vec4};
+use super::light_terms::light_at;
+use super::material::decode_normal;
+use super::{
+    LightKind, LightTerms, Lighting, Material, NormalSource, ShadingModel, SpecularSource, Transforms, Variant,
+    world_normal,
+};
+use crate::color::unpack_rgb888;
+use crate::math::{Mat3, Vec2, Vec3, Vec4, float};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{Fragment, Shader};
+use crate::texture::{Bilinear, Clamp, FilterMode, Nearest, Repeat, Texture, WrapMode};
 
-/// Everything any shading model interpolates. Fields a model does not use stay zero.
+/// Everything any variant interpolates. Fields a variant does not use stay zero (so that they never make the
+/// pipeline skip a triangle).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct GeneralVaryings {
     /// Vertex colour (unlit with vertex colours).
     pub color: Vec3,
-    /// Unit world normal (Gouraud, Phong, normals view).
+    /// World normal, unit length at the vertices (Gouraud, per-pixel, the normals view).
     pub normal: Vec3,
-    /// World position (Phong with highlights).
+    /// World position (per-pixel lighting with highlights, point lights or shadows).
     pub world: Vec3,
-    /// Texture coordinates (textured).
+    /// Texture coordinates (any map).
     pub uv: Vec2,
+    /// World tangent and handedness (a tangent-space normal map).
+    pub tangent: Vec4,
     /// Per-vertex diffuse light (Gouraud).
     pub diffuse: Vec3,
     /// Per-vertex specular light (Gouraud with highlights).
     pub specular: Vec3,
 }
 
-crate::impl_varyings!(GeneralVaryings { color, normal, world, uv, diffuse, specular });
+crate::impl_varyings!(GeneralVaryings { color, normal, world, uv, tangent, diffuse, specular });
 
-/// A shader that runs any [`Variant`], branching on it at run time.
+/// A shader that runs any resolved [`Variant`], branching on it for every vertex and fragment.
 #[derive(Clone, Copy, Debug)]
 pub struct GeneralShader<'a> {
-    variant: Variant<'a>,
-    surface: Surface<'a>,
-    depth_view: DepthShader,
+    variant: Variant,
+    transforms: Transforms,
+    /// Object to world for tangents (the model's upper 3x3).
+    tangent_matrix: Mat3,
+    /// -1 when the model matrix mirrors, else 1.
+    handedness: f32,
+    tangents: &'a [Vec4],
+    material: Material<'a>,
+    lights: Lighting<'a>,
 }
 
 impl<'a> GeneralShader<'a> {
-    /// A general shader for a resolved variant.
-    pub fn new(variant: Variant<'a>, surface: Surface<'a>) -> Self {
-        let (near, far) = match variant.shading {
-            ShadingModel::Depth { near, far } => (near, far),
-            _ => (0.0, 1.0),
-        };
-        let depth_view = DepthShader::new(surface.transforms.clip_from_object, near, far);
-        Self { variant, surface, depth_view }
+    /// A general shader for a resolved `variant` (`tangents`: one per vertex when it reads tangents).
+    pub fn new(
+        variant: Variant,
+        transforms: Transforms,
+        tangents: &'a [Vec4],
+        material: Material<'a>,
+        lights: Lighting<'a>,
+    ) -> Self {
+        let handedness = if transforms.mirrors() { -1.0 } else { 1.0 };
+        let tangent_matrix = transforms.model.to_mat3();
+        Self { variant, transforms, tangent_matrix, handedness, tangents, material, lights }
     }
 
-    fn albedo(&self, base: Vec3, uv: Vec2) -> Vec3 {
-        match &self.variant.texture {
-            Some(t) => base.mul_elem(t.texture.sample_with(t.filter, t.wrap, uv)),
-            None => base,
+    /// The packed texel of `map` at `uv`, with the variant's filter and wrap mode.
+    fn texel(&self, map: &Texture<'_>, uv: Vec2) -> u32 {
+        match (self.variant.filter, self.variant.wrap) {
+            (FilterMode::Nearest, WrapMode::Repeat) => map.sample_packed::<Nearest, Repeat>(uv),
+            (FilterMode::Nearest, WrapMode::Clamp) => map.sample_packed::<Nearest, Clamp>(uv),
+            (FilterMode::Bilinear, WrapMode::Repeat) => map.sample_packed::<Bilinear, Repeat>(uv),
+            (FilterMode::Bilinear, WrapMode::Clamp) => map.sample_packed::<Bilinear, Clamp>(uv),
         }
+    }
+
+    /// `base` times the diffuse map at `uv` when the variant reads it.
+    fn albedo(&self, base: Vec3, uv: Vec2) -> Vec3 {
+        match self.material.diffuse {
+            Some(map) if self.variant.albedo_map => base.mul_elem(unpack_rgb888(self.texel(&map, uv))),
+            _ => base,
+        }
+    }
+
+    /// The specular colour: the material's, times the specular map when the variant reads it.
+    fn specular_color(&self, uv: Vec2) -> Vec3 {
+        let m = &self.material;
+        match m.specular_map {
+            Some(map) if self.variant.specular == SpecularSource::Map => {
+                m.specular.mul_elem(unpack_rgb888(self.texel(&map, uv)))
+            }
+            _ => m.specular,
+        }
+    }
+
+    /// `lit` plus the highlight (when the variant has one) and the glow map (when it reads it).
+    fn finish(&self, lit: Vec3, specular_light: Vec3, uv: Vec2) -> Vec3 {
+        let mut color = lit;
+        if self.variant.specular != SpecularSource::None {
+            color += self.specular_color(uv).mul_elem(specular_light);
+        }
+        match self.material.glow_map {
+            Some(map) if self.variant.glow_map => color + unpack_rgb888(self.texel(&map, uv)),
+            _ => color,
+        }
+    }
+
+    /// Per-pixel lighting: the shading normal (interpolated or from a map), then each light with its shadow map.
+    fn per_pixel(&self, v: &GeneralVaryings) -> Vec3 {
+        let (variant, m) = (&self.variant, &self.material);
+        let geometric = v.normal.normalize_or_zero();
+        let shading = match (variant.normals, m.normal_map) {
+            (NormalSource::TangentMap, Some(map)) => {
+                let (n, t) = (v.normal, v.tangent.truncate());
+                let b = n.cross(t) * v.tangent.w;
+                let d = decode_normal(self.texel(&map.texture, v.uv));
+                (t * d.x + b * d.y + n * d.z).normalize_or_zero()
+            }
+            (NormalSource::ObjectMap, Some(map)) => {
+                (self.transforms.normal * decode_normal(self.texel(&map.texture, v.uv))).normalize_or_zero()
+            }
+            _ => geometric,
+        };
+        let highlights = variant.specular != SpecularSource::None;
+        let to_eye = if highlights { (self.transforms.eye - v.world).normalize_or_zero() } else { Vec3::ZERO };
+        let mut diffuse = self.lights.ambient;
+        let mut specular = Vec3::ZERO;
+        for light in self.lights.lights {
+            let to_light = match light.kind {
+                LightKind::Directional { to_light } => to_light,
+                LightKind::Point { position } => (position - v.world).normalize_or_zero(),
+            };
+            let n_dot_l = shading.dot(to_light);
+            // The share of the light its shadow map lets through, from the geometric normal's offset.
+            let share = light.shadow.map(|map| map.light_reaching(v.world, geometric, geometric.dot(to_light)));
+            let arriving = float::max(n_dot_l, 0.0);
+            diffuse += light.color * share.map_or(arriving, |s| arriving * s);
+            if highlights && n_dot_l > 0.0 {
+                let h = (to_light + to_eye).normalize_or_zero();
+                let k = float::pow(float::max(shading.dot(h), 0.0), m.shininess);
+                specular += light.color * share.map_or(k, |s| k * s);
+            }
+        }
+        self.finish(self.albedo(m.color, v.uv).mul_elem(diffuse), specular, v.uv)
     }
 }
 
 impl Shader for GeneralShader<'_> {
     type Varyings = GeneralVaryings;
+    /// Flat shading's light for the whole triangle (zero for the other models).
     type Face = LightTerms;
+    // The variant checked the mesh has what it reads.
     const ATTRIBUTES: Attributes = Attributes::NONE;
 
     fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
-        self.surface.clip(mesh, i)
+        self.transforms.clip_from_object.project_point(mesh.position(i))
     }
 
     fn varyings(&self, mesh: &Mesh<'_>, i: usize) -> GeneralVaryings {
-        let s = &self.surface;
-        let v = &self.variant;
+        let (t, v) = (&self.transforms, &self.variant);
         let mut out = GeneralVaryings::default();
-        if v.texture.is_some() {
+        if v.uvs {
             out.uv = mesh.uv(i);
+        }
+        if v.tangents {
+            let tangent = self.tangents.get(i).copied().unwrap_or(Vec4::new(f32::NAN, 0.0, 0.0, 0.0));
+            out.tangent = (self.tangent_matrix * tangent.truncate()).extend(tangent.w * self.handedness);
         }
         match v.shading {
             ShadingModel::Unlit if v.vertex_colors => out.color = mesh.color(i),
             ShadingModel::Gouraud => {
-                out.normal = s.normal(mesh, i);
-                out.diffuse = s.lighting.diffuse(out.normal);
-                if v.specular {
-                    out.specular =
-                        s.lighting.specular(out.normal, s.eye_direction(s.world(mesh, i)), s.material.shininess);
-                }
+                let n = world_normal(&t.normal, mesh.normal(i));
+                let highlights = v.specular != SpecularSource::None;
+                let point = if highlights || v.point_lights > 0 {
+                    t.model.transform_point(mesh.position(i))
+                } else {
+                    Vec3::ZERO
+                };
+                let light = light_at(&self.lights, n, point, t.eye, self.material.shininess, highlights);
+                // A non-finite normal must reach the varyings, so that the pipeline skips its triangle.
+                out.diffuse = if n.is_finite() { light.diffuse } else { n };
+                out.specular = light.specular;
             }
             ShadingModel::Phong => {
-                out.normal = s.normal(mesh, i);
-                if v.specular {
-                    out.world = s.world(mesh, i);
+                out.normal = world_normal(&t.normal, mesh.normal(i));
+                if v.world {
+                    out.world = t.model.transform_point(mesh.position(i));
                 }
             }
-            ShadingModel::Normals => out.normal = s.normal(mesh, i),
+            ShadingModel::Normals => out.normal = world_normal(&t.normal, mesh.normal(i)),
             _ => {}
         }
         out
     }
 
-    fn face(&self, mesh: &Mesh<'_>, triangle: [usize; 3]) -> LightTerms {
-        match self.variant.shading {
-            ShadingModel::Flat => face_light(&self.surface, mesh, triangle),
-            _ => LightTerms { diffuse: Vec3::ZERO, specular: Vec3::ZERO },
+    /// Flat shading's light: the face normal (through the normal matrix), the highlight at the world centroid.
+    fn face(&self, mesh: &Mesh<'_>, [a, b, c]: [usize; 3]) -> LightTerms {
+        if self.variant.shading != ShadingModel::Flat {
+            return LightTerms { diffuse: Vec3::ZERO, specular: Vec3::ZERO };
         }
+        let t = &self.transforms;
+        let (p0, p1, p2) = (mesh.position(a), mesh.position(b), mesh.position(c));
+        let n = (t.normal * (p1 - p0).cross(p2 - p0)).normalize_or_zero();
+        let highlights = self.variant.specular != SpecularSource::None;
+        let centroid = if highlights || self.variant.point_lights > 0 {
+            t.model.transform_point((p0 + p1 + p2) * (1.0 / 3.0))
+        } else {
+            Vec3::ZERO
+        };
+        light_at(&self.lights, n, centroid, t.eye, self.material.shininess, highlights)
     }
 
     fn fragment(&self, f: &Fragment, face: &LightTerms, v: &GeneralVaryings) -> Vec3 {
-        let s = &self.surface;
-        let m = &s.material;
+        let m = &self.material;
         match self.variant.shading {
-            ShadingModel::Unlit if self.variant.vertex_colors => self.albedo(v.color, v.uv),
-            ShadingModel::Unlit => self.albedo(m.color, v.uv),
-            ShadingModel::Flat => face.shade(self.albedo(m.color, v.uv), m.specular),
-            ShadingModel::Gouraud => {
-                let lit = self.albedo(m.color, v.uv).mul_elem(v.diffuse);
-                if self.variant.specular { lit + m.specular.mul_elem(v.specular) } else { lit }
+            ShadingModel::Unlit => self.albedo(if self.variant.vertex_colors { v.color } else { m.color }, v.uv),
+            ShadingModel::Flat => self.finish(self.albedo(m.color, v.uv).mul_elem(face.diffuse), face.specular, v.uv),
+            ShadingModel::Gouraud => self.finish(self.albedo(m.color, v.uv).mul_elem(v.diffuse), v.specular, v.uv),
+            ShadingModel::Phong => self.per_pixel(v),
+            ShadingModel::Depth { near, far } => {
+                let scale = 1.0 / (far - near);
+                let scale = if scale.is_finite() { scale } else { 0.0 };
+                Vec3::splat(1.0 - float::clamp((f.depth - near) * scale, 0.0, 1.0))
             }
-            ShadingModel::Phong => {
-                let n = v.normal.normalize_or_zero();
-                let lit = self.albedo(m.color, v.uv).mul_elem(s.lighting.diffuse(n));
-                if self.variant.specular { lit + s.highlight(n, v.world) } else { lit }
-            }
-            ShadingModel::Depth { .. } => self.depth_view.fragment(f, &(), &()),
             ShadingModel::Normals => v.normal.normalize_or_zero() * 0.5 + Vec3::splat(0.5),
         }
     }

@@ -1,45 +1,54 @@
-//! Shading: lights, materials, the shader family, and mesh draws that compile to exactly the effects a scene uses.
+//! Shading: how a mesh's surfaces are coloured, decided once per draw and computed only where used.
 //!
-//! | model | lit where | varyings (besides texture coordinates) |
-//! |---|---|---|
-//! | [`UnlitShader`] | nowhere | none |
-//! | [`VertexColorShader`] | nowhere | colour |
-//! | [`FlatShader`] | once per triangle ([`Shader::face`](crate::pipeline::Shader::face)) | none |
-//! | [`GouraudShader`] | per vertex | diffuse light, specular light (with highlights) |
-//! | [`PhongShader`] | per pixel | normal, world position (with highlights) |
-//! | [`DepthShader`] | — | none (reads the fragment depth) |
-//! | [`NormalShader`] | — | normal |
+//! [`draw_mesh`] draws an [`Object`] (mesh, tangents, [`Transforms`], [`ShadingModel`], [`Material`]) under
+//! [`Lighting`] (ambient, directional and point [`Light`]s, each with an optional shadow map). It resolves a
+//! [`Variant`] once per draw, which covers every shading model: unlit (material or vertex colours), flat (light
+//! once per triangle), Gouraud (once per vertex), per-pixel, and the depth and normals views; which varyings are
+//! interpolated (the [`Layout`]); and which fragment stages run: normals (interpolated or from a tangent- or
+//! object-space map), albedo (colour, vertex colours, diffuse map), each light with or without its shadow map and
+//! highlights, specular colour (constant or map), glow. Its `Display` is the explanation `rastty render --explain`
+//! prints.
 //!
-//! Each is generic over a [`TextureStage`] ([`Untextured`] or [`Textured`] with a filter and wrap mode) and the
-//! lit ones over [`Highlights`]. [`draw_mesh`] picks the combination a scene needs from its [`Effects`], once per
-//! draw; [`draw_mesh_unspecialised`] runs the same draw through [`GeneralShader`], which branches instead, and
-//! must give the same pixels.
+//! The pixel loop is compiled for the layout; the fragment stages run in the [`SurfaceShader`] as loops over
+//! batches of fragments ([`crate::pipeline::FragmentBatch`]), one loop per choice, so the compiled code grows
+//! with the sum of the choices, not their product. A firmware names the one shader its scene needs and the
+//! [`capabilities`] it uses, and links nothing else.
+//!
+//! A frame is a sequence of passes, each run only if the scene needs it: shadow maps ([`crate::shadow`]) before,
+//! [`draw_mesh`] per object, ambient occlusion ([`crate::occlusion`]) after.
+//!
+//! Proofs: every combination of a variant's choices gives, through [`draw_mesh`], the pixels of the general path
+//! ([`crate::testing`]: one scalar shader deciding everything per fragment, through the general pixel loop) bit
+//! for bit (`core/tests/specialisation.rs`); turning an effect off by data (a white map, a black glow map, a
+//! zero-strength light, a shadow map nothing was drawn into) gives the pixels of leaving it out
+//! (`core/tests/effects.rs`).
 
-mod debug_views;
-mod draw_mesh;
-mod effects;
-mod flat;
-mod general;
-mod gouraud;
-mod highlights;
-mod light;
-mod phong;
-mod surface;
-mod texture_stage;
+pub mod capabilities;
+mod coarse;
+pub(crate) mod columns;
+mod draw;
+pub(crate) mod general;
+mod light_terms;
+mod lighting;
+mod lights;
+mod maps;
+mod material;
+mod normals;
+mod scratch;
+mod shader;
+mod shading_model;
 mod transforms;
-mod unlit;
+mod variant;
+mod varyings;
+mod views;
 
-pub use debug_views::{DepthShader, NormalShader};
-pub use draw_mesh::{draw_mesh, draw_mesh_unspecialised};
-pub use effects::{Effects, ShadingModel, TextureBinding, Variant};
-pub use flat::FlatShader;
-pub use general::{GeneralShader, GeneralVaryings};
-pub use gouraud::GouraudShader;
-pub use highlights::{Highlights, NoSpecular, Specular};
-pub use light::{Light, LightTerms, Lighting, Material};
-pub use phong::PhongShader;
-pub use surface::Surface;
-pub(crate) use surface::world_normal;
-pub use texture_stage::{TextureStage, Textured, Untextured};
+pub use draw::{Object, draw_mesh};
+pub use light_terms::LightTerms;
+pub use lights::{Light, LightKind, LightUse, Lighting};
+pub use material::{Material, NormalMap, NormalSpace};
+pub use shader::SurfaceShader;
+pub use shading_model::ShadingModel;
 pub use transforms::Transforms;
-pub use unlit::{UnlitShader, VertexColorShader};
+pub(crate) use transforms::world_normal;
+pub use variant::{Layout, NormalSource, ShadingError, SpecularSource, Variant};
+pub use varyings::{Absent, Slot, SurfaceVaryings};

@@ -53,3 +53,11 @@ impl Transforms {
         state
     }
 }
+
+/// An object-space normal in world space, unit length; zero stays zero, and a NaN or infinite normal stays
+/// non-finite so that its triangle is skipped rather than drawn black.
+#[inline(always)]
+pub(crate) fn world_normal(normal_matrix: &Mat3, n: Vec3) -> Vec3 {
+    let n = *normal_matrix * n;
+    if n.is_finite() { n.normalize_or_zero() } else { n }
+}

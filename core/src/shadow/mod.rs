@@ -10,11 +10,11 @@
 use core::ops::Range;
 
 use crate::camera::{CameraError, look_at, orthographic, perspective};
-use crate::effects::LightKind;
-use crate::effects::columns::{self, Column, Column3};
 use crate::math::{Mat4, Vec3, Vec4, float};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{BATCH_SIZE, Cull, DrawState, DrawStats, Fragment, Shader, draw, lanes};
+use crate::shading::LightKind;
+use crate::shading::columns::{self, Column, Column3};
 use crate::target::{MAX_DIMENSION, NoColor, Target};
 
 mod windows;
@@ -334,7 +334,7 @@ impl<'a> ShadowMap<'a> {
     }
 
     /// [`Self::light_reaching`] for the first `len` lanes of a batch, into `share`: the same values, bit for bit.
-    /// The projection into the map runs lane-wise ([`crate::effects::columns`]); only the taps read the map fragment by
+    /// The projection into the map runs lane-wise ([`crate::shading::columns`]); only the taps read the map fragment by
     /// fragment.
     pub(crate) fn light_reaching_lanes(
         &self,

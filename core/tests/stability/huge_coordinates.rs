@@ -75,7 +75,7 @@ fn a_band_equals_the_frame_when_a_corner_is_1e35_away() {
     use rastty_core::math::{Mat4, Vec3};
     use rastty_core::mesh::{Indices, Mesh};
     use rastty_core::pipeline::{Cull, DepthTest, DrawState};
-    use rastty_core::shading::{Effects, Lighting, Material, ShadingModel, Transforms, draw_mesh};
+    use rastty_core::shading::{Lighting, Material, Object, ShadingModel, Transforms, draw_mesh};
     use rastty_core::target::{Rgb888, Target};
 
     let positions = [
@@ -92,12 +92,9 @@ fn a_band_equals_the_frame_when_a_corner_is_1e35_away() {
     let projection = orthographic(-59.121_094, 46.0, 28.0, 80.925_78, 74.363_28, 4.992_137e26).unwrap();
     let transforms = Transforms::new(Mat4::IDENTITY, view, projection);
     let mesh = Mesh::new(&positions, Indices::Sequential).unwrap();
-    let effects = Effects {
-        shading: ShadingModel::Unlit,
-        material: Material::default(),
-        lighting: Lighting { ambient: Vec3::ONE, lights: &[] },
-        texture: None,
-    };
+    let object =
+        Object { mesh, tangents: None, transforms, shading: ShadingModel::Unlit, material: Material::default() };
+    let lighting = Lighting { ambient: Vec3::ONE, lights: &[] };
     let (w, h, band) = (40u32, 35u32, 0..21u32);
     let draw = |cull: Cull, rows: core::ops::Range<u32>| {
         let state = DrawState { cull, depth_test: DepthTest::Off, subpixel_bits: 0, ..DrawState::DEFAULT };
@@ -105,7 +102,7 @@ fn a_band_equals_the_frame_when_a_corner_is_1e35_away() {
         let (mut color, mut depth) = (vec![0u32; n], vec![0f32; n]);
         let mut target = Target::band(Rgb888(&mut color), &mut depth[..], w, h, rows).unwrap();
         target.clear(Vec3::ZERO);
-        let stats = draw_mesh(&mut target, &mesh, &transforms, &effects, &state).unwrap();
+        let (_, stats) = draw_mesh(&mut target, &object, &lighting, &state).unwrap();
         (color, stats.fragments)
     };
     let mut fragments = [0; 3];

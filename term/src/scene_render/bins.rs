@@ -65,12 +65,11 @@ impl TriangleBins {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rastty_core::camera::{look_at, perspective};
-    use rastty_core::math::Vec3;
-    use rastty_core::mesh::Indices;
-    use rastty_core::pipeline::{Cull, DrawState, draw};
-    use rastty_core::shading::DepthShader;
-    use rastty_core::target::{Rgb888, Target};
+    use rastty_core::pipeline::Cull;
+    use rastty_core::{
+        DrawState, DrawStats, Indices, Lighting, Material, Object, Rgb888, ShadingModel, Target, Transforms, Vec3,
+        draw_mesh, look_at, perspective,
+    };
 
     /// A triangle soup around the camera: most triangles in view, some crossing the eye plane or behind it, some
     /// huge, some slivers, and one with an index out of range.
@@ -102,13 +101,20 @@ mod tests {
         let (w, h) = (64u32, 48u32);
         let eye = Vec3::new(0.0, 0.0, 4.0);
         let view = look_at(eye, Vec3::ZERO, Vec3::Y).unwrap();
-        let clip = perspective(1.2, w as f32 / h as f32, 0.1, 20.0).unwrap() * view;
-        let shader = DepthShader::new(clip, 0.1, 20.0);
+        let transforms =
+            Transforms::new(Mat4::IDENTITY, view, perspective(1.2, w as f32 / h as f32, 0.1, 20.0).unwrap());
+        let clip = transforms.clip_from_object;
         let state = DrawState { cull: Cull::None, ..DrawState::DEFAULT };
+        // The depth view: grey levels from the depth buffer.
+        let draw = |target: &mut Target<Rgb888<'_>, &mut [f32]>, mesh: Mesh<'_>| -> DrawStats {
+            let shading = ShadingModel::Depth { near: 0.0, far: 1.0 };
+            let object = Object { mesh, tangents: None, transforms, shading, material: Material::default() };
+            draw_mesh(target, &object, &Lighting { ambient: Vec3::ZERO, lights: &[] }, &state).unwrap().1
+        };
         let (mut whole, mut depth) = (vec![0u32; (w * h) as usize], vec![0f32; (w * h) as usize]);
         let mut target = Target::new(Rgb888(&mut whole), &mut depth[..], w, h).unwrap();
         target.clear(Vec3::ZERO);
-        let all = draw(&mut target, &mesh, &shader, &state).unwrap();
+        let all = draw(&mut target, mesh);
         assert!(all.fragments > 1000 && all.clipped > 0 && all.invalid == 1, "{all:?}");
 
         for cuts in [vec![0, 48], vec![0, 1, 2, 17, 30, 47, 48], (0..=48).collect::<Vec<u32>>()] {
@@ -122,7 +128,7 @@ mod tests {
                 let mut target = Target::band(Rgb888(color), depth, w, h, rows.clone()).unwrap();
                 target.clear(Vec3::ZERO);
                 let triangles = mesh.with_indices(Indices::U32(bins.band(i))).unwrap();
-                draw(&mut target, &triangles, &shader, &state).unwrap();
+                draw(&mut target, triangles);
                 sorted += bins.band(i).len() / 3;
             }
             assert!(whole == banded, "bands {bands:?}");

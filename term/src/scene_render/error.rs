@@ -3,9 +3,9 @@
 use std::fmt;
 
 use rastty_core::camera::CameraError;
-use rastty_core::effects::SurfaceError;
 use rastty_core::mesh::TangentError;
 use rastty_core::occlusion::OcclusionError;
+use rastty_core::shading::ShadingError;
 use rastty_core::shadow::{Bounds, ShadowError};
 use rastty_core::target::TargetError;
 use rastty_core::texture::TextureError;
@@ -49,7 +49,7 @@ pub enum SceneRenderError {
         /// The object and part (raw).
         draw: String,
         /// What the core said.
-        error: SurfaceError,
+        error: ShadingError,
     },
     /// The core refused the ambient occlusion step.
     Occlusion(OcclusionError),

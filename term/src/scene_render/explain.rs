@@ -12,7 +12,7 @@ use crate::scene_file::Projection;
 
 impl fmt::Display for ScenePlan {
     /// The frame, the lights, then the passes in the order they run, with one line per draw of the forward pass
-    /// (its object and part, escaped, and its [`rastty_core::effects::SurfaceVariant`]). Only what the frame uses
+    /// (its object and part, escaped, and its [`rastty_core::shading::Variant`]). Only what the frame uses
     /// appears, and the lights left out are named with the reason.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let (width, height) = self.size;

@@ -4,8 +4,8 @@
 
 use std::fmt;
 
-use rastty_core::effects::LightKind as CoreLightKind;
 use rastty_core::math::{Mat4, Vec3};
+use rastty_core::shading::LightKind as CoreLightKind;
 
 use crate::scene_file::{LightKind, LightSpace, SceneLight};
 

@@ -1,8 +1,8 @@
 //! The core material of one part of an object: the scene file's material keys over the part's MTL material, with
 //! the maps of switched-off effects left out.
 
-use rastty_core::effects::{NormalMap, NormalSpace as CoreNormalSpace, SurfaceMaterial};
 use rastty_core::math::Vec3;
+use rastty_core::shading::{Material, NormalMap, NormalSpace as CoreNormalSpace};
 use rastty_core::texture::TextureError;
 
 use super::PlanOptions;
@@ -32,7 +32,7 @@ pub fn part_material<'a>(
     maps: &'a PartMaps,
     part: usize,
     options: &PlanOptions,
-) -> Result<SurfaceMaterial<'a>, TextureError> {
+) -> Result<Material<'a>, TextureError> {
     let mtl = object.model.part_material(part);
     let m = &object.material;
     let effects = &options.effects;
@@ -60,7 +60,7 @@ pub fn part_material<'a>(
         Some(image) if effects.glow_maps => Some(texture(MapRole::Glow, image)?),
         _ => None,
     };
-    Ok(SurfaceMaterial {
+    Ok(Material {
         color: m.color_over(mtl),
         specular,
         shininess: m.shininess.unwrap_or(SHININESS),

@@ -11,14 +11,14 @@
 //!     + PlanOptions (shading mode, effects on/off, textures, wireframe, background)
 //!                                       ▼  ScenePlan::new: nothing drawn, nothing allocated but the plan
 //!          ScenePlan: camera matrices, lights (colour × intensity, camera-space ones turned into the world; dark
-//!                     ones dropped), shadow passes, forward draws (one per part, SurfaceVariant resolved for
+//!                     ones dropped), shadow passes, forward draws (one per part, Variant resolved for
 //!                     the shading mode), ambient occlusion step
 //!                                       │                       │
 //!                                       ▼                       ▼  Display: `rastty render --explain`
 //!   SceneRenderer::render(scene, plan, target: a whole frame or a band of its rows)
 //!     1. shadow passes, in bands of map rows: clear_shadow_depth + draw_shadow_caster_band per object
 //!        (maps kept and reused across frames)
-//!     2. forward pass, in bands of rows: clear to the background, draw_surface per part
+//!     2. forward pass, in bands of rows: clear to the background, draw_mesh per part
 //!        (+ wireframe lines when asked)
 //!     3. ambient occlusion, in bands of rows: AmbientOcclusion::apply on the finished depth buffer
 //! ```

@@ -1,10 +1,10 @@
 //! The plan of one frame: which passes run, with which lights, and what each draw computes.
 
-use rastty_core::effects::{LightKind, LightUse, SurfaceDraw, SurfaceMaterial, SurfaceVariant};
 use rastty_core::math::{Vec3, float};
 use rastty_core::occlusion::AmbientOcclusion;
 use rastty_core::pipeline::DrawState;
 use rastty_core::shading::Transforms;
+use rastty_core::shading::{LightKind, LightUse, Material, Object, Variant};
 use rastty_core::shadow::{Bounds, ShadowView};
 
 use super::camera::FrameCamera;
@@ -60,7 +60,7 @@ pub struct PlannedDraw {
     /// The draw's matrices.
     pub transforms: Transforms,
     /// What the draw computes: its varyings and fragment stages.
-    pub variant: SurfaceVariant,
+    pub variant: Variant,
 }
 
 /// Everything one frame of a scene runs, in order: the shadow passes, the forward pass (one draw per part of each
@@ -104,7 +104,7 @@ impl ScenePlan {
     /// - Lights shedding nothing (intensity 0, black) are dropped (listed in [`Self::dropped_lights`]).
     /// - A light with `shadows = true` gets a shadow pass when shadows are on: a [`shadow_map_size`] map fitted to
     ///   the scene's bounds, [`PCF_RADIUS`] filtering.
-    /// - Each part with triangles of each object is one draw, whose [`SurfaceVariant`] is resolved here. The
+    /// - Each part with triangles of each object is one draw, whose [`Variant`] is resolved here. The
     ///   variant depends only on each light's kind and shadow filtering ([`LightUse`]), not on what a map holds,
     ///   so planning allocates no shadow map and draws nothing. [`super::SceneRenderer::render`] resolves the same variants when it draws.
     /// - Ambient occlusion when the scene asks for it and it is on.
@@ -219,8 +219,8 @@ impl ScenePlan {
                 let material = part_material(object, scene.part_maps(index, part_index), part_index, &self.options)
                     .map_err(|error| SceneRenderError::Texture { draw: label.clone(), error })?;
                 let tangents = tangents_for(scene, index, &material);
-                let object = SurfaceDraw { mesh, tangents, transforms, shading, material };
-                let variant = SurfaceVariant::resolve(&object, lights.iter().copied(), &DrawState::DEFAULT)
+                let object = Object { mesh, tangents, transforms, shading, material };
+                let variant = Variant::resolve(&object, lights.iter().copied(), &DrawState::DEFAULT)
                     .map_err(|error| SceneRenderError::Draw { draw: label.clone(), error })?;
                 draws.push(PlannedDraw { object: index, part: part_index, label, transforms, variant });
             }
@@ -239,7 +239,7 @@ impl ScenePlan {
 pub(crate) fn tangents_for<'a>(
     scene: &'a PreparedScene,
     object: usize,
-    material: &SurfaceMaterial<'_>,
+    material: &Material<'_>,
 ) -> Option<&'a [rastty_core::math::Vec4]> {
     material.normal_map.and_then(|_| scene.tangents(object))
 }

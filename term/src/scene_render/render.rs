@@ -6,10 +6,10 @@ use std::sync::Mutex;
 use std::thread;
 use std::time::{Duration, Instant};
 
-use rastty_core::effects::{LightSource, SceneLights, SurfaceDraw, SurfaceVariant, draw_surface};
 use rastty_core::math::Vec3;
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::{DrawState, DrawStats, LineStyle, draw_wireframe};
+use rastty_core::shading::{Light, Lighting, Object, Variant, draw_mesh};
 use rastty_core::shadow::{
     ShadowBias, ShadowError, ShadowMap, ShadowView, WindowRanges, clear_shadow_depth, draw_shadow_caster_band,
     window_ranges_band,
@@ -48,7 +48,7 @@ pub struct FrameReport {
     /// How many bands of rows the frame was split into (see [`SceneRenderer`]).
     pub bands: usize,
     /// The variant each draw ran, in the plan's order (the plan's own, resolved again with the real maps).
-    pub variants: Vec<SurfaceVariant>,
+    pub variants: Vec<Variant>,
     /// Time in the shadow passes.
     pub shadow_time: Duration,
     /// Time in the forward pass, clearing the target included.
@@ -136,7 +136,7 @@ struct Band<'a> {
 /// What the forward pass did in one band.
 struct BandResult {
     stats: DrawStats,
-    variants: Vec<SurfaceVariant>,
+    variants: Vec<Variant>,
 }
 
 impl SceneRenderer {
@@ -198,7 +198,7 @@ impl SceneRenderer {
 
         let start = Instant::now();
         let sources = self.light_sources(plan)?;
-        let lights = SceneLights { ambient: plan.ambient, lights: &sources };
+        let lights = Lighting { ambient: plan.ambient, lights: &sources };
         let (color, depth) = target.buffers_mut();
         let (pixels, depth) = (&mut *color.0, &mut **depth);
         let bands = split_rows(pixels, width, rows.clone(), band_count);
@@ -210,7 +210,7 @@ impl SceneRenderer {
             .draws
             .iter()
             .map(|draw| {
-                let (_, mesh) = draw_mesh(scene, draw)?;
+                let (_, mesh) = planned_mesh(scene, draw)?;
                 Ok(TriangleBins::new(&mesh, &draw.transforms.clip_from_object, (width, height), &rows))
             })
             .collect::<Result<Vec<_>, SceneRenderError>>()?;
@@ -250,7 +250,7 @@ impl SceneRenderer {
     }
 
     /// The planned lights as the core takes them, with the kept shadow maps.
-    fn light_sources(&self, plan: &ScenePlan) -> Result<Vec<LightSource<'_>>, SceneRenderError> {
+    fn light_sources(&self, plan: &ScenePlan) -> Result<Vec<Light<'_>>, SceneRenderError> {
         let mut sources = Vec::with_capacity(plan.lights.len());
         for light in &plan.lights {
             let shadow = match light.shadow_pass {
@@ -272,7 +272,7 @@ impl SceneRenderer {
                 }
                 None => None,
             };
-            sources.push(LightSource { kind: light.kind, color: light.color, shadow });
+            sources.push(Light { kind: light.kind, color: light.color, shadow });
         }
         Ok(sources)
     }
@@ -397,7 +397,7 @@ fn on_threads<J: Send, T: Send>(jobs: Vec<J>, threads: usize, work: impl Fn(J) -
 }
 
 /// The mesh of a planned draw.
-fn draw_mesh<'a>(
+fn planned_mesh<'a>(
     scene: &'a PreparedScene,
     draw: &PlannedDraw,
 ) -> Result<(&'a SceneObject, Mesh<'a>), SceneRenderError> {
@@ -413,7 +413,7 @@ fn forward_band(
     scene: &PreparedScene,
     plan: &ScenePlan,
     bins: &[TriangleBins],
-    lights: &SceneLights<'_>,
+    lights: &Lighting<'_>,
     band: Band<'_>,
     width: u32,
     height: u32,
@@ -422,20 +422,15 @@ fn forward_band(
     target.clear(plan.background);
     let mut result = BandResult { stats: DrawStats::default(), variants: Vec::with_capacity(plan.draws.len()) };
     for (draw, bins) in plan.draws.iter().zip(bins) {
-        let (object, mesh) = draw_mesh(scene, draw)?;
+        let (object, mesh) = planned_mesh(scene, draw)?;
         let triangles = mesh.with_indices(Indices::U32(bins.band(band.index)));
         let triangles = triangles.map_err(|error| SceneRenderError::Target(format!("{}: {error}", draw.label)))?;
         let material = part_material(object, scene.part_maps(draw.object, draw.part), draw.part, &plan.options)
             .map_err(|error| SceneRenderError::Texture { draw: draw.label.clone(), error })?;
         let tangents = tangents_for(scene, draw.object, &material);
-        let surface = SurfaceDraw {
-            mesh: triangles,
-            tangents,
-            transforms: draw.transforms,
-            shading: draw.variant.shading,
-            material,
-        };
-        let (variant, stats) = draw_surface(&mut target, &surface, lights, &DrawState::DEFAULT)
+        let surface =
+            Object { mesh: triangles, tangents, transforms: draw.transforms, shading: draw.variant.shading, material };
+        let (variant, stats) = draw_mesh(&mut target, &surface, lights, &DrawState::DEFAULT)
             .map_err(|error| SceneRenderError::Draw { draw: draw.label.clone(), error })?;
         result.stats += stats;
         if plan.wireframe {

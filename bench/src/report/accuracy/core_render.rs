@@ -6,8 +6,10 @@ use std::time::{Duration, Instant};
 use rastty_core::camera::{CameraError, look_at, orthographic, perspective};
 use rastty_core::math::{Mat4, Vec2, Vec3, Vec4};
 use rastty_core::mesh::{Indices, Mesh, MeshError};
-use rastty_core::pipeline::{DrawError, DrawState};
-use rastty_core::shading::{Effects, Light, Lighting, Material, ShadingModel, TextureBinding, Transforms, draw_mesh};
+use rastty_core::pipeline::DrawState;
+use rastty_core::shading::{
+    Light, LightKind, Lighting, Material, Object, ShadingError, ShadingModel, Transforms, draw_mesh,
+};
 use rastty_core::target::{ColorBuffer, DepthBuffer, Rgb888, Target, TargetError, downsample_rgb888};
 
 use super::settings::{DepthFormat, LitShading, Setting};
@@ -21,7 +23,7 @@ pub enum CoreRenderError {
     /// A mesh is malformed.
     Mesh(MeshError),
     /// The core refused a draw.
-    Draw(DrawError),
+    Draw(ShadingError),
     /// The image size is not usable.
     Target(TargetError),
 }
@@ -53,7 +55,7 @@ pub struct CoreScene<'a> {
     objects: Vec<CoreObject<'a>>,
     view: Mat4,
     projection: Mat4,
-    lights: Vec<Light>,
+    lights: Vec<Light<'static>>,
 }
 
 fn narrow(v: [f64; 3]) -> Vec3 {
@@ -96,7 +98,12 @@ impl<'a> CoreScene<'a> {
             .lighting
             .lights
             .iter()
-            .map(|l| Light { to_light: narrow(l.to_light), color: narrow(l.color) })
+            // As given (the reference's lights are unit already): not normalised again in `f32`.
+            .map(|l| Light {
+                kind: LightKind::Directional { to_light: narrow(l.to_light) },
+                color: narrow(l.color),
+                shadow: None,
+            })
             .collect();
         Ok(Self { scene, objects, view, projection, lights })
     }
@@ -129,25 +136,20 @@ impl<'a> CoreScene<'a> {
                 (Shading::Lit, LitShading::Gouraud) => ShadingModel::Gouraud,
                 (Shading::Lit, LitShading::Phong) => ShadingModel::Phong,
             };
-            let texture = src.texture.as_ref().and_then(|t| t.texture().ok()).map(|texture| TextureBinding {
-                texture,
+            let m = &src.material;
+            let material = Material {
+                color: narrow(m.color),
+                specular: narrow(m.specular),
+                shininess: m.shininess as f32,
+                diffuse: src.texture.as_ref().and_then(|t| t.texture().ok()),
                 filter: setting.filter,
                 wrap: src.wrap,
-            });
-            let m = &src.material;
-            let effects = Effects {
-                shading,
-                material: Material {
-                    color: narrow(m.color),
-                    specular: narrow(m.specular),
-                    shininess: m.shininess as f32,
-                },
-                lighting,
-                texture,
+                ..Material::default()
             };
             let transforms = Transforms::new(matrix(&src.model), self.view, self.projection);
+            let object = Object { mesh, tangents: None, transforms, shading, material };
             let state = DrawState { cull: src.cull, ..setting.draw_state() };
-            draw_mesh(target, &mesh, &transforms, &effects, &state).map_err(CoreRenderError::Draw)?;
+            draw_mesh(target, &object, &lighting, &state).map_err(CoreRenderError::Draw)?;
         }
         Ok(())
     }

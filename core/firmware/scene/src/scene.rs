@@ -3,20 +3,17 @@
 //! # One shader, compiled for what the scene uses
 //! [`Scene::draw`] resolves the scene's variant and runs the surface shader compiled for its one layout (the
 //! normal and the world position carried) and for per-pixel lighting from directional lights only
-//! ([`capabilities::PER_PIXEL`]), through [`rastty_core::pipeline::draw`]. [`draw_surface`] gives the same pixels
+//! ([`capabilities::PER_PIXEL`]), through [`rastty_core::pipeline::draw`]. [`draw_mesh`] gives the same pixels
 //! (the host test checks it), but it picks the shader at run time, so a firmware calling it links every variant
 //! of the pipeline.
 
-use rastty_core::camera::{look_at, perspective};
-use rastty_core::effects::{
-    Absent, Layout, LightSource, LightUse, SceneLights, SurfaceDraw, SurfaceError, SurfaceMaterial, SurfaceShader,
-    SurfaceVariant, capabilities, draw_surface,
+use rastty_core::pipeline::draw;
+use rastty_core::shading::{Absent, Layout, LightUse, SurfaceShader, Variant, capabilities};
+use rastty_core::target::{ColorBuffer, DepthBuffer};
+use rastty_core::{
+    DrawState, DrawStats, Indices, Light, Lighting, Mat4, Material, Mesh, Object, Quat, ShadingError, ShadingModel,
+    Target, Transforms, Vec3, draw_mesh, look_at, perspective,
 };
-use rastty_core::math::{Mat4, Quat, Vec3};
-use rastty_core::mesh::{Indices, Mesh};
-use rastty_core::pipeline::{DrawState, DrawStats, draw};
-use rastty_core::shading::{ShadingModel, Transforms};
-use rastty_core::target::{ColorBuffer, DepthBuffer, Target};
 
 use crate::{HEIGHT, SceneError, WIDTH, spot};
 
@@ -37,7 +34,7 @@ const FOVY: f32 = 0.7;
 const NEAR: f32 = 1.0;
 /// Far plane: just behind Spot's bounding sphere.
 const FAR: f32 = 4.5;
-/// From the surface toward the one light, in world space (normalised by [`LightSource::directional`]).
+/// From the surface toward the one light, in world space (normalised by [`Light::directional`]).
 const TO_LIGHT: Vec3 = Vec3::new(0.5, 0.8, 0.6);
 /// The light's colour.
 const LIGHT_COLOR: Vec3 = Vec3::new(1.0, 0.97, 0.9);
@@ -58,8 +55,8 @@ pub type SpotShader<'a> = SurfaceShader<'a, Vec3, Vec3, Absent, Absent, { capabi
 /// One frame's scene: Spot, its place and the light, built once and drawn into each strip.
 #[derive(Clone, Copy, Debug)]
 pub struct Scene {
-    object: SurfaceDraw<'static>,
-    lights: [LightSource<'static>; 1],
+    object: Object<'static>,
+    lights: [Light<'static>; 1],
 }
 
 impl Scene {
@@ -72,39 +69,36 @@ impl Scene {
     /// [`SceneError::Mesh`] if the model arrays do not make a mesh, [`SceneError::Camera`] if the camera constants
     /// do not make a camera (neither happens).
     pub fn new(frame: usize) -> Result<Self, SceneError> {
-        let material = SurfaceMaterial {
-            specular: Vec3::splat(0.35),
-            shininess: 24.0,
-            ..SurfaceMaterial::plain(Vec3::new(0.85, 0.78, 0.7))
-        };
+        let material =
+            Material { specular: Vec3::splat(0.35), shininess: 24.0, ..Material::plain(Vec3::new(0.85, 0.78, 0.7)) };
         Ok(Self {
-            object: SurfaceDraw {
+            object: Object {
                 mesh: spot_mesh()?,
                 tangents: None,
                 transforms: transforms(YAWS[frame])?,
                 shading: ShadingModel::Phong,
                 material,
             },
-            lights: [LightSource::directional(TO_LIGHT, LIGHT_COLOR)],
+            lights: [Light::directional(TO_LIGHT, LIGHT_COLOR)],
         })
     }
 
     /// The scene's lights.
-    fn lights(&self) -> SceneLights<'_> {
-        SceneLights { ambient: AMBIENT, lights: &self.lights }
+    fn lights(&self) -> Lighting<'_> {
+        Lighting { ambient: AMBIENT, lights: &self.lights }
     }
 
     /// Clears `target` to [`BACKGROUND`] and draws Spot: into a band, or a whole frame (the same pixels).
     ///
-    /// Runs [`SpotShader`] through [`draw`]: the pixels of [`draw_surface`], without linking its other variants
+    /// Runs [`SpotShader`] through [`draw`]: the pixels of [`draw_mesh`], without linking its other variants
     /// (see the module docs).
     ///
     /// # Errors
     /// [`SceneError::Draw`] if the draw fails, [`SceneError::Variant`] if the scene resolves to another variant
     /// than [`SpotShader`] draws (neither happens).
     pub fn draw<C: ColorBuffer, D: DepthBuffer>(&self, target: &mut Target<C, D>) -> Result<DrawStats, SceneError> {
-        let variant = SurfaceVariant::resolve(&self.object, self.lights.iter().map(LightUse::from), &STATE)
-            .map_err(draw_error)?;
+        let variant =
+            Variant::resolve(&self.object, self.lights.iter().map(LightUse::from), &STATE).map_err(draw_error)?;
         if variant.layout() != LAYOUT || variant.state != STATE {
             return Err(SceneError::Variant);
         }
@@ -114,25 +108,25 @@ impl Scene {
         draw(target, &o.mesh, &shader, &STATE).map_err(SceneError::Draw)
     }
 
-    /// [`Scene::draw`] through [`draw_surface`], which picks the shader at run time: the same pixels, for the host
+    /// [`Scene::draw`] through [`draw_mesh`], which picks the shader at run time: the same pixels, for the host
     /// test to prove it. (A firmware calling this links every variant of the pipeline.)
     ///
     /// # Errors
     /// [`SceneError::Draw`] if the draw fails (it does not).
-    pub fn draw_through_draw_surface<C: ColorBuffer, D: DepthBuffer>(
+    pub fn draw_through_draw_mesh<C: ColorBuffer, D: DepthBuffer>(
         &self,
         target: &mut Target<C, D>,
     ) -> Result<DrawStats, SceneError> {
         target.clear(BACKGROUND);
-        let (_, stats) = draw_surface(target, &self.object, &self.lights(), &STATE).map_err(draw_error)?;
+        let (_, stats) = draw_mesh(target, &self.object, &self.lights(), &STATE).map_err(draw_error)?;
         Ok(stats)
     }
 }
 
 /// A draw's error as the scene's: [`SceneError::Variant`] when the variant is not the one the scene draws.
-fn draw_error(e: SurfaceError) -> SceneError {
+fn draw_error(e: ShadingError) -> SceneError {
     match e {
-        SurfaceError::Draw(e) => SceneError::Draw(e),
+        ShadingError::Draw(e) => SceneError::Draw(e),
         _ => SceneError::Variant,
     }
 }

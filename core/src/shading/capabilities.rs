@@ -19,7 +19,7 @@ pub const VIEWS: u32 = 1 << 4;
 pub const POINT_LIGHTS: u32 = 1 << 5;
 /// Shadow maps (read by per-pixel lighting).
 pub const SHADOWS: u32 = 1 << 6;
-/// Everything: what [`super::draw_surface`] compiles.
+/// Everything: what [`super::draw_mesh`] compiles.
 pub const ALL: u32 = UNLIT | FLAT | GOURAUD | PER_PIXEL | VIEWS | POINT_LIGHTS | SHADOWS;
 
 /// True when `caps` holds `bit`: a constant in a shader compiled for `caps`, so the code it guards is left out

@@ -1,8 +1,8 @@
-//! What a mapped draw computes, decided once per draw from the mesh, the material and the lights.
+//! What a draw computes, decided once per draw from the mesh, the material and the lights.
 
 use core::fmt;
 
-use super::{LightUse, SurfaceDraw};
+use super::{LightUse, Object};
 use crate::math::{Vec3, Vec4};
 use crate::mesh::Attributes;
 use crate::pipeline::{DrawError, DrawState, FixedFunction};
@@ -37,9 +37,9 @@ pub enum SpecularSource {
     Map,
 }
 
-/// Why a mapped draw was refused (nothing was drawn).
+/// Why a draw was refused (nothing was drawn).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum SurfaceError {
+pub enum ShadingError {
     /// Refused by the pipeline (the mesh has no normals, or the state is out of range).
     Draw(DrawError),
     /// A tangent-space normal map on a mesh drawn without tangents, or with a tangent slice whose length is not
@@ -55,7 +55,7 @@ pub enum SurfaceError {
     Unsupported,
 }
 
-impl fmt::Display for SurfaceError {
+impl fmt::Display for ShadingError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Self::Draw(e) => e.fmt(f),
@@ -71,15 +71,15 @@ impl fmt::Display for SurfaceError {
     }
 }
 
-impl core::error::Error for SurfaceError {}
+impl core::error::Error for ShadingError {}
 
-/// The stages and varyings one mapped draw runs: exactly what its mesh, material and lights call for.
+/// The stages and varyings one draw runs: exactly what its mesh, material and lights call for.
 ///
 /// Its [`Display`](fmt::Display) form is the explanation `rastty render --explain` prints, e.g.
 /// `phong; varyings normal+world+uv+tangent; albedo texture; normals tangent-space map; specular map; glow map;
 /// maps bilinear/repeat; lights 1 directional (1 with shadows, pcf 3x3); perspective-correct, depth less, cull back`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SurfaceVariant {
+pub struct Variant {
     /// The shading model.
     pub shading: ShadingModel,
     /// The mesh's vertex colours are the albedo (unlit shading of a mesh with colours).
@@ -130,7 +130,7 @@ pub struct Layout {
     pub tangents: bool,
 }
 
-impl SurfaceVariant {
+impl Variant {
     /// Decides what a draw of `object` under `lights` (one [`LightUse`] per light, as
     /// `scene_lights.lights.iter().map(LightUse::from)` gives) computes.
     ///
@@ -142,19 +142,19 @@ impl SurfaceVariant {
     /// - A tangent-space normal map needs `tangents` (one per vertex), and only then are tangents interpolated.
     /// - Lights reach the lit models: per triangle (flat, at its centroid), per vertex (Gouraud) or per pixel.
     ///   Shadow maps are read per pixel only.
-    /// - Highlights only for a non-zero [`super::SurfaceMaterial::specular`] with at least one light.
+    /// - Highlights only for a non-zero [`super::Material::specular`] with at least one light.
     /// - The world position only for per-pixel point lights, highlights or shadows.
     /// - Affine interpolation under an orthographic projection, and the front face flipped for a mirroring model
     ///   matrix ([`crate::shading::Transforms::adapt`]).
     ///
     /// # Errors
-    /// [`SurfaceError::Draw`] when the model needs normals and the mesh has none; [`SurfaceError::Tangents`] for a
+    /// [`ShadingError::Draw`] when the model needs normals and the mesh has none; [`ShadingError::Tangents`] for a
     /// tangent-space normal map without a tangent per vertex.
     pub fn resolve(
-        object: &SurfaceDraw<'_>,
+        object: &Object<'_>,
         lights: impl IntoIterator<Item = LightUse>,
         state: &DrawState,
-    ) -> Result<Self, SurfaceError> {
+    ) -> Result<Self, ShadingError> {
         let (mesh, material, shading) = (&object.mesh, &object.material, object.shading);
         let present = mesh.attributes();
         let per_pixel = shading == ShadingModel::Phong;
@@ -163,7 +163,7 @@ impl SurfaceVariant {
         let reads_normals = per_pixel || matches!(shading, ShadingModel::Gouraud | ShadingModel::Normals);
         if reads_normals && !present.normals {
             let needed = Attributes { normals: true, ..Attributes::NONE };
-            return Err(SurfaceError::Draw(DrawError::MissingAttributes { needed, present }));
+            return Err(ShadingError::Draw(DrawError::MissingAttributes { needed, present }));
         }
         let uvs = present.uvs;
         let normals = match shading {
@@ -176,7 +176,7 @@ impl SurfaceVariant {
                     super::NormalSpace::Tangent => {
                         let actual = object.tangents.map_or(0, <[Vec4]>::len);
                         if actual != mesh.vertex_count() {
-                            return Err(SurfaceError::Tangents { expected: mesh.vertex_count(), actual });
+                            return Err(ShadingError::Tangents { expected: mesh.vertex_count(), actual });
                         }
                         NormalSource::TangentMap
                     }
@@ -247,7 +247,7 @@ impl SurfaceVariant {
     }
 }
 
-impl fmt::Display for SurfaceVariant {
+impl fmt::Display for Variant {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let layout = self.layout();
         let (first, second) = match self.shading {

@@ -1,4 +1,4 @@
-//! A surface material with its maps: what a mapped draw colours its pixels with.
+//! A surface's material with its maps: what a draw colours its pixels with.
 
 use crate::math::Vec3;
 use crate::texture::{FilterMode, Texture, WrapMode};
@@ -29,7 +29,7 @@ pub struct NormalMap<'a> {
 /// How a surface looks: colours, Blinn-Phong exponent, and optional maps, all sampled with one filter and wrap
 /// mode.
 #[derive(Clone, Copy, Debug)]
-pub struct SurfaceMaterial<'a> {
+pub struct Material<'a> {
     /// Diffuse colour; multiplied by `diffuse` when there is one.
     pub color: Vec3,
     /// Specular colour; zero turns highlights off (and the draw then computes none). Multiplied by
@@ -51,7 +51,14 @@ pub struct SurfaceMaterial<'a> {
     pub wrap: WrapMode,
 }
 
-impl SurfaceMaterial<'_> {
+impl Default for Material<'_> {
+    /// A plain light grey (0.8), no highlights, no maps.
+    fn default() -> Self {
+        Self::plain(Vec3::splat(0.8))
+    }
+}
+
+impl Material<'_> {
     /// A plain material: `color`, no highlights, no maps.
     pub const fn plain(color: Vec3) -> Self {
         Self {

@@ -9,7 +9,7 @@
 use super::capabilities::{self, has};
 use super::columns::{self, Column, Column3};
 use super::scratch::Scratch;
-use super::{LightKind, SceneLights};
+use super::{LightKind, Lighting};
 use crate::math::{Vec3, float};
 use crate::pipeline::{BATCH_SIZE, lanes};
 
@@ -22,7 +22,7 @@ use crate::pipeline::{BATCH_SIZE, lanes};
 /// them has had its variant checked to use none.
 pub(crate) fn light<const CAPS: u32>(
     s: &mut Scratch,
-    lights: &SceneLights<'_>,
+    lights: &Lighting<'_>,
     eye: Vec3,
     shininess: f32,
     specular: bool,

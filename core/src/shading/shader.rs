@@ -9,15 +9,15 @@ use super::maps::{MapReader, albedo, glow, specular_color};
 use super::normals::{self, object_map, tangent_map};
 use super::scratch::Scratch;
 use super::varyings::{Slot, SurfaceVaryings};
-use super::{Layout, NormalSource, SceneLights, SpecularSource, SurfaceMaterial, SurfaceVariant, lighting};
-use super::{SurfaceError, coarse, views};
+use super::{Layout, Lighting, Material, NormalSource, SpecularSource, Variant, lighting};
+use super::{ShadingError, coarse, views};
 use crate::math::{Mat3, Vec2, Vec3, Vec4};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{BATCH_SIZE, Fragment, FragmentBatch, Shader};
 use crate::shading::{LightTerms, ShadingModel, Transforms, world_normal};
 use crate::texture::{Bilinear, Clamp, Filter, FilterMode, Nearest, Repeat, Wrap, WrapMode};
 
-/// Shades a mesh with a [`SurfaceMaterial`] under [`SceneLights`], computing what its [`SurfaceVariant`] says:
+/// Shades a mesh with a [`Material`] under [`Lighting`], computing what its [`Variant`] says:
 /// its shading model, maps and lights.
 ///
 /// The varyings it carries are fixed by its type (`A` and `B`: the two `Vec3` slots of the variant's
@@ -33,9 +33,9 @@ pub struct SurfaceShader<'a, A, B, U, T, const CAPS: u32 = { capabilities::ALL }
     /// -1 when the model matrix mirrors (which flips the bitangent), else 1.
     handedness: f32,
     tangents: &'a [Vec4],
-    material: SurfaceMaterial<'a>,
-    lights: SceneLights<'a>,
-    variant: SurfaceVariant,
+    material: Material<'a>,
+    lights: Lighting<'a>,
+    variant: Variant,
     /// The slots the variant fills (a general draw may carry more, which then hold zeros).
     layout: Layout,
     _varyings: PhantomData<(A, B, U, T)>,
@@ -52,16 +52,16 @@ where
     /// empty otherwise).
     ///
     /// # Errors
-    /// [`SurfaceError::Unsupported`] when the slot types do not carry the variant's [`SurfaceVariant::layout`]
+    /// [`ShadingError::Unsupported`] when the slot types do not carry the variant's [`Variant::layout`]
     /// (they may carry more), or `CAPS` ([`capabilities`]) leaves out its shading model, point lights or shadow
     /// maps.
     pub fn new(
-        variant: SurfaceVariant,
+        variant: Variant,
         transforms: Transforms,
         tangents: &'a [Vec4],
-        material: SurfaceMaterial<'a>,
-        lights: SceneLights<'a>,
-    ) -> Result<Self, SurfaceError> {
+        material: Material<'a>,
+        lights: Lighting<'a>,
+    ) -> Result<Self, ShadingError> {
         let layout = variant.layout();
         let carried = (!layout.first || A::PRESENT)
             && (!layout.second || B::PRESENT)
@@ -78,7 +78,7 @@ where
             && (variant.point_lights == 0 || has(CAPS, capabilities::POINT_LIGHTS))
             && (variant.shadowed_lights == 0 || has(CAPS, capabilities::SHADOWS));
         if !(carried && compiled) {
-            return Err(SurfaceError::Unsupported);
+            return Err(ShadingError::Unsupported);
         }
         let handedness = if transforms.mirrors() { -1.0 } else { 1.0 };
         Ok(Self {

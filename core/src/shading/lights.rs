@@ -1,4 +1,4 @@
-//! The lights of a mapped draw: directional and point lights, each with an optional shadow map.
+//! The lights of a draw: directional and point lights, each with an optional shadow map.
 
 use crate::math::Vec3;
 use crate::shadow::ShadowMap;
@@ -22,7 +22,7 @@ pub enum LightKind {
 
 /// One light of a scene.
 #[derive(Clone, Copy, Debug)]
-pub struct LightSource<'a> {
+pub struct Light<'a> {
     /// Directional or point.
     pub kind: LightKind,
     /// Colour times intensity.
@@ -31,7 +31,7 @@ pub struct LightSource<'a> {
     pub shadow: Option<ShadowMap<'a>>,
 }
 
-impl LightSource<'_> {
+impl Light<'_> {
     /// A directional light shining from `to_light` (normalised here), without shadows.
     pub fn directional(to_light: Vec3, color: Vec3) -> Self {
         Self { kind: LightKind::Directional { to_light: to_light.normalize_or_zero() }, color, shadow: None }
@@ -45,15 +45,15 @@ impl LightSource<'_> {
 
 /// The light a scene sheds: an ambient term and any number of lights, borrowed.
 #[derive(Clone, Copy, Debug)]
-pub struct SceneLights<'a> {
+pub struct Lighting<'a> {
     /// Light reaching every surface from every direction.
     pub ambient: Vec3,
     /// The lights.
-    pub lights: &'a [LightSource<'a>],
+    pub lights: &'a [Light<'a>],
 }
 
 /// What choosing a draw's stages needs to know of a light: whether it is a point light, and the filter radius of
-/// its shadow map if it has one. [`super::SurfaceVariant::resolve`] takes these, so a draw can be planned before
+/// its shadow map if it has one. [`super::Variant::resolve`] takes these, so a draw can be planned before
 /// any shadow map exists.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct LightUse {
@@ -63,8 +63,8 @@ pub struct LightUse {
     pub shadow_pcf: Option<u32>,
 }
 
-impl From<&LightSource<'_>> for LightUse {
-    fn from(light: &LightSource<'_>) -> Self {
+impl From<&Light<'_>> for LightUse {
+    fn from(light: &Light<'_>) -> Self {
         Self { point: matches!(light.kind, LightKind::Point { .. }), shadow_pcf: light.shadow.map(|s| s.pcf_radius()) }
     }
 }

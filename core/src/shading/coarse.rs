@@ -3,7 +3,7 @@
 
 use super::columns::{Column2, Column3};
 use super::maps::{MapReader, modulated};
-use super::{SpecularSource, SurfaceMaterial, SurfaceVariant};
+use super::{Material, SpecularSource, Variant};
 use crate::math::Vec3;
 use crate::pipeline::BATCH_SIZE;
 use crate::shading::LightTerms;
@@ -25,8 +25,8 @@ pub(crate) enum Light<'a> {
 #[allow(clippy::too_many_arguments, clippy::needless_range_loop)] // lanes: one index into every column
 #[inline(always)]
 pub(crate) fn shade<F: Filter, W: Wrap>(
-    v: &SurfaceVariant,
-    m: &SurfaceMaterial<'_>,
+    v: &Variant,
+    m: &Material<'_>,
     mut albedo: Column3,
     uv: &Column2,
     light: &Light<'_>,

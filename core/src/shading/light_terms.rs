@@ -1,9 +1,17 @@
 //! Light at one point, in scalar maths: what flat shading computes once per triangle (at its centroid, with its
 //! face normal) and Gouraud shading once per vertex, under the same lights as per-pixel lighting.
 
-use super::{LightKind, SceneLights};
+use super::{LightKind, Lighting};
 use crate::math::{Vec3, float};
-use crate::shading::LightTerms;
+
+/// The light terms of one point, before the surface colour is applied.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LightTerms {
+    /// Ambient + diffuse, multiplied by the surface colour.
+    pub diffuse: Vec3,
+    /// Specular, multiplied by the specular colour.
+    pub specular: Vec3,
+}
 
 /// The light arriving at `point` on a surface with unit normal `n`: ambient plus each light's
 /// `color * max(0, n . l)`, and with `specular` each light's Blinn-Phong highlight
@@ -12,7 +20,7 @@ use crate::shading::LightTerms;
 /// `eye`. Shadow maps are not read: shadows are computed per pixel.
 #[inline(always)]
 pub(crate) fn light_at(
-    lights: &SceneLights<'_>,
+    lights: &Lighting<'_>,
     n: Vec3,
     point: Vec3,
     eye: Vec3,

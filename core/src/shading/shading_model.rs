@@ -1,0 +1,37 @@
+//! The shading models: how a draw colours its surfaces.
+
+/// How surfaces are coloured.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ShadingModel {
+    /// No lighting: the material colour (or the mesh's vertex colours, when it has them) times the texture.
+    Unlit,
+    /// Lighting once per triangle with its face normal.
+    Flat,
+    /// Lighting per vertex, interpolated.
+    Gouraud,
+    /// Lighting per pixel with the interpolated normal.
+    Phong,
+    /// The depth buffer as grey levels: NDC depth `near` white to `far` black.
+    Depth {
+        /// NDC depth shown white.
+        near: f32,
+        /// NDC depth shown black.
+        far: f32,
+    },
+    /// World-space normals as colours.
+    Normals,
+}
+
+impl ShadingModel {
+    /// A short lowercase name (`"phong"`, `"depth"`...).
+    pub fn name(&self) -> &'static str {
+        match self {
+            Self::Unlit => "unlit",
+            Self::Flat => "flat",
+            Self::Gouraud => "gouraud",
+            Self::Phong => "phong",
+            Self::Depth { .. } => "depth",
+            Self::Normals => "normals",
+        }
+    }
+}
