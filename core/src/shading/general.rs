@@ -5,9 +5,9 @@
 //! It is written from the maths each stage documents, not from the lane code: `Vec3` operations in the order the
 //! lane loops promise to keep ([`super::columns`]), scalar texture samples, and the scalar shadow lookup
 //! ([`crate::shadow::ShadowMap::light_reaching`]). It shares with the surface shader only the per-vertex and
-//! per-triangle light ([`super::light_terms::light_at`]), which is scalar already.
+//! per-triangle light (`light_terms.rs`: `vertex_light`, `face_light`), which is scalar already.
 
-use super::light_terms::light_at;
+use super::light_terms::{face_light, vertex_light};
 use super::material::decode_normal;
 use super::{
     LightKind, LightTerms, Lighting, Material, NormalSource, ShadingModel, SpecularSource, Transforms, Variant,
@@ -174,17 +174,8 @@ impl Shader for GeneralShader<'_> {
         match v.shading {
             ShadingModel::Unlit if v.vertex_colors => out.color = mesh.color(i),
             ShadingModel::Gouraud => {
-                let n = world_normal(&t.normal, mesh.normal(i));
-                let highlights = v.specular != SpecularSource::None;
-                let point = if highlights || v.point_lights > 0 {
-                    t.model.transform_point(mesh.position(i))
-                } else {
-                    Vec3::ZERO
-                };
-                let light = light_at(&self.lights, n, point, t.eye, self.material.shininess, highlights);
-                // A non-finite normal must reach the varyings, so that the pipeline skips its triangle.
-                out.diffuse = if n.is_finite() { light.diffuse } else { n };
-                out.specular = light.specular;
+                let light = vertex_light(t, &self.lights, self.material.shininess, v, mesh, i);
+                (out.diffuse, out.specular) = (light.diffuse, light.specular);
             }
             ShadingModel::Phong => {
                 out.normal = world_normal(&t.normal, mesh.normal(i));
@@ -199,20 +190,11 @@ impl Shader for GeneralShader<'_> {
     }
 
     /// Flat shading's light: the face normal (through the normal matrix), the highlight at the world centroid.
-    fn face(&self, mesh: &Mesh<'_>, [a, b, c]: [usize; 3]) -> LightTerms {
+    fn face(&self, mesh: &Mesh<'_>, triangle: [usize; 3]) -> LightTerms {
         if self.variant.shading != ShadingModel::Flat {
             return LightTerms { diffuse: Vec3::ZERO, specular: Vec3::ZERO };
         }
-        let t = &self.transforms;
-        let (p0, p1, p2) = (mesh.position(a), mesh.position(b), mesh.position(c));
-        let n = (t.normal * (p1 - p0).cross(p2 - p0)).normalize_or_zero();
-        let highlights = self.variant.specular != SpecularSource::None;
-        let centroid = if highlights || self.variant.point_lights > 0 {
-            t.model.transform_point((p0 + p1 + p2) * (1.0 / 3.0))
-        } else {
-            Vec3::ZERO
-        };
-        light_at(&self.lights, n, centroid, t.eye, self.material.shininess, highlights)
+        face_light(&self.transforms, &self.lights, self.material.shininess, &self.variant, mesh, triangle)
     }
 
     fn fragment(&self, f: &Fragment, face: &LightTerms, v: &GeneralVaryings) -> Vec3 {

@@ -1,8 +1,9 @@
 //! Light at one point, in scalar maths: what flat shading computes once per triangle (at its centroid, with its
 //! face normal) and Gouraud shading once per vertex, under the same lights as per-pixel lighting.
 
-use super::{LightKind, Lighting};
+use super::{LightKind, Lighting, SpecularSource, Transforms, Variant, world_normal};
 use crate::math::{Vec3, float};
+use crate::mesh::Mesh;
 
 /// The light terms of one point, before the surface colour is applied.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -42,4 +43,47 @@ pub(crate) fn light_at(
         }
     }
     terms
+}
+
+/// Gouraud shading's light at vertex `i` of `mesh` drawn with `variant`: [`light_at`] with the vertex's world
+/// normal, at its world position where a point light or the highlight needs it. A non-finite normal takes the
+/// diffuse light's place, so that the pipeline skips its triangle: the light alone would hide it (`max(NaN, 0)`
+/// is 0) and draw the triangle unlit.
+#[inline(always)]
+pub(crate) fn vertex_light(
+    t: &Transforms,
+    lights: &Lighting<'_>,
+    shininess: f32,
+    variant: &Variant,
+    mesh: &Mesh<'_>,
+    i: usize,
+) -> LightTerms {
+    let n = world_normal(&t.normal, mesh.normal(i));
+    let highlights = variant.specular != SpecularSource::None;
+    let point =
+        if highlights || variant.point_lights > 0 { t.model.transform_point(mesh.position(i)) } else { Vec3::ZERO };
+    let light = light_at(lights, n, point, t.eye, shininess, highlights);
+    LightTerms { diffuse: if n.is_finite() { light.diffuse } else { n }, specular: light.specular }
+}
+
+/// Flat shading's light for the triangle `[a, b, c]` of `mesh` drawn with `variant`: [`light_at`] with the face
+/// normal (through the normal matrix), at the world centroid where a point light or the highlight needs it.
+#[inline(always)]
+pub(crate) fn face_light(
+    t: &Transforms,
+    lights: &Lighting<'_>,
+    shininess: f32,
+    variant: &Variant,
+    mesh: &Mesh<'_>,
+    [a, b, c]: [usize; 3],
+) -> LightTerms {
+    let (p0, p1, p2) = (mesh.position(a), mesh.position(b), mesh.position(c));
+    let n = (t.normal * (p1 - p0).cross(p2 - p0)).normalize_or_zero();
+    let highlights = variant.specular != SpecularSource::None;
+    let centroid = if highlights || variant.point_lights > 0 {
+        t.model.transform_point((p0 + p1 + p2) * (1.0 / 3.0))
+    } else {
+        Vec3::ZERO
+    };
+    light_at(lights, n, centroid, t.eye, shininess, highlights)
 }

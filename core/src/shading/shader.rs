@@ -4,7 +4,7 @@ use core::marker::PhantomData;
 
 use super::capabilities::{self, has};
 use super::columns::{self, Column2, Column3};
-use super::light_terms::light_at;
+use super::light_terms::{face_light, vertex_light};
 use super::maps::{MapReader, albedo, glow, specular_color};
 use super::normals::{self, object_map, tangent_map};
 use super::scratch::Scratch;
@@ -208,19 +208,8 @@ where
                 (A::capture(|| if layout.first { mesh.color(i) } else { Vec3::ZERO }), B::capture(|| Vec3::ZERO))
             }
             ShadingModel::Gouraud if has(CAPS, capabilities::GOURAUD) => {
-                let n = world_normal(&t.normal, mesh.normal(i));
-                let highlights = v.specular != SpecularSource::None;
-                // The world position only where a light or the highlight needs it.
-                let point = if highlights || v.point_lights > 0 {
-                    t.model.transform_point(mesh.position(i))
-                } else {
-                    Vec3::ZERO
-                };
-                let light = light_at(&self.lights, n, point, t.eye, self.material.shininess, highlights);
-                // A non-finite normal must reach the varyings, so that the pipeline skips its triangle: the light
-                // alone would hide it (`max(NaN, 0)` is 0) and draw the triangle unlit.
-                let diffuse = if n.is_finite() { light.diffuse } else { n };
-                (A::capture(|| diffuse), B::capture(|| light.specular))
+                let light = vertex_light(t, &self.lights, self.material.shininess, v, mesh, i);
+                (A::capture(|| light.diffuse), B::capture(|| light.specular))
             }
             // Flat shading and the depth view read no slot (nor do models this shader leaves out: `new` refuses them).
             _ => (A::capture(|| Vec3::ZERO), B::capture(|| Vec3::ZERO)),
@@ -243,20 +232,11 @@ where
 
     /// Flat shading's light: the face normal (through the normal matrix), the highlight at the world centroid.
     #[inline(always)]
-    fn face(&self, mesh: &Mesh<'_>, [a, b, c]: [usize; 3]) -> LightTerms {
+    fn face(&self, mesh: &Mesh<'_>, triangle: [usize; 3]) -> LightTerms {
         if !has(CAPS, capabilities::FLAT) || self.variant.shading != ShadingModel::Flat {
             return LightTerms { diffuse: Vec3::ZERO, specular: Vec3::ZERO };
         }
-        let t = &self.transforms;
-        let (p0, p1, p2) = (mesh.position(a), mesh.position(b), mesh.position(c));
-        let n = (t.normal * (p1 - p0).cross(p2 - p0)).normalize_or_zero();
-        let highlights = self.variant.specular != SpecularSource::None;
-        let centroid = if highlights || self.variant.point_lights > 0 {
-            t.model.transform_point((p0 + p1 + p2) * (1.0 / 3.0))
-        } else {
-            Vec3::ZERO
-        };
-        light_at(&self.lights, n, centroid, t.eye, self.material.shininess, highlights)
+        face_light(&self.transforms, &self.lights, self.material.shininess, &self.variant, mesh, triangle)
     }
 
     /// One fragment as a batch of one.
