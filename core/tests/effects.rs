@@ -15,7 +15,6 @@ use rastty_core::shading::{
     SpecularSource, Transforms, Variant, draw_mesh,
 };
 use rastty_core::shadow::{Bounds, ShadowBias, ShadowMap, ShadowView, clear_shadow_depth};
-use rastty_core::target::Target;
 use rastty_core::testing::draw_mesh_general;
 use rastty_core::texture::{FilterMode, Texture};
 
@@ -87,11 +86,11 @@ fn render(f: &Fixture, material: Material<'_>, lights: &[Light<'_>], general: bo
     let background = Vec3::new(0.1, 0.2, 0.3);
     let state = DrawState::default();
     let (variant, stats) = if general {
-        let mut target = Target::new(ExactColor(&mut color), PlainDepth(&mut depth), W, H).unwrap();
+        let mut target = common::frame(ExactColor(&mut color), PlainDepth(&mut depth), W, H);
         target.clear(background);
         draw_mesh_general(&mut target, &object, &lights, &state)
     } else {
-        let mut target = Target::new(ExactColor(&mut color), &mut depth[..], W, H).unwrap();
+        let mut target = common::frame(ExactColor(&mut color), &mut depth[..], W, H);
         target.clear(background);
         draw_mesh(&mut target, &object, &lights, &state)
     }

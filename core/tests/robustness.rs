@@ -91,7 +91,7 @@ fn non_finite_attributes_skip_triangles_only_where_used() {
         let [(color, stats), (general_color, general_stats)] = [false, true].map(|general| {
             let mut color = vec![0u32; 48 * 48];
             let mut depth = vec![0f32; 48 * 48];
-            let mut target = Target::new(Rgb888(&mut color), &mut depth[..], 48, 48).unwrap();
+            let mut target = common::frame(Rgb888(&mut color), &mut depth[..], 48, 48);
             target.clear(Vec3::ZERO);
             let draw = if general { draw_mesh_general } else { draw_mesh };
             let (_, stats) = draw(&mut target, &object, &lighting, &state).unwrap();
@@ -134,8 +134,8 @@ fn every_triangle_is_counted_exactly_once() {
         material: Material::default(),
     };
     let lighting = Lighting { ambient: Vec3::ONE, lights: &[] };
-    let mut color = vec![0u32; 24 * 24];
-    let mut target = Target::new(Rgb888(&mut color), NoDepth, 24, 24).unwrap();
+    let (mut color, mut depth) = (vec![0u32; 24 * 24], vec![0f32; 24 * 24]);
+    let mut target = common::frame(Rgb888(&mut color), &mut depth[..], 24, 24);
     let (_, s) = draw_mesh(&mut target, &object, &lighting, &DrawState::default()).unwrap();
     assert_eq!(s.triangles_in, torus.indices.len() as u64 / 3);
     assert_eq!(s.invalid + s.outside + s.culled + s.degenerate + s.rasterized, s.triangles_in, "{s:?}");

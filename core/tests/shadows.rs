@@ -13,7 +13,7 @@ use rastty_core::shadow::{
     Bounds, ShadowBias, ShadowError, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster,
     draw_shadow_caster_band,
 };
-use rastty_core::target::{Rgb888, Target};
+use rastty_core::target::Rgb888;
 
 const SIZE: u32 = 128;
 /// Pixels per world unit: the view spans `[-2, 2]` in x and z.
@@ -93,7 +93,7 @@ fn render(objects: &[&Quads], to_light: Vec3, shadow: Option<(ShadowBias, u32)>)
     let (view, projection) = camera();
     let mut color = vec![0u32; (SIZE * SIZE) as usize];
     let mut depth = vec![0f32; (SIZE * SIZE) as usize];
-    let mut target = Target::new(Rgb888(&mut color), &mut depth[..], SIZE, SIZE).unwrap();
+    let mut target = crate::common::frame(Rgb888(&mut color), &mut depth[..], SIZE, SIZE);
     target.clear(Vec3::ZERO);
     for o in objects {
         let object = Object {

@@ -17,7 +17,6 @@ use rastty_core::shading::{
     Variant, draw_mesh,
 };
 use rastty_core::shadow::{Bounds, ShadowBias, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster};
-use rastty_core::target::Target;
 use rastty_core::testing::draw_mesh_general;
 use rastty_core::texture::{FilterMode, Texture, WrapMode};
 
@@ -33,11 +32,11 @@ fn render(object: &Object<'_>, lights: &Lighting<'_>, state: &DrawState, special
     let mut depth = vec![0f32; (W * H) as usize];
     let background = Vec3::new(0.1, 0.2, 0.3);
     let (variant, stats) = if specialised {
-        let mut target = Target::new(ExactColor(&mut color), &mut depth[..], W, H).unwrap();
+        let mut target = common::frame(ExactColor(&mut color), &mut depth[..], W, H);
         target.clear(background);
         draw_mesh(&mut target, object, lights, state)
     } else {
-        let mut target = Target::new(ExactColor(&mut color), PlainDepth(&mut depth), W, H).unwrap();
+        let mut target = common::frame(ExactColor(&mut color), PlainDepth(&mut depth), W, H);
         target.clear(background);
         draw_mesh_general(&mut target, object, lights, state)
     }

@@ -11,7 +11,7 @@
 
 use crate::common;
 
-use common::{ExactColor, PlainDepth, PlainDepth16, Torus, Transformed, assert_same_depths, checker_texels};
+use common::{ExactColor, Frame, PlainDepth, PlainDepth16, Torus, Transformed, assert_same_depths, checker_texels};
 use rastty_core::camera::{look_at, perspective};
 use rastty_core::math::{Mat4, Vec3, Vec4};
 use rastty_core::mesh::{Mesh, compute_tangents};
@@ -22,7 +22,7 @@ use rastty_core::shading::{
     Light, Lighting, Material, NormalMap, NormalSpace, Object, ShadingModel, Transforms, draw_mesh,
 };
 use rastty_core::shadow::{Bounds, ShadowBias, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster};
-use rastty_core::target::{DEPTH_LANES, DepthBuffer, NoColor, Rgb565, Target};
+use rastty_core::target::{NoColor, Rgb565, Target};
 use rastty_core::testing::draw_mesh_general;
 use rastty_core::texture::{FilterMode, Texture, WrapMode};
 
@@ -44,62 +44,15 @@ const WIREFRAMES: [LineStyle; 2] = [
     LineStyle { color: Vec3::new(0.0, 1.0, 1.0), depth_bias: -2.0 },
 ];
 
-/// The depth buffer of a frame or band: the library's (lane-wise where it can be) or a caller's own (pixel by
-/// pixel). One type, so that each scene's draw is compiled once, not once per buffer type.
-enum AnyDepth<'a> {
-    F32(&'a mut [f32]),
-    U16(&'a mut [u16]),
-    Plain(PlainDepth<'a>),
-    Plain16(PlainDepth16<'a>),
-}
-
-impl DepthBuffer for AnyDepth<'_> {
-    fn pixel_count(&self) -> Option<usize> {
-        match self {
-            Self::F32(d) => d.pixel_count(),
-            Self::U16(d) => d.pixel_count(),
-            Self::Plain(d) => d.pixel_count(),
-            Self::Plain16(d) => d.pixel_count(),
-        }
-    }
-    fn test_and_set(&mut self, index: usize, z: f32) -> bool {
-        match self {
-            Self::F32(d) => d.test_and_set(index, z),
-            Self::U16(d) => d.test_and_set(index, z),
-            Self::Plain(d) => d.test_and_set(index, z),
-            Self::Plain16(d) => d.test_and_set(index, z),
-        }
-    }
-    fn test_and_set_lanes(&mut self, start: usize, z: &[f32; DEPTH_LANES], covered: &[bool; DEPTH_LANES]) -> u32 {
-        match self {
-            Self::F32(d) => d.test_and_set_lanes(start, z, covered),
-            Self::U16(d) => d.test_and_set_lanes(start, z, covered),
-            Self::Plain(d) => d.test_and_set_lanes(start, z, covered),
-            Self::Plain16(d) => d.test_and_set_lanes(start, z, covered),
-        }
-    }
-    fn clear(&mut self) {
-        match self {
-            Self::F32(d) => d.clear(),
-            Self::U16(d) => d.clear(),
-            Self::Plain(d) => d.clear(),
-            Self::Plain16(d) => d.clear(),
-        }
-    }
-}
-
-/// What a scene is drawn into: exact colours and any depth buffer.
-type Frame<'c, 'd> = Target<ExactColor<'c>, AnyDepth<'d>>;
-
 /// Draws a scene (`draw` clears a target, draws and returns the fragments drawn) whole into the library's buffers, then every band `y0..y1` of the frame into the
 /// caller's own, and compares each band with the frame's rows; checks that the bands of every height add up to
 /// the frame's fragments. Returns the frame's `f32` depths.
 fn assert_every_band_equals_the_frame(name: &str, draw: impl Fn(&mut Frame<'_, '_>) -> u64) -> Vec<f32> {
     let n = (W * H) as usize;
     let (mut color, mut depth) = (vec![[0u32; 3]; n], vec![0f32; n]);
-    let frame = draw(&mut Target::new(ExactColor(&mut color), AnyDepth::F32(&mut depth), W, H).unwrap());
+    let frame = draw(&mut common::frame(ExactColor(&mut color), &mut depth[..], W, H));
     let (mut color16, mut depth16) = (vec![[0u32; 3]; n], vec![0u16; n]);
-    let frame16 = draw(&mut Target::new(ExactColor(&mut color16), AnyDepth::U16(&mut depth16), W, H).unwrap());
+    let frame16 = draw(&mut common::frame(ExactColor(&mut color16), &mut depth16[..], W, H));
 
     // fragments[y0][y1] and fragments16[y0][y1]: the band y0..y1's.
     let mut fragments = vec![vec![0; H as usize + 1]; H as usize];
@@ -109,16 +62,16 @@ fn assert_every_band_equals_the_frame(name: &str, draw: impl Fn(&mut Frame<'_, '
             let rows = (y0 * W) as usize..(y1 * W) as usize;
             let what = format!("{name}, band {y0}..{y1}");
             let (mut band_color, mut band_depth) = (vec![[0u32; 3]; rows.len()], vec![0f32; rows.len()]);
-            let plain = AnyDepth::Plain(PlainDepth(&mut band_depth));
+            let plain = PlainDepth(&mut band_depth);
             fragments[y0 as usize][y1 as usize] =
-                draw(&mut Target::band(ExactColor(&mut band_color), plain, W, H, y0..y1).unwrap());
+                draw(&mut common::band(ExactColor(&mut band_color), plain, W, H, y0..y1));
             assert_same_colors(&what, &band_color, &color[rows.clone()], y0);
             assert_same_depths(&what, &band_depth, &depth[rows.clone()], W as usize, y0 as usize);
 
             let (mut band_color, mut band_depth) = (vec![[0u32; 3]; rows.len()], vec![0u16; rows.len()]);
-            let plain = AnyDepth::Plain16(PlainDepth16(&mut band_depth));
+            let plain = PlainDepth16(&mut band_depth);
             fragments16[y0 as usize][y1 as usize] =
-                draw(&mut Target::band(ExactColor(&mut band_color), plain, W, H, y0..y1).unwrap());
+                draw(&mut common::band(ExactColor(&mut band_color), plain, W, H, y0..y1));
             let what = format!("{what}, u16 depth");
             assert_same_colors(&what, &band_color, &color16[rows.clone()], y0);
             assert_same_depths(&what, &band_depth, &depth16[rows], W as usize, y0 as usize);
@@ -309,20 +262,19 @@ fn a_320x240_rgb565_frame_in_16_row_bands_uses_20_kib() {
         material: Material::default(),
     };
     let lighting = Lighting { ambient: Vec3::splat(0.1), lights: &lights };
-    let render = |target: &mut Target<Rgb565<'_>, &mut [u16]>| {
+    let render = |target: &mut Frame<'_, '_>| {
         target.clear(Vec3::ZERO);
         draw_mesh(target, &object, &lighting, &DrawState::default()).unwrap().1
     };
     let (mut whole, mut whole_depth) = (vec![0u16; (BW * BH) as usize], vec![0u16; (BW * BH) as usize]);
-    let full: DrawStats = render(&mut Target::new(Rgb565(&mut whole), &mut whole_depth[..], BW, BH).unwrap());
+    let full: DrawStats = render(&mut common::frame(Rgb565(&mut whole), &mut whole_depth[..], BW, BH));
 
     let mut color = [0u16; (BW * 16) as usize];
     let mut depth = [0u16; (BW * 16) as usize];
     assert_eq!(core::mem::size_of_val(&color) + core::mem::size_of_val(&depth), 20 * 1024);
     let (mut assembled, mut assembled_depth, mut fragments) = (Vec::new(), Vec::new(), 0);
     for y0 in (0..BH).step_by(16) {
-        fragments +=
-            render(&mut Target::band(Rgb565(&mut color), &mut depth[..], BW, BH, y0..y0 + 16).unwrap()).fragments;
+        fragments += render(&mut common::band(Rgb565(&mut color), &mut depth[..], BW, BH, y0..y0 + 16)).fragments;
         assembled.extend_from_slice(&color);
         assembled_depth.extend_from_slice(&depth);
     }

@@ -4,7 +4,7 @@
 use rastty_core::math::{Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh};
 use rastty_core::pipeline::{DrawState, DrawStats, Fragment, Shader, draw};
-use rastty_core::target::{ColorBuffer, DepthBuffer, NoDepth, Target, depth_to_u16};
+use rastty_core::target::{ColorBuffer, DEPTH_LANES, DepthBuffer, NoDepth, Rgb565, Rgb888, Target, depth_to_u16};
 
 /// Counts how many times each pixel is written.
 pub struct Count<'a>(pub &'a mut [u32]);
@@ -347,5 +347,150 @@ pub fn assert_same_depths<T: DepthBits>(what: &str, actual: &[T], expected: &[T]
     if let Some(i) = (0..actual.len()).find(|&i| actual[i].bits() != expected[i].bits()) {
         let (x, y) = (i % width, first_row + i / width);
         panic!("{what}: depth at ({x}, {y}) is {:?}, expected {:?}", actual[i], expected[i]);
+    }
+}
+
+/// The colour buffer of a frame or band: exact colours or one of the library's packed formats.
+///
+/// One type (with [`AnyDepth`]) so that `draw_mesh`, whose pixel loops are compiled for each pair of buffer types,
+/// is compiled once for this test binary: each further pair costs about a minute of its build.
+pub enum AnyColor<'a> {
+    Exact(ExactColor<'a>),
+    Rgb888(Rgb888<'a>),
+    Rgb565(Rgb565<'a>),
+}
+
+impl ColorBuffer for AnyColor<'_> {
+    fn pixel_count(&self) -> Option<usize> {
+        match self {
+            Self::Exact(c) => c.pixel_count(),
+            Self::Rgb888(c) => c.pixel_count(),
+            Self::Rgb565(c) => c.pixel_count(),
+        }
+    }
+    fn write(&mut self, index: usize, color: Vec3) {
+        match self {
+            Self::Exact(c) => c.write(index, color),
+            Self::Rgb888(c) => c.write(index, color),
+            Self::Rgb565(c) => c.write(index, color),
+        }
+    }
+    fn fill(&mut self, color: Vec3) {
+        match self {
+            Self::Exact(c) => c.fill(color),
+            Self::Rgb888(c) => c.fill(color),
+            Self::Rgb565(c) => c.fill(color),
+        }
+    }
+}
+
+/// The depth buffer of a frame or band: the library's (lane-wise where it can be) or a caller's own (pixel by
+/// pixel). One type, like [`AnyColor`].
+pub enum AnyDepth<'a> {
+    F32(&'a mut [f32]),
+    U16(&'a mut [u16]),
+    Plain(PlainDepth<'a>),
+    Plain16(PlainDepth16<'a>),
+}
+
+impl DepthBuffer for AnyDepth<'_> {
+    fn pixel_count(&self) -> Option<usize> {
+        match self {
+            Self::F32(d) => d.pixel_count(),
+            Self::U16(d) => d.pixel_count(),
+            Self::Plain(d) => d.pixel_count(),
+            Self::Plain16(d) => d.pixel_count(),
+        }
+    }
+    fn test_and_set(&mut self, index: usize, z: f32) -> bool {
+        match self {
+            Self::F32(d) => d.test_and_set(index, z),
+            Self::U16(d) => d.test_and_set(index, z),
+            Self::Plain(d) => d.test_and_set(index, z),
+            Self::Plain16(d) => d.test_and_set(index, z),
+        }
+    }
+    fn test_and_set_lanes(&mut self, start: usize, z: &[f32; DEPTH_LANES], covered: &[bool; DEPTH_LANES]) -> u32 {
+        match self {
+            Self::F32(d) => d.test_and_set_lanes(start, z, covered),
+            Self::U16(d) => d.test_and_set_lanes(start, z, covered),
+            Self::Plain(d) => d.test_and_set_lanes(start, z, covered),
+            Self::Plain16(d) => d.test_and_set_lanes(start, z, covered),
+        }
+    }
+    fn clear(&mut self) {
+        match self {
+            Self::F32(d) => d.clear(),
+            Self::U16(d) => d.clear(),
+            Self::Plain(d) => d.clear(),
+            Self::Plain16(d) => d.clear(),
+        }
+    }
+}
+
+/// What a shaded scene is drawn into: any colour and any depth buffer.
+pub type Frame<'c, 'd> = Target<AnyColor<'c>, AnyDepth<'d>>;
+
+/// A whole frame of `color` and `depth` (an [`ExactColor`], `Rgb888`, `Rgb565`; a `&mut [f32]`, `&mut [u16]`,
+/// [`PlainDepth`], [`PlainDepth16`]).
+pub fn frame<'c, 'd>(
+    color: impl Into<AnyColor<'c>>,
+    depth: impl Into<AnyDepth<'d>>,
+    width: u32,
+    height: u32,
+) -> Frame<'c, 'd> {
+    Target::new(color.into(), depth.into(), width, height).unwrap()
+}
+
+/// The band `rows` of a `width x height` frame, drawn into `color` and `depth` (as [`frame`]).
+pub fn band<'c, 'd>(
+    color: impl Into<AnyColor<'c>>,
+    depth: impl Into<AnyDepth<'d>>,
+    width: u32,
+    height: u32,
+    rows: core::ops::Range<u32>,
+) -> Frame<'c, 'd> {
+    Target::band(color.into(), depth.into(), width, height, rows).unwrap()
+}
+
+impl<'a> From<ExactColor<'a>> for AnyColor<'a> {
+    fn from(c: ExactColor<'a>) -> Self {
+        Self::Exact(c)
+    }
+}
+
+impl<'a> From<Rgb888<'a>> for AnyColor<'a> {
+    fn from(c: Rgb888<'a>) -> Self {
+        Self::Rgb888(c)
+    }
+}
+
+impl<'a> From<Rgb565<'a>> for AnyColor<'a> {
+    fn from(c: Rgb565<'a>) -> Self {
+        Self::Rgb565(c)
+    }
+}
+
+impl<'a> From<&'a mut [f32]> for AnyDepth<'a> {
+    fn from(d: &'a mut [f32]) -> Self {
+        Self::F32(d)
+    }
+}
+
+impl<'a> From<&'a mut [u16]> for AnyDepth<'a> {
+    fn from(d: &'a mut [u16]) -> Self {
+        Self::U16(d)
+    }
+}
+
+impl<'a> From<PlainDepth<'a>> for AnyDepth<'a> {
+    fn from(d: PlainDepth<'a>) -> Self {
+        Self::Plain(d)
+    }
+}
+
+impl<'a> From<PlainDepth16<'a>> for AnyDepth<'a> {
+    fn from(d: PlainDepth16<'a>) -> Self {
+        Self::Plain16(d)
     }
 }

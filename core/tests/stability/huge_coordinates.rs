@@ -76,7 +76,7 @@ fn a_band_equals_the_frame_when_a_corner_is_1e35_away() {
     use rastty_core::mesh::{Indices, Mesh};
     use rastty_core::pipeline::{Cull, DepthTest, DrawState};
     use rastty_core::shading::{Lighting, Material, Object, ShadingModel, Transforms, draw_mesh};
-    use rastty_core::target::{Rgb888, Target};
+    use rastty_core::target::Rgb888;
 
     let positions = [
         Vec3::new(-113.679_69, -11.734_375, -60.695_313),
@@ -100,7 +100,7 @@ fn a_band_equals_the_frame_when_a_corner_is_1e35_away() {
         let state = DrawState { cull, depth_test: DepthTest::Off, subpixel_bits: 0, ..DrawState::DEFAULT };
         let n = (w * (rows.end - rows.start)) as usize;
         let (mut color, mut depth) = (vec![0u32; n], vec![0f32; n]);
-        let mut target = Target::band(Rgb888(&mut color), &mut depth[..], w, h, rows).unwrap();
+        let mut target = crate::common::band(Rgb888(&mut color), &mut depth[..], w, h, rows);
         target.clear(Vec3::ZERO);
         let (_, stats) = draw_mesh(&mut target, &object, &lighting, &state).unwrap();
         (color, stats.fragments)
