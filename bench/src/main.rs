@@ -11,7 +11,7 @@ use rastty::escaped::{Escaped, path_text};
 use rastty::scene_file::SceneData;
 use rastty::scene_render::{PreparedScene, parse_size};
 use rastty_bench::report::terminal::{DEFAULT_FRAMES, TerminalReport};
-use rastty_bench::report::{effects, frames};
+use rastty_bench::report::{effects, frames, peers};
 
 /// Measure rastty and print figures as Markdown (timings mean something only in a release build).
 #[derive(Parser, Debug)]
@@ -27,6 +27,26 @@ enum ReportCommand {
     /// Time per frame of a scene file as it is (shadow maps kept, drawn every frame, and without shadows), the
     /// same frame drawn again and again.
     Frames(FramesReportArgs),
+    /// Time per frame of the core, euc 0.5.3 and retrofire-core 0.4.0 drawing the same five pictures, one thread,
+    /// side by side, and how many pixels differ.
+    Peers(PeersReportArgs),
+}
+
+/// Options of `rastty-bench peers`.
+#[derive(Args, Debug)]
+struct PeersReportArgs {
+    /// The shared models folder (african_head and stanford-bunny are read from it, never copied).
+    #[arg(long, value_name = "DIR", default_value = "../shared/models")]
+    models: PathBuf,
+    /// Measured frames per renderer and scene.
+    #[arg(long, default_value_t = peers::DEFAULT_FRAMES as u32, value_parser = clap::value_parser!(u32).range(1..=100_000))]
+    frames: u32,
+    /// Only this scene (head, head-tex, bunny, sphere100k, sphere1m); may be given several times.
+    #[arg(long = "scene", value_name = "NAME")]
+    only: Vec<String>,
+    /// Smaller spheres and two frames (for CI): proves the command works; the figures mean little.
+    #[arg(long, conflicts_with = "frames")]
+    quick: bool,
 }
 
 /// Options of `rastty-bench frames`.
@@ -92,6 +112,7 @@ fn main() -> ExitCode {
         ReportCommand::Accuracy(args) => accuracy_report(&args),
         ReportCommand::Effects(args) => effects_report(&args),
         ReportCommand::Frames(args) => frames_report(&args),
+        ReportCommand::Peers(args) => peers_report(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -100,6 +121,16 @@ fn main() -> ExitCode {
             ExitCode::FAILURE
         }
     }
+}
+
+fn peers_report(args: &PeersReportArgs) -> Result<(), String> {
+    let report = peers::PeersReport {
+        models: args.models.clone(),
+        frames: if args.quick { peers::QUICK_FRAMES } else { args.frames as usize },
+        quick: args.quick,
+        only: args.only.clone(),
+    };
+    peers::run(&report, &mut std::io::stdout().lock()).map_err(|e| e.to_string())
 }
 
 /// Loads a scene file and prints its warnings and its meshes'.

@@ -7,3 +7,4 @@ mod common;
 mod reference;
 mod report_effects;
 mod report_frames;
+mod report_peers;

@@ -1,0 +1,171 @@
+//! `rastty-bench peers`: the core against published Rust software rasterizers, side by side in one run.
+//!
+//! Five pictures ([`scenes`]) drawn by euc 0.5.3, retrofire-core 0.4.0 and the core, single thread, the same
+//! work per frame for each: clear colour and depth, draw the whole mesh with a z-buffer, back faces culled, the
+//! vertex normal interpolated perspective-correctly, and per pixel `albedo * (0.1 + 0.9 * max(0, n.l))` with `n`
+//! the normalised interpolated normal. The renderers take turns frame by frame (the first of each round rotating),
+//! so that a noisy moment of the machine falls on all of them alike. The report gives each renderer's median and
+//! minimum time per frame, the core's ratio to the best peer, and how many pixels of each peer's picture differ
+//! from the core's by more than [`DIFFERENCE`] levels in a channel (the peers' edge rules and depth precision
+//! differ from the core's exact ones, so a few edge pixels do).
+
+pub mod core_renderer;
+pub mod euc_renderer;
+pub mod retrofire_renderer;
+pub mod scenes;
+
+use std::fmt::Write as _;
+use std::io::Write;
+use std::path::PathBuf;
+use std::time::{Duration, Instant};
+
+use rastty_core::math::Vec3;
+
+use self::core_renderer::CoreRenderer;
+use self::euc_renderer::EucRenderer;
+use self::retrofire_renderer::RetrofireRenderer;
+use self::scenes::{Scene, SceneError};
+use super::median;
+
+/// Measured frames per renderer and scene by default.
+pub const DEFAULT_FRAMES: usize = 20;
+/// Measured frames with `--quick`.
+pub const QUICK_FRAMES: usize = 2;
+/// A pixel differs when a channel differs by more than this many levels.
+pub const DIFFERENCE: u32 = 8;
+/// The scenes' names, in the report's order.
+pub const SCENES: [&str; 5] = ["head", "head-tex", "bunny", "sphere100k", "sphere1m"];
+
+/// What to measure.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PeersReport {
+    /// The shared models folder.
+    pub models: PathBuf,
+    /// Measured frames per renderer and scene.
+    pub frames: usize,
+    /// Smaller spheres and [`QUICK_FRAMES`] frames, for CI: proves the command works.
+    pub quick: bool,
+    /// The scenes to draw (names from [`SCENES`]); empty for all.
+    pub only: Vec<String>,
+}
+
+/// The three renderers, in the report's column order.
+const RENDERERS: [&str; 3] = ["euc 0.5.3", "retrofire-core 0.4.0", "rastty-core"];
+
+/// One scene's renderers, each with its buffers.
+struct Contenders {
+    euc: EucRenderer,
+    retrofire: RetrofireRenderer,
+    core: CoreRenderer,
+}
+
+impl Contenders {
+    fn new(scene: &Scene) -> Self {
+        Self { euc: EucRenderer::new(scene), retrofire: RetrofireRenderer::new(scene), core: CoreRenderer::new(scene) }
+    }
+
+    /// Draws a frame with renderer `which` (an index into [`RENDERERS`]) and returns how long it took.
+    fn time(&mut self, which: usize, scene: &Scene) -> Duration {
+        let start = Instant::now();
+        match which {
+            0 => self.euc.render(scene),
+            1 => self.retrofire.render(scene),
+            _ => self.core.render(scene),
+        }
+        start.elapsed()
+    }
+
+    fn pixels(&self, which: usize) -> &[u32] {
+        match which {
+            0 => self.euc.pixels(),
+            1 => self.retrofire.pixels(),
+            _ => self.core.pixels(),
+        }
+    }
+}
+
+/// Pixels where `a` and `b` differ by more than [`DIFFERENCE`] in some channel.
+pub fn differing_pixels(a: &[u32], b: &[u32]) -> usize {
+    let channel = |p: u32, shift: u32| (p >> shift) & 0xFF;
+    a.iter()
+        .zip(b)
+        .filter(|&(&p, &q)| [16, 8, 0].iter().any(|&s| channel(p, s).abs_diff(channel(q, s)) > DIFFERENCE))
+        .count()
+}
+
+/// `color` (each channel clamped to `[0, 1]`) as `0x00RRGGBB`, rounded to nearest: the peers' last step.
+pub fn pack(color: Vec3) -> u32 {
+    let channel = |c: f32| (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u32;
+    channel(color.x) << 16 | channel(color.y) << 8 | channel(color.z)
+}
+
+/// Runs the report and writes it to `out` as Markdown.
+///
+/// # Errors
+/// When a model cannot be read, a scene name is unknown, or `out` cannot be written.
+pub fn run(report: &PeersReport, out: &mut dyn Write) -> Result<(), Box<dyn std::error::Error>> {
+    if let Some(unknown) = report.only.iter().find(|name| !SCENES.contains(&name.as_str())) {
+        return Err(SceneError(format!("no scene named {unknown:?}: the scenes are {}", SCENES.join(", "))).into());
+    }
+    let scenes = scenes::scenes(&report.models, report.quick, &report.only)?;
+    let mut text = String::new();
+    let command = if report.quick { "--quick".to_owned() } else { format!("--frames {}", report.frames) };
+    writeln!(text, "### The core and its peers, one thread")?;
+    writeln!(text)?;
+    writeln!(text, "- command: `rastty-bench peers {command}` ({})", super::build_description())?;
+    writeln!(text, "- machine: {}", super::machine_description())?;
+    writeln!(
+        text,
+        "- frames: one warm-up frame each, then {} measured frames per renderer and scene, the renderers taking \
+         turns frame by frame; ms: median (minimum) wall time of a frame: clear, draw the mesh",
+        report.frames
+    )?;
+    writeln!(
+        text,
+        "- differing: pixels of the peer's picture more than {DIFFERENCE} levels from the core's in a channel"
+    )?;
+    for scene in &scenes {
+        writeln!(text, "- {}: {}", scene.name, scene.description)?;
+    }
+    writeln!(text)?;
+    writeln!(
+        text,
+        "| scene | {} | {} | {} | core / best peer | differing from euc | differing from retrofire |",
+        RENDERERS[0], RENDERERS[1], RENDERERS[2]
+    )?;
+    writeln!(text, "|---|---:|---:|---:|---:|---:|---:|")?;
+    for scene in &scenes {
+        let mut contenders = Contenders::new(scene);
+        let mut times: [Vec<Duration>; 3] = Default::default();
+        for which in 0..RENDERERS.len() {
+            contenders.time(which, scene);
+        }
+        for round in 0..report.frames {
+            for k in 0..RENDERERS.len() {
+                let which = (round + k) % RENDERERS.len();
+                times[which].push(contenders.time(which, scene));
+            }
+        }
+        let ms = |d: Duration| d.as_secs_f64() * 1e3;
+        let medians = times.each_ref().map(|t| ms(median(t)));
+        let cell = |which: usize| {
+            let min = times[which].iter().min().copied().unwrap_or_default();
+            format!("{:.2} ({:.2})", medians[which], ms(min))
+        };
+        let best_peer = medians[0].min(medians[1]);
+        let core = contenders.pixels(2);
+        writeln!(
+            text,
+            "| {} | {} | {} | {} | {:.2} | {} | {} |",
+            scene.name,
+            cell(0),
+            cell(1),
+            cell(2),
+            medians[2] / best_peer,
+            differing_pixels(contenders.pixels(0), core),
+            differing_pixels(contenders.pixels(1), core),
+        )?;
+    }
+    out.write_all(text.as_bytes())?;
+    Ok(())
+}
