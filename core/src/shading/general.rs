@@ -7,6 +7,7 @@
 //! ([`crate::shadow::ShadowMap::light_reaching`]). It shares with the surface shader only the per-vertex and
 //! per-triangle light (`light_terms.rs`: `vertex_light`, `face_light`), which is scalar already.
 
+use super::TangentFrame;
 use super::light_terms::{face_light, vertex_light};
 use super::material::decode_normal;
 use super::{
@@ -14,7 +15,7 @@ use super::{
     world_normal,
 };
 use crate::color::unpack_rgb888;
-use crate::math::{Mat3, Vec2, Vec3, Vec4, float};
+use crate::math::{Vec2, Vec3, Vec4, float};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{Fragment, Shader};
 use crate::texture::{Bilinear, Clamp, FilterMode, Nearest, Repeat, Texture, WrapMode};
@@ -46,10 +47,7 @@ crate::impl_varyings!(GeneralVaryings { color, normal, world, uv, tangent, diffu
 pub struct GeneralShader<'a> {
     variant: Variant,
     transforms: Transforms,
-    /// Object to world for tangents (the model's upper 3x3).
-    tangent_matrix: Mat3,
-    /// -1 when the model matrix mirrors, else 1.
-    handedness: f32,
+    tangent_frame: TangentFrame,
     tangents: &'a [Vec4],
     material: Material<'a>,
     lights: Lighting<'a>,
@@ -64,9 +62,7 @@ impl<'a> GeneralShader<'a> {
         material: Material<'a>,
         lights: Lighting<'a>,
     ) -> Self {
-        let handedness = if transforms.mirrors() { -1.0 } else { 1.0 };
-        let tangent_matrix = transforms.model.to_mat3();
-        Self { variant, transforms, tangent_matrix, handedness, tangents, material, lights }
+        Self { variant, transforms, tangent_frame: TangentFrame::new(&transforms), tangents, material, lights }
     }
 
     /// The packed texel of `map` at `uv`, with the variant's filter and wrap mode.
@@ -168,8 +164,7 @@ impl Shader for GeneralShader<'_> {
             out.uv = mesh.uv(i);
         }
         if v.tangents {
-            let tangent = self.tangents.get(i).copied().unwrap_or(Vec4::new(f32::NAN, 0.0, 0.0, 0.0));
-            out.tangent = (self.tangent_matrix * tangent.truncate()).extend(tangent.w * self.handedness);
+            out.tangent = self.tangent_frame.world_tangent(self.tangents, i);
         }
         match v.shading {
             ShadingModel::Unlit if v.vertex_colors => out.color = mesh.color(i),

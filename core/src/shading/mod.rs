@@ -49,6 +49,6 @@ pub use material::{Material, NormalMap, NormalSpace};
 pub use shader::SurfaceShader;
 pub use shading_model::ShadingModel;
 pub use transforms::Transforms;
-pub(crate) use transforms::world_normal;
+pub(crate) use transforms::{TangentFrame, world_normal};
 pub use variant::{Layout, NormalSource, ShadingError, SpecularSource, Variant};
 pub use varyings::{Absent, Slot, SurfaceVaryings};

@@ -11,10 +11,10 @@ use super::scratch::Scratch;
 use super::varyings::{Slot, SurfaceVaryings};
 use super::{Layout, Lighting, Material, NormalSource, SpecularSource, Variant, lighting};
 use super::{ShadingError, coarse, views};
-use crate::math::{Mat3, Vec2, Vec3, Vec4};
+use crate::math::{Vec2, Vec3, Vec4};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{BATCH_SIZE, Fragment, FragmentBatch, Shader};
-use crate::shading::{LightTerms, ShadingModel, Transforms, world_normal};
+use crate::shading::{LightTerms, ShadingModel, TangentFrame, Transforms, world_normal};
 use crate::texture::{Bilinear, Clamp, Filter, FilterMode, Nearest, Repeat, Wrap, WrapMode};
 
 /// Shades a mesh with a [`Material`] under [`Lighting`], computing what its [`Variant`] says:
@@ -28,10 +28,7 @@ use crate::texture::{Bilinear, Clamp, Filter, FilterMode, Nearest, Repeat, Wrap,
 #[derive(Clone, Copy, Debug)]
 pub struct SurfaceShader<'a, A, B, U, T, const CAPS: u32 = { capabilities::ALL }> {
     transforms: Transforms,
-    /// Object to world for tangents (the model's upper 3x3).
-    tangent_matrix: Mat3,
-    /// -1 when the model matrix mirrors (which flips the bitangent), else 1.
-    handedness: f32,
+    tangent_frame: TangentFrame,
     tangents: &'a [Vec4],
     material: Material<'a>,
     lights: Lighting<'a>,
@@ -80,11 +77,9 @@ where
         if !(carried && compiled) {
             return Err(ShadingError::Unsupported);
         }
-        let handedness = if transforms.mirrors() { -1.0 } else { 1.0 };
         Ok(Self {
             transforms,
-            tangent_matrix: transforms.model.to_mat3(),
-            handedness,
+            tangent_frame: TangentFrame::new(&transforms),
             tangents,
             material,
             lights,
@@ -222,10 +217,7 @@ where
                 if !layout.tangents {
                     return Vec4::ZERO;
                 }
-                // A tangent slice shorter than the mesh cannot happen (the variant checks it); NaN would skip the
-                // triangle rather than panic.
-                let tangent = self.tangents.get(i).copied().unwrap_or(Vec4::new(f32::NAN, 0.0, 0.0, 0.0));
-                (self.tangent_matrix * tangent.truncate()).extend(tangent.w * self.handedness)
+                self.tangent_frame.world_tangent(self.tangents, i)
             }),
         }
     }

@@ -1,6 +1,6 @@
 //! The matrices a lit draw needs, derived once per draw.
 
-use crate::math::{Mat3, Mat4, Vec3};
+use crate::math::{Mat3, Mat4, Vec3, Vec4};
 use crate::pipeline::{DrawState, Interpolation};
 
 /// Object-to-world, object-to-clip and normal transforms, and the camera position.
@@ -51,6 +51,30 @@ impl Transforms {
             state.front_face = state.front_face.flipped();
         }
         state
+    }
+}
+
+/// Object-space tangents to world space: the model's upper 3x3 and the sign a mirroring model matrix gives the
+/// bitangent. Derived once per draw by the shaders that read tangents.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct TangentFrame {
+    matrix: Mat3,
+    /// -1 when the model matrix mirrors (which flips the bitangent), else 1.
+    handedness: f32,
+}
+
+impl TangentFrame {
+    pub(crate) fn new(transforms: &Transforms) -> Self {
+        let handedness = if transforms.mirrors() { -1.0 } else { 1.0 };
+        Self { matrix: transforms.model.to_mat3(), handedness }
+    }
+
+    /// `tangents[i]` (direction and handedness `w`) in world space; a missing tangent is NaN, so that its
+    /// triangle is skipped rather than the draw panicking (the variant checks the slice's length first).
+    #[inline(always)]
+    pub(crate) fn world_tangent(&self, tangents: &[Vec4], i: usize) -> Vec4 {
+        let tangent = tangents.get(i).copied().unwrap_or(Vec4::new(f32::NAN, 0.0, 0.0, 0.0));
+        (self.matrix * tangent.truncate()).extend(tangent.w * self.handedness)
     }
 }
 

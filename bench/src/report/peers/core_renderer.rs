@@ -35,7 +35,6 @@ impl CoreRenderer {
             (Some(t), Some(uvs)) => {
                 mesh = mesh.with_uvs(uvs).expect("texture coordinates for every position");
                 Material {
-                    color: Vec3::ONE,
                     diffuse: Some(Texture::new(&t.texels, t.width, t.height).expect("a valid texture")),
                     filter: FilterMode::Nearest,
                     wrap: WrapMode::Repeat,

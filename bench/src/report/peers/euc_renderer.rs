@@ -39,8 +39,8 @@ impl Shading<'_> {
     }
 }
 
-/// Untextured: the normal is the varying.
-struct Plain<'a>(Shading<'a>);
+/// Untextured: the normal is the varying; the albedo, the same everywhere, is worked out once per frame.
+struct Plain<'a>(Shading<'a>, Vec3);
 
 impl Pipeline for Plain<'_> {
     type Vertex = u32;
@@ -54,7 +54,7 @@ impl Pipeline for Plain<'_> {
 
     #[inline(always)]
     fn frag(&self, normal: &Self::VsOut) -> u32 {
-        self.0.shade(*normal, self.0.scene.albedo(Vec2::ZERO))
+        self.0.shade(*normal, self.1)
     }
 }
 
@@ -100,7 +100,11 @@ impl EucRenderer {
             Some(uvs) if scene.texture.is_some() => {
                 Textured(shading, uvs).draw::<Culled<'_>, _>(&scene.indices, &mut self.color, Some(&mut self.depth));
             }
-            _ => Plain(shading).draw::<Culled<'_>, _>(&scene.indices, &mut self.color, Some(&mut self.depth)),
+            _ => Plain(shading, scene.albedo(Vec2::ZERO)).draw::<Culled<'_>, _>(
+                &scene.indices,
+                &mut self.color,
+                Some(&mut self.depth),
+            ),
         }
     }
 
