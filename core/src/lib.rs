@@ -14,7 +14,7 @@
 //! | clip | [`pipeline`] (`clip.rs`) | near/far planes and a guard band, in homogeneous coordinates |
 //! | raster | [`pipeline`] (`raster.rs`) | fixed-point snapping, exact edge functions, top-left rule |
 //! | vertex stage | [`pipeline::Shader::varyings`] | per-vertex values, only for triangles that reach the pixel loop or need clipping |
-//! | fragment | [`pipeline::FragmentBatch`], [`shading`], [`texture`] | depth test, then the fragments of a triangle in batches: interpolation, shading, texturing |
+//! | fragment | [`pipeline::FragmentBatch`], [`shading`], [`texture`] | depth test, then the fragments in batches across triangles: interpolation, shading, texturing |
 //! | target | [`target`] | RGB888 or RGB565 colour, `f32` or `u16` depth, whole frames or bands |
 //!
 //! [`draw_mesh`] draws an [`Object`] under [`Lighting`]: it resolves the [`shading::Variant`] the object and the

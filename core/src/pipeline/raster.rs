@@ -83,6 +83,11 @@ pub(crate) struct Rasterizer {
     front_face: Winding,
 }
 
+impl Snapped {
+    /// A placeholder for a vertex without a screen position.
+    pub const ZERO: Self = Self { x: 0, y: 0, fx: 0.0, fy: 0.0, z: 0.0, inv_w: 0.0 };
+}
+
 impl Rasterizer {
     pub fn new<C: ColorBuffer, D: DepthBuffer>(
         target: &Target<C, D>,
@@ -280,15 +285,43 @@ pub(crate) struct Stages<'s, S, I, Z> {
     pub depth: Z,
 }
 
+/// Largest bounding box, in pixel centres, that [`Coverage::covers_a_centre`] tests centre by centre.
+const SMALL_BOX: i64 = 4;
+
 impl<E: Edges> Coverage<E> {
+    /// False when the triangle covers none of the pixel centres of its bounding box in the target, which is tested
+    /// centre by centre for a box of at most [`SMALL_BOX`] centres; true otherwise. A dense mesh's triangles are
+    /// mostly smaller than a pixel and many cover no centre: this lets them skip their varyings and set-up.
+    #[inline(always)]
+    pub fn covers_a_centre(&self) -> bool {
+        let f = &self.frame;
+        if i64::from(f.x1 - f.x0 + 1) * i64::from(f.y1 - f.y0 + 1) > SMALL_BOX {
+            return true;
+        }
+        for y in f.y0..=f.y1 {
+            let mut e = self.edges.at(f.x0, y);
+            for _ in f.x0..=f.x1 {
+                if self.edges.covered(&e) {
+                    return true;
+                }
+                e = self.edges.step(e);
+            }
+        }
+        false
+    }
+
     /// Visits every covered pixel centre in the target's rows: depth test, interpolation of `varyings` (given for
     /// the input vertices, in input order), fragment stage, write. Returns the number of fragments shaded.
+    ///
+    /// A [`Shader::BATCHED`] shader's fragments go into `batch`, which is shaded and written whenever it fills;
+    /// the caller shades what is left at the end of the draw ([`shade_batch`]).
     #[inline(always)]
     pub fn fill<S, I, Z, C, D>(
         &self,
         stages: &Stages<'_, S, I, Z>,
         face: &S::Face,
         varyings: [&S::Varyings; 3],
+        batch: &mut FragmentBatch<S::Varyings, S::Face>,
         target: &mut Target<C, D>,
     ) -> u64
     where
@@ -305,7 +338,7 @@ impl<E: Edges> Coverage<E> {
                 return self.fill_depth(lanes, &stages.depth, target);
             }
         } else if S::BATCHED {
-            return self.fill_batched(stages, face, varyings, target);
+            return self.fill_batched(stages, face, varyings, batch, target);
         }
         let edges = &self.edges;
         let setup = stages.interpolator.setup(f.inv_w, f.inv_area);
@@ -392,8 +425,8 @@ impl<E: Edges> Coverage<E> {
     }
 
     /// [`Coverage::fill`] for a [`Shader::BATCHED`] shader: the same fragments, in the same order, depth-tested
-    /// alike, gathered with their interpolation weights into batches and shaded with [`Shader::shade_batch`], which
-    /// interpolates the varyings it reads.
+    /// alike, gathered with their interpolation weights into `batch` and shaded with [`Shader::shade_batch`]
+    /// whenever it fills.
     ///
     /// Its row walk repeats `fill`'s on purpose: sharing one walk through a closure made the per-pixel loop twice
     /// as slow (`cargo bench -p rastty-bench --bench render -- sphere_2_5k_phong_lambert_800x800`: fastest 13.4
@@ -404,6 +437,7 @@ impl<E: Edges> Coverage<E> {
         stages: &Stages<'_, S, I, Z>,
         face: &S::Face,
         varyings: [&S::Varyings; 3],
+        batch: &mut FragmentBatch<S::Varyings, S::Face>,
         target: &mut Target<C, D>,
     ) -> u64
     where
@@ -417,20 +451,10 @@ impl<E: Edges> Coverage<E> {
         let edges = &self.edges;
         let setup = stages.interpolator.setup(f.inv_w, f.inv_area);
         let [v0, v1, v2] = f.order.map(|i| varyings[i]);
-        let (var_d1, var_d2) = (v1.sub(v0), v2.sub(v0));
+        batch.start_triangle([*v0, v1.sub(v0), v2.sub(v0)], *face, f.front_facing);
         let width = target.width() as usize;
         let row0 = target.rows().start as i32;
-        let mut batch = FragmentBatch::new(*v0, var_d1, var_d2, f.front_facing);
-        let mut colors = [Vec3::ZERO; BATCH_SIZE];
         let mut shaded = 0u64;
-        let mut flush = |batch: &mut FragmentBatch<S::Varyings>, target: &mut Target<C, D>| {
-            batch.resolve();
-            stages.shader.shade_batch(face, batch, &mut colors);
-            for (&index, &color) in batch.indices().iter().zip(&colors) {
-                target.color.write(index, color);
-            }
-            batch.clear();
-        };
         for y in f.y0..=f.y1 {
             let mut e = edges.at(f.x0, y);
             let mut x = f.x0;
@@ -447,16 +471,36 @@ impl<E: Edges> Coverage<E> {
                     let fractions = stages.interpolator.fractions(&setup, ef);
                     shaded += 1;
                     if batch.push(x as u32, y as u32, z, fractions, index) {
-                        flush(&mut batch, target);
+                        shade_batch(stages.shader, batch, target);
                     }
                 }
                 e = edges.step(e);
                 x += 1;
             }
         }
-        if !batch.is_empty() {
-            flush(&mut batch, target);
-        }
         shaded
     }
+}
+
+/// Shades `batch`'s fragments with `shader`, writes their colours in the order they were pushed, and empties it.
+///
+/// Not inlined: it runs once per batch, and the draw loop calls it from three places (on the firmware, 5 KB of
+/// code each).
+#[inline(never)]
+pub(crate) fn shade_batch<S, C, D>(
+    shader: &S,
+    batch: &mut FragmentBatch<S::Varyings, S::Face>,
+    target: &mut Target<C, D>,
+) where
+    S: Shader,
+    C: ColorBuffer,
+    D: DepthBuffer,
+{
+    let mut colors = [Vec3::ZERO; BATCH_SIZE];
+    batch.resolve();
+    shader.shade_batch(batch, &mut colors);
+    for (&index, &color) in batch.indices().iter().zip(&colors) {
+        target.color.write(index, color);
+    }
+    batch.clear();
 }

@@ -42,7 +42,7 @@ pub trait Shader {
     /// Vertex stage, varyings: what vertex `index` passes to the fragment stage.
     ///
     /// Called only for vertices of triangles that reach the pixel loop (not culled, bounding box holding a pixel
-    /// centre), and of triangles that must be clipped (before their culling: clipping cuts varyings too), so a
+    /// centre; a box of up to four centres must have one of them covered), and of triangles that must be clipped (before their culling: clipping cuts varyings too), so a
     /// vertex seen only by culled or off-screen triangles that need no clipping is never lit or textured.
     fn varyings(&self, mesh: &Mesh<'_>, index: usize) -> Self::Varyings;
 
@@ -61,12 +61,13 @@ pub trait Shader {
     /// time, and writes no colour; [`Shader::fragment`] is never called. A constant, like [`Shader::BATCHED`].
     const FRAGMENT_STAGE: bool = true;
 
-    /// Fragment stage for a batch: the colours of `batch`'s fragments into `colors[..batch.len()]`. Called only
-    /// when [`Shader::BATCHED`] is set; by default it calls [`Shader::fragment`] for each.
+    /// Fragment stage for a batch: the colours of `batch`'s fragments into `colors[..batch.len()]`. A batch may
+    /// hold fragments of several triangles: [`FragmentBatch::face`] and [`FragmentBatch::fragment`] give each
+    /// fragment's. Called only when [`Shader::BATCHED`] is set; by default it calls [`Shader::fragment`] for each.
     #[inline(always)]
-    fn shade_batch(&self, face: &Self::Face, batch: &FragmentBatch<Self::Varyings>, colors: &mut [Vec3; BATCH_SIZE]) {
+    fn shade_batch(&self, batch: &FragmentBatch<Self::Varyings, Self::Face>, colors: &mut [Vec3; BATCH_SIZE]) {
         for (i, c) in colors.iter_mut().enumerate().take(batch.len()) {
-            *c = self.fragment(&batch.fragment(i), face, &batch.varyings(i));
+            *c = self.fragment(&batch.fragment(i), batch.face(i), batch.varyings(i));
         }
     }
 }

@@ -6,17 +6,15 @@ use super::maps::{MapReader, modulated};
 use super::{Material, SpecularSource, Variant};
 use crate::math::Vec3;
 use crate::pipeline::BATCH_SIZE;
-use crate::shading::LightTerms;
 use crate::texture::{Filter, Wrap};
 
 /// The light a coarse model shades with.
 pub(crate) enum Light<'a> {
     /// None: unlit.
     None,
-    /// One for the whole triangle (flat).
-    Face(LightTerms),
-    /// Interpolated from the vertices (Gouraud): diffuse and, with highlights, specular light per fragment.
-    Vertex { diffuse: &'a Column3, specular: &'a Column3 },
+    /// Diffuse and, with highlights, specular light per fragment: its triangle's (flat) or interpolated from the
+    /// vertices (Gouraud).
+    Lit { diffuse: &'a Column3, specular: &'a Column3 },
 }
 
 /// Colours the batch: `albedo` (per fragment) times the diffuse map when the variant reads it, times the diffuse
@@ -45,8 +43,7 @@ pub(crate) fn shade<F: Filter, W: Wrap>(
             out.iter_mut().enumerate().for_each(|(i, c)| *c = albedo.get(i));
             return;
         }
-        Light::Face(face) => (Column3::splat(face.diffuse), Column3::splat(face.specular)),
-        Light::Vertex { diffuse, specular } => (**diffuse, **specular),
+        Light::Lit { diffuse, specular } => (**diffuse, **specular),
     };
     for (i, c) in out.iter_mut().enumerate() {
         *c = albedo.get(i).mul_elem(diffuse.get(i));

@@ -18,17 +18,12 @@ use crate::pipeline::{BATCH_SIZE, Lanes, lanes};
 /// One `f32` per fragment of a batch.
 pub(crate) type Column = Lanes;
 
-/// A batch's interpolation weights of its triangle's second and third vertex (see
-/// [`crate::pipeline::FragmentBatch::weights`]), and the batch's length.
-pub(crate) type Weights<'a> = (&'a Column, &'a Column, usize);
-
-/// `v0 + d1 * w1 + d2 * w2` in every lane: what [`crate::pipeline::Varyings::interpolate`] computes for an `f32`,
-/// in the same order.
+/// `lane(i)` in lane `i` of a batch of `len`: a column of one value of each fragment (zero past `len`).
 #[inline(always)]
-pub(crate) fn interpolated(v0: f32, d1: f32, d2: f32, (w1, w2, len): Weights<'_>) -> Column {
+pub(crate) fn gather(len: usize, lane: impl Fn(usize) -> f32) -> Column {
     let mut out = [0.0; BATCH_SIZE];
-    for i in 0..lanes(len) {
-        out[i] = v0 + d1 * w1[i] + d2 * w2[i];
+    for i in 0..len.min(BATCH_SIZE) {
+        out[i] = lane(i);
     }
     out
 }
@@ -44,10 +39,15 @@ impl Column2 {
     /// Every lane `(0, 0)`.
     pub const ZERO: Self = Self { x: [0.0; BATCH_SIZE], y: [0.0; BATCH_SIZE] };
 
-    /// [`interpolated`] for each component.
+    /// `lane(i)` in lane `i` of a batch of `len` (zero past `len`).
     #[inline(always)]
-    pub fn interpolated(v0: Vec2, d1: Vec2, d2: Vec2, w: Weights<'_>) -> Self {
-        Self { x: interpolated(v0.x, d1.x, d2.x, w), y: interpolated(v0.y, d1.y, d2.y, w) }
+    pub fn gather(len: usize, lane: impl Fn(usize) -> Vec2) -> Self {
+        let mut out = Self::ZERO;
+        for i in 0..len.min(BATCH_SIZE) {
+            let v = lane(i);
+            (out.x[i], out.y[i]) = (v.x, v.y);
+        }
+        out
     }
 }
 
@@ -69,14 +69,14 @@ impl Column3 {
         Self { x: [v.x; BATCH_SIZE], y: [v.y; BATCH_SIZE], z: [v.z; BATCH_SIZE] }
     }
 
-    /// [`interpolated`] for each component.
+    /// `lane(i)` in lane `i` of a batch of `len` (zero past `len`).
     #[inline(always)]
-    pub fn interpolated(v0: Vec3, d1: Vec3, d2: Vec3, w: Weights<'_>) -> Self {
-        Self {
-            x: interpolated(v0.x, d1.x, d2.x, w),
-            y: interpolated(v0.y, d1.y, d2.y, w),
-            z: interpolated(v0.z, d1.z, d2.z, w),
+    pub fn gather(len: usize, lane: impl Fn(usize) -> Vec3) -> Self {
+        let mut out = Self::ZERO;
+        for i in 0..len.min(BATCH_SIZE) {
+            out.set(i, lane(i));
         }
+        out
     }
 
     /// `to - from[i]` in the lanes of a batch of `len`: the vectors from the lanes' points to one point.

@@ -234,29 +234,18 @@ where
     /// One fragment as a batch of one.
     fn fragment(&self, f: &Fragment, face: &LightTerms, v: &Self::Varyings) -> Vec3 {
         let mut colors = [Vec3::ZERO; BATCH_SIZE];
-        self.shade_batch(face, &FragmentBatch::single(f, *v), &mut colors);
+        self.shade_batch(&FragmentBatch::single(f, *face, *v), &mut colors);
         colors[0]
     }
 
-    /// Interpolates the slots the model reads into columns, lane by lane, and runs its stages over them.
+    /// Gathers the slots the model reads from the fragments' varyings into columns and runs its stages over them.
     #[inline(always)]
-    fn shade_batch(&self, face: &LightTerms, batch: &FragmentBatch<Self::Varyings>, colors: &mut [Vec3; BATCH_SIZE]) {
-        let [v0, d1, d2] = batch.triangle();
-        let (w1, w2) = batch.weights();
-        let w = (w1, w2, batch.len());
-        let first = || match (v0.first.get(), d1.first.get(), d2.first.get()) {
-            (Some(v0), Some(d1), Some(d2)) => Column3::interpolated(v0, d1, d2, w),
-            _ => Column3::ZERO,
-        };
-        let second = || match (v0.second.get(), d1.second.get(), d2.second.get()) {
-            (Some(v0), Some(d1), Some(d2)) => Column3::interpolated(v0, d1, d2, w),
-            _ => Column3::ZERO,
-        };
-        let uv = || match (v0.uv.get(), d1.uv.get(), d2.uv.get()) {
-            (Some(v0), Some(d1), Some(d2)) => Column2::interpolated(v0, d1, d2, w),
-            _ => Column2::ZERO,
-        };
-        let (len, m, v) = (batch.len(), &self.material, &self.variant);
+    fn shade_batch(&self, batch: &FragmentBatch<Self::Varyings, LightTerms>, colors: &mut [Vec3; BATCH_SIZE]) {
+        let len = batch.len();
+        let first = || Column3::gather(len, |i| batch.varyings(i).first.get().unwrap_or(Vec3::ZERO));
+        let second = || Column3::gather(len, |i| batch.varyings(i).second.get().unwrap_or(Vec3::ZERO));
+        let uv = || Column2::gather(len, |i| batch.varyings(i).uv.get().unwrap_or(Vec2::ZERO));
+        let (m, v) = (&self.material, &self.variant);
         const COARSE: u32 = capabilities::UNLIT | capabilities::FLAT | capabilities::GOURAUD;
         match v.shading {
             ShadingModel::Phong if has(CAPS, capabilities::PER_PIXEL) => {
@@ -268,11 +257,10 @@ where
                 if self.layout.uvs {
                     s.uv = uv();
                 }
-                if let (true, Some(v0), Some(d1), Some(d2)) =
-                    (self.layout.tangents, v0.tangent.get(), d1.tangent.get(), d2.tangent.get())
-                {
-                    s.tangent = Column3::interpolated(v0.truncate(), d1.truncate(), d2.truncate(), w);
-                    s.handedness = columns::interpolated(v0.w, d1.w, d2.w, w);
+                if self.layout.tangents && T::PRESENT {
+                    let tangent = |i| batch.varyings(i).tangent.get().unwrap_or(Vec4::ZERO);
+                    s.tangent = Column3::gather(len, |i| tangent(i).truncate());
+                    s.handedness = columns::gather(len, |i| tangent(i).w);
                 }
                 self.shade(&mut s, colors);
             }
@@ -285,11 +273,16 @@ where
                 let uv = if self.layout.uvs { uv() } else { Column2::ZERO };
                 let (diffuse, specular) = match v.shading {
                     ShadingModel::Gouraud => (first(), second()),
+                    ShadingModel::Flat => (
+                        Column3::gather(len, |i| batch.face(i).diffuse),
+                        Column3::gather(len, |i| batch.face(i).specular),
+                    ),
                     _ => (Column3::ZERO, Column3::ZERO),
                 };
                 let light = match v.shading {
-                    ShadingModel::Flat => coarse::Light::Face(*face),
-                    ShadingModel::Gouraud => coarse::Light::Vertex { diffuse: &diffuse, specular: &specular },
+                    ShadingModel::Flat | ShadingModel::Gouraud => {
+                        coarse::Light::Lit { diffuse: &diffuse, specular: &specular }
+                    }
                     _ => coarse::Light::None,
                 };
                 match (v.filter, v.wrap) {
