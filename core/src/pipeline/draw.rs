@@ -246,7 +246,7 @@ where
             if let Setup::Ready(coverage) = setup
                 && coverage.covers_a_centre()
             {
-                let vars = indices.map(|i| cache.varyings(shader, mesh, i));
+                let vars = cache.triangle_varyings(shader, mesh, indices);
                 if !vars.iter().all(Varyings::is_finite) {
                     stats.invalid += 1;
                     return;
@@ -258,7 +258,7 @@ where
         } else {
             // Clipping cuts varyings too, so they are needed first.
             stats.clipped += 1;
-            let vars = indices.map(|i| cache.varyings(shader, mesh, i));
+            let vars = cache.triangle_varyings(shader, mesh, indices);
             if !vars.iter().all(Varyings::is_finite) {
                 stats.invalid += 1;
                 return;

@@ -78,7 +78,8 @@ impl Edges for FixedEdges {
     #[inline(always)]
     fn at(&self, x: i32, y: i32) -> [i64; 3] {
         let (x, y) = (i64::from(x), i64::from(y));
-        [0, 1, 2].map(|k| self.origin[k] + self.step_x[k] * x + self.step_y[k] * y)
+        let at = |k: usize| self.origin[k] + self.step_x[k] * x + self.step_y[k] * y;
+        [at(0), at(1), at(2)]
     }
 
     #[inline(always)]
@@ -138,7 +139,8 @@ impl Edges for FloatEdges {
     #[inline(always)]
     fn at(&self, x: i32, y: i32) -> [f32; 3] {
         let (x, y) = (x as f32 + 0.5, y as f32 + 0.5);
-        [0, 1, 2].map(|k| self.a[k] * x + self.b[k] * y + self.c[k])
+        let at = |k: usize| self.a[k] * x + self.b[k] * y + self.c[k];
+        [at(0), at(1), at(2)]
     }
 
     #[inline(always)]
@@ -154,7 +156,7 @@ impl Edges for FloatEdges {
 
     #[inline(always)]
     fn weights(&self, e: &[f32; 3]) -> [f32; 3] {
-        e.map(|v| float::max(v, 0.0))
+        [float::max(e[0], 0.0), float::max(e[1], 0.0), float::max(e[2], 0.0)]
     }
 }
 

@@ -114,6 +114,19 @@ impl<V: Varyings> VertexCache<V> {
         position
     }
 
+    /// The varyings of a triangle's three vertices, as [`Self::varyings`] gives them. Inlined where
+    /// [`Self::miss`] is.
+    #[cfg_attr(any(target_feature = "sse2", target_feature = "neon", target_feature = "simd128"), inline(always))]
+    #[cfg_attr(not(any(target_feature = "sse2", target_feature = "neon", target_feature = "simd128")), inline(never))]
+    pub fn triangle_varyings<S: Shader<Varyings = V>>(
+        &mut self,
+        shader: &S,
+        mesh: &Mesh<'_>,
+        [a, b, c]: [usize; 3],
+    ) -> [V; 3] {
+        [self.varyings(shader, mesh, a), self.varyings(shader, mesh, b), self.varyings(shader, mesh, c)]
+    }
+
     /// The varyings of vertex `index`, from the cache or computed (and kept if the vertex still has its slot).
     #[inline(always)]
     pub fn varyings<S: Shader<Varyings = V>>(&mut self, shader: &S, mesh: &Mesh<'_>, index: usize) -> V {
