@@ -10,12 +10,12 @@
 //! |---|---|---|
 //! | mesh | [`mesh`] | borrowed positions, normals, UVs, colours, `u16`/`u32` indices |
 //! | camera | [`camera`] | look-at, perspective or orthographic projection, viewport |
-//! | vertex stage | [`pipeline::Shader::position`] | object space to clip space (once per shared vertex) |
+//! | vertex stage | [`pipeline::Shader::position`] | object space to clip space and the screen (once per vertex into [`target::Target::with_vertex_memory`], else through a small cache) |
 //! | clip | [`pipeline`] (`clip.rs`) | near/far planes and a guard band, in homogeneous coordinates |
 //! | raster | [`pipeline`] (`raster.rs`) | fixed-point snapping, exact edge functions, top-left rule |
 //! | vertex stage | [`pipeline::Shader::varyings`] | per-vertex values, only for triangles that reach the pixel loop or need clipping |
 //! | fragment | [`pipeline::FragmentBatch`], [`shading`], [`texture`] | depth test, then the fragments in batches across triangles: interpolation, shading, texturing |
-//! | target | [`target`] | RGB888 or RGB565 colour, `f32` or `u16` depth, whole frames or bands |
+//! | target | [`target`] | RGB888 or RGB565 colour, `f32` or `u16` depth, whole frames or bands; optional memory for screen positions |
 //!
 //! [`draw_mesh`] draws an [`Object`] under [`Lighting`]: it resolves the [`shading::Variant`] the object and the
 //! lights call for, once per draw, and runs the pipeline compiled for exactly that (see [`shading`]). Shadow maps

@@ -20,4 +20,5 @@ mod supersample;
 mod tangents;
 mod texture;
 mod vertex_cache;
+mod vertex_memory;
 mod wireframe;

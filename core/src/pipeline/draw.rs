@@ -6,10 +6,11 @@ use super::depth_stage::{DepthLess, DepthOff, DepthStage, DynamicDepth};
 use super::edges::{DynamicEdgeSetup, EdgeSetup, FixedPoint, FloatingPoint};
 use super::interpolator::{Affine, DynamicInterpolator, Interpolator, PerspectiveCorrect};
 use super::raster::{Rasterizer, Setup, Stages, shade_batch};
-use super::vertex_cache::{NO_SCREEN, NOT_FINITE, VertexCache};
+use super::screen_vertex::{NO_SCREEN, NOT_FINITE, ScreenVertex};
+use super::vertex_cache::VertexCache;
 use super::{DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation, MAX_SUBPIXEL_BITS, Shader, Varyings};
 use crate::mesh::{Attributes, Mesh};
-use crate::target::{ColorBuffer, DepthBuffer, Target};
+use crate::target::{ColorBuffer, DepthBuffer, Target, VertexMemory};
 
 /// Why a draw was refused (nothing was drawn).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -79,8 +80,8 @@ impl core::error::Error for DrawError {}
 /// assert_eq!(stats.fragments, 6);
 /// assert_eq!(color[12], 0xFF0000);
 /// ```
-pub fn draw<S, C, D>(
-    target: &mut Target<C, D>,
+pub fn draw<S, C, D, M>(
+    target: &mut Target<C, D, M>,
     mesh: &Mesh<'_>,
     shader: &S,
     state: &DrawState,
@@ -89,6 +90,7 @@ where
     S: Shader,
     C: ColorBuffer,
     D: DepthBuffer,
+    M: VertexMemory,
 {
     check(mesh, S::ATTRIBUTES, state)?;
     Ok(match state.edges {
@@ -98,8 +100,8 @@ where
 }
 
 /// The second and third choices of [`draw`]: the interpolator and the depth stage.
-fn with_interpolation_and_depth<S, C, D, E>(
-    target: &mut Target<C, D>,
+fn with_interpolation_and_depth<S, C, D, E, M>(
+    target: &mut Target<C, D, M>,
     mesh: &Mesh<'_>,
     shader: &S,
     state: &DrawState,
@@ -109,6 +111,7 @@ where
     S: Shader,
     C: ColorBuffer,
     D: DepthBuffer,
+    M: VertexMemory,
     E: EdgeSetup,
 {
     use {DepthTest as T, Interpolation as I};
@@ -127,8 +130,8 @@ where
 ///
 /// # Errors
 /// As [`draw`].
-pub fn draw_unspecialised<S, C, D>(
-    target: &mut Target<C, D>,
+pub fn draw_unspecialised<S, C, D, M>(
+    target: &mut Target<C, D, M>,
     mesh: &Mesh<'_>,
     shader: &S,
     state: &DrawState,
@@ -137,6 +140,7 @@ where
     S: Shader,
     C: ColorBuffer,
     D: DepthBuffer,
+    M: VertexMemory,
 {
     check(mesh, S::ATTRIBUTES, state)?;
     let (interpolator, depth) = (DynamicInterpolator(state.interpolation), DynamicDepth(state.depth_test));
@@ -185,8 +189,8 @@ impl Outcome {
 }
 
 /// The draw loop, monomorphised on the shader, the edge arithmetic, the interpolator and the depth stage.
-fn run<S, C, D, E, I, Z>(
-    target: &mut Target<C, D>,
+fn run<S, C, D, E, I, Z, M>(
+    target: &mut Target<C, D, M>,
     mesh: &Mesh<'_>,
     shader: &S,
     state: &DrawState,
@@ -198,6 +202,7 @@ where
     S: Shader,
     C: ColorBuffer,
     D: DepthBuffer,
+    M: VertexMemory,
     E: EdgeSetup,
     I: Interpolator,
     Z: DepthStage,
@@ -206,7 +211,18 @@ where
     let volume = ClipVolume::new(target.width(), target.height(), rows.start, rows.end);
     let raster = Rasterizer::new(target, state.subpixel_bits, state.cull, state.front_face);
     let stages = Stages { shader, interpolator, depth };
-    let mut cache = VertexCache::new();
+    // The caller's memory for screen positions, taken out of the target for the draw (the pixel loop borrows the
+    // target) and put back at the end. Used when it holds every vertex of the mesh: the position stage then runs
+    // once per vertex, in order, and the triangle loop reads from it; otherwise through the cache.
+    let mut memory = core::mem::take(&mut target.vertices);
+    let screen = memory.screen_vertices().and_then(|m| m.get_mut(..mesh.vertex_count()));
+    let mut cache = if screen.is_some() { VertexCache::for_varyings() } else { VertexCache::new() };
+    let screen: Option<&[ScreenVertex]> = screen.map(|screen| {
+        for (i, v) in screen.iter_mut().enumerate() {
+            *v = ScreenVertex::new(shader.position(mesh, i), &volume, &raster);
+        }
+        &*screen
+    });
     let mut stats = DrawStats::default();
     // Fragments of a batched shader, across triangles; made with the first rasterized triangle's values.
     let mut batch: Option<FragmentBatch<S::Varyings, S::Face>> = None;
@@ -220,9 +236,15 @@ where
         // Three calls, not `indices.map`: the array map kept its results on the stack (a fifth of this loop's time
         // on a dense mesh).
         let [ia, ib, ic] = indices;
-        let a = cache.position(shader, mesh, ia, &volume, &raster);
-        let b = cache.position(shader, mesh, ib, &volume, &raster);
-        let c = cache.position(shader, mesh, ic, &volume, &raster);
+        let (a, b, c) = match screen {
+            // In range: `for_each_triangle` checks each index against the vertex count.
+            Some(screen) => (screen[ia], screen[ib], screen[ic]),
+            None => (
+                cache.position(shader, mesh, ia, &volume, &raster),
+                cache.position(shader, mesh, ib, &volume, &raster),
+                cache.position(shader, mesh, ic, &volume, &raster),
+            ),
+        };
         let any = a.code | b.code | c.code;
         if any & NOT_FINITE != 0 {
             stats.invalid += 1;
@@ -293,5 +315,6 @@ where
     if let Some(batch) = batch.as_mut().filter(|b| !b.is_empty()) {
         shade_batch(shader, batch, target);
     }
+    target.vertices = memory;
     stats
 }

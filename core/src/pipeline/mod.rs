@@ -2,9 +2,10 @@
 //!
 //! Data flow of a [`draw`]:
 //!
-//! 1. **Vertex stage, positions** ([`Shader::position`]): each triangle's three vertices to clip space, once per
-//!    vertex shared by neighbouring triangles. Triangles with an index out of range or a non-finite position are
-//!    skipped.
+//! 1. **Vertex stage, positions** ([`Shader::position`]): each triangle's three vertices to clip space and, when
+//!    they need no clipping, snapped to the screen ([`ScreenVertex`]): once per vertex into memory the target
+//!    lends ([`crate::target::Target::with_vertex_memory`]), or about once per vertex shared by neighbouring
+//!    triangles through a small cache. Triangles with an index out of range or a non-finite position are skipped.
 //! 2. **Clip** ([`clip`](self#clipping)): rejected when all vertices are outside one plane of the view volume or
 //!    the target's rows; cut when crossing the near or far plane or the guard band.
 //! 3. **Raster** ([`raster`](self#rasterization)): divide by `w`, snap to fixed point, cull by winding, walk the
@@ -33,6 +34,7 @@ mod edges;
 mod interpolator;
 mod line;
 mod raster;
+mod screen_vertex;
 mod shader;
 mod state;
 mod stats;
@@ -43,6 +45,7 @@ pub use batch::{BATCH_SIZE, FragmentBatch, Lanes, lanes};
 pub use clip::GUARD_BAND;
 pub use draw::{DrawError, draw};
 pub use line::{LineStyle, draw_wireframe};
+pub use screen_vertex::ScreenVertex;
 pub use shader::{Fragment, Shader};
 pub use state::{Cull, DepthTest, DrawState, EdgeArithmetic, FixedFunction, Interpolation, MAX_SUBPIXEL_BITS, Winding};
 pub use stats::DrawStats;

@@ -17,7 +17,7 @@ use super::interpolator::Interpolator;
 use super::{Cull, Fragment, Shader, Varyings, Winding};
 use crate::camera::Viewport;
 use crate::math::{Vec3, Vec4, float};
-use crate::target::{ColorBuffer, DEPTH_LANES, DepthBuffer, Target, clamp_depth};
+use crate::target::{ColorBuffer, DEPTH_LANES, DepthBuffer, Target, VertexMemory, clamp_depth};
 
 /// A vertex position in screen space, snapped to the sub-pixel grid (and kept unsnapped for `f32` edges).
 #[derive(Clone, Copy, Debug)]
@@ -89,8 +89,8 @@ impl Snapped {
 }
 
 impl Rasterizer {
-    pub fn new<C: ColorBuffer, D: DepthBuffer>(
-        target: &Target<C, D>,
+    pub fn new<C: ColorBuffer, D: DepthBuffer, M: VertexMemory>(
+        target: &Target<C, D, M>,
         subpixel_bits: u8,
         cull: Cull,
         front_face: Winding,
@@ -325,13 +325,13 @@ impl<E: Edges> Coverage<E> {
     /// A [`Shader::BATCHED`] shader's fragments go into `batch`, which is shaded and written whenever it fills;
     /// the caller shades what is left at the end of the draw ([`shade_batch`]).
     #[inline(always)]
-    pub fn fill<S, I, Z, C, D>(
+    pub fn fill<S, I, Z, C, D, M>(
         &self,
         stages: &Stages<'_, S, I, Z>,
         face: &S::Face,
         varyings: [&S::Varyings; 3],
         batch: &mut FragmentBatch<S::Varyings, S::Face>,
-        target: &mut Target<C, D>,
+        target: &mut Target<C, D, M>,
     ) -> u64
     where
         S: Shader,
@@ -339,6 +339,7 @@ impl<E: Edges> Coverage<E> {
         Z: DepthStage,
         C: ColorBuffer,
         D: DepthBuffer,
+        M: VertexMemory,
     {
         let f = &self.frame;
         if !S::FRAGMENT_STAGE {
@@ -392,11 +393,12 @@ impl<E: Edges> Coverage<E> {
     /// worked out per lane exactly as the pixel walk works them out per pixel (the same depths reach the same
     /// pixels). The lanes are one branch-free loop, which the compiler widens to SIMD.
     #[inline(always)]
-    fn fill_depth<Z, C, D>(&self, lanes: EdgeLanes, depth: &Z, target: &mut Target<C, D>) -> u64
+    fn fill_depth<Z, C, D, M>(&self, lanes: EdgeLanes, depth: &Z, target: &mut Target<C, D, M>) -> u64
     where
         Z: DepthStage,
         C: ColorBuffer,
         D: DepthBuffer,
+        M: VertexMemory,
     {
         const N: usize = DEPTH_LANES;
         let f = &self.frame;
@@ -441,13 +443,13 @@ impl<E: Edges> Coverage<E> {
     /// as slow (`cargo bench -p rastty-bench --bench render -- sphere_2_5k_phong_lambert_800x800`: fastest 13.4
     /// against 6.5 ms).
     #[inline(always)]
-    fn fill_batched<S, I, Z, C, D>(
+    fn fill_batched<S, I, Z, C, D, M>(
         &self,
         stages: &Stages<'_, S, I, Z>,
         face: &S::Face,
         varyings: [&S::Varyings; 3],
         batch: &mut FragmentBatch<S::Varyings, S::Face>,
-        target: &mut Target<C, D>,
+        target: &mut Target<C, D, M>,
     ) -> u64
     where
         S: Shader,
@@ -455,6 +457,7 @@ impl<E: Edges> Coverage<E> {
         Z: DepthStage,
         C: ColorBuffer,
         D: DepthBuffer,
+        M: VertexMemory,
     {
         let f = &self.frame;
         let edges = &self.edges;
@@ -496,14 +499,15 @@ impl<E: Edges> Coverage<E> {
 /// Not inlined: it runs once per batch, and the draw loop calls it from three places (on the firmware, 5 KB of
 /// code each).
 #[inline(never)]
-pub(crate) fn shade_batch<S, C, D>(
+pub(crate) fn shade_batch<S, C, D, M>(
     shader: &S,
     batch: &mut FragmentBatch<S::Varyings, S::Face>,
-    target: &mut Target<C, D>,
+    target: &mut Target<C, D, M>,
 ) where
     S: Shader,
     C: ColorBuffer,
     D: DepthBuffer,
+    M: VertexMemory,
 {
     let mut colors = [Vec3::ZERO; BATCH_SIZE];
     batch.resolve();

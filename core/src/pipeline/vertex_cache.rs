@@ -10,10 +10,10 @@
 //! vertex's triangles is actually rasterized. The cache cannot change a pixel, because the vertex stage is a
 //! function of the vertex index alone.
 
-use super::clip::{CLIP_MASK, ClipVolume};
-use super::raster::{Rasterizer, Snapped};
+use super::clip::ClipVolume;
+use super::raster::Rasterizer;
+use super::screen_vertex::ScreenVertex;
 use super::{Shader, Varyings};
-use crate::math::Vec4;
 use crate::mesh::Mesh;
 
 /// Number of entries: a power of two, small enough for a microcontroller's stack.
@@ -26,56 +26,30 @@ fn slot(index: usize) -> usize {
     ((index as u32).wrapping_mul(0x9E37_79B9) >> (32 - ENTRIES.trailing_zeros())) as usize
 }
 
-/// Outcode bit of a position that is not finite (NaN or infinite): its triangles are skipped.
-pub(crate) const NOT_FINITE: u16 = 1 << 15;
-/// Outcode bit of a position inside every clipping plane that still has no screen position: `w <= 0`, which only
-/// the all-zero point can be there. Its unclipped triangles cover nothing.
-pub(crate) const NO_SCREEN: u16 = 1 << 14;
-
-/// What is known of a vertex before its varyings: all a triangle needs that is not clipped. Clipping computes
-/// the clip-space position again ([`Shader::position`] is a function of the index), so that the common case
-/// stores and copies only this.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct VertexPosition {
-    /// Outcode against the draw's [`ClipVolume`], with [`NOT_FINITE`] and [`NO_SCREEN`].
-    pub code: u16,
-    /// Snapped screen position, when the code has none of [`CLIP_MASK`], [`NOT_FINITE`] and [`NO_SCREEN`].
-    pub screen: Snapped,
-}
-
-impl VertexPosition {
-    /// The vertex of clip-space position `pos` in `volume`, snapped by `raster`.
-    #[inline(always)]
-    pub fn new(pos: Vec4, volume: &ClipVolume, raster: &Rasterizer) -> Self {
-        if !pos.is_finite() {
-            return Self { code: NOT_FINITE, screen: Snapped::ZERO };
-        }
-        let code = volume.outcode(pos);
-        if code & CLIP_MASK != 0 {
-            return Self { code, screen: Snapped::ZERO };
-        }
-        match raster.snap(pos) {
-            Some(screen) => Self { code, screen },
-            None => Self { code: code | NO_SCREEN, screen: Snapped::ZERO },
-        }
-    }
-}
-
 #[derive(Clone, Copy, Debug)]
 struct Entry<V> {
     index: usize,
-    position: VertexPosition,
+    position: ScreenVertex,
     varyings: Option<V>,
 }
 
 /// The cache.
 pub(crate) struct VertexCache<V> {
     slots: [Option<Entry<V>>; ENTRIES],
+    /// Whether the draw reads positions from the caller's memory, not from here: varyings then take slots.
+    varyings_only: bool,
 }
 
 impl<V: Varyings> VertexCache<V> {
+    /// An empty cache for positions and varyings.
     pub fn new() -> Self {
-        Self { slots: [None; ENTRIES] }
+        Self { slots: [None; ENTRIES], varyings_only: false }
+    }
+
+    /// An empty cache for varyings alone, for a draw whose positions are in the caller's memory
+    /// ([`crate::target::VertexMemory`]). [`Self::position`] must not be called on it.
+    pub fn for_varyings() -> Self {
+        Self { slots: [None; ENTRIES], varyings_only: true }
     }
 
     /// The position of vertex `index`, from the cache or computed (evicting whatever shared its slot).
@@ -87,7 +61,7 @@ impl<V: Varyings> VertexCache<V> {
         index: usize,
         volume: &ClipVolume,
         raster: &Rasterizer,
-    ) -> VertexPosition {
+    ) -> ScreenVertex {
         match &self.slots[slot(index)] {
             Some(entry) if entry.index == index => entry.position,
             _ => self.miss(shader, mesh, index, volume, raster),
@@ -108,8 +82,8 @@ impl<V: Varyings> VertexCache<V> {
         index: usize,
         volume: &ClipVolume,
         raster: &Rasterizer,
-    ) -> VertexPosition {
-        let position = VertexPosition::new(shader.position(mesh, index), volume, raster);
+    ) -> ScreenVertex {
+        let position = ScreenVertex::new(shader.position(mesh, index), volume, raster);
         self.slots[slot(index)] = Some(Entry { index, position, varyings: None });
         position
     }
@@ -127,11 +101,19 @@ impl<V: Varyings> VertexCache<V> {
         [self.varyings(shader, mesh, a), self.varyings(shader, mesh, b), self.varyings(shader, mesh, c)]
     }
 
-    /// The varyings of vertex `index`, from the cache or computed (and kept if the vertex still has its slot).
+    /// The varyings of vertex `index`, from the cache or computed: kept if the vertex still has its slot, or, in a
+    /// cache for varyings only, in the slot it takes.
     #[inline(always)]
     pub fn varyings<S: Shader<Varyings = V>>(&mut self, shader: &S, mesh: &Mesh<'_>, index: usize) -> V {
-        match &mut self.slots[slot(index)] {
+        let varyings_only = self.varyings_only;
+        let slot = &mut self.slots[slot(index)];
+        match slot {
             Some(entry) if entry.index == index => *entry.varyings.get_or_insert_with(|| shader.varyings(mesh, index)),
+            _ if varyings_only => {
+                let varyings = shader.varyings(mesh, index);
+                *slot = Some(Entry { index, position: ScreenVertex::UNSET, varyings: Some(varyings) });
+                varyings
+            }
             _ => shader.varyings(mesh, index),
         }
     }

@@ -5,7 +5,7 @@ use super::{LightUse, Lighting, Material, ShadingError, ShadingModel, SurfaceSha
 use crate::math::{Vec2, Vec3, Vec4};
 use crate::mesh::Mesh;
 use crate::pipeline::{DrawState, DrawStats, draw};
-use crate::target::{ColorBuffer, DepthBuffer, Target};
+use crate::target::{ColorBuffer, DepthBuffer, Target, VertexMemory};
 
 /// One object of a draw: its mesh, tangents, place, shading model and material.
 #[derive(Clone, Copy, Debug)]
@@ -31,8 +31,8 @@ pub struct Object<'a> {
 ///
 /// # Errors
 /// As [`Variant::resolve`] and [`draw`].
-pub fn draw_mesh<C: ColorBuffer, D: DepthBuffer>(
-    target: &mut Target<C, D>,
+pub fn draw_mesh<C: ColorBuffer, D: DepthBuffer, M: VertexMemory>(
+    target: &mut Target<C, D, M>,
     object: &Object<'_>,
     lights: &Lighting<'_>,
     state: &DrawState,

@@ -22,12 +22,14 @@
 mod color_buffer;
 mod depth_buffer;
 mod supersample;
+mod vertex_memory;
 
 use core::ops::Range;
 
 pub use color_buffer::{ColorBuffer, NoColor, Rgb565, Rgb888};
 pub use depth_buffer::{DEPTH_LANES, DepthBuffer, NoDepth, clamp_depth, depth_to_u16};
 pub use supersample::downsample_rgb888;
+pub use vertex_memory::{NoVertexMemory, VertexMemory};
 
 use crate::math::Vec3;
 
@@ -95,9 +97,11 @@ impl core::error::Error for TargetError {}
 
 /// A colour buffer and a depth buffer holding rows `[y0, y1)` of a `width x height` frame.
 #[derive(Debug)]
-pub struct Target<C: ColorBuffer, D: DepthBuffer> {
+pub struct Target<C: ColorBuffer, D: DepthBuffer, V: VertexMemory = NoVertexMemory> {
     pub(crate) color: C,
     pub(crate) depth: D,
+    /// Memory for the screen positions of a draw's vertices ([`Target::with_vertex_memory`]).
+    pub(crate) vertices: V,
     width: u32,
     height: u32,
     rows: Range<u32>,
@@ -142,9 +146,22 @@ impl<C: ColorBuffer, D: DepthBuffer> Target<C, D> {
             }
             _ => {}
         }
-        Ok(Self { color, depth, width, height, rows })
+        Ok(Self { color, depth, vertices: NoVertexMemory, width, height, rows })
     }
 
+    /// The same target with `memory` for the screen positions of its draws' vertices: a draw of a mesh of at most
+    /// `memory.len()` vertices then runs the position stage once per vertex instead of through the vertex cache
+    /// (faster on dense meshes; the same pixels). See [`VertexMemory`].
+    pub fn with_vertex_memory(
+        self,
+        memory: &mut [crate::pipeline::ScreenVertex],
+    ) -> Target<C, D, &mut [crate::pipeline::ScreenVertex]> {
+        let Self { color, depth, vertices: NoVertexMemory, width, height, rows } = self;
+        Target { color, depth, vertices: memory, width, height, rows }
+    }
+}
+
+impl<C: ColorBuffer, D: DepthBuffer, V: VertexMemory> Target<C, D, V> {
     /// Fills the colour buffer with `color` and resets the depth buffer to the far plane.
     pub fn clear(&mut self, color: Vec3) {
         self.color.fill(color);

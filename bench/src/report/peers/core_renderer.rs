@@ -1,26 +1,27 @@
 //! The core's side of the comparison: `draw_mesh` with per-pixel (Phong) shading, no highlights, one directional
-//! light, the way a user of the core draws a mesh.
+//! light, into a target with memory for the mesh's screen positions, the way a user of the core draws a mesh.
 
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::mesh::{Indices, Mesh};
-use rastty_core::pipeline::DrawState;
+use rastty_core::pipeline::{DrawState, ScreenVertex};
 use rastty_core::shading::{Light, Lighting, Material, Object, ShadingModel, Transforms, draw_mesh};
 use rastty_core::target::{Rgb888, Target};
 use rastty_core::texture::{FilterMode, Texture, WrapMode};
 
 use super::scenes::{AMBIENT, DIFFUSE, Scene, to_light};
 
-/// The frame's buffers, kept between frames.
+/// The frame's buffers and the memory for the mesh's screen positions, kept between frames.
 pub struct CoreRenderer {
     color: Vec<u32>,
     depth: Vec<f32>,
+    vertices: Vec<ScreenVertex>,
 }
 
 impl CoreRenderer {
     /// Buffers for `scene`'s frame size.
     pub fn new(scene: &Scene) -> Self {
         let n = (scene.width * scene.height) as usize;
-        Self { color: vec![0; n], depth: vec![1.0; n] }
+        Self { color: vec![0; n], depth: vec![1.0; n], vertices: vec![ScreenVertex::UNSET; scene.positions.len()] }
     }
 
     /// Clears the buffers and draws `scene`.
@@ -53,7 +54,8 @@ impl CoreRenderer {
         let lights = [Light::directional(to_light(), Vec3::splat(DIFFUSE))];
         let lighting = Lighting { ambient: Vec3::splat(AMBIENT), lights: &lights };
         let mut target = Target::new(Rgb888(&mut self.color), &mut self.depth[..], scene.width, scene.height)
-            .expect("buffers of the frame's size");
+            .expect("buffers of the frame's size")
+            .with_vertex_memory(&mut self.vertices);
         target.clear(Vec3::ZERO);
         draw_mesh(&mut target, &object, &lighting, &DrawState::default()).expect("a draw the core accepts");
     }

@@ -1,0 +1,179 @@
+//! Vertex memory: a target that lends a draw memory for its vertices' screen positions
+//! ([`Target::with_vertex_memory`]) gets the position stage run once per vertex into it, and the triangle loop
+//! reads from it instead of the vertex cache. It must draw exactly what the vertex cache draws: colours, depths
+//! and every count, whole frames and bands, clipped triangles, bad vertices, and memory too short for the mesh
+//! (which the draw then leaves alone).
+
+use crate::common;
+
+use common::{AnyColor, AnyDepth, ExactColor, Torus, Transformed, checker_texels};
+use rastty_core::camera::{look_at, perspective};
+use rastty_core::math::{Mat4, Vec3};
+use rastty_core::mesh::{Indices, Mesh};
+use rastty_core::pipeline::{DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation, ScreenVertex, draw};
+use rastty_core::shading::{Light, Lighting, Material, Object, ShadingModel, Transforms, draw_mesh};
+use rastty_core::target::{Target, VertexMemory};
+use rastty_core::texture::{FilterMode, Texture, WrapMode};
+
+const W: u32 = 41;
+const H: u32 = 29;
+const BACKGROUND: Vec3 = Vec3::new(0.05, 0.1, 0.15);
+
+/// The torus at an angle, so close that the near plane cuts it.
+fn transforms() -> Transforms {
+    let model = Mat4::from_axis_angle(Vec3::new(1.0, 0.3, 0.0), 1.1);
+    let view = look_at(Vec3::new(0.3, 0.5, 1.6), Vec3::ZERO, Vec3::Y).unwrap();
+    Transforms::new(model, view, perspective(1.2, W as f32 / H as f32, 0.5, 10.0).unwrap())
+}
+
+/// One draw to compare.
+#[derive(Clone, Copy, Debug)]
+enum Scene {
+    /// The torus, textured with a checker where the model reads texture coordinates.
+    Torus { shading: ShadingModel, state: DrawState },
+    /// Raw clip-space triangles over the frame, some of them with bad vertices (see [`raw_mesh`]).
+    Raw,
+}
+
+/// Positions in clip space: a fan of good triangles over the frame, then triangles with a NaN, an infinite, an
+/// all-zero (`w = 0`) and a behind-the-eye vertex; indices past the last vertex come last.
+fn raw_mesh() -> (Vec<Vec3>, Vec<u32>) {
+    let mut positions = Vec::new();
+    let mut indices = Vec::new();
+    for i in 0..24u32 {
+        let (a, b) = (i as f32 * 0.26, (i + 1) as f32 * 0.26);
+        let base = positions.len() as u32;
+        positions.extend([
+            Vec3::new(0.0, 0.0, 0.3),
+            Vec3::new(a.cos(), a.sin(), 0.5),
+            Vec3::new(b.cos(), b.sin(), 0.7),
+        ]);
+        indices.extend([base, base + 1, base + 2]);
+    }
+    for bad in
+        [Vec3::new(f32::NAN, 0.0, 0.5), Vec3::new(f32::INFINITY, 0.2, 0.5), Vec3::ZERO, Vec3::new(0.3, 0.3, -2.0)]
+    {
+        let base = positions.len() as u32;
+        positions.extend([bad, Vec3::new(0.9, -0.8, 0.4), Vec3::new(-0.7, 0.9, 0.6)]);
+        indices.extend([base, base + 1, base + 2, base, base + 2, base + 1]);
+    }
+    let n = positions.len() as u32;
+    indices.extend([0, n, 1, n + 5, 2, 3]);
+    (positions, indices)
+}
+
+/// Draws `scene` into `target` (cleared first); returns its counts.
+fn draw_scene<M: VertexMemory>(target: &mut Target<AnyColor<'_>, AnyDepth<'_>, M>, scene: Scene) -> DrawStats {
+    target.clear(BACKGROUND);
+    match scene {
+        Scene::Torus { shading, state } => {
+            let torus = Torus::new(1.0, 0.4, 24, 12);
+            let texels = checker_texels();
+            let lights = [Light::directional(Vec3::new(0.3, 1.0, 0.6), Vec3::ONE)];
+            let material = Material {
+                specular: Vec3::splat(0.5),
+                diffuse: Some(Texture::new(&texels, 8, 8).unwrap()),
+                filter: FilterMode::Bilinear,
+                wrap: WrapMode::Repeat,
+                ..Material::default()
+            };
+            let lighting = Lighting { ambient: Vec3::splat(0.1), lights: &lights };
+            let object = Object { mesh: torus.mesh(), tangents: None, transforms: transforms(), shading, material };
+            draw_mesh(target, &object, &lighting, &state).unwrap().1
+        }
+        Scene::Raw => {
+            let (positions, indices) = raw_mesh();
+            let mesh = Mesh::new(&positions, Indices::U32(&indices)).unwrap();
+            let shader = Transformed { clip_from_object: Mat4::IDENTITY };
+            draw(target, &mesh, &shader, &DrawState { cull: rastty_core::pipeline::Cull::None, ..DrawState::default() })
+                .unwrap()
+        }
+    }
+}
+
+/// What a draw left: colours, depth bits and counts.
+type Picture = (Vec<[u32; 3]>, Vec<u32>, DrawStats);
+
+/// Rows `rows` of `scene`: through the vertex cache when `memory` is `None`, otherwise with that many screen
+/// vertices of memory (filled with garbage from an earlier draw of another scene, which must not matter).
+fn picture(scene: Scene, rows: core::ops::Range<u32>, memory: Option<usize>) -> Picture {
+    let n = (W * (rows.end - rows.start)) as usize;
+    let (mut color, mut depth) = (vec![[0u32; 3]; n], vec![0f32; n]);
+    let target = common::band(ExactColor(&mut color), &mut depth[..], W, H, rows.clone());
+    let stats = match memory {
+        None => draw_scene(&mut { target }, scene),
+        Some(len) => {
+            let mut memory = vec![ScreenVertex::UNSET; len];
+            let (mut c, mut d) = (vec![[0u32; 3]; n], vec![0f32; n]);
+            let mut other = common::band(ExactColor(&mut c), &mut d[..], W, H, rows).with_vertex_memory(&mut memory);
+            draw_scene(&mut other, if matches!(scene, Scene::Raw) { torus(ShadingModel::Flat) } else { Scene::Raw });
+            draw_scene(&mut target.with_vertex_memory(&mut memory), scene)
+        }
+    };
+    (color, depth.iter().map(|z| z.to_bits()).collect(), stats)
+}
+
+fn torus(shading: ShadingModel) -> Scene {
+    Scene::Torus { shading, state: DrawState::default() }
+}
+
+fn vertex_count(scene: Scene) -> usize {
+    match scene {
+        Scene::Torus { .. } => Torus::new(1.0, 0.4, 24, 12).positions.len(),
+        Scene::Raw => raw_mesh().0.len(),
+    }
+}
+
+fn assert_same(name: &str, expected: &Picture, actual: &Picture) {
+    assert_eq!(expected.2, actual.2, "{name}: counts");
+    assert!(expected.0 == actual.0, "{name}: colours differ");
+    assert!(expected.1 == actual.1, "{name}: depths differ");
+}
+
+#[test]
+fn a_draw_with_vertex_memory_draws_what_the_vertex_cache_draws() {
+    let mut scenes = vec![Scene::Raw];
+    for shading in [ShadingModel::Phong, ShadingModel::Gouraud, ShadingModel::Flat, ShadingModel::Unlit] {
+        for edges in [EdgeArithmetic::FixedPoint, EdgeArithmetic::Float] {
+            for depth_test in [DepthTest::Less, DepthTest::Off] {
+                for interpolation in [Interpolation::PerspectiveCorrect, Interpolation::Affine] {
+                    let state = DrawState { edges, depth_test, interpolation, ..DrawState::default() };
+                    scenes.push(Scene::Torus { shading, state });
+                }
+            }
+        }
+    }
+    let mut clipped = 0;
+    for scene in scenes {
+        let n = vertex_count(scene);
+        for rows in [0..H, 0..1, 7..16, H - 3..H] {
+            let expected = picture(scene, rows.clone(), None);
+            clipped += expected.2.clipped;
+            // Exactly the mesh's vertices, more, and too few (the draw then uses the cache).
+            for memory in [n, n + 5, n - 1] {
+                let name = format!("{scene:?}, rows {rows:?}, memory for {memory} of {n} vertices");
+                assert_same(&name, &expected, &picture(scene, rows.clone(), Some(memory)));
+            }
+        }
+    }
+    assert!(clipped > 0, "the near plane cuts the torus");
+}
+
+#[test]
+fn bad_vertices_are_counted_alike_with_vertex_memory() {
+    let (positions, _) = raw_mesh();
+    let expected = picture(Scene::Raw, 0..H, None);
+    let with_memory = picture(Scene::Raw, 0..H, Some(positions.len()));
+    assert_same("raw triangles", &expected, &with_memory);
+    let stats = with_memory.2;
+    // The NaN and infinite vertices' triangles and the two indices past the end are invalid; every input
+    // triangle is counted once.
+    assert_eq!(stats.invalid, 2 * 2 + 2, "{stats:?}");
+    assert_eq!(
+        stats.triangles_in,
+        stats.invalid + stats.outside + stats.culled + stats.degenerate + stats.rasterized,
+        "{stats:?}"
+    );
+    assert!(stats.clipped >= 2, "the vertex behind the eye is clipped: {stats:?}");
+    assert!(stats.fragments > 0, "{stats:?}");
+}
