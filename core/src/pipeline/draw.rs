@@ -6,7 +6,7 @@ use super::depth_stage::{DepthLess, DepthOff, DepthStage, DynamicDepth};
 use super::edges::{DynamicEdgeSetup, EdgeSetup, FixedPoint, FloatingPoint};
 use super::interpolator::{Affine, DynamicInterpolator, Interpolator, PerspectiveCorrect};
 use super::raster::{Rasterizer, Setup, Stages, shade_batch};
-use super::screen_vertex::{NO_SCREEN, NOT_FINITE, ScreenVertex};
+use super::screen_vertex::{NO_SCREEN, NOT_FINITE, ScreenVertex, screen_vertices};
 use super::vertex_cache::VertexCache;
 use super::{DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation, MAX_SUBPIXEL_BITS, Shader, Varyings};
 use crate::mesh::{Attributes, Mesh};
@@ -218,9 +218,7 @@ where
     let screen = memory.screen_vertices().and_then(|m| m.get_mut(..mesh.vertex_count()));
     let mut cache = if screen.is_some() { VertexCache::for_varyings() } else { VertexCache::new() };
     let screen: Option<&[ScreenVertex]> = screen.map(|screen| {
-        for (i, v) in screen.iter_mut().enumerate() {
-            *v = ScreenVertex::new(shader.position(mesh, i), &volume, &raster);
-        }
+        screen_vertices(shader, mesh, &volume, &raster, screen);
         &*screen
     });
     let mut stats = DrawStats::default();

@@ -116,13 +116,20 @@ impl Rasterizer {
         if !w_positive {
             return None;
         }
+        Some(self.snap_any(pos))
+    }
+
+    /// [`Self::snap`] without the test of `w` (meaningless values, but no fault, when `w <= 0`): branch-free, so
+    /// that a loop of it over several vertices widens to SIMD.
+    #[inline(always)]
+    pub fn snap_any(&self, pos: Vec4) -> Snapped {
         let inv_w = 1.0 / pos.w;
         let s = self.viewport.to_screen(pos.truncate() * inv_w);
         let (fx, fy) =
             (float::clamp(s.x, -SNAP_LIMIT_PX, SNAP_LIMIT_PX), float::clamp(s.y, -SNAP_LIMIT_PX, SNAP_LIMIT_PX));
         // Round to the nearest grid point; within the clamp, |p| < 2^23 and `floor` and the cast are exact.
         let fixed = |p: f32| (float::floor(p * self.scale + 0.5) as i32) << 1;
-        Some(Snapped { x: fixed(fx), y: fixed(fy), fx, fy, z: s.z, inv_w })
+        Snapped { x: fixed(fx), y: fixed(fy), fx, fy, z: s.z, inv_w }
     }
 
     /// Facing and culling from the sign of twice the signed area in screen coordinates (positive: clockwise as

@@ -1,9 +1,11 @@
 //! A vertex after the position stage: its outcode and snapped screen position, all that a triangle needs that is
 //! not clipped.
 
+use super::Shader;
 use super::clip::{CLIP_MASK, ClipVolume};
 use super::raster::{Rasterizer, Snapped};
 use crate::math::Vec4;
+use crate::mesh::Mesh;
 
 /// Outcode bit of a position that is not finite (NaN or infinite): its triangles are skipped.
 pub(crate) const NOT_FINITE: u16 = 1 << 15;
@@ -31,6 +33,8 @@ impl ScreenVertex {
     /// The vertex of clip-space position `pos` in `volume`, snapped by `raster`.
     #[inline(always)]
     pub(crate) fn new(pos: Vec4, volume: &ClipVolume, raster: &Rasterizer) -> Self {
+        // What `from_parts` gives, computing only what it keeps (a vertex at a time, the branches are cheaper than
+        // the snapping they skip: 3 % of the firmware's instructions).
         if !pos.is_finite() {
             return Self { code: NOT_FINITE, screen: Snapped::ZERO };
         }
@@ -41,6 +45,54 @@ impl ScreenVertex {
         match raster.snap(pos) {
             Some(screen) => Self { code, screen },
             None => Self { code: code | NO_SCREEN, screen: Snapped::ZERO },
+        }
+    }
+
+    /// The vertex of clip-space position `pos` whose outcode is `code` and whose screen position, if it has one,
+    /// is `snapped` ([`Rasterizer::snap_any`]).
+    #[inline(always)]
+    fn from_parts(pos: Vec4, code: u16, snapped: Snapped) -> Self {
+        if !pos.is_finite() {
+            Self { code: NOT_FINITE, screen: Snapped::ZERO }
+        } else if code & CLIP_MASK != 0 {
+            Self { code, screen: Snapped::ZERO }
+        } else if pos.w > 0.0 {
+            Self { code, screen: snapped }
+        } else {
+            Self { code: code | NO_SCREEN, screen: Snapped::ZERO }
+        }
+    }
+}
+
+/// Vertices the position pass works on at once.
+const LANES: usize = 8;
+
+/// The position pass: [`ScreenVertex::new`] of every vertex of `mesh`, in order, into `out` (one per vertex).
+///
+/// [`LANES`] vertices at a time: their clip-space positions one by one ([`Shader::position`] is the caller's
+/// code), then outcodes and screen positions as loops over the lanes, with no branch, which the compiler widens
+/// to SIMD; each lane computes what [`ScreenVertex::new`] computes, with the same operations.
+#[inline(always)]
+pub(crate) fn screen_vertices<S: Shader>(
+    shader: &S,
+    mesh: &Mesh<'_>,
+    volume: &ClipVolume,
+    raster: &Rasterizer,
+    out: &mut [ScreenVertex],
+) {
+    for (chunk, first) in out.chunks_mut(LANES).zip((0..).step_by(LANES)) {
+        let mut pos = [Vec4::ZERO; LANES];
+        for (j, p) in pos.iter_mut().enumerate().take(chunk.len()) {
+            *p = shader.position(mesh, first + j);
+        }
+        let mut code = [0u16; LANES];
+        let mut snapped = [Snapped::ZERO; LANES];
+        for j in 0..LANES {
+            code[j] = volume.outcode(pos[j]);
+            snapped[j] = raster.snap_any(pos[j]);
+        }
+        for (j, v) in chunk.iter_mut().enumerate() {
+            *v = ScreenVertex::from_parts(pos[j], code[j], snapped[j]);
         }
     }
 }
