@@ -32,9 +32,7 @@ const BACKGROUND: Vec3 = Vec3::new(0.05, 0.1, 0.15);
 
 /// The torus seen at an angle, so close that the near plane cuts it.
 fn transforms() -> Transforms {
-    let model = Mat4::from_axis_angle(Vec3::new(1.0, 0.3, 0.0), 1.1);
-    let view = look_at(Vec3::new(0.3, 0.5, 1.6), Vec3::ZERO, Vec3::Y).unwrap();
-    Transforms::new(model, view, perspective(1.2, W as f32 / H as f32, 0.5, 10.0).unwrap())
+    common::near_cut_torus_transforms(W, H)
 }
 
 /// Lines 0.35 nearer than their edges (those near the near plane go below depth 0), then lines 2 farther (all of

@@ -7,24 +7,16 @@
 use crate::common;
 
 use common::{AnyColor, AnyDepth, ExactColor, Torus, Transformed, checker_texels};
-use rastty_core::camera::{look_at, perspective};
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::{DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation, ScreenVertex, draw};
-use rastty_core::shading::{Light, Lighting, Material, Object, ShadingModel, Transforms, draw_mesh};
+use rastty_core::shading::{Light, Lighting, Material, Object, ShadingModel, draw_mesh};
 use rastty_core::target::{Target, VertexMemory};
 use rastty_core::texture::{FilterMode, Texture, WrapMode};
 
 const W: u32 = 41;
 const H: u32 = 29;
 const BACKGROUND: Vec3 = Vec3::new(0.05, 0.1, 0.15);
-
-/// The torus at an angle, so close that the near plane cuts it.
-fn transforms() -> Transforms {
-    let model = Mat4::from_axis_angle(Vec3::new(1.0, 0.3, 0.0), 1.1);
-    let view = look_at(Vec3::new(0.3, 0.5, 1.6), Vec3::ZERO, Vec3::Y).unwrap();
-    Transforms::new(model, view, perspective(1.2, W as f32 / H as f32, 0.5, 10.0).unwrap())
-}
 
 /// One draw to compare.
 #[derive(Clone, Copy, Debug)]
@@ -78,7 +70,13 @@ fn draw_scene<M: VertexMemory>(target: &mut Target<AnyColor<'_>, AnyDepth<'_>, M
                 ..Material::default()
             };
             let lighting = Lighting { ambient: Vec3::splat(0.1), lights: &lights };
-            let object = Object { mesh: torus.mesh(), tangents: None, transforms: transforms(), shading, material };
+            let object = Object {
+                mesh: torus.mesh(),
+                tangents: None,
+                transforms: common::near_cut_torus_transforms(W, H),
+                shading,
+                material,
+            };
             draw_mesh(target, &object, &lighting, &state).unwrap().1
         }
         Scene::Raw => {

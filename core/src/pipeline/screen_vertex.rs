@@ -27,37 +27,28 @@ pub struct ScreenVertex {
 
 impl ScreenVertex {
     /// A value to fill a caller's buffer with before its first draw (any value will do: a draw overwrites what it
-    /// reads).
+    /// reads), and the value of a vertex whose position is not finite.
     pub const UNSET: Self = Self { code: NOT_FINITE, screen: Snapped::ZERO };
 
     /// The vertex of clip-space position `pos` in `volume`, snapped by `raster`.
     #[inline(always)]
     pub(crate) fn new(pos: Vec4, volume: &ClipVolume, raster: &Rasterizer) -> Self {
-        // What `from_parts` gives, computing only what it keeps (a vertex at a time, the branches are cheaper than
-        // the snapping they skip: 3 % of the firmware's instructions).
-        if !pos.is_finite() {
-            return Self { code: NOT_FINITE, screen: Snapped::ZERO };
-        }
-        let code = volume.outcode(pos);
-        if code & CLIP_MASK != 0 {
-            return Self { code, screen: Snapped::ZERO };
-        }
-        match raster.snap(pos) {
-            Some(screen) => Self { code, screen },
-            None => Self { code: code | NO_SCREEN, screen: Snapped::ZERO },
-        }
+        Self::classify(pos, || volume.outcode(pos), || raster.snap_any(pos))
     }
 
-    /// The vertex of clip-space position `pos` whose outcode is `code` and whose screen position, if it has one,
-    /// is `snapped` ([`Rasterizer::snap_any`]).
+    /// The vertex of clip-space position `pos` whose outcode is `code()` and whose screen position, if it has one,
+    /// is `snapped()` ([`Rasterizer::snap_any`]); each is asked for only when it is kept. One vertex at a time
+    /// they are computed here, only when needed; the position pass computes them for eight vertices beforehand.
     #[inline(always)]
-    fn from_parts(pos: Vec4, code: u16, snapped: Snapped) -> Self {
+    fn classify(pos: Vec4, code: impl FnOnce() -> u16, snapped: impl FnOnce() -> Snapped) -> Self {
         if !pos.is_finite() {
-            Self { code: NOT_FINITE, screen: Snapped::ZERO }
-        } else if code & CLIP_MASK != 0 {
+            return Self::UNSET;
+        }
+        let code = code();
+        if code & CLIP_MASK != 0 {
             Self { code, screen: Snapped::ZERO }
         } else if pos.w > 0.0 {
-            Self { code, screen: snapped }
+            Self { code, screen: snapped() }
         } else {
             Self { code: code | NO_SCREEN, screen: Snapped::ZERO }
         }
@@ -92,13 +83,7 @@ pub(crate) fn screen_vertices<S: Shader>(
             snapped[j] = raster.snap_any(pos[j]);
         }
         for (j, v) in chunk.iter_mut().enumerate() {
-            *v = ScreenVertex::from_parts(pos[j], code[j], snapped[j]);
+            *v = ScreenVertex::classify(pos[j], || code[j], || snapped[j]);
         }
-    }
-}
-
-impl Default for ScreenVertex {
-    fn default() -> Self {
-        Self::UNSET
     }
 }

@@ -70,9 +70,11 @@ impl<V: Varyings> VertexCache<V> {
 
     /// [`Self::position`] when the vertex is not cached: computes it and takes its slot.
     ///
-    /// Inlined into each of a triangle's three lookups on a processor with SIMD registers (on this project's
-    /// desktop, sphere1m of `rastty-bench peers` drew in 46.7 instead of 51.5 ms), one shared copy elsewhere: on
-    /// the firmware that is 1.5 KB less code for 2.5 % more instructions (`core/firmware/measure.sh`, 2026-11-26).
+    /// Inlined into each of a triangle's three lookups on a processor with SIMD registers (a program drawing the
+    /// peers comparison's sphere1m through `draw_mesh`, 3 rounds taking turns: medians 46.9, 46.6, 63.8 ms against
+    /// 51.5, 54.5, 51.7; two rounds agree, the third was disturbed),
+    /// one shared copy elsewhere: on the firmware 1.5 KB less code for 2.5 % more instructions
+    /// (`core/firmware/measure.sh`, 2026-11-26).
     #[cfg_attr(any(target_feature = "sse2", target_feature = "neon", target_feature = "simd128"), inline(always))]
     #[cfg_attr(not(any(target_feature = "sse2", target_feature = "neon", target_feature = "simd128")), inline(never))]
     fn miss<S: Shader<Varyings = V>>(

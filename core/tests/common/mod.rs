@@ -249,6 +249,17 @@ impl Torus {
     }
 }
 
+/// The [`Torus`]`::new(1.0, 0.4, ..)` seen at an angle on a `width x height` frame, so close that the near plane
+/// cuts it.
+pub fn near_cut_torus_transforms(width: u32, height: u32) -> rastty_core::shading::Transforms {
+    use rastty_core::camera::{look_at, perspective};
+    use rastty_core::math::Mat4;
+    let model = Mat4::from_axis_angle(Vec3::new(1.0, 0.3, 0.0), 1.1);
+    let view = look_at(Vec3::new(0.3, 0.5, 1.6), Vec3::ZERO, Vec3::Y).unwrap();
+    let projection = perspective(1.2, width as f32 / height as f32, 0.5, 10.0).unwrap();
+    rastty_core::shading::Transforms::new(model, view, projection)
+}
+
 /// An 8x8 checkerboard of two colours with a red texel in the top-left corner (so flips show).
 pub fn checker_texels() -> Vec<u32> {
     (0..64)
