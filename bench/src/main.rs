@@ -47,6 +47,9 @@ struct PeersReportArgs {
     /// Smaller spheres and two frames (for CI): proves the command works; the figures mean little.
     #[arg(long, conflicts_with = "frames")]
     quick: bool,
+    /// Threads of the threaded frame's table (default: every logical CPU, at least 2).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(2..=256))]
+    threads: Option<u32>,
 }
 
 /// Options of `rastty-bench frames`.
@@ -129,6 +132,9 @@ fn peers_report(args: &PeersReportArgs) -> Result<(), String> {
         frames: if args.quick { peers::QUICK_FRAMES } else { args.frames as usize },
         quick: args.quick,
         only: args.only.clone(),
+        threads: args
+            .threads
+            .map_or_else(|| std::thread::available_parallelism().map_or(2, usize::from), |n| n as usize),
     };
     peers::run(&report, &mut std::io::stdout().lock()).map_err(|e| e.to_string())
 }

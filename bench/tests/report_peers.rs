@@ -5,6 +5,7 @@ use rastty_bench::report::peers::core_renderer::CoreRenderer;
 use rastty_bench::report::peers::euc_renderer::EucRenderer;
 use rastty_bench::report::peers::retrofire_renderer::RetrofireRenderer;
 use rastty_bench::report::peers::scenes::sphere;
+use rastty_bench::report::peers::threaded_renderer::ThreadedRenderer;
 use rastty_bench::report::peers::{PeersReport, differing_pixels, run};
 
 #[test]
@@ -49,8 +50,21 @@ fn the_three_renderers_draw_the_same_sphere() {
 }
 
 #[test]
+fn the_threaded_frame_draws_the_cores_picture_on_any_number_of_threads() {
+    let scene = sphere("s", 24, 48, 96, 64);
+    let mut core = CoreRenderer::new(&scene);
+    core.render(&scene);
+    for threads in [1, 2, 3] {
+        let mut threaded = ThreadedRenderer::new(&scene, threads).unwrap();
+        threaded.render().unwrap();
+        assert!(threaded.pixels() == core.pixels(), "{threads} threads");
+    }
+}
+
+#[test]
 fn an_unknown_scene_is_named_in_the_error() {
-    let report = PeersReport { models: "/nonexistent".into(), frames: 1, quick: true, only: vec!["teapot".into()] };
+    let report =
+        PeersReport { models: "/nonexistent".into(), frames: 1, quick: true, only: vec!["teapot".into()], threads: 2 };
     let error = run(&report, &mut Vec::new()).unwrap_err().to_string();
     assert!(error.contains("\"teapot\"") && error.contains("sphere1m"), "{error}");
 }
@@ -58,16 +72,20 @@ fn an_unknown_scene_is_named_in_the_error() {
 #[test]
 fn the_quick_report_of_the_spheres_has_their_rows() {
     let only = vec!["sphere100k".to_owned(), "sphere1m".to_owned()];
-    let report = PeersReport { models: "/nonexistent".into(), frames: 1, quick: true, only };
+    let report = PeersReport { models: "/nonexistent".into(), frames: 1, quick: true, only, threads: 2 };
     let mut out = Vec::new();
     run(&report, &mut out).unwrap();
     let text = String::from_utf8(out).unwrap();
-    assert!(text.contains("\n| sphere100k |") && text.contains("\n| sphere1m |"), "{text}");
+    // Each sphere has a row in both tables.
+    for name in ["sphere100k", "sphere1m"] {
+        assert_eq!(text.matches(&format!("\n| {name} |")).count(), 2, "{text}");
+    }
 }
 
 #[test]
 fn a_missing_model_names_its_file() {
-    let report = PeersReport { models: "/nonexistent".into(), frames: 1, quick: true, only: vec!["bunny".into()] };
+    let report =
+        PeersReport { models: "/nonexistent".into(), frames: 1, quick: true, only: vec!["bunny".into()], threads: 2 };
     let error = run(&report, &mut Vec::new()).unwrap_err().to_string();
     assert!(error.contains("/nonexistent/common-3d/stanford-bunny.obj"), "{error}");
 }

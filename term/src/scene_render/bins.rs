@@ -12,75 +12,127 @@ use rastty_core::camera::Viewport;
 use rastty_core::math::Mat4;
 use rastty_core::mesh::Mesh;
 
+use super::workers::Workers;
+
 /// Rows added on each side of a triangle's rows: more than rounding and sub-pixel snapping can move an edge.
 pub const MARGIN_ROWS: f32 = 2.0;
 
-/// The triangles of one draw sorted into bands: for each band, the vertex indices of its triangles, three per
-/// triangle, in the mesh's order.
+/// A mesh is sorted in one piece below this many triangles a thread: the threads' hand-over costs more than it
+/// saves.
+pub const TRIANGLES_PER_PIECE: usize = 16_384;
+
+/// The triangles of one draw sorted into bands, kept from frame to frame: sorting again reuses the lists' memory,
+/// so a frame allocates nothing in proportion to the mesh once the lists have grown to it.
+///
+/// The mesh is sorted in pieces (consecutive runs of triangles, one per thread for a large mesh), each piece on a
+/// thread of its own; a band's triangles are its lists of every piece in turn ([`Self::band`]), which keeps the
+/// mesh's order.
 #[derive(Debug, Default)]
 pub struct TriangleBins {
-    bands: Vec<Vec<u32>>,
+    /// The screen row of each vertex, as the rasterizer maps it, NaN where it is uncertain.
+    rows: Vec<f32>,
+    /// For each piece of the mesh, for each band, the vertex indices of the piece's triangles that can reach the
+    /// band, three per triangle. Only the first `pieces` are in use; the others keep their memory.
+    pieces: Vec<Vec<Vec<u32>>>,
+    /// How many of `pieces` hold the last sort.
+    used: usize,
 }
 
 impl TriangleBins {
     /// Sorts the triangles of `mesh`, drawn with `clip_from_object` into a `width x height` frame, into `bands`
-    /// (row ranges, top first, in order).
-    pub fn new(mesh: &Mesh<'_>, clip_from_object: &Mat4, (width, height): (u32, u32), bands: &[Range<u32>]) -> Self {
+    /// (row ranges, top first, in order), on `workers`' threads.
+    pub fn sort(
+        &mut self,
+        mesh: &Mesh<'_>,
+        clip_from_object: &Mat4,
+        (width, height): (u32, u32),
+        bands: &[Range<u32>],
+        workers: &Workers,
+    ) {
         let viewport = Viewport::full(width, height);
-        // The screen row of each vertex, as the rasterizer maps it, NaN where it is uncertain.
-        let rows: Vec<f32> = mesh
-            .positions()
-            .iter()
-            .map(|&p| {
+        let positions = mesh.positions();
+        let triangles = mesh.triangle_count();
+        let pieces = workers.threads().min(triangles / TRIANGLES_PER_PIECE).max(1);
+
+        self.rows.clear();
+        self.rows.resize(positions.len(), f32::NAN);
+        let per_piece = positions.len().div_ceil(pieces).max(1);
+        let jobs: Vec<_> = self.rows.chunks_mut(per_piece).zip(positions.chunks(per_piece)).collect();
+        workers.run(jobs, |(rows, positions)| {
+            for (row, &p) in rows.iter_mut().zip(positions) {
                 let clip = clip_from_object.project_point(p);
-                if clip.w > 0.0 { viewport.clip_to_screen(clip).y } else { f32::NAN }
-            })
-            .collect();
-        let mut sorted = TriangleBins { bands: vec![Vec::new(); bands.len()] };
-        for t in 0..mesh.triangle_count() {
-            // Out-of-range indices stay out of range (`u32::MAX`), for the core to count as invalid in every band.
-            let triangle = mesh.triangle(t).unwrap_or([u32::MAX as usize; 3]);
-            let y = triangle.map(|i| rows.get(i).copied().unwrap_or(f32::NAN));
-            let (top, bottom) = (y[0].min(y[1]).min(y[2]), y[0].max(y[1]).max(y[2]));
-            let reach = if y.iter().all(|r| r.is_finite()) {
-                top - MARGIN_ROWS..bottom + MARGIN_ROWS
-            } else {
-                f32::NEG_INFINITY..f32::INFINITY
-            };
-            for (list, band) in sorted.bands.iter_mut().zip(bands) {
-                if reach.start < band.end as f32 && reach.end >= band.start as f32 {
-                    list.extend(triangle.map(|i| i as u32));
+                if clip.w > 0.0 {
+                    *row = viewport.clip_to_screen(clip).y;
                 }
             }
+        });
+
+        if self.pieces.len() < pieces {
+            self.pieces.resize_with(pieces, Vec::new);
         }
-        sorted
+        self.used = pieces;
+        let rows = &self.rows;
+        let jobs: Vec<_> = self.pieces[..pieces]
+            .iter_mut()
+            .enumerate()
+            .map(|(i, lists)| (triangles * i / pieces..triangles * (i + 1) / pieces, lists))
+            .collect();
+        workers.run(jobs, |(run, lists)| {
+            if lists.len() < bands.len() {
+                lists.resize_with(bands.len(), Vec::new);
+            }
+            lists.iter_mut().for_each(Vec::clear);
+            for t in run {
+                // Out-of-range indices stay out of range (`u32::MAX`), for the core to count as invalid in every
+                // band.
+                let triangle = mesh.triangle(t).unwrap_or([u32::MAX as usize; 3]);
+                let y = triangle.map(|i| rows.get(i).copied().unwrap_or(f32::NAN));
+                let (top, bottom) = (y[0].min(y[1]).min(y[2]), y[0].max(y[1]).max(y[2]));
+                let reach = if y.iter().all(|r| r.is_finite()) {
+                    top - MARGIN_ROWS..bottom + MARGIN_ROWS
+                } else {
+                    f32::NEG_INFINITY..f32::INFINITY
+                };
+                for (list, band) in lists.iter_mut().zip(bands) {
+                    if reach.start < band.end as f32 && reach.end >= band.start as f32 {
+                        list.extend(triangle.map(|i| i as u32));
+                    }
+                }
+            }
+        });
     }
 
-    /// The vertex indices of the triangles that can reach band `band`, three per triangle.
-    pub fn band(&self, band: usize) -> &[u32] {
-        self.bands.get(band).map_or(&[], Vec::as_slice)
+    /// The vertex indices of the triangles that can reach band `band`, three per triangle: one list per piece of
+    /// the mesh, in the mesh's order.
+    pub fn band(&self, band: usize) -> impl Iterator<Item = &[u32]> {
+        self.pieces[..self.used].iter().map(move |lists| lists.get(band).map_or(&[][..], Vec::as_slice))
+    }
+
+    /// How many triangles can reach band `band`.
+    pub fn band_triangles(&self, band: usize) -> usize {
+        self.band(band).map(|list| list.len() / 3).sum()
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rastty_core::pipeline::Cull;
+    use rastty_core::pipeline::{Cull, DepthTest};
     use rastty_core::{
         DrawState, DrawStats, Indices, Lighting, Material, Object, Rgb888, ShadingModel, Target, Transforms, Vec3,
         draw_mesh, look_at, perspective,
     };
 
-    /// A triangle soup around the camera: most triangles in view, some crossing the eye plane or behind it, some
-    /// huge, some slivers, and one with an index out of range.
-    fn soup() -> (Vec<Vec3>, Vec<u32>) {
+    /// A soup of `triangles` triangles around the camera: most in view, some crossing the eye plane or behind it,
+    /// some huge, some slivers, and the last with an index out of range.
+    fn soup(triangles: usize) -> (Vec<Vec3>, Vec<u32>) {
         let mut seed = 0x2545_F491_u32;
         let mut next = || {
             seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
             (seed >> 8) as f32 / (1 << 24) as f32 * 2.0 - 1.0
         };
         let mut positions = Vec::new();
-        for t in 0..400 {
+        for t in 0..triangles - 1 {
             let scale = if t % 37 == 0 { 40.0 } else { 1.0 };
             let centre = Vec3::new(next() * 2.0, next() * 2.0, next() * 3.0);
             for _ in 0..3 {
@@ -93,10 +145,20 @@ mod tests {
     }
 
     /// Drawing each band with the triangles sorted into it gives the pixels of drawing the whole mesh into the
-    /// whole frame, for bands of one row, uneven bands and a single band.
+    /// whole frame, for bands of one row, uneven bands and a single band, sorted on one thread and in pieces on
+    /// three, the same bins sorted again each time; with the depth test off, where the last triangle drawn over a
+    /// pixel shows, the mesh's order is kept too.
     #[test]
     fn banded_draws_of_the_sorted_triangles_match_one_whole_draw() {
-        let (positions, indices) = soup();
+        for (triangles, threads) in [(401, 1), (401, 3), (3 * TRIANGLES_PER_PIECE + 1, 3)] {
+            for depth_test in [DepthTest::Less, DepthTest::Off] {
+                banded_draws_match_one_whole_draw(triangles, &Workers::new(threads), depth_test);
+            }
+        }
+    }
+
+    fn banded_draws_match_one_whole_draw(triangles: usize, workers: &Workers, depth_test: DepthTest) {
+        let (positions, indices) = soup(triangles);
         let mesh = Mesh::new(&positions, Indices::U32(&indices)).unwrap();
         let (w, h) = (64u32, 48u32);
         let eye = Vec3::new(0.0, 0.0, 4.0);
@@ -104,7 +166,7 @@ mod tests {
         let transforms =
             Transforms::new(Mat4::IDENTITY, view, perspective(1.2, w as f32 / h as f32, 0.1, 20.0).unwrap());
         let clip = transforms.clip_from_object;
-        let state = DrawState { cull: Cull::None, ..DrawState::DEFAULT };
+        let state = DrawState { cull: Cull::None, depth_test, ..DrawState::DEFAULT };
         // The depth view: grey levels from the depth buffer.
         let draw = |target: &mut Target<Rgb888<'_>, &mut [f32]>, mesh: Mesh<'_>| -> DrawStats {
             let shading = ShadingModel::Depth { near: 0.0, far: 1.0 };
@@ -117,9 +179,13 @@ mod tests {
         let all = draw(&mut target, mesh);
         assert!(all.fragments > 1000 && all.clipped > 0 && all.invalid == 1, "{all:?}");
 
-        for cuts in [vec![0, 48], vec![0, 1, 2, 17, 30, 47, 48], (0..=48).collect::<Vec<u32>>()] {
+        let mut bins = TriangleBins::default();
+        for cuts in [(0..=48).collect::<Vec<u32>>(), vec![0, 48], vec![0, 1, 2, 17, 30, 47, 48]] {
             let bands: Vec<Range<u32>> = cuts.windows(2).map(|c| c[0]..c[1]).collect();
-            let bins = TriangleBins::new(&mesh, &clip, (w, h), &bands);
+            bins.sort(&mesh, &clip, (w, h), &bands, workers);
+            let pieces = bins.band(0).count();
+            let expected = workers.threads().min(mesh.triangle_count() / TRIANGLES_PER_PIECE).max(1);
+            assert_eq!(pieces, expected);
             let (mut banded, mut depth) = (vec![0u32; (w * h) as usize], vec![0f32; (w * h) as usize]);
             let mut sorted = 0;
             for (i, rows) in bands.iter().enumerate() {
@@ -127,11 +193,12 @@ mod tests {
                 let (color, depth) = (&mut banded[span.clone()], &mut depth[span]);
                 let mut target = Target::band(Rgb888(color), depth, w, h, rows.clone()).unwrap();
                 target.clear(Vec3::ZERO);
-                let triangles = mesh.with_indices(Indices::U32(bins.band(i))).unwrap();
-                draw(&mut target, triangles);
-                sorted += bins.band(i).len() / 3;
+                for list in bins.band(i) {
+                    draw(&mut target, mesh.with_indices(Indices::U32(list)).unwrap());
+                }
+                sorted += bins.band_triangles(i);
             }
-            assert!(whole == banded, "bands {bands:?}");
+            assert!(whole == banded, "bands {bands:?}, {depth_test:?}");
             if bands.len() > 1 {
                 // Each band met far fewer triangles than the whole mesh.
                 assert!(

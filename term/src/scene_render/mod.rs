@@ -85,6 +85,7 @@ mod prepared;
 mod render;
 mod shading_mode;
 mod toggles;
+mod workers;
 
 pub use bounds::scene_bounds;
 pub use camera::{FrameCamera, PlaneSource};

@@ -2,7 +2,6 @@
 //! bands drawn side by side on threads, then the ambient occlusion step, also in bands.
 
 use std::ops::Range;
-use std::sync::Mutex;
 use std::thread;
 use std::time::{Duration, Instant};
 
@@ -19,6 +18,7 @@ use rastty_core::target::{Rgb888, Target};
 use super::bins::TriangleBins;
 use super::material::part_material;
 use super::plan::{PlannedDraw, ShadowPass, tangents_for};
+use super::workers::Workers;
 use super::{PreparedScene, ScenePlan, SceneRenderError};
 use crate::scene_file::SceneObject;
 
@@ -112,10 +112,16 @@ pub const BAND_PIXELS: usize = 65_536;
 /// rows, each draw with the triangles sorted into the band (conservatively, by their screen rows; the core clips
 /// every triangle to the band), so maps and pixels are the same for any number of threads: only the vertex work
 /// of triangles that reach several bands is repeated.
+///
+/// The threads are started with the renderer and kept ([`Workers`]), and so are the lists the triangles are sorted
+/// into ([`TriangleBins`]): a frame starts no thread and, once the lists have grown to the meshes, allocates
+/// nothing in proportion to them.
 #[derive(Debug)]
 pub struct SceneRenderer {
     slots: Vec<ShadowSlot>,
-    threads: usize,
+    workers: Workers,
+    /// The forward pass's triangles sorted into bands, one entry per draw of the last plan.
+    bins: Vec<TriangleBins>,
 }
 
 impl Default for SceneRenderer {
@@ -146,19 +152,21 @@ impl SceneRenderer {
     }
 
     /// A renderer with no shadow map yet, drawing in `threads` bands at once (at least 1; a frame has at most one
-    /// band per row).
+    /// band per row). It starts its threads now and keeps them; if the system refuses to start them, it draws the
+    /// same frames on the calling thread alone.
     pub fn with_threads(threads: usize) -> Self {
-        Self { slots: Vec::new(), threads: threads.max(1) }
+        Self { slots: Vec::new(), workers: Workers::new(threads), bins: Vec::new() }
     }
 
     /// The number of threads frames are drawn on.
     pub fn threads(&self) -> usize {
-        self.threads
+        self.workers.threads()
     }
 
     /// The number of bands of rows a frame is split into (fewer for a frame with fewer rows).
     fn bands(&self, pixels: usize) -> usize {
-        (pixels / BAND_PIXELS).clamp(self.threads, self.threads * BANDS_PER_THREAD)
+        let threads = self.threads();
+        (pixels / BAND_PIXELS).clamp(threads, threads * BANDS_PER_THREAD)
     }
 
     /// Runs `plan` (made for `scene`) into `target`, a frame of the plan's size or a band of its rows: the shadow
@@ -197,7 +205,7 @@ impl SceneRenderer {
         report.shadow_time = start.elapsed();
 
         let start = Instant::now();
-        let sources = self.light_sources(plan)?;
+        let sources = Self::light_sources(&self.slots, plan)?;
         let lights = Lighting { ambient: plan.ambient, lights: &sources };
         let (color, depth) = target.buffers_mut();
         let (pixels, depth) = (&mut *color.0, &mut **depth);
@@ -206,19 +214,19 @@ impl SceneRenderer {
         let mut bands: Vec<_> =
             bands.map(|(index, ((rows, pixels), (_, depth)))| Band { index, rows, pixels, depth }).collect();
         let rows: Vec<_> = bands.iter().map(|band| band.rows.clone()).collect();
-        let bins = plan
-            .draws
-            .iter()
-            .map(|draw| {
-                let (_, mesh) = planned_mesh(scene, draw)?;
-                Ok(TriangleBins::new(&mesh, &draw.transforms.clip_from_object, (width, height), &rows))
-            })
-            .collect::<Result<Vec<_>, SceneRenderError>>()?;
+        if self.bins.len() < plan.draws.len() {
+            self.bins.resize_with(plan.draws.len(), TriangleBins::default);
+        }
+        let bins = &mut self.bins[..plan.draws.len()];
+        for (draw, bins) in plan.draws.iter().zip(bins.iter_mut()) {
+            let (_, mesh) = planned_mesh(scene, draw)?;
+            bins.sort(&mesh, &draw.transforms.clip_from_object, (width, height), &rows, &self.workers);
+        }
+        let bins = &*bins;
         // Threads take the bands with the most triangles first, so that the last ones taken are short and the
         // threads finish together.
-        bands.sort_by_key(|band| std::cmp::Reverse(bins.iter().map(|b| b.band(band.index).len()).sum::<usize>()));
-        let results =
-            on_threads(bands, self.threads, |band| forward_band(scene, plan, &bins, &lights, band, width, height));
+        bands.sort_by_key(|band| std::cmp::Reverse(bins.iter().map(|b| b.band_triangles(band.index)).sum::<usize>()));
+        let results = self.workers.run(bands, |band| forward_band(scene, plan, bins, &lights, band, width, height));
         for result in results {
             let result = result?;
             report.forward += result.stats;
@@ -235,7 +243,7 @@ impl SceneRenderer {
             let whole_depth: &[f32] = depth;
             let margin = occlusion.margin_rows(&projection, width, height);
             let bands = split_rows(pixels, width, 0..height, band_count);
-            let results = on_threads(bands, self.threads, |(rows, pixels)| {
+            let results = self.workers.run(bands, |(rows, pixels)| {
                 // The band's rows of depth and `margin` more on each side: exactly the whole frame's result.
                 let depth_rows = rows.start.saturating_sub(margin)..(rows.end + margin).min(height);
                 let span = depth_rows.start as usize * width as usize..depth_rows.end as usize * width as usize;
@@ -250,13 +258,13 @@ impl SceneRenderer {
     }
 
     /// The planned lights as the core takes them, with the kept shadow maps.
-    fn light_sources(&self, plan: &ScenePlan) -> Result<Vec<Light<'_>>, SceneRenderError> {
+    fn light_sources<'a>(slots: &'a [ShadowSlot], plan: &ScenePlan) -> Result<Vec<Light<'a>>, SceneRenderError> {
         let mut sources = Vec::with_capacity(plan.lights.len());
         for light in &plan.lights {
             let shadow = match light.shadow_pass {
                 Some(p) => {
                     let pass = &plan.shadow_passes[p];
-                    let slot = &self.slots[p];
+                    let slot = &slots[p];
                     let map = ShadowMap::new(pass.view, &slot.depth, ShadowBias::DEFAULT, pass.pcf_radius);
                     let map = map.and_then(|map| {
                         if !slot.ranges_ready {
@@ -286,7 +294,7 @@ impl SceneRenderer {
         if self.slots.len() < plan.shadow_passes.len() {
             self.slots.resize_with(plan.shadow_passes.len(), ShadowSlot::default);
         }
-        let threads = self.threads;
+        let workers = &self.workers;
         for (pass, slot) in plan.shadow_passes.iter().zip(&mut self.slots) {
             let light = &plan.lights[pass.light];
             let key = ShadowKey { scene: scene.id(), light: light.number, view: pass.view };
@@ -294,7 +302,7 @@ impl SceneRenderer {
                 |error| SceneRenderError::Shadow { light: plan.light_name(light), bounds: plan.bounds, error };
             if slot.key == Some(key) {
                 if pass.pcf_radius > 0 && !slot.ranges_ready {
-                    slot.window_ranges(pass, threads).map_err(shadow_error)?;
+                    slot.window_ranges(pass, workers).map_err(shadow_error)?;
                     slot.ranges_ready = true;
                 }
                 report.shadow_passes.push(ShadowPassReport {
@@ -312,8 +320,8 @@ impl SceneRenderer {
                 slot.depth = vec![0.0; side * side];
             }
             // One band per thread: casters are few fragments for their vertex work, which every band repeats.
-            let bands = split_rows(&mut slot.depth, pass.map_size, 0..pass.map_size, threads);
-            let results = on_threads(bands, threads, |(rows, depth)| {
+            let bands = split_rows(&mut slot.depth, pass.map_size, 0..pass.map_size, workers.threads());
+            let results = workers.run(bands, |(rows, depth)| {
                 clear_shadow_depth(depth);
                 let mut stats = DrawStats::default();
                 for object in &scene.data().objects {
@@ -336,7 +344,8 @@ impl SceneRenderer {
 impl ShadowSlot {
     /// Works out the depth ranges of the filter windows of the map in `depth`, in one band of rows per thread
     /// (every band reads the whole map, so the depth pass must be done).
-    fn window_ranges(&mut self, pass: &ShadowPass, threads: usize) -> Result<(), ShadowError> {
+    fn window_ranges(&mut self, pass: &ShadowPass, workers: &Workers) -> Result<(), ShadowError> {
+        let threads = workers.threads();
         let side = pass.map_size as usize;
         for buffer in [&mut self.near, &mut self.far] {
             if buffer.len() != side * side {
@@ -348,7 +357,7 @@ impl ShadowSlot {
         let near = split_rows(&mut self.near, pass.map_size, 0..pass.map_size, threads);
         let far = split_rows(&mut self.far, pass.map_size, 0..pass.map_size, threads);
         let bands: Vec<_> = near.into_iter().zip(far).collect();
-        let results = on_threads(bands, threads, |((rows, near), (_, far))| {
+        let results = workers.run(bands, |((rows, near), (_, far))| {
             window_ranges_band(depth, pass.map_size, pass.pcf_radius, rows, near, far)
         });
         results.into_iter().collect()
@@ -368,32 +377,6 @@ fn split_rows<T>(mut buffer: &mut [T], width: u32, rows: Range<u32>, count: usiz
         bands.push((rows, band));
     }
     bands
-}
-
-/// Runs `work` on every job on up to `threads` threads (this one and `threads - 1` more), each taking the next
-/// job not yet taken until none is left, and returns the results in the jobs' order.
-fn on_threads<J: Send, T: Send>(jobs: Vec<J>, threads: usize, work: impl Fn(J) -> T + Sync) -> Vec<T> {
-    let count = jobs.len();
-    let queue = Mutex::new(jobs.into_iter().enumerate());
-    let worker = || {
-        let mut done = Vec::new();
-        // The lock is held only to take a job; a poisoned lock means a worker panicked, which is resumed below.
-        while let Some((i, job)) = queue.lock().ok().and_then(|mut q| q.next()) {
-            done.push((i, work(job)));
-        }
-        done
-    };
-    let mut results: Vec<(usize, T)> = thread::scope(|s| {
-        let others: Vec<_> = (1..threads.min(count)).map(|_| s.spawn(worker)).collect();
-        let mut results = worker();
-        for other in others {
-            // The work returns errors as values and does not panic; if it did, the panic goes on here.
-            results.extend(other.join().unwrap_or_else(|p| std::panic::resume_unwind(p)));
-        }
-        results
-    });
-    results.sort_unstable_by_key(|(i, _)| *i);
-    results.into_iter().map(|(_, result)| result).collect()
 }
 
 /// The mesh of a planned draw.
@@ -423,21 +406,32 @@ fn forward_band(
     let mut result = BandResult { stats: DrawStats::default(), variants: Vec::with_capacity(plan.draws.len()) };
     for (draw, bins) in plan.draws.iter().zip(bins) {
         let (object, mesh) = planned_mesh(scene, draw)?;
-        let triangles = mesh.with_indices(Indices::U32(bins.band(band.index)));
-        let triangles = triangles.map_err(|error| SceneRenderError::Target(format!("{}: {error}", draw.label)))?;
         let material = part_material(object, scene.part_maps(draw.object, draw.part), draw.part, &plan.options)
             .map_err(|error| SceneRenderError::Texture { draw: draw.label.clone(), error })?;
         let tangents = tangents_for(scene, draw.object, &material);
-        let surface =
-            Object { mesh: triangles, tangents, transforms: draw.transforms, shading: draw.variant.shading, material };
-        let (variant, stats) = draw_mesh(&mut target, &surface, lights, &DrawState::DEFAULT)
-            .map_err(|error| SceneRenderError::Draw { draw: draw.label.clone(), error })?;
-        result.stats += stats;
-        if plan.wireframe {
-            // The lines' pixels count as fragments; their triangles are the ones counted above.
-            let clip = &draw.transforms.clip_from_object;
-            let lines = draw_wireframe(&mut target, &triangles, clip, &WIREFRAME, &variant.state);
-            result.stats.fragments += lines.fragments;
+        let mut variant = draw.variant;
+        // The band's triangles come in pieces of the mesh (at least one), in its order: drawn one after the other,
+        // the pieces give the pixels of one draw of them all.
+        for list in bins.band(band.index) {
+            let triangles = mesh.with_indices(Indices::U32(list));
+            let triangles = triangles.map_err(|error| SceneRenderError::Target(format!("{}: {error}", draw.label)))?;
+            let surface = Object {
+                mesh: triangles,
+                tangents,
+                transforms: draw.transforms,
+                shading: draw.variant.shading,
+                material,
+            };
+            let (drawn, stats) = draw_mesh(&mut target, &surface, lights, &DrawState::DEFAULT)
+                .map_err(|error| SceneRenderError::Draw { draw: draw.label.clone(), error })?;
+            result.stats += stats;
+            if plan.wireframe {
+                // The lines' pixels count as fragments; their triangles are the ones counted above.
+                let clip = &draw.transforms.clip_from_object;
+                let lines = draw_wireframe(&mut target, &triangles, clip, &WIREFRAME, &drawn.state);
+                result.stats.fragments += lines.fragments;
+            }
+            variant = drawn;
         }
         result.variants.push(variant);
     }

@@ -8,11 +8,15 @@
 //! minimum time per frame, the core's ratio to the best peer, and how many pixels of each peer's picture differ
 //! from the core's by more than [`DIFFERENCE`] levels in a channel (the peers' edge rules and depth precision
 //! differ from the core's exact ones, so a few edge pixels do).
+//!
+//! A second table draws the same scenes through the program's threaded frame ([`threaded_renderer`]) on one
+//! thread and on [`PeersReport::threads`], taking turns frame by frame, and gives the speed-up.
 
 pub mod core_renderer;
 pub mod euc_renderer;
 pub mod retrofire_renderer;
 pub mod scenes;
+pub mod threaded_renderer;
 
 use std::fmt::Write as _;
 use std::io::Write;
@@ -25,6 +29,7 @@ use self::core_renderer::CoreRenderer;
 use self::euc_renderer::EucRenderer;
 use self::retrofire_renderer::RetrofireRenderer;
 use self::scenes::{Scene, SceneError};
+use self::threaded_renderer::ThreadedRenderer;
 use super::median;
 
 /// Measured frames per renderer and scene by default.
@@ -47,6 +52,8 @@ pub struct PeersReport {
     pub quick: bool,
     /// The scenes to draw (names from [`SCENES`]); empty for all.
     pub only: Vec<String>,
+    /// Threads of the threaded frame's second column (the first is one thread).
+    pub threads: usize,
 }
 
 /// The three renderers, in the report's column order.
@@ -166,6 +173,58 @@ pub fn run(report: &PeersReport, out: &mut dyn Write) -> Result<(), Box<dyn std:
             differing_pixels(contenders.pixels(1), core),
         )?;
     }
+    threaded_table(report, &scenes, &mut text)?;
     out.write_all(text.as_bytes())?;
+    Ok(())
+}
+
+/// The second table: each scene through the threaded frame on one thread and on `report.threads`, the two taking
+/// turns frame by frame, and the pixels that differ from the core's own draw (none, when the frame is right).
+fn threaded_table(report: &PeersReport, scenes: &[Scene], text: &mut String) -> Result<(), Box<dyn std::error::Error>> {
+    let threads = report.threads.max(2);
+    writeln!(text)?;
+    writeln!(text, "### The same scenes through the threaded frame, 1 and {threads} threads")?;
+    writeln!(text)?;
+    writeln!(
+        text,
+        "- a scene of one object, planned once and drawn by one `SceneRenderer` per column, the columns taking \
+         turns frame by frame; ms: median (minimum) wall time of a frame; differing: pixels more than \
+         {DIFFERENCE} levels from the core's single draw above"
+    )?;
+    writeln!(text)?;
+    writeln!(text, "| scene | 1 thread | {threads} threads | speed-up | differing from the core's draw |")?;
+    writeln!(text, "|---|---:|---:|---:|---:|")?;
+    for scene in scenes {
+        let mut single = CoreRenderer::new(scene);
+        single.render(scene);
+        let mut renderers = [ThreadedRenderer::new(scene, 1)?, ThreadedRenderer::new(scene, threads)?];
+        let mut times: [Vec<Duration>; 2] = Default::default();
+        for renderer in &mut renderers {
+            renderer.render()?;
+        }
+        for round in 0..report.frames {
+            for k in 0..2 {
+                let which = (round + k) % 2;
+                let start = Instant::now();
+                renderers[which].render()?;
+                times[which].push(start.elapsed());
+            }
+        }
+        let ms = |d: Duration| d.as_secs_f64() * 1e3;
+        let medians = times.each_ref().map(|t| ms(median(t)));
+        let cell = |which: usize| {
+            let min = times[which].iter().min().copied().unwrap_or_default();
+            format!("{:.2} ({:.2})", medians[which], ms(min))
+        };
+        let differing = renderers.iter().map(|r| differing_pixels(r.pixels(), single.pixels())).max().unwrap_or(0);
+        writeln!(
+            text,
+            "| {} | {} | {} | {:.2} | {differing} |",
+            scene.name,
+            cell(0),
+            cell(1),
+            medians[0] / medians[1],
+        )?;
+    }
     Ok(())
 }
