@@ -225,17 +225,21 @@ where
     // Fragments of a batched shader, across triangles; made with the first rasterized triangle's values.
     let mut batch: Option<FragmentBatch<S::Varyings, S::Face>> = None;
 
-    mesh.for_each_triangle(|indices| {
+    // A loop, not `Mesh::for_each_triangle`: its closure, called from one place per index type, stayed out of line,
+    // and each triangle paid a call and reloaded every captured value (callgrind, sphere1m with vertex memory, two
+    // frames: 776.1 against 725.9 million instructions).
+    for t in 0..mesh.triangle_count() {
+        let indices = mesh.triangle(t);
         stats.triangles_in += 1;
         let Some(indices) = indices else {
             stats.invalid += 1;
-            return;
+            continue;
         };
         // Three lookups, not `indices.map`: the array map kept its results on the stack (`perf` on sphere1m: 17 % of
         // the samples).
         let [ia, ib, ic] = indices;
         let (a, b, c) = match screen {
-            // In range: `for_each_triangle` checks each index against the vertex count.
+            // In range: `Mesh::triangle` checks each index against the vertex count.
             Some(screen) => (screen[ia], screen[ib], screen[ic]),
             None => (
                 cache.position(shader, mesh, ia, &volume, &raster),
@@ -246,11 +250,11 @@ where
         let any = a.code | b.code | c.code;
         if any & NOT_FINITE != 0 {
             stats.invalid += 1;
-            return;
+            continue;
         }
         if a.code & b.code & c.code != 0 {
             stats.outside += 1;
-            return;
+            continue;
         }
         let mut outcome = Outcome::default();
         let clip_mask = any & CLIP_MASK;
@@ -258,7 +262,7 @@ where
             // The common case: varyings only once coverage is known.
             if any & NO_SCREEN != 0 {
                 stats.outside += 1;
-                return;
+                continue;
             }
             let (sa, sb, sc) = (a.screen, b.screen, c.screen);
             let setup = edges.setup(&raster, [sa, sb, sc]);
@@ -269,7 +273,7 @@ where
                 let vars = cache.triangle_varyings(shader, mesh, indices);
                 if !vars.iter().all(Varyings::is_finite) {
                     stats.invalid += 1;
-                    return;
+                    continue;
                 }
                 let face = shader.face(mesh, indices);
                 let batch = batch.get_or_insert_with(|| FragmentBatch::new(vars[0], face));
@@ -281,7 +285,7 @@ where
             let vars = cache.triangle_varyings(shader, mesh, indices);
             if !vars.iter().all(Varyings::is_finite) {
                 stats.invalid += 1;
-                return;
+                continue;
             }
             let tri = [
                 ClipVertex { pos: shader.position(mesh, ia), var: vars[0] },
@@ -309,7 +313,7 @@ where
             }
         }
         outcome.count(&mut stats);
-    });
+    }
     if let Some(batch) = batch.as_mut().filter(|b| !b.is_empty()) {
         shade_batch(shader, batch, target);
     }
