@@ -11,7 +11,7 @@ use rastty_core::math::{Mat4, Vec3};
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::{DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation, ScreenVertex, draw};
 use rastty_core::shading::{Light, Lighting, Material, Object, ShadingModel, draw_mesh};
-use rastty_core::target::{Target, VertexMemory};
+use rastty_core::target::{SharedScreenVertices, Target, VertexMemory};
 use rastty_core::texture::{FilterMode, Texture, WrapMode};
 
 const W: u32 = 41;
@@ -58,27 +58,7 @@ fn raw_mesh() -> (Vec<Vec3>, Vec<u32>) {
 fn draw_scene<M: VertexMemory>(target: &mut Target<AnyColor<'_>, AnyDepth<'_>, M>, scene: Scene) -> DrawStats {
     target.clear(BACKGROUND);
     match scene {
-        Scene::Torus { shading, state } => {
-            let torus = Torus::new(1.0, 0.4, 24, 12);
-            let texels = checker_texels();
-            let lights = [Light::directional(Vec3::new(0.3, 1.0, 0.6), Vec3::ONE)];
-            let material = Material {
-                specular: Vec3::splat(0.5),
-                diffuse: Some(Texture::new(&texels, 8, 8).unwrap()),
-                filter: FilterMode::Bilinear,
-                wrap: WrapMode::Repeat,
-                ..Material::default()
-            };
-            let lighting = Lighting { ambient: Vec3::splat(0.1), lights: &lights };
-            let object = Object {
-                mesh: torus.mesh(),
-                tangents: None,
-                transforms: common::near_cut_torus_transforms(W, H),
-                shading,
-                material,
-            };
-            draw_mesh(target, &object, &lighting, &state).unwrap().1
-        }
+        Scene::Torus { shading, state } => draw_torus(target, &Torus::new(1.0, 0.4, 24, 12), shading, &state),
         Scene::Raw => {
             let (positions, indices) = raw_mesh();
             let mesh = Mesh::new(&positions, Indices::U32(&indices)).unwrap();
@@ -87,6 +67,29 @@ fn draw_scene<M: VertexMemory>(target: &mut Target<AnyColor<'_>, AnyDepth<'_>, M
                 .unwrap()
         }
     }
+}
+
+/// Draws `torus`, cut by the near plane and textured with a checker where the model reads texture coordinates,
+/// into `target` (not cleared); returns its counts.
+fn draw_torus<M: VertexMemory>(
+    target: &mut Target<AnyColor<'_>, AnyDepth<'_>, M>,
+    torus: &Torus,
+    shading: ShadingModel,
+    state: &DrawState,
+) -> DrawStats {
+    let texels = checker_texels();
+    let lights = [Light::directional(Vec3::new(0.3, 1.0, 0.6), Vec3::ONE)];
+    let material = Material {
+        specular: Vec3::splat(0.5),
+        diffuse: Some(Texture::new(&texels, 8, 8).unwrap()),
+        filter: FilterMode::Bilinear,
+        wrap: WrapMode::Repeat,
+        ..Material::default()
+    };
+    let lighting = Lighting { ambient: Vec3::splat(0.1), lights: &lights };
+    let transforms = common::near_cut_torus_transforms(W, H);
+    let object = Object { mesh: torus.mesh(), tangents: None, transforms, shading, material };
+    draw_mesh(target, &object, &lighting, state).unwrap().1
 }
 
 /// What a draw left: colours, depth bits and counts.
@@ -174,4 +177,66 @@ fn bad_vertices_are_counted_alike_with_vertex_memory() {
     );
     assert!(stats.clipped >= 2, "the vertex behind the eye is clipped: {stats:?}");
     assert!(stats.fragments > 0, "{stats:?}");
+}
+
+/// The frame drawn in bands, each band's target lent `shared` (computed with `compute_matrix` in two parts,
+/// recorded as computed with `key_matrix`).
+fn banded_with_shared(state: &DrawState, compute_matrix: &Mat4, key_matrix: &Mat4) -> Picture {
+    let torus = Torus::new(1.0, 0.4, 24, 12);
+    let n = torus.positions.len();
+    let mut vertices = vec![ScreenVertex::UNSET; n];
+    let (head, tail) = vertices.split_at_mut(n / 3);
+    let bits = state.subpixel_bits;
+    SharedScreenVertices::compute(&torus.positions, compute_matrix, (W, H), bits, 0, head).unwrap();
+    SharedScreenVertices::compute(&torus.positions, compute_matrix, (W, H), bits, n / 3, tail).unwrap();
+    let shared = SharedScreenVertices::new(&vertices, &torus.positions, key_matrix, (W, H), bits);
+    let (mut color, mut depth) = (vec![[0u32; 3]; (W * H) as usize], vec![0f32; (W * H) as usize]);
+    let mut stats = DrawStats::default();
+    let (mut color_rest, mut depth_rest) = (&mut color[..], &mut depth[..]);
+    for rows in [0..1, 1..9, 9..H - 3, H - 3..H] {
+        let len = (W * (rows.end - rows.start)) as usize;
+        let (c, c_rest) = std::mem::take(&mut color_rest).split_at_mut(len);
+        let (d, d_rest) = std::mem::take(&mut depth_rest).split_at_mut(len);
+        (color_rest, depth_rest) = (c_rest, d_rest);
+        let mut target = common::band(ExactColor(c), d, W, H, rows).with_shared_vertices(shared);
+        target.clear(BACKGROUND);
+        stats += draw_torus(&mut target, &torus, ShadingModel::Phong, state);
+    }
+    (color, depth.iter().map(|z| z.to_bits()).collect(), stats)
+}
+
+/// The frame's screen vertices computed once, in two parts, and lent to every band give the pixels and depths of
+/// the whole frame drawn through the vertex cache, for both edge arithmetics and depth tests. Every triangle is
+/// counted once per band and the fragments are the same; a band counts the triangles outside its rows as
+/// rasterized (set-up finds no centre) where its own outcodes would have rejected them.
+#[test]
+fn a_frame_drawn_in_bands_from_shared_screen_vertices_draws_the_whole_frame() {
+    let matrix = common::near_cut_torus_transforms(W, H).clip_from_object;
+    for edges in [EdgeArithmetic::FixedPoint, EdgeArithmetic::Float] {
+        for depth_test in [DepthTest::Less, DepthTest::Off] {
+            let state = DrawState { edges, depth_test, ..DrawState::default() };
+            let expected = picture(Scene::Torus { shading: ShadingModel::Phong, state }, 0..H, None);
+            let banded = banded_with_shared(&state, &matrix, &matrix);
+            let name = format!("{edges:?}, {depth_test:?}");
+            assert!(expected.0 == banded.0, "{name}: colours differ");
+            assert!(expected.1 == banded.1, "{name}: depths differ");
+            assert_eq!(banded.2.triangles_in, 4 * expected.2.triangles_in, "{name}");
+            assert_eq!(banded.2.fragments, expected.2.fragments, "{name}");
+            assert!(expected.2.clipped > 0, "{name}: the near plane cuts the torus");
+        }
+    }
+}
+
+/// The shared vertices are read when they are the draw's, and only then: vertices computed with another matrix
+/// but recorded as the draw's change the picture; recorded as another matrix's, the draw ignores them.
+#[test]
+fn shared_screen_vertices_are_used_only_for_the_draw_they_were_computed_for() {
+    let state = DrawState::default();
+    let matrix = common::near_cut_torus_transforms(W, H).clip_from_object;
+    let other = Mat4::from_scale(Vec3::splat(0.5)) * matrix;
+    let expected = picture(Scene::Torus { shading: ShadingModel::Phong, state }, 0..H, None);
+    let read = banded_with_shared(&state, &other, &matrix);
+    assert!(expected.0 != read.0, "vertices recorded as the draw's are read");
+    let ignored = banded_with_shared(&state, &other, &other);
+    assert!(expected.0 == ignored.0 && expected.1 == ignored.1, "vertices of another matrix are ignored");
 }

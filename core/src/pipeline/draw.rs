@@ -188,6 +188,20 @@ impl Outcome {
     }
 }
 
+/// The screen vertices in `memory` computed beforehand for this draw (its mesh's positions under the shader's
+/// matrix, into a frame of `frame` pixels with the state's sub-pixel bits), if there are any.
+#[inline(always)]
+fn shared_vertices<'m, S: Shader, M: VertexMemory>(
+    memory: &'m M,
+    shader: &S,
+    mesh: &Mesh<'_>,
+    frame: (u32, u32),
+    state: &DrawState,
+) -> Option<&'m [ScreenVertex]> {
+    let matrix = shader.clip_from_object()?;
+    memory.shared()?.for_draw(mesh.positions(), matrix, frame, state.subpixel_bits)
+}
+
 /// The draw loop, monomorphised on the shader, the edge arithmetic, the interpolator and the depth stage.
 fn run<S, C, D, E, I, Z, M>(
     target: &mut Target<C, D, M>,
@@ -214,13 +228,18 @@ where
     // The caller's memory for screen positions, taken out of the target for the draw (the pixel loop borrows the
     // target) and put back at the end. Used when it holds every vertex of the mesh: the position stage then runs
     // once per vertex, in order, and the triangle loop reads from it; otherwise through the cache.
+    // Screen vertices computed beforehand for the frame, when they are this draw's, need no pass.
     let mut memory = core::mem::take(&mut target.vertices);
-    let screen = memory.screen_vertices().and_then(|m| m.get_mut(..mesh.vertex_count()));
+    let frame = (target.width(), target.height());
+    let screen: Option<&[ScreenVertex]> = if shared_vertices(&memory, shader, mesh, frame, state).is_some() {
+        shared_vertices(&memory, shader, mesh, frame, state)
+    } else {
+        memory.screen_vertices().and_then(|m| m.get_mut(..mesh.vertex_count())).map(|screen| {
+            screen_vertices(|i| shader.position(mesh, i), 0, &volume, &raster, screen);
+            &*screen
+        })
+    };
     let mut cache = if screen.is_some() { VertexCache::for_varyings() } else { VertexCache::new() };
-    let screen: Option<&[ScreenVertex]> = screen.map(|screen| {
-        screen_vertices(shader, mesh, &volume, &raster, screen);
-        &*screen
-    });
     let mut stats = DrawStats::default();
     // Fragments of a batched shader, across triangles; made with the first rasterized triangle's values.
     let mut batch: Option<FragmentBatch<S::Varyings, S::Face>> = None;

@@ -6,7 +6,7 @@ use super::{Cull, DepthTest, DrawState, DrawStats, Winding};
 use crate::camera::Viewport;
 use crate::math::{Mat4, Vec3, Vec4, float};
 use crate::mesh::Mesh;
-use crate::target::{ColorBuffer, DepthBuffer, Target, clamp_depth};
+use crate::target::{ColorBuffer, DepthBuffer, Target, VertexMemory, clamp_depth};
 
 /// How wireframe lines look.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -36,8 +36,8 @@ impl Default for LineStyle {
 /// `state` supplies the depth test (with [`LineStyle::depth_bias`]) and face culling: the edges of a culled
 /// triangle (judged when all its vertices are in front of the camera) are not drawn. In the returned statistics a
 /// triangle counts as rasterized when any of its edges was, and `fragments` counts pixels written.
-pub fn draw_wireframe<C: ColorBuffer, D: DepthBuffer>(
-    target: &mut Target<C, D>,
+pub fn draw_wireframe<C: ColorBuffer, D: DepthBuffer, M: VertexMemory>(
+    target: &mut Target<C, D, M>,
     mesh: &Mesh<'_>,
     clip_from_object: &Mat4,
     style: &LineStyle,
@@ -118,7 +118,12 @@ struct Pen {
 
 impl Pen {
     /// Draws one clipped segment (both ends have `w > 0`); returns the pixels written.
-    fn line<C: ColorBuffer, D: DepthBuffer>(&self, target: &mut Target<C, D>, p: Vec4, q: Vec4) -> u64 {
+    fn line<C: ColorBuffer, D: DepthBuffer, M: VertexMemory>(
+        &self,
+        target: &mut Target<C, D, M>,
+        p: Vec4,
+        q: Vec4,
+    ) -> u64 {
         if !(p.w > 0.0 && q.w > 0.0) {
             return 0;
         }
@@ -162,9 +167,9 @@ impl Pen {
     /// Plots the pixels of major coordinates `lo..hi` along the line from `a` (major axis in `x`) with the given
     /// minor-per-major slope; `to_xy` maps (major, minor) to (column, row).
     #[allow(clippy::too_many_arguments)]
-    fn plot_span<C: ColorBuffer, D: DepthBuffer>(
+    fn plot_span<C: ColorBuffer, D: DepthBuffer, M: VertexMemory>(
         &self,
-        target: &mut Target<C, D>,
+        target: &mut Target<C, D, M>,
         lo: i32,
         hi: i32,
         a: &Vec3,

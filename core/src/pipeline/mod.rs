@@ -46,6 +46,7 @@ pub use clip::GUARD_BAND;
 pub use draw::{DrawError, draw};
 pub use line::{LineStyle, draw_wireframe};
 pub use screen_vertex::ScreenVertex;
+pub(crate) use screen_vertex::frame_screen_vertices;
 pub use shader::{Fragment, Shader};
 pub use state::{Cull, DepthTest, DrawState, EdgeArithmetic, FixedFunction, Interpolation, MAX_SUBPIXEL_BITS, Winding};
 pub use stats::DrawStats;

@@ -39,6 +39,11 @@ pub(crate) struct Snapped {
 impl Snapped {
     /// A placeholder for a vertex without a screen position.
     pub const ZERO: Self = Self { x: 0, y: 0, fx: 0.0, fy: 0.0, z: 0.0, inv_w: 0.0 };
+
+    /// The unsnapped row (y down) in pixels.
+    pub fn row(&self) -> f32 {
+        self.fy
+    }
 }
 
 /// Per-vertex values given in input order, in the oriented order of a triangle whose first two vertices were
@@ -102,12 +107,23 @@ impl Rasterizer {
         cull: Cull,
         front_face: Winding,
     ) -> Self {
-        let rows = target.rows();
+        Self::for_frame(target.width(), target.height(), target.rows(), subpixel_bits, cull, front_face)
+    }
+
+    /// The rasterizer of a `width x height` frame drawn in rows `rows`.
+    pub fn for_frame(
+        width: u32,
+        height: u32,
+        rows: core::ops::Range<u32>,
+        subpixel_bits: u8,
+        cull: Cull,
+        front_face: Winding,
+    ) -> Self {
         Self {
-            viewport: Viewport::full(target.width(), target.height()),
+            viewport: Viewport::full(width, height),
             scale: (1u32 << subpixel_bits) as f32,
             shift: u32::from(subpixel_bits) + 1,
-            width: target.width() as i32,
+            width: width as i32,
             row0: rows.start as i32,
             row1: rows.end as i32,
             cull,

@@ -1,11 +1,10 @@
 //! A vertex after the position stage: its outcode and snapped screen position, all that a triangle needs that is
 //! not clipped.
 
-use super::Shader;
 use super::clip::{CLIP_MASK, ClipVolume};
 use super::raster::{Rasterizer, Snapped};
+use super::{Cull, Winding};
 use crate::math::Vec4;
-use crate::mesh::Mesh;
 
 /// Outcode bit of a position that is not finite (NaN or infinite): its triangles are skipped.
 pub(crate) const NOT_FINITE: u16 = 1 << 15;
@@ -29,6 +28,12 @@ impl ScreenVertex {
     /// A value to fill a caller's buffer with before its first draw (any value will do: a draw overwrites what it
     /// reads), and the value of a vertex whose position is not finite.
     pub const UNSET: Self = Self { code: NOT_FINITE, screen: Snapped::ZERO };
+
+    /// The vertex's screen row in pixels (y down, before snapping, within twice the guard band), when it has a
+    /// screen position: finite, in front of the eye, inside the near and far planes and the guard band.
+    pub fn screen_row(&self) -> Option<f32> {
+        (self.code & (CLIP_MASK | NOT_FINITE | NO_SCREEN) == 0).then(|| self.screen.row())
+    }
 
     /// The vertex of clip-space position `pos` in `volume`, snapped by `raster`.
     #[inline(always)]
@@ -58,23 +63,24 @@ impl ScreenVertex {
 /// Vertices the position pass works on at once.
 const LANES: usize = 8;
 
-/// The position pass: [`ScreenVertex::new`] of every vertex of `mesh`, in order, into `out` (one per vertex).
+/// The position pass: [`ScreenVertex::new`] of the vertices `first..first + out.len()`, whose clip-space
+/// positions `position` gives by index, into `out` (one per vertex).
 ///
-/// [`LANES`] vertices at a time: their clip-space positions one by one ([`Shader::position`] is the caller's
+/// [`LANES`] vertices at a time: their clip-space positions one by one (a shader's position stage is the caller's
 /// code), then outcodes and screen positions as loops over the lanes, with no branch, which the compiler widens
 /// to SIMD; each lane computes what [`ScreenVertex::new`] computes, with the same operations.
 #[inline(always)]
-pub(crate) fn screen_vertices<S: Shader>(
-    shader: &S,
-    mesh: &Mesh<'_>,
+pub(crate) fn screen_vertices(
+    position: impl Fn(usize) -> Vec4,
+    first: usize,
     volume: &ClipVolume,
     raster: &Rasterizer,
     out: &mut [ScreenVertex],
 ) {
-    for (chunk, first) in out.chunks_mut(LANES).zip((0..).step_by(LANES)) {
+    for (chunk, start) in out.chunks_mut(LANES).zip((first..).step_by(LANES)) {
         let mut pos = [Vec4::ZERO; LANES];
         for (j, p) in pos.iter_mut().enumerate().take(chunk.len()) {
-            *p = shader.position(mesh, first + j);
+            *p = position(start + j);
         }
         let mut code = [0u16; LANES];
         let mut snapped = [Snapped::ZERO; LANES];
@@ -86,4 +92,19 @@ pub(crate) fn screen_vertices<S: Shader>(
             *v = ScreenVertex::classify(pos[j], || code[j], || snapped[j]);
         }
     }
+}
+
+/// [`screen_vertices`] for a whole `width x height` frame drawn with `subpixel_bits`: outcodes against the
+/// frame's planes and rows, snapped positions on its grid ([`crate::target::SharedScreenVertices`]).
+pub(crate) fn frame_screen_vertices(
+    position: impl Fn(usize) -> Vec4,
+    (width, height): (u32, u32),
+    subpixel_bits: u8,
+    first: usize,
+    out: &mut [ScreenVertex],
+) {
+    let volume = ClipVolume::new(width, height, 0, height);
+    // Culling and winding do not enter the position stage.
+    let raster = Rasterizer::for_frame(width, height, 0..height, subpixel_bits, Cull::None, Winding::default());
+    screen_vertices(position, first, &volume, &raster, out);
 }

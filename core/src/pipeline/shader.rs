@@ -2,7 +2,7 @@
 
 use super::Varyings;
 use super::batch::{BATCH_SIZE, FragmentBatch};
-use crate::math::{Vec3, Vec4};
+use crate::math::{Mat4, Vec3, Vec4};
 use crate::mesh::{Attributes, Mesh};
 
 /// A pixel being shaded.
@@ -38,6 +38,14 @@ pub trait Shader {
     /// Like [`Shader::varyings`] it must depend on `mesh` and `index` alone: the pipeline reuses one result for
     /// all the triangles that share the vertex.
     fn position(&self, mesh: &Mesh<'_>, index: usize) -> Vec4;
+
+    /// The matrix `m` when [`Shader::position`] is `m.project_point(mesh.position(index))` and nothing else: a
+    /// draw may then read its vertices from screen vertices computed beforehand for `m`
+    /// ([`crate::target::SharedScreenVertices`]). `None`, the default, for any other position stage.
+    #[inline(always)]
+    fn clip_from_object(&self) -> Option<&Mat4> {
+        None
+    }
 
     /// Vertex stage, varyings: what vertex `index` passes to the fragment stage.
     ///

@@ -11,7 +11,7 @@ use super::scratch::Scratch;
 use super::varyings::{Slot, SurfaceVaryings};
 use super::{Layout, Lighting, Material, NormalSource, SpecularSource, Variant, lighting};
 use super::{ShadingError, coarse, views};
-use crate::math::{Vec2, Vec3, Vec4};
+use crate::math::{Mat4, Vec2, Vec3, Vec4};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{BATCH_SIZE, Fragment, FragmentBatch, Shader};
 use crate::shading::{LightTerms, ShadingModel, TangentFrame, Transforms, world_normal};
@@ -184,6 +184,11 @@ where
     #[inline(always)]
     fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
         self.transforms.clip_from_object.project_point(mesh.position(i))
+    }
+
+    #[inline(always)]
+    fn clip_from_object(&self) -> Option<&Mat4> {
+        Some(&self.transforms.clip_from_object)
     }
 
     /// The slots the variant reads, for vertex `i`; a slot carried but not read holds zero (so that it never

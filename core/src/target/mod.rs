@@ -29,7 +29,7 @@ use core::ops::Range;
 pub use color_buffer::{ColorBuffer, NoColor, Rgb565, Rgb888};
 pub use depth_buffer::{DEPTH_LANES, DepthBuffer, NoDepth, clamp_depth, depth_to_u16};
 pub use supersample::downsample_rgb888;
-pub use vertex_memory::{NoVertexMemory, VertexMemory};
+pub use vertex_memory::{NoVertexMemory, SharedScreenVertices, VertexMemory};
 
 use crate::math::Vec3;
 
@@ -158,6 +158,17 @@ impl<C: ColorBuffer, D: DepthBuffer> Target<C, D> {
     ) -> Target<C, D, &mut [crate::pipeline::ScreenVertex]> {
         let Self { color, depth, vertices: NoVertexMemory, width, height, rows } = self;
         Target { color, depth, vertices: memory, width, height, rows }
+    }
+
+    /// The same target with the frame's screen vertices computed beforehand ([`SharedScreenVertices`]): a draw of
+    /// the mesh, matrix, frame size and sub-pixel bits they were computed for reads its vertices from them (the
+    /// same pixels, no position stage); any other draw uses the vertex cache.
+    pub fn with_shared_vertices<'v>(
+        self,
+        shared: SharedScreenVertices<'v>,
+    ) -> Target<C, D, Option<SharedScreenVertices<'v>>> {
+        let Self { color, depth, vertices: NoVertexMemory, width, height, rows } = self;
+        Target { color, depth, vertices: Some(shared), width, height, rows }
     }
 }
 

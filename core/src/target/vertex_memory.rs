@@ -7,14 +7,25 @@
 //! into the buffer, and the triangle loop reads its three vertices from it: on a dense mesh most triangles are
 //! culled or cover no pixel, and their cost is then little more than those reads. The pixels are the same either
 //! way (`core/tests/vertex_memory.rs`).
+//!
+//! A frame drawn in bands (on several threads) would run that pass over the whole mesh in every band. Instead its
+//! screen vertices can be computed once for the frame, in parts on any threads ([`SharedScreenVertices::compute`]),
+//! and lent read-only to every band's target ([`SharedScreenVertices`]).
 
-use crate::pipeline::ScreenVertex;
+use crate::math::{Mat4, Vec3};
+use crate::pipeline::{DrawError, MAX_SUBPIXEL_BITS, ScreenVertex};
 
 /// Where a target keeps vertex positions for its draws, if anywhere: [`NoVertexMemory`] (the default) or a
 /// caller's `&mut [ScreenVertex]`.
 pub trait VertexMemory: Default {
     /// The buffer, if there is one.
     fn screen_vertices(&mut self) -> Option<&mut [ScreenVertex]>;
+
+    /// Screen vertices computed beforehand for the whole frame, if the target has them.
+    #[inline(always)]
+    fn shared(&self) -> Option<SharedScreenVertices<'_>> {
+        None
+    }
 }
 
 /// No memory for vertices: draws use the vertex cache.
@@ -34,5 +45,112 @@ impl VertexMemory for &mut [ScreenVertex] {
     #[inline(always)]
     fn screen_vertices(&mut self) -> Option<&mut [ScreenVertex]> {
         Some(self)
+    }
+}
+
+/// Screen vertices of one mesh under one matrix for one frame, computed beforehand and lent read-only to the targets
+/// of the frame's bands (`Target::with_shared_vertices`), on any threads: each band's draw reads its triangles'
+/// vertices from them instead of running the position stage itself.
+///
+/// They record what they were computed for: the mesh's positions (the slice itself, not a copy), the matrix, the
+/// frame's size and the sub-pixel bits. A draw uses them only when all four are its own and its shader's position
+/// stage is that matrix applied to the positions ([`crate::pipeline::Shader::clip_from_object`]); any other draw
+/// uses the vertex cache, with the same pixels. The outcodes are the whole frame's, so in a band a triangle outside
+/// the band's rows reaches set-up instead of being rejected by its outcodes: the same pixels, counted as rasterized
+/// rather than outside.
+#[derive(Clone, Copy, Debug)]
+pub struct SharedScreenVertices<'a> {
+    vertices: &'a [ScreenVertex],
+    key: FrameKey,
+}
+
+/// What a set of shared screen vertices was computed for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct FrameKey {
+    /// The address and length of the positions: the same slice, not merely equal values.
+    positions: (usize, usize),
+    /// The matrix's bits, column by column.
+    matrix: [u32; 16],
+    frame: (u32, u32),
+    subpixel_bits: u8,
+}
+
+impl FrameKey {
+    fn new(positions: &[Vec3], clip_from_object: &Mat4, frame: (u32, u32), subpixel_bits: u8) -> Self {
+        let mut matrix = [0; 16];
+        for (bits, value) in matrix.iter_mut().zip(clip_from_object.cols.iter().flat_map(|c| [c.x, c.y, c.z, c.w])) {
+            *bits = value.to_bits();
+        }
+        Self { positions: (positions.as_ptr() as usize, positions.len()), matrix, frame, subpixel_bits }
+    }
+}
+
+impl<'a> SharedScreenVertices<'a> {
+    /// The position stage of the vertices `first..first + out.len()` of `positions` under `clip_from_object`, for a
+    /// `width x height` frame drawn with `subpixel_bits`, into `out`: one part of the vertices of a
+    /// [`SharedScreenVertices`]. Entries past the end of `positions` are left alone.
+    ///
+    /// # Errors
+    /// [`DrawError::SubpixelBits`] above [`MAX_SUBPIXEL_BITS`] (a draw refuses them too).
+    pub fn compute(
+        positions: &[Vec3],
+        clip_from_object: &Mat4,
+        (width, height): (u32, u32),
+        subpixel_bits: u8,
+        first: usize,
+        out: &mut [ScreenVertex],
+    ) -> Result<(), DrawError> {
+        if subpixel_bits > MAX_SUBPIXEL_BITS {
+            return Err(DrawError::SubpixelBits(subpixel_bits));
+        }
+        let count = positions.len().saturating_sub(first).min(out.len());
+        crate::pipeline::frame_screen_vertices(
+            |i| clip_from_object.project_point(positions[i]),
+            (width, height),
+            subpixel_bits,
+            first,
+            &mut out[..count],
+        );
+        Ok(())
+    }
+
+    /// `vertices`, computed by [`Self::compute`] for every one of `positions` (in one part or several) with the
+    /// same matrix, frame size and sub-pixel bits. Wrong values here (vertices computed otherwise) give wrong
+    /// pixels, never anything worse.
+    pub fn new(
+        vertices: &'a [ScreenVertex],
+        positions: &[Vec3],
+        clip_from_object: &Mat4,
+        frame: (u32, u32),
+        subpixel_bits: u8,
+    ) -> Self {
+        Self { vertices, key: FrameKey::new(positions, clip_from_object, frame, subpixel_bits) }
+    }
+
+    /// The vertices, when they were computed for a draw of `positions` under `clip_from_object` into a frame of
+    /// `frame` pixels with `subpixel_bits`, and there is one for each position.
+    #[inline]
+    pub(crate) fn for_draw(
+        &self,
+        positions: &[Vec3],
+        clip_from_object: &Mat4,
+        frame: (u32, u32),
+        subpixel_bits: u8,
+    ) -> Option<&'a [ScreenVertex]> {
+        let fits = self.key == FrameKey::new(positions, clip_from_object, frame, subpixel_bits);
+        self.vertices.get(..positions.len()).filter(|_| fits)
+    }
+}
+
+/// Shared screen vertices, lent by `Target::with_shared_vertices`.
+impl VertexMemory for Option<SharedScreenVertices<'_>> {
+    #[inline(always)]
+    fn screen_vertices(&mut self) -> Option<&mut [ScreenVertex]> {
+        None
+    }
+
+    #[inline(always)]
+    fn shared(&self) -> Option<SharedScreenVertices<'_>> {
+        *self
     }
 }

@@ -1,16 +1,18 @@
-//! Triangles sorted into the frame's bands of rows, so that each band's draw meets only the triangles that can
-//! reach its rows instead of running the vertex stage of the whole mesh again.
+//! A draw's geometry for one frame: the screen vertices of its mesh, computed once on the renderer's threads and
+//! shared by every band's draw, and its triangles sorted into the frame's bands of rows, so that each band's draw
+//! meets only the triangles that can reach its rows and runs no vertex position stage of its own.
 //!
 //! The sorting is conservative and leaves every decision to the core: a triangle goes to each band its screen
-//! rows (from its vertices' clip-space positions, widened by [`MARGIN_ROWS`]) overlap, and one whose rows are
-//! uncertain (a vertex behind the eye, on the eye plane, or not finite, or an index out of range) goes to every
-//! band. Each band keeps the mesh's order, so its pixels are those of drawing the whole mesh into it.
+//! rows (from its vertices' screen rows, widened by [`MARGIN_ROWS`]) overlap, and one whose rows are uncertain (a
+//! vertex behind the eye, beyond the near or far plane or the guard band, or not finite, or an index out of range)
+//! goes to every band. Each band keeps the mesh's order, so its pixels are those of drawing the whole mesh into it.
 
 use std::ops::Range;
 
-use rastty_core::camera::Viewport;
 use rastty_core::math::Mat4;
 use rastty_core::mesh::Mesh;
+use rastty_core::pipeline::{DrawError, DrawState, ScreenVertex};
+use rastty_core::target::SharedScreenVertices;
 
 use super::workers::Workers;
 
@@ -21,16 +23,19 @@ pub const MARGIN_ROWS: f32 = 2.0;
 /// saves.
 pub const TRIANGLES_PER_PIECE: usize = 16_384;
 
-/// The triangles of one draw sorted into bands, kept from frame to frame: sorting again reuses the lists' memory,
-/// so a frame allocates nothing in proportion to the mesh once the lists have grown to it.
+/// The sub-pixel bits the forward pass draws with, and so computes its screen vertices for.
+pub const SUBPIXEL_BITS: u8 = DrawState::DEFAULT.subpixel_bits;
+
+/// The screen vertices and the triangles of one draw sorted into bands, kept from frame to frame: sorting again
+/// reuses their memory, so a frame allocates nothing in proportion to the mesh once they have grown to it.
 ///
-/// The mesh is sorted in pieces (consecutive runs of triangles, one per thread for a large mesh), each piece on a
-/// thread of its own; a band's triangles are its lists of every piece in turn ([`Self::band`]), which keeps the
-/// mesh's order.
+/// The vertices are computed, and the triangles sorted, in pieces (consecutive runs, one per thread for a large
+/// mesh), each piece on a thread of its own; a band's triangles are its lists of every piece in turn
+/// ([`Self::band`]), which keeps the mesh's order.
 #[derive(Debug, Default)]
 pub struct TriangleBins {
-    /// The screen row of each vertex, as the rasterizer maps it, NaN where it is uncertain.
-    rows: Vec<f32>,
+    /// The screen vertex of each vertex of the mesh last sorted.
+    vertices: Vec<ScreenVertex>,
     /// For each piece of the mesh, for each band, the vertex indices of the piece's triangles that can reach the
     /// band, three per triangle. Only the first `pieces` are in use; the others keep their memory.
     pieces: Vec<Vec<Vec<u32>>>,
@@ -39,39 +44,40 @@ pub struct TriangleBins {
 }
 
 impl TriangleBins {
-    /// Sorts the triangles of `mesh`, drawn with `clip_from_object` into a `width x height` frame, into `bands`
-    /// (row ranges, top first, in order), on `workers`' threads.
+    /// Computes the screen vertices of `mesh` drawn with `clip_from_object` into a `width x height` frame with
+    /// [`SUBPIXEL_BITS`], and sorts its triangles into `bands` (row ranges, top first, in order), on `workers`'
+    /// threads.
+    ///
+    /// # Errors
+    /// Never for [`SUBPIXEL_BITS`]: the core's refusal of sub-pixel bits it does not support.
     pub fn sort(
         &mut self,
         mesh: &Mesh<'_>,
         clip_from_object: &Mat4,
-        (width, height): (u32, u32),
+        frame: (u32, u32),
         bands: &[Range<u32>],
         workers: &Workers,
-    ) {
-        let viewport = Viewport::full(width, height);
+    ) -> Result<(), DrawError> {
         let positions = mesh.positions();
         let triangles = mesh.triangle_count();
         let pieces = workers.threads().min(triangles / TRIANGLES_PER_PIECE).max(1);
 
-        self.rows.clear();
-        self.rows.resize(positions.len(), f32::NAN);
+        self.vertices.clear();
+        self.vertices.resize(positions.len(), ScreenVertex::UNSET);
         let per_piece = positions.len().div_ceil(pieces).max(1);
-        let jobs: Vec<_> = self.rows.chunks_mut(per_piece).zip(positions.chunks(per_piece)).collect();
-        workers.run(jobs, |(rows, positions)| {
-            for (row, &p) in rows.iter_mut().zip(positions) {
-                let clip = clip_from_object.project_point(p);
-                if clip.w > 0.0 {
-                    *row = viewport.clip_to_screen(clip).y;
-                }
-            }
+        let jobs: Vec<_> = self.vertices.chunks_mut(per_piece).enumerate().collect();
+        let computed = workers.run(jobs, |(i, out)| {
+            SharedScreenVertices::compute(positions, clip_from_object, frame, SUBPIXEL_BITS, i * per_piece, out)
         });
+        computed.into_iter().collect::<Result<(), _>>()?;
 
         if self.pieces.len() < pieces {
             self.pieces.resize_with(pieces, Vec::new);
         }
         self.used = pieces;
-        let rows = &self.rows;
+        let vertices = &self.vertices;
+        // A vertex's screen row, NaN where it is uncertain (as for an index out of range).
+        let row = |i: usize| vertices.get(i).and_then(ScreenVertex::screen_row).unwrap_or(f32::NAN);
         let jobs: Vec<_> = self.pieces[..pieces]
             .iter_mut()
             .enumerate()
@@ -86,7 +92,7 @@ impl TriangleBins {
                 // Out-of-range indices stay out of range (`u32::MAX`), for the core to count as invalid in every
                 // band.
                 let triangle = mesh.triangle(t).unwrap_or([u32::MAX as usize; 3]);
-                let y = triangle.map(|i| rows.get(i).copied().unwrap_or(f32::NAN));
+                let y = triangle.map(row);
                 let (top, bottom) = (y[0].min(y[1]).min(y[2]), y[0].max(y[1]).max(y[2]));
                 let reach = if y.iter().all(|r| r.is_finite()) {
                     top - MARGIN_ROWS..bottom + MARGIN_ROWS
@@ -100,6 +106,13 @@ impl TriangleBins {
                 }
             }
         });
+        Ok(())
+    }
+
+    /// The screen vertices of the last sort, for the draws of `mesh` with `clip_from_object` into a frame of
+    /// `frame` pixels (a draw of anything else ignores them).
+    pub fn shared(&self, mesh: &Mesh<'_>, clip_from_object: &Mat4, frame: (u32, u32)) -> SharedScreenVertices<'_> {
+        SharedScreenVertices::new(&self.vertices, mesh.positions(), clip_from_object, frame, SUBPIXEL_BITS)
     }
 
     /// The vertex indices of the triangles that can reach band `band`, three per triangle: one list per piece of
@@ -118,6 +131,7 @@ impl TriangleBins {
 mod tests {
     use super::*;
     use rastty_core::pipeline::{Cull, DepthTest};
+    use rastty_core::target::VertexMemory;
     use rastty_core::{
         DrawState, DrawStats, Indices, Lighting, Material, Object, Rgb888, ShadingModel, Target, Transforms, Vec3,
         draw_mesh, look_at, perspective,
@@ -168,11 +182,18 @@ mod tests {
         let clip = transforms.clip_from_object;
         let state = DrawState { cull: Cull::None, depth_test, ..DrawState::DEFAULT };
         // The depth view: grey levels from the depth buffer.
-        let draw = |target: &mut Target<Rgb888<'_>, &mut [f32]>, mesh: Mesh<'_>| -> DrawStats {
+        fn depth_view<M: VertexMemory>(
+            target: &mut Target<Rgb888<'_>, &mut [f32], M>,
+            mesh: Mesh<'_>,
+            transforms: Transforms,
+            state: &DrawState,
+        ) -> DrawStats {
             let shading = ShadingModel::Depth { near: 0.0, far: 1.0 };
             let object = Object { mesh, tangents: None, transforms, shading, material: Material::default() };
-            draw_mesh(target, &object, &Lighting { ambient: Vec3::ZERO, lights: &[] }, &state).unwrap().1
-        };
+            draw_mesh(target, &object, &Lighting { ambient: Vec3::ZERO, lights: &[] }, state).unwrap().1
+        }
+        let draw =
+            |target: &mut Target<Rgb888<'_>, &mut [f32]>, mesh: Mesh<'_>| depth_view(target, mesh, transforms, &state);
         let (mut whole, mut depth) = (vec![0u32; (w * h) as usize], vec![0f32; (w * h) as usize]);
         let mut target = Target::new(Rgb888(&mut whole), &mut depth[..], w, h).unwrap();
         target.clear(Vec3::ZERO);
@@ -182,7 +203,7 @@ mod tests {
         let mut bins = TriangleBins::default();
         for cuts in [(0..=48).collect::<Vec<u32>>(), vec![0, 48], vec![0, 1, 2, 17, 30, 47, 48]] {
             let bands: Vec<Range<u32>> = cuts.windows(2).map(|c| c[0]..c[1]).collect();
-            bins.sort(&mesh, &clip, (w, h), &bands, workers);
+            bins.sort(&mesh, &clip, (w, h), &bands, workers).unwrap();
             let pieces = bins.band(0).count();
             let expected = workers.threads().min(mesh.triangle_count() / TRIANGLES_PER_PIECE).max(1);
             assert_eq!(pieces, expected);
@@ -191,10 +212,12 @@ mod tests {
             for (i, rows) in bands.iter().enumerate() {
                 let span = (rows.start * w) as usize..(rows.end * w) as usize;
                 let (color, depth) = (&mut banded[span.clone()], &mut depth[span]);
-                let mut target = Target::band(Rgb888(color), depth, w, h, rows.clone()).unwrap();
+                let shared = bins.shared(&mesh, &clip, (w, h));
+                let target = Target::band(Rgb888(color), depth, w, h, rows.clone()).unwrap();
+                let mut target = target.with_shared_vertices(shared);
                 target.clear(Vec3::ZERO);
                 for list in bins.band(i) {
-                    draw(&mut target, mesh.with_indices(Indices::U32(list)).unwrap());
+                    depth_view(&mut target, mesh.with_indices(Indices::U32(list)).unwrap(), transforms, &state);
                 }
                 sorted += bins.band_triangles(i);
             }

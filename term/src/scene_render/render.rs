@@ -8,7 +8,7 @@ use std::time::{Duration, Instant};
 use rastty_core::math::Vec3;
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::{DrawState, DrawStats, LineStyle, draw_wireframe};
-use rastty_core::shading::{Light, Lighting, Object, Variant, draw_mesh};
+use rastty_core::shading::{Light, Lighting, Object, ShadingError, Variant, draw_mesh};
 use rastty_core::shadow::{
     ShadowBias, ShadowError, ShadowMap, ShadowView, WindowRanges, clear_shadow_depth, draw_shadow_caster_band,
     window_ranges_band,
@@ -43,7 +43,8 @@ pub struct FrameReport {
     /// The shadow passes, in the plan's order.
     pub shadow_passes: Vec<ShadowPassReport>,
     /// The forward pass's counts, wireframe lines' fragments included, summed over the bands: a triangle counts
-    /// once in each band whose rows it may reach (with a margin), as "outside" in those it then misses.
+    /// once in each band whose rows it may reach (with a margin), as rasterized with no fragment in those it then
+    /// misses (the bands share the frame's screen vertices, whose outcodes are the whole frame's).
     pub forward: DrawStats,
     /// How many bands of rows the frame was split into (see [`SceneRenderer`]).
     pub bands: usize,
@@ -110,12 +111,13 @@ pub const BAND_PIXELS: usize = 65_536;
 /// [`BANDS_PER_THREAD`] per thread, which the threads take in turn (the forward pass's with the most triangles
 /// first, so that the threads finish together). Each band runs the whole draw list into its own
 /// rows, each draw with the triangles sorted into the band (conservatively, by their screen rows; the core clips
-/// every triangle to the band), so maps and pixels are the same for any number of threads: only the vertex work
-/// of triangles that reach several bands is repeated.
+/// every triangle to the band), so maps and pixels are the same for any number of threads. The screen vertices of
+/// each draw are computed once a frame, on the threads, and shared by the bands: only the varyings of vertices
+/// of triangles that reach several bands are computed again.
 ///
-/// The threads are started with the renderer and kept ([`Workers`]), and so are the lists the triangles are sorted
-/// into ([`TriangleBins`]): a frame starts no thread and, once the lists have grown to the meshes, allocates
-/// nothing in proportion to them.
+/// The threads are started with the renderer and kept (`workers.rs`), and so are the screen vertices and the lists
+/// the triangles are sorted into (`bins.rs`): a frame starts no thread and, once those have grown to the meshes,
+/// allocates nothing in proportion to them.
 #[derive(Debug)]
 pub struct SceneRenderer {
     slots: Vec<ShadowSlot>,
@@ -220,7 +222,9 @@ impl SceneRenderer {
         let bins = &mut self.bins[..plan.draws.len()];
         for (draw, bins) in plan.draws.iter().zip(bins.iter_mut()) {
             let (_, mesh) = planned_mesh(scene, draw)?;
-            bins.sort(&mesh, &draw.transforms.clip_from_object, (width, height), &rows, &self.workers);
+            bins.sort(&mesh, &draw.transforms.clip_from_object, (width, height), &rows, &self.workers).map_err(
+                |error| SceneRenderError::Draw { draw: draw.label.clone(), error: ShadingError::Draw(error) },
+            )?;
         }
         let bins = &*bins;
         // Threads take the bands with the most triangles first, so that the last ones taken are short and the
@@ -401,14 +405,18 @@ fn forward_band(
     width: u32,
     height: u32,
 ) -> Result<BandResult, SceneRenderError> {
-    let mut target = Target::band(Rgb888(band.pixels), band.depth, width, height, band.rows)?;
-    target.clear(plan.background);
+    Target::band(Rgb888(&mut *band.pixels), &mut *band.depth, width, height, band.rows.clone())?.clear(plan.background);
     let mut result = BandResult { stats: DrawStats::default(), variants: Vec::with_capacity(plan.draws.len()) };
     for (draw, bins) in plan.draws.iter().zip(bins) {
         let (object, mesh) = planned_mesh(scene, draw)?;
         let material = part_material(object, scene.part_maps(draw.object, draw.part), draw.part, &plan.options)
             .map_err(|error| SceneRenderError::Texture { draw: draw.label.clone(), error })?;
         let tangents = tangents_for(scene, draw.object, &material);
+        // The frame's screen vertices of the mesh, computed once for every band.
+        let clip = &draw.transforms.clip_from_object;
+        let shared = bins.shared(&mesh, clip, (width, height));
+        let target = Target::band(Rgb888(&mut *band.pixels), &mut *band.depth, width, height, band.rows.clone())?;
+        let mut target = target.with_shared_vertices(shared);
         let mut variant = draw.variant;
         // The band's triangles come in pieces of the mesh (at least one), in its order: drawn one after the other,
         // the pieces give the pixels of one draw of them all.
@@ -427,7 +435,6 @@ fn forward_band(
             result.stats += stats;
             if plan.wireframe {
                 // The lines' pixels count as fragments; their triangles are the ones counted above.
-                let clip = &draw.transforms.clip_from_object;
                 let lines = draw_wireframe(&mut target, &triangles, clip, &WIREFRAME, &drawn.state);
                 result.stats.fragments += lines.fragments;
             }
