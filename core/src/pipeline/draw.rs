@@ -226,9 +226,10 @@ where
     let raster = Rasterizer::new(target, state.subpixel_bits, state.cull, state.front_face);
     let stages = Stages { shader, interpolator, depth };
     // The caller's memory for screen positions, taken out of the target for the draw (the pixel loop borrows the
-    // target) and put back at the end. Used when it holds every vertex of the mesh: the position stage then runs
-    // once per vertex, in order, and the triangle loop reads from it; otherwise through the cache.
-    // Screen vertices computed beforehand for the frame, when they are this draw's, need no pass.
+    // target) and put back at the end. Screen vertices computed beforehand for the frame are read as they are,
+    // when they are this draw's; a buffer holding every vertex of the mesh gets the position stage once per
+    // vertex, in order, first; otherwise the triangles go through the cache. (`shared_vertices` is asked twice:
+    // a `match` on it would keep `memory` borrowed into the arm that borrows it mutably.)
     let mut memory = core::mem::take(&mut target.vertices);
     let frame = (target.width(), target.height());
     let screen: Option<&[ScreenVertex]> = if shared_vertices(&memory, shader, mesh, frame, state).is_some() {
