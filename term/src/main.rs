@@ -42,7 +42,8 @@ struct ViewerArgs {
     model: Option<PathBuf>,
     #[command(flatten)]
     scene: SceneArgs,
-    /// How cells show pixels: `half` (two pixels per cell with ▀) or `ascii` (a character ramp).
+    /// How cells show pixels: `half` (2 pixels a cell, ▀), `quadrant` (2x2), `sextant` (2x3, needs a font with
+    /// Unicode 13's sextants), `braille` (2x4) or `ascii` (a character ramp, one pixel a cell).
     #[arg(long, default_value = "half", value_parser = CellMode::from_str)]
     mode: CellMode,
     /// Colours: auto (from COLORTERM, TERM and NO_COLOR), truecolor, 256, 16 or none.

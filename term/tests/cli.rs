@@ -327,7 +327,7 @@ fn bad_options_are_usage_errors_naming_the_value() {
         assert_holds_only(dir.path(), &[]);
     }
     // The viewer's own options, refused before it looks at the terminal.
-    for (option, value) in [("--mode", "braille"), ("--color", "rainbow"), ("--cell-aspect", "-2")] {
+    for (option, value) in [("--mode", "hexagon"), ("--color", "rainbow"), ("--cell-aspect", "-2")] {
         let first = rastty(dir.path(), [option, value]).expect_usage_error(value);
         assert!(first.contains(&format!("'{value}' for '{option}")), "{first}");
     }

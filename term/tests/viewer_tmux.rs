@@ -165,3 +165,58 @@ fn a_scene_file_shows_and_its_effects_switch_off() {
     assert_eq!(status, 0, "exit status after q");
     tmux.assert_restored(tty_same);
 }
+
+#[test]
+fn symbol_modes_draw_their_characters_in_a_real_terminal() {
+    if !tmux_wanted() {
+        return;
+    }
+    // Each mode's picture holds characters of its own set, and nothing tmux had to replace.
+    let modes = [
+        ("quadrant", '\u{2596}'..='\u{259F}'),
+        ("sextant", '\u{1FB00}'..='\u{1FB3B}'),
+        ("braille", '\u{2801}'..='\u{28FF}'),
+    ];
+    for (mode, set) in modes {
+        let args = [Path::new("--mode"), Path::new(mode)];
+        let tmux = Tmux::start_with(&format!("mode-{mode}"), 80, 24, &args);
+        let screen = tmux.wait_for(&format!("a {mode} picture"), || {
+            let screen = tmux.screen();
+            (screen.chars().filter(|c| set.contains(c)).count() > 20).then_some(screen)
+        });
+        assert!(!screen.contains('\u{FFFD}') && !screen.contains('?'), "{mode}:\n{screen}");
+        // Every line of the pane is 80 columns of one-column characters: the cursor never lost its place.
+        assert!(screen.lines().all(|line| line.chars().count() <= 80), "{mode}:\n{screen}");
+        tmux.send_keys("i");
+        tmux.wait_for("the HUD", || tmux.screen().contains(&format!("80x24 {mode} ")).then_some(()));
+        tmux.send_keys("q");
+        let (status, tty_same) = tmux.wait_for_exit();
+        assert_eq!(status, 0, "exit status of --mode {mode} after q");
+        tmux.assert_restored(tty_same);
+    }
+}
+
+#[test]
+fn ascii_without_colour_leaves_the_background_blank() {
+    if !tmux_wanted() {
+        return;
+    }
+    let args = [Path::new("--mode"), Path::new("ascii"), Path::new("--color"), Path::new("none")];
+    let tmux = Tmux::start_with("ascii-none", 80, 24, &args);
+    let screen = tmux.wait_for("an ASCII picture", || {
+        let screen = tmux.screen();
+        (screen.contains('@') && screen.contains('.')).then_some(screen)
+    });
+    assert!(!tmux.screen_escaped().contains("\x1b[38"), "colour escapes with --color none");
+    // The corners are background: blank, not a wall of ':'.
+    let lines: Vec<&str> = screen.lines().collect();
+    for line in [lines.first(), lines.last()].into_iter().flatten() {
+        assert!(line.is_empty() || line.starts_with(' '), "background drawn:\n{screen}");
+    }
+    let colons = screen.chars().filter(|&c| c == ':').count();
+    assert!(colons < 80 * 24 / 4, "{colons} colons:\n{screen}");
+    tmux.send_keys("q");
+    let (status, tty_same) = tmux.wait_for_exit();
+    assert_eq!(status, 0, "exit status after q");
+    tmux.assert_restored(tty_same);
+}

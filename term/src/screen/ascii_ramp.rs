@@ -1,17 +1,18 @@
 //! ASCII mode: one pixel per cell, drawn as a character from a lightness ramp, coloured per colour mode.
 //!
-//! The ramp assumes a dark terminal background: dark pixels become sparse characters, light ones dense.
+//! The ramp spans the picture's own lightness ([`PictureLightness`]): its darkest pixel is the sparsest visible
+//! character, its lightest the densest, and the background is blank. The ramp assumes a dark terminal background.
 
 use std::sync::OnceLock;
 
 use super::cell::Cell;
 use super::cell_grid::CellGrid;
-use super::color::Color;
 use super::color_mode::ColorMode;
 use super::oklab::srgb_to_linear;
+use super::picture_lightness::PictureLightness;
 use super::pixel_frame::PixelFrame;
 
-/// The characters of the lightness ramp, darkest first.
+/// The characters of the lightness ramp, darkest first; the first, a space, is kept for the background.
 pub const ASCII_RAMP: &[u8; 10] = b" .:-=+*#%@";
 
 /// Linear-light value of every 8-bit sRGB channel value.
@@ -28,79 +29,78 @@ pub fn relative_luminance(pixel: u32) -> f32 {
     0.2126 * linear[usize::from(r)] + 0.7152 * linear[usize::from(g)] + 0.0722 * linear[usize::from(b)]
 }
 
-/// Where each ramp step after the first begins, as relative luminance: step `k` covers perceived lightness
-/// `cbrt(y)` from `k / 10` on, so the steps are even in lightness (Oklab's L for greys).
-const RAMP_THRESHOLDS: [f32; 9] = [0.001, 0.008, 0.027, 0.064, 0.125, 0.216, 0.343, 0.512, 0.729];
-
-/// The ramp character for a relative luminance `y` in `0.0..=1.0`, in steps even in perceived lightness.
+/// The ramp character of a picture pixel at `level` (`0.0..=1.0` of the picture's lightness range): one of the
+/// nine visible steps, each an equal ninth of the range.
 #[inline]
-pub fn ramp_char(y: f32) -> char {
-    let step = RAMP_THRESHOLDS.iter().filter(|&&t| y >= t).count();
+pub fn ramp_char(level: f32) -> char {
+    let visible = ASCII_RAMP.len() - 1;
+    let step = 1 + ((level * visible as f32) as usize).min(visible - 1);
     char::from(ASCII_RAMP[step])
 }
 
-/// The ASCII-mode cell for one pixel: the ramp character, in the pixel's colour quantised per `colors`.
-///
-/// A space gets the default foreground (its colour would not show); the background is always the default.
+/// The ASCII-mode cell for one pixel: blank for the background; otherwise the ramp character of its level in
+/// `lightness`, in the pixel's colour quantised per `colors`, on the default background.
 #[inline]
-pub fn ascii_cell(pixel: u32, colors: ColorMode) -> Cell {
-    let ch = ramp_char(relative_luminance(pixel));
-    let fg = if ch == ' ' { Color::Default } else { colors.quantize(pixel) };
-    Cell::new(ch, fg, Color::Default)
+pub fn ascii_cell(pixel: u32, lightness: &PictureLightness, colors: ColorMode) -> Cell {
+    if lightness.is_background(pixel) {
+        return Cell::BLANK;
+    }
+    Cell::new(ramp_char(lightness.level(pixel)), colors.quantize(pixel), super::color::Color::Default)
 }
 
-/// Fills `grid` (resized to the frame's size: one cell per pixel) with [`ascii_cell`]s.
-pub fn fill_ascii_cells(grid: &mut CellGrid, frame: PixelFrame<'_>, colors: ColorMode) {
+/// Fills `grid` (resized to the frame's size: one cell per pixel) with [`ascii_cell`]s; pixels equal to
+/// `background` (`0x00RRGGBB`) are blank.
+pub fn fill_ascii_cells(grid: &mut CellGrid, frame: PixelFrame<'_>, colors: ColorMode, background: u32) {
     grid.reset(frame.width(), frame.height(), Cell::BLANK);
+    let lightness = PictureLightness::of_frame(frame, background);
     for (cell, &pixel) in grid.cells.iter_mut().zip(frame.pixels()) {
-        *cell = ascii_cell(pixel, colors);
+        *cell = ascii_cell(pixel, &lightness, colors);
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::screen::Color;
 
     #[test]
-    fn black_is_blank_and_white_is_densest() {
-        assert_eq!(ramp_char(relative_luminance(0x000000)), ' ');
-        assert_eq!(ramp_char(relative_luminance(0xFFFFFF)), '@');
+    fn the_picture_spans_the_visible_ramp() {
+        assert_eq!(ramp_char(0.0), '.');
+        assert_eq!(ramp_char(1.0), '@');
+        let steps: std::collections::BTreeSet<char> = (0..=90).map(|k| ramp_char(k as f32 / 90.0)).collect();
+        assert_eq!(steps.len(), ASCII_RAMP.len() - 1);
+        assert!(!steps.contains(&' '));
     }
 
     #[test]
-    fn ramp_is_monotonic_in_grey_level() {
+    fn ramp_is_monotonic_in_level() {
+        let position = |ch: char| ASCII_RAMP.iter().position(|&c| char::from(c) == ch).unwrap();
         let mut last = 0;
-        for v in 0..=255u32 {
-            let ch = ramp_char(relative_luminance(v * 0x010101)) as u8;
-            let step = ASCII_RAMP.iter().position(|&c| c == ch).unwrap();
+        for k in 0..=1000 {
+            let step = position(ramp_char(k as f32 / 1000.0));
             assert!(step >= last);
             last = step;
         }
-        assert_eq!(last, ASCII_RAMP.len() - 1);
     }
 
     #[test]
-    fn thresholds_are_the_cubes_of_even_lightness_steps() {
-        assert_eq!(RAMP_THRESHOLDS.len() + 1, ASCII_RAMP.len());
-        for (k, &t) in RAMP_THRESHOLDS.iter().enumerate() {
-            let lightness = (k + 1) as f32 / ASCII_RAMP.len() as f32;
-            assert!((t - lightness.powi(3)).abs() < 1e-6);
-        }
-    }
-
-    #[test]
-    fn every_ramp_step_is_reachable() {
-        let steps: std::collections::BTreeSet<char> =
-            (0..=255u32).map(|v| ramp_char(relative_luminance(v * 0x010101))).collect();
-        assert_eq!(steps.len(), ASCII_RAMP.len());
+    fn a_dim_picture_on_a_grey_background_uses_the_whole_ramp() {
+        // The old ramp drew this grey background as ':' and the dim model in two characters.
+        let pixels: Vec<u32> = [0x808080].into_iter().chain((0..=20u32).map(|v| v * 0x010101)).collect();
+        let mut grid = CellGrid::default();
+        fill_ascii_cells(&mut grid, PixelFrame::new(&pixels, pixels.len(), 1), ColorMode::None, 0x808080);
+        assert_eq!(grid.cells[0], Cell::BLANK);
+        assert_eq!(grid.cells[1].ch, '.');
+        assert_eq!(grid.cells.last().unwrap().ch, '@');
     }
 
     #[test]
     fn colour_none_sends_no_colour() {
-        let cell = ascii_cell(0xFF8000, ColorMode::None);
-        assert_eq!((cell.fg, cell.bg), (Color::Default, Color::Default));
-        assert_ne!(cell.ch, ' ');
-        let cell = ascii_cell(0xFF8000, ColorMode::TrueColor);
-        assert_eq!(cell.fg, Color::Rgb(0xFF, 0x80, 0));
+        let lightness = PictureLightness::of_frame(PixelFrame::new(&[0, 0xFF8000], 2, 1), 0);
+        let cell = ascii_cell(0xFF8000, &lightness, ColorMode::None);
+        assert_eq!(cell, Cell::new('@', Color::Default, Color::Default));
+        let cell = ascii_cell(0xFF8000, &lightness, ColorMode::TrueColor);
+        assert_eq!(cell, Cell::new('@', Color::Rgb(0xFF, 0x80, 0), Color::Default));
+        assert_eq!(ascii_cell(0, &lightness, ColorMode::TrueColor), Cell::BLANK);
     }
 }

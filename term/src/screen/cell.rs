@@ -26,14 +26,15 @@ impl Cell {
     }
 
     /// Whether `ch` is sent to the terminal as it is: printable ASCII (space to `~`), box drawing and block
-    /// elements (U+2500..=U+259F, which hold `▀`), and Braille patterns (U+2800..=U+28FF).
+    /// elements (U+2500..=U+259F, which hold `▀` and the quadrants), Braille patterns (U+2800..=U+28FF) and the
+    /// sextants (U+1FB00..=U+1FB3B).
     ///
     /// All of these are one column wide, so the encoder can track the cursor. Control characters, which
     /// could inject escape sequences, and zero-width or double-width characters, which would desynchronise
     /// the cursor, are not.
     #[inline]
     pub const fn is_safe_char(ch: char) -> bool {
-        matches!(ch, ' '..='~' | '\u{2500}'..='\u{259F}' | '\u{2800}'..='\u{28FF}')
+        matches!(ch, ' '..='~' | '\u{2500}'..='\u{259F}' | '\u{2800}'..='\u{28FF}' | '\u{1FB00}'..='\u{1FB3B}')
     }
 
     /// The character actually sent for this cell: `ch` when [`Cell::is_safe_char`], else [`REPLACEMENT_CHAR`].
@@ -55,14 +56,15 @@ mod tests {
 
     #[test]
     fn control_and_wide_characters_are_replaced() {
-        for ch in ['\x1b', '\n', '\r', '\x07', '\x7f', '\u{9b}', '\u{0301}', '中', '\u{1F600}', '\u{200B}'] {
+        for ch in ['\x1b', '\n', '\r', '\x07', '\x7f', '\u{9b}', '\u{0301}', '中', '\u{1F600}', '\u{200B}', '\u{1FB3C}']
+        {
             assert_eq!(Cell::new(ch, Color::Default, Color::Default).safe_ch(), REPLACEMENT_CHAR, "{ch:?}");
         }
     }
 
     #[test]
     fn drawing_characters_pass() {
-        for ch in [' ', '@', '~', '▀', '▄', '█', '─', '⣿'] {
+        for ch in [' ', '@', '~', '▀', '▄', '█', '─', '⣿', '▚', '\u{1FB00}', '\u{1FB3B}'] {
             assert_eq!(Cell::new(ch, Color::Default, Color::Default).safe_ch(), ch);
         }
     }

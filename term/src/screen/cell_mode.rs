@@ -1,4 +1,5 @@
-//! How pixels become cells: two stacked pixels per half-block cell, or one pixel per ASCII-ramp cell.
+//! How pixels become cells: two stacked pixels per half-block cell, 2x2, 2x3 or 2x4 pixels per symbol cell, or one
+//! pixel per ASCII-ramp cell.
 
 use std::fmt;
 use std::str::FromStr;
@@ -8,6 +9,8 @@ use super::cell_grid::CellGrid;
 use super::color_mode::ColorMode;
 use super::half_block::{fill_half_block_cells, half_block_grid_size};
 use super::pixel_frame::PixelFrame;
+use super::symbol_cells::{fill_symbol_cells, symbol_grid_size};
+use super::symbol_glyphs::SymbolSet;
 
 /// The way a pixel frame is drawn with characters.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -15,15 +18,27 @@ pub enum CellMode {
     /// `▀` with two colours: a `W x H`-cell grid shows `W x 2H` pixels.
     #[default]
     HalfBlock,
+    /// A character of `SymbolSet` in two colours: 2x2 (quadrants), 2x3 (sextants) or 2x4 (Braille) pixels a cell.
+    Symbols(SymbolSet),
     /// One pixel per cell, as a character of the ASCII lightness ramp.
     Ascii,
 }
 
 impl CellMode {
+    /// Every mode, coarsest symbols first, ASCII last.
+    pub const ALL: [CellMode; 5] = [
+        CellMode::HalfBlock,
+        CellMode::Symbols(SymbolSet::Quadrant),
+        CellMode::Symbols(SymbolSet::Sextant),
+        CellMode::Symbols(SymbolSet::Braille),
+        CellMode::Ascii,
+    ];
+
     /// The pixel size of the frame to render for a `cols` x `rows`-cell terminal area.
     pub const fn pixel_size(self, cols: usize, rows: usize) -> (usize, usize) {
         match self {
             CellMode::HalfBlock => (cols, rows * 2),
+            CellMode::Symbols(set) => (cols * set.columns(), rows * set.rows()),
             CellMode::Ascii => (cols, rows),
         }
     }
@@ -32,18 +47,21 @@ impl CellMode {
     pub const fn grid_size(self, width: usize, height: usize) -> (usize, usize) {
         match self {
             CellMode::HalfBlock => half_block_grid_size(width, height),
+            CellMode::Symbols(set) => symbol_grid_size(set, width, height),
             CellMode::Ascii => (width, height),
         }
     }
 
     /// Fills `grid` (resized as needed) with the cells showing `frame`.
     ///
-    /// `background` (`0x00RRGGBB`) fills the lower half of the last half-block row when the frame's height
-    /// is odd; ASCII mode does not use it.
+    /// `background` (`0x00RRGGBB`) is the colour of the pixels that show no model: it fills the cells' pixels past
+    /// the frame's edge (the lower half of the last half-block row when the frame's height is odd), and without
+    /// colour (and in ASCII mode) its pixels are blank.
     pub fn fill_cells(self, grid: &mut CellGrid, frame: PixelFrame<'_>, colors: ColorMode, background: u32) {
         match self {
             CellMode::HalfBlock => fill_half_block_cells(grid, frame, colors, background),
-            CellMode::Ascii => fill_ascii_cells(grid, frame, colors),
+            CellMode::Symbols(set) => fill_symbol_cells(grid, frame, set, colors, background),
+            CellMode::Ascii => fill_ascii_cells(grid, frame, colors, background),
         }
     }
 
@@ -58,6 +76,9 @@ impl CellMode {
     pub const fn name(self) -> &'static str {
         match self {
             CellMode::HalfBlock => "half-block",
+            CellMode::Symbols(SymbolSet::Quadrant) => "quadrant",
+            CellMode::Symbols(SymbolSet::Sextant) => "sextant",
+            CellMode::Symbols(SymbolSet::Braille) => "braille",
             CellMode::Ascii => "ascii",
         }
     }
@@ -75,7 +96,7 @@ pub struct UnknownCellMode(pub String);
 
 impl fmt::Display for UnknownCellMode {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "unknown cell mode {:?} (expected half-block or ascii)", self.0)
+        write!(f, "unknown cell mode {:?} (expected half-block, quadrant, sextant, braille or ascii)", self.0)
     }
 }
 
@@ -84,10 +105,14 @@ impl std::error::Error for UnknownCellMode {}
 impl FromStr for CellMode {
     type Err = UnknownCellMode;
 
-    /// Accepts `half-block` (also `halfblock`, `half`, `block`) and `ascii` (case-insensitive).
+    /// Accepts `half-block` (also `halfblock`, `half`, `block`), `quadrant`, `sextant`, `braille` and `ascii`
+    /// (case-insensitive).
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         match s.to_ascii_lowercase().as_str() {
             "half-block" | "halfblock" | "half" | "block" => Ok(CellMode::HalfBlock),
+            "quadrant" => Ok(CellMode::Symbols(SymbolSet::Quadrant)),
+            "sextant" => Ok(CellMode::Symbols(SymbolSet::Sextant)),
+            "braille" => Ok(CellMode::Symbols(SymbolSet::Braille)),
             "ascii" => Ok(CellMode::Ascii),
             _ => Err(UnknownCellMode(s.to_owned())),
         }
@@ -100,11 +125,12 @@ mod tests {
 
     #[test]
     fn sizes_round_trip() {
-        for mode in [CellMode::HalfBlock, CellMode::Ascii] {
+        for mode in CellMode::ALL {
             let (w, h) = mode.pixel_size(200, 60);
             assert_eq!(mode.grid_size(w, h), (200, 60));
             assert_eq!(mode.name().parse::<CellMode>(), Ok(mode));
         }
         assert_eq!(CellMode::HalfBlock.grid_size(3, 5), (3, 3));
+        assert_eq!(CellMode::Symbols(SymbolSet::Sextant).grid_size(3, 7), (2, 3));
     }
 }

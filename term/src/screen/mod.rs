@@ -1,7 +1,8 @@
-//! Terminal cells: pixels to half-block or ASCII cells, colour modes, and the frame-diff encoder.
+//! Terminal cells: pixels to half-block, symbol or ASCII cells, colour modes, and the frame-diff encoder.
 //!
 //! The pipeline for one frame: the renderer's pixels ([`PixelFrame`]) become a [`CellGrid`] through a
-//! [`CellMode`] (half-block `▀` cells or an ASCII lightness ramp), with colours reduced to what the terminal
+//! [`CellMode`] (half-block `▀` cells; quadrant, sextant or Braille cells in two colours each; or an ASCII
+//! lightness ramp), with colours reduced to what the terminal
 //! shows ([`ColorMode`], detected from the environment by [`ColorMode::detect`]). The [`Encoder`] then
 //! writes only the cells that differ from the previous frame. [`naive_full_frame`] is the baseline it is
 //! measured against.
@@ -20,9 +21,13 @@ pub mod naive_frame;
 pub mod oklab;
 pub mod palette;
 pub mod palette_lut;
+pub mod picture_lightness;
 pub mod pixel_frame;
 mod sgr;
+pub mod symbol_cells;
+pub mod symbol_glyphs;
 pub mod tolerance;
+pub mod two_colour_split;
 
 pub use cell::Cell;
 pub use cell_grid::CellGrid;
@@ -32,4 +37,5 @@ pub use color_mode::{ColorMode, TermEnv};
 pub use encoder::Encoder;
 pub use naive_frame::naive_full_frame;
 pub use pixel_frame::PixelFrame;
+pub use symbol_glyphs::SymbolSet;
 pub use tolerance::Tolerance;

@@ -38,6 +38,27 @@ impl Oklab {
         }
     }
 
+    /// The linear-light sRGB colour of this Oklab colour (the inverse of [`Oklab::from_linear_srgb`]); colours
+    /// outside the sRGB gamut give channels outside `0.0..=1.0`.
+    pub fn to_linear_srgb(self) -> [f32; 3] {
+        let l = self.l + 0.396_337_78 * self.a + 0.215_803_76 * self.b;
+        let m = self.l - 0.105_561_346 * self.a - 0.063_854_17 * self.b;
+        let s = self.l - 0.089_484_18 * self.a - 1.291_485_5 * self.b;
+        let (l, m, s) = (l * l * l, m * m * m, s * s * s);
+        [
+            4.076_741_7 * l - 3.307_711_6 * m + 0.230_969_94 * s,
+            -1.268_438 * l + 2.609_757_4 * m - 0.341_319_4 * s,
+            -0.004_196_086_3 * l - 0.703_418_6 * m + 1.707_614_7 * s,
+        ]
+    }
+
+    /// The nearest 8-bit sRGB colour, `0x00RRGGBB`, channels clamped to the gamut.
+    pub fn to_srgb8(self) -> u32 {
+        let [r, g, b] = self.to_linear_srgb();
+        let channel = |c: f32| (linear_to_srgb(c.clamp(0.0, 1.0)) * 255.0).round() as u32;
+        channel(r) << 16 | channel(g) << 8 | channel(b)
+    }
+
     /// Squared Euclidean distance (ΔE² in Oklab); monotonic in the perceptual difference.
     #[inline]
     pub fn distance_squared(self, other: Oklab) -> f32 {
@@ -49,6 +70,11 @@ impl Oklab {
 /// The sRGB transfer function, decoded: gamma-encoded `0..=1` to linear light `0..=1`.
 pub fn srgb_to_linear(c: f32) -> f32 {
     if c <= 0.040_45 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) }
+}
+
+/// The sRGB transfer function: linear light `0..=1` to gamma-encoded `0..=1`.
+pub fn linear_to_srgb(c: f32) -> f32 {
+    if c <= 0.003_130_8 { c * 12.92 } else { 1.055 * c.powf(1.0 / 2.4) - 0.055 }
 }
 
 #[cfg(test)]
@@ -70,6 +96,14 @@ mod tests {
         assert!((red.l - 0.628).abs() < 2e-3 && (red.a - 0.225).abs() < 2e-3 && (red.b - 0.126).abs() < 2e-3);
         let blue = Oklab::from_linear_srgb(0.0, 0.0, 1.0);
         assert!((blue.l - 0.452).abs() < 2e-3 && (blue.a + 0.032).abs() < 2e-3 && (blue.b + 0.312).abs() < 2e-3);
+    }
+
+    #[test]
+    fn every_8_bit_colour_survives_the_round_trip() {
+        for v in (0..0x0100_0000u32).step_by(4099).chain([0, 0xFFFFFF, 0xFF0000, 0x00FF00, 0x0000FF]) {
+            let [_, r, g, b] = v.to_be_bytes();
+            assert_eq!(Oklab::from_srgb8(r, g, b).to_srgb8(), v, "{v:06x}");
+        }
     }
 
     #[test]
