@@ -13,7 +13,7 @@ use std::io::Write;
 use super::terminal::{ReportError, Turntable};
 use rastty::scene_render::PreparedScene;
 use rastty::screen::tolerance::color_distance;
-use rastty::screen::{CellGrid, ColorMode, Encoder, Tolerance};
+use rastty::screen::{CellGrid, CellMode, ColorMode, Encoder, Tolerance};
 use rastty::viewer::TOLERANCES;
 
 /// The terminal size measured: the SSH test's (docs/terminal.md).
@@ -45,8 +45,8 @@ pub struct ToleranceRow {
 
 /// Renders `frames` frames, turning the built-in model by `step` radians each (the first unturned).
 fn frames(scene: &PreparedScene, frames: usize, step: f32) -> Result<Vec<CellGrid>, ReportError> {
-    let mut turntable = Turntable::with_step(scene, SIZE, ColorMode::TrueColor, step);
-    (0..=frames).map(|_| turntable.next_frame().map(|(grid, _)| grid)).collect()
+    let mut turntable = Turntable::with_step(scene, SIZE, CellMode::HalfBlock, ColorMode::TrueColor, step);
+    (0..=frames).map(|_| turntable.next_frame().map(|frame| frame.grid)).collect()
 }
 
 /// `grids` through one encoder with `tolerance` after an exact first frame.

@@ -174,7 +174,17 @@ fn mean(values: &[usize]) -> f64 {
     if values.is_empty() { 0.0 } else { values.iter().sum::<usize>() as f64 / values.len() as f64 }
 }
 
-/// The turntable frames of one terminal size and colour mode, as the viewer would make them.
+/// One turntable frame: its cells, and what making them took.
+pub(super) struct TurntableFrame {
+    /// The cells.
+    pub grid: CellGrid,
+    /// The [`ScenePlan`] and [`SceneRenderer::render`], clearing included.
+    pub render: Duration,
+    /// Pixels to cells ([`CellMode::to_cells`]).
+    pub cells: Duration,
+}
+
+/// The turntable frames of one terminal size, cell mode and colour mode, as the viewer would make them.
 pub(super) struct Turntable<'a> {
     scene: &'a PreparedScene,
     orbit: Orbit,
@@ -183,6 +193,7 @@ pub(super) struct Turntable<'a> {
     renderer: SceneRenderer,
     /// Radians turned between two frames.
     step: f32,
+    cell_mode: CellMode,
     colors: ColorMode,
     width: usize,
     height: usize,
@@ -193,19 +204,32 @@ pub(super) struct Turntable<'a> {
 
 impl<'a> Turntable<'a> {
     /// `frames` frames per turn at `cols` x `rows` cells.
-    fn new(scene: &'a PreparedScene, size: (u16, u16), colors: ColorMode, frames: usize) -> Self {
-        Self::with_step(scene, size, colors, std::f32::consts::TAU / frames.max(1) as f32)
+    pub(super) fn new(
+        scene: &'a PreparedScene,
+        size: (u16, u16),
+        cell_mode: CellMode,
+        colors: ColorMode,
+        frames: usize,
+    ) -> Self {
+        Self::with_step(scene, size, cell_mode, colors, std::f32::consts::TAU / frames.max(1) as f32)
     }
 
     /// Frames `step` radians apart at `cols` x `rows` cells.
-    pub(super) fn with_step(scene: &'a PreparedScene, (cols, rows): (u16, u16), colors: ColorMode, step: f32) -> Self {
-        let (width, height) = CellMode::HalfBlock.pixel_size(usize::from(cols), usize::from(rows));
+    pub(super) fn with_step(
+        scene: &'a PreparedScene,
+        (cols, rows): (u16, u16),
+        cell_mode: CellMode,
+        colors: ColorMode,
+        step: f32,
+    ) -> Self {
+        let (width, height) = cell_mode.pixel_size(usize::from(cols), usize::from(rows));
         Self {
             scene,
             orbit: Orbit::new(scene.camera()),
             options: PlanOptions::default(),
             renderer: SceneRenderer::new(),
             step,
+            cell_mode,
             colors,
             width,
             height,
@@ -216,8 +240,13 @@ impl<'a> Turntable<'a> {
         }
     }
 
-    /// Renders the current view into cells, then turns the camera one step; returns the cells and the render time.
-    pub(super) fn next_frame(&mut self) -> Result<(CellGrid, Duration), ReportError> {
+    /// The pixel size of the frames.
+    pub(super) fn pixel_size(&self) -> (usize, usize) {
+        (self.width, self.height)
+    }
+
+    /// Renders the current view into cells, then turns the camera one step.
+    pub(super) fn next_frame(&mut self) -> Result<TurntableFrame, ReportError> {
         let too_big = |e: rastty_core::target::TargetError| ReportError::Setup(e.to_string());
         let mut target =
             Target::new(Rgb888(&mut self.pixels), &mut self.depth[..], self.width as u32, self.height as u32)
@@ -227,12 +256,14 @@ impl<'a> Turntable<'a> {
         let plan = ScenePlan::with_aspect(self.scene, &self.orbit.camera, size, self.aspect, &self.options)
             .map_err(ReportError::Render)?;
         self.renderer.render(self.scene, &plan, &mut target).map_err(ReportError::Render)?;
-        let render_time = start.elapsed();
+        let render = start.elapsed();
         let background = rastty_core::color::pack_rgb888(plan.background);
         let frame = PixelFrame::new(&self.pixels, self.width, self.height);
-        let grid = CellMode::HalfBlock.to_cells(frame, self.colors, background);
+        let start = Instant::now();
+        let grid = self.cell_mode.to_cells(frame, self.colors, background);
+        let cells = start.elapsed();
         self.orbit.rotate(self.step, 0.0);
-        Ok((grid, render_time))
+        Ok(TurntableFrame { grid, render, cells })
     }
 }
 
@@ -249,10 +280,10 @@ pub fn measure(
     if frames == 0 {
         return Err(ReportError::Setup("the turntable needs at least one frame".into()));
     }
-    let mut turntable = Turntable::new(scene, size, colors, frames);
+    let mut turntable = Turntable::new(scene, size, CellMode::HalfBlock, colors, frames);
     let mut encoder = Encoder::new();
     let mut bytes = Vec::new();
-    let (first, _) = turntable.next_frame()?;
+    let first = turntable.next_frame()?.grid;
     encoder.encode(&first, &mut bytes);
     let mut m = Measurement {
         cols: size.0,
@@ -265,7 +296,7 @@ pub fn measure(
         encode_times: Vec::with_capacity(frames),
     };
     for _ in 0..frames {
-        let (grid, render_time) = turntable.next_frame()?;
+        let TurntableFrame { grid, render: render_time, .. } = turntable.next_frame()?;
         // The buffer keeps the capacity of the full redraw, so encoding never waits for an allocation.
         bytes.clear();
         let start = Instant::now();
@@ -383,6 +414,8 @@ pub fn run(report: &TerminalReport, out: &mut dyn Write) -> Result<Vec<Measureme
         encode.iter().filter(|&&ok| ok).count(),
         encode.len()
     )?;
+    let modes = super::cell_modes::measure(&scene, report.frames)?;
+    super::cell_modes::write_table(out, &modes, report.frames)?;
     let key_presses = if report.quick { 6 } else { 36 };
     let rows = super::moving_frames::measure(&scene, report.frames, key_presses)?;
     super::moving_frames::write_table(out, &rows, report.frames, key_presses)?;
@@ -408,9 +441,9 @@ mod tests {
             assert_eq!((m.naive_bytes.len(), m.render_times.len(), m.encode_times.len()), (3, 3, 3));
 
             // The same frames again, encoded independently.
-            let mut turntable = Turntable::new(&scene, (20, 8), colors, 3);
+            let mut turntable = Turntable::new(&scene, (20, 8), CellMode::HalfBlock, colors, 3);
             let mut encoder = Encoder::new();
-            let (first, _) = turntable.next_frame().unwrap();
+            let first = turntable.next_frame().unwrap().grid;
             assert_eq!((first.width, first.height), (20, 8));
             let mut bytes = Vec::new();
             encoder.encode(&first, &mut bytes);
@@ -418,7 +451,7 @@ mod tests {
             assert_eq!(m.first_frame_bytes, bytes.len());
             let (mut delta_total, mut naive_total) = (0, 0);
             for i in 0..3 {
-                let (grid, _) = turntable.next_frame().unwrap();
+                let grid = turntable.next_frame().unwrap().grid;
                 let mut delta = Vec::new();
                 encoder.encode(&grid, &mut delta);
                 let naive = naive_full_frame(&grid).len();
