@@ -10,11 +10,13 @@
 //! | frame | [`scene_render`] | a plan of passes (shadow maps, forward draws, ambient occlusion) for a camera ([`scene_render::Orbit`]) and the look asked for, run in bands of rows on threads |
 //! | cells | [`screen`], [`viewer`] | the frame as terminal cells, diffed against the last one and written; or a PNG file ([`png_file`]) |
 //!
-//! Beside them: [`builtin`] (the model compiled into the binary) and [`escaped`] (text from input files made safe
-//! for a terminal).
+//! Beside them: [`builtin`] (the model compiled into the binary), [`escaped`] (text from input files made safe
+//! for a terminal) and [`graphics`] (a frame as one image in the kitty, Sixel or iTerm2 protocol, for terminals
+//! that show pixels; the viewer does not send them yet).
 
 pub mod builtin;
 pub mod escaped;
+pub mod graphics;
 pub mod model;
 pub mod png_file;
 pub mod scene_file;

@@ -41,11 +41,16 @@ pub fn write_png(path: &Path, width: u32, height: u32, pixels: &[u32]) -> Result
     if path.is_dir() || path.as_os_str().to_string_lossy().ends_with(std::path::MAIN_SEPARATOR) {
         return Err(fail("it is a directory, not a file name".into()));
     }
+    write_atomically(path, |out| encode_png(out, width, height, pixels)).map_err(|e| fail(e.to_string()))
+}
+
+/// Encodes `0x00RRGGBB` pixels (row-major, top row first) as an 8-bit RGB PNG into `out`.
+///
+/// # Errors
+/// The first I/O error, or an encoder error (the pixel count does not match the size) as [`io::ErrorKind::Other`].
+pub fn encode_png(out: &mut impl Write, width: u32, height: u32, pixels: &[u32]) -> io::Result<()> {
     let rgb: Vec<u8> = pixels.iter().flat_map(|p| [(p >> 16) as u8, (p >> 8) as u8, *p as u8]).collect();
-    write_atomically(path, |out| {
-        PngEncoder::new(out).write_image(&rgb, width, height, image::ExtendedColorType::Rgb8).map_err(io::Error::other)
-    })
-    .map_err(|e| fail(e.to_string()))
+    PngEncoder::new(out).write_image(&rgb, width, height, image::ExtendedColorType::Rgb8).map_err(io::Error::other)
 }
 
 /// Writes a file through `write` into a temporary file in the same directory, synced and then renamed over

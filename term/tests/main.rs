@@ -5,6 +5,7 @@
 
 mod cli;
 mod common;
+mod graphics_decoders;
 mod model_loading;
 mod readme_picture;
 mod scene_cli;
