@@ -11,8 +11,8 @@
 //! | cells | [`screen`], [`viewer`] | the frame as terminal cells, diffed against the last one and written; or a PNG file ([`png_file`]) |
 //!
 //! Beside them: [`builtin`] (the model compiled into the binary), [`escaped`] (text from input files made safe
-//! for a terminal) and [`graphics`] (a frame as one image in the kitty, Sixel or iTerm2 protocol, for terminals
-//! that show pixels; the viewer does not send them yet).
+//! for a terminal) and [`graphics`] (the frame as one image in the kitty, Sixel or iTerm2 protocol instead of
+//! cells, for terminals that show pixels).
 
 pub mod builtin;
 pub mod escaped;

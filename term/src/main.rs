@@ -9,6 +9,7 @@ use std::str::FromStr;
 
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 use rastty::escaped::Escaped;
+use rastty::graphics::GraphicsProtocol;
 use rastty::png_file::write_png;
 use rastty::scene_file::{open, parse_hex_color};
 use rastty::scene_render::{
@@ -46,6 +47,10 @@ struct ViewerArgs {
     /// Unicode 13's sextants), `braille` (2x4) or `ascii` (a character ramp, one pixel a cell).
     #[arg(long, default_value = "half", value_parser = CellMode::from_str)]
     mode: CellMode,
+    /// How the picture reaches the terminal: `cells` (per `--mode`), or one image a frame in the `kitty` graphics
+    /// protocol, `sixel` or `iterm2` inline images, for terminals that show pixels (the HUD and help stay cells).
+    #[arg(long, default_value = "cells", value_parser = GraphicsProtocol::from_str)]
+    graphics: GraphicsProtocol,
     /// Colours: auto (from COLORTERM, TERM and NO_COLOR), truecolor, 256, 16 or none.
     #[arg(long, default_value = "auto", value_parser = parse_color_choice)]
     color: ColorChoice,
@@ -319,6 +324,7 @@ fn view(args: &ViewerArgs) -> Result<ExitCode, String> {
         orbit: args.scene.camera().orbit(&scene),
         plan,
         cell_mode: args.mode,
+        graphics: args.graphics,
         color: args.color,
         cell_aspect: args.cell_aspect,
         pacing: !args.no_pacing,

@@ -5,8 +5,14 @@
 //! | kitty graphics: zlib-compressed RGB in base64 chunks, one image replaced in place per frame | [`kitty`] |
 //! | Sixel: a palette per frame ([`frame_palette`]) and six pixel rows per band | [`sixel`] |
 //! | iTerm2 inline images: a PNG in one escape sequence | [`iterm2`] |
+//!
+//! [`graphics_protocol::GraphicsProtocol`] is the viewer's choice among them (or cells), and writes a frame with
+//! the one chosen.
 
 pub mod frame_palette;
+pub mod graphics_protocol;
 pub mod iterm2;
 pub mod kitty;
 pub mod sixel;
+
+pub use graphics_protocol::{FrameImage, GraphicsProtocol};

@@ -43,6 +43,14 @@ impl Encoder {
         self.valid = false;
     }
 
+    /// Records that the terminal shows a `width` x `height` grid of blank cells, as after an image was drawn over
+    /// all of it: the next frame draws its cells that are not blank, and neither clears the screen nor blanks a
+    /// cell (which would erase the image).
+    pub fn assume_blank(&mut self, width: usize, height: usize) {
+        self.shown.reset(width, height, Cell::BLANK);
+        self.valid = true;
+    }
+
     /// The grid the terminal shows as far as the encoder knows, or `None` before the first frame and after
     /// [`Encoder::invalidate`].
     pub fn shown(&self) -> Option<&CellGrid> {

@@ -1,6 +1,7 @@
 //! The output thread: encodes the newest frame against what the terminal shows and writes it.
 //!
-//! The renderer hands over cell grids; if the terminal (or the SSH link) is slower than the renderer, a grid
+//! The renderer hands over frames (cell grids, with an image under or behind them when the picture goes out in
+//! a pixel graphics protocol); if the terminal (or the SSH link) is slower than the renderer, a frame
 //! that is still waiting is replaced by the newer one, so a slow link never builds a queue of stale frames. The
 //! encoder lives here, so a dropped grid is never encoded and every delta is against what was really sent.
 //!
@@ -9,6 +10,9 @@
 //! right as they are ([`Tolerance`], the smallest of [`TOLERANCES`] that fits). Once no new frame has come for
 //! [`REFINE_AFTER`], the writer sends the exact cells, from the top, in steps of the same size until the picture
 //! is exact.
+//!
+//! An image frame is sent whole and exact, so on a slow link the meter lowers its frame rate instead: a new
+//! frame waits until the terminal has answered for enough of the last ones, and only the newest is written.
 //!
 //! Writing goes through the terminal's non-blocking handle ([`write_while`]), so a frame stuck on a slow link
 //! never holds the viewer: asked to finish, the writer completes the frame it is writing if it can by the
@@ -21,6 +25,7 @@ use std::time::{Duration, Instant};
 
 use super::link_meter::{LinkMeter, STATUS_REQUEST};
 use super::tty::write_while;
+use crate::graphics::{FrameImage, GraphicsProtocol};
 use crate::screen::{CellGrid, Encoder, Tolerance};
 
 /// The tolerances (Oklab ΔE) a moving frame may be sent with, tried in order until one fits the budget; the
@@ -46,9 +51,18 @@ pub struct WriterStats {
     pub link_rate: Option<f64>,
 }
 
+/// What the viewer hands the writer for one picture.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Frame {
+    /// The cells: the whole picture, or (with an image) the HUD and help to show with it, blank elsewhere.
+    pub grid: CellGrid,
+    /// The picture as an image, sent in the writer's [`GraphicsProtocol`].
+    pub image: Option<FrameImage>,
+}
+
 #[derive(Default)]
 struct Mailbox {
-    pending: Option<CellGrid>,
+    pending: Option<Frame>,
     /// Force the next frame to be a full redraw (after anything else wrote to the screen).
     invalidate: bool,
     /// Asked to stop: write nothing new, and stop writing the current frame at this instant.
@@ -74,13 +88,13 @@ pub struct FrameWriter {
 }
 
 impl FrameWriter {
-    /// Starts the writer thread, writing to `out`, a non-blocking handle to the terminal; `pacing` off, every
-    /// frame is exact and no status request is sent.
-    pub fn start(out: File, pacing: bool) -> Self {
+    /// Starts the writer thread, writing to `out`, a non-blocking handle to the terminal, images in `protocol`;
+    /// `pacing` off, every frame is exact and no status request is sent.
+    pub fn start(out: File, protocol: GraphicsProtocol, pacing: bool) -> Self {
         let shared = Arc::new((Mutex::new(Mailbox::default()), Condvar::new()));
         let thread_shared = Arc::clone(&shared);
         let spawned = thread::Builder::new().name("rastty-writer".into()).spawn(move || {
-            write_loop(&out, &thread_shared, pacing);
+            write_loop(&out, &thread_shared, protocol, pacing);
             lock(&thread_shared).done = true;
             thread_shared.1.notify_all();
         });
@@ -92,9 +106,9 @@ impl FrameWriter {
     }
 
     /// Hands over a frame, replacing one still waiting.
-    pub fn send(&self, grid: CellGrid) {
+    pub fn send(&self, frame: Frame) {
         let mut mailbox = lock(&self.shared);
-        if mailbox.pending.replace(grid).is_some() {
+        if mailbox.pending.replace(frame).is_some() {
             mailbox.stats.dropped += 1;
         }
         self.shared.1.notify_all();
@@ -139,7 +153,7 @@ impl FrameWriter {
 /// What the writer does next.
 enum Job {
     /// A new frame, and whether it must be a full redraw.
-    Frame(CellGrid, bool),
+    Frame(Frame, bool),
     /// A step towards the exact picture of the last frame (given): exact cells, as many as the budget takes.
     Refine(CellGrid),
     /// A bare status request, to measure the round trip.
@@ -157,11 +171,13 @@ struct Writer {
     /// When the last new frame came.
     last_frame: Instant,
     bytes: Vec<u8>,
+    /// How images go out.
+    protocol: GraphicsProtocol,
     /// Status requests and tolerances on; off, the meter never hears of a write and every frame is exact.
     pacing: bool,
 }
 
-fn write_loop(out: &File, shared: &Shared, pacing: bool) {
+fn write_loop(out: &File, shared: &Shared, protocol: GraphicsProtocol, pacing: bool) {
     let mut writer = Writer {
         encoder: Encoder::new(),
         trial: Encoder::new(),
@@ -169,6 +185,7 @@ fn write_loop(out: &File, shared: &Shared, pacing: bool) {
         inexact: None,
         last_frame: Instant::now(),
         bytes: Vec::new(),
+        protocol,
         pacing,
     };
     while let Some(job) = writer.next_job(shared) {
@@ -219,8 +236,8 @@ impl Writer {
             let now = Instant::now();
             self.meter.expire(now);
             if self.meter.may_write() {
-                if let Some(grid) = mailbox.pending.take() {
-                    return Some(Job::Frame(grid, std::mem::take(&mut mailbox.invalidate)));
+                if let Some(frame) = mailbox.pending.take() {
+                    return Some(Job::Frame(frame, std::mem::take(&mut mailbox.invalidate)));
                 }
                 if now >= self.last_frame + REFINE_AFTER
                     && let Some(grid) = self.inexact.take()
@@ -249,11 +266,17 @@ impl Writer {
         self.bytes.clear();
         let tolerance = match job {
             Job::Probe => None,
-            Job::Frame(grid, invalidate) => {
+            Job::Frame(frame, invalidate) => {
                 if invalidate {
                     self.encoder.invalidate();
                 }
                 self.last_frame = Instant::now();
+                let Frame { grid, image } = frame;
+                if let Some(image) = image {
+                    self.encode_image(&grid, &image);
+                    self.inexact = None;
+                    return self.with_status_request(Some(Tolerance::EXACT));
+                }
                 let tolerance = self.encode_within_budget(&grid);
                 self.inexact = (tolerance != Tolerance::EXACT).then_some(grid);
                 Some(tolerance)
@@ -267,10 +290,34 @@ impl Writer {
                 Some(Tolerance::EXACT)
             }
         };
+        self.with_status_request(tolerance)
+    }
+
+    /// Appends a status request when pacing and there is something to measure; passes `tolerance` on.
+    fn with_status_request(&mut self, tolerance: Option<Tolerance>) -> Option<Tolerance> {
         if self.pacing && (!self.bytes.is_empty() || tolerance.is_none()) {
             self.bytes.extend_from_slice(STATUS_REQUEST);
         }
         tolerance
+    }
+
+    /// Encodes an image frame: the image and the cells to show with it, both exact.
+    ///
+    /// A kitty image lies under the text: the cells go first (a full redraw clears the screen, which would take
+    /// the image with it), then the image. A Sixel or iTerm2 image replaces the cells under it: after a clear when
+    /// the screen is unknown, the image, then the cells that are not blank (the HUD), drawn over it.
+    fn encode_image(&mut self, grid: &CellGrid, image: &FrameImage) {
+        if !self.protocol.covers_text() {
+            self.encoder.encode(grid, &mut self.bytes);
+            self.protocol.write_image(&mut self.bytes, image);
+            return;
+        }
+        if self.encoder.shown().is_none_or(|shown| !shown.same_size(grid)) {
+            self.encoder.encode(&CellGrid::blank(grid.width, grid.height), &mut self.bytes);
+        }
+        self.protocol.write_image(&mut self.bytes, image);
+        self.encoder.assume_blank(grid.width, grid.height);
+        self.encoder.encode(grid, &mut self.bytes);
     }
 
     /// Encodes `grid` with the smallest of [`TOLERANCES`] whose bytes fit the meter's budget (the largest that

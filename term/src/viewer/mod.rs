@@ -1,7 +1,8 @@
 //! The terminal viewer: `rastty [MODEL.obj | SCENE.toml]`.
 //!
 //! The main thread waits for input, renders a frame when something changed (input, a resize, the turntable) and
-//! turns it into terminal cells; a [`FrameWriter`] thread encodes the newest frame as a delta and writes it.
+//! turns it into terminal cells, or into one image in a pixel graphics protocol ([`GraphicsProtocol`], with the
+//! HUD and help as cells); a [`FrameWriter`] thread encodes the newest frame (cells as a delta) and writes it.
 //! Idle, the viewer sleeps in `poll`: no frames, no bytes, no CPU.
 //!
 //! A model and a scene file are both a scene ([`crate::scene_file::open`]) drawn by [`crate::scene_render`]: each
@@ -19,7 +20,7 @@ mod terminal_session;
 mod tty;
 
 pub use controls::{Action, HELP, action_for};
-pub use frame_writer::{FrameWriter, REFINE_AFTER, TOLERANCES, WriterStats};
+pub use frame_writer::{Frame, FrameWriter, REFINE_AFTER, TOLERANCES, WriterStats};
 pub use input_decoder::{ESCAPE_WAIT, Input, InputDecoder, Key, MouseKind};
 pub use link_meter::{ANSWER_TIMEOUT, FRAME_LINK_TIME, LinkMeter, MAX_IN_FLIGHT, MIN_LINK_TIME, STATUS_REQUEST};
 pub use state::{Effect, ViewerState};
@@ -36,6 +37,7 @@ use rastty_core::pipeline::DrawStats;
 use rastty_core::target::{Rgb888, Target};
 
 use crate::escaped::Escaped;
+use crate::graphics::{FrameImage, GraphicsProtocol};
 use crate::scene_render::{
     FrameReport, Orbit, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError, SceneRenderer,
 };
@@ -51,6 +53,12 @@ const TURNTABLE_FRAME: Duration = Duration::from_millis(33);
 const IDLE_POLL: Duration = Duration::from_millis(500);
 /// How long the writer may go on with the frame it is writing once the viewer is leaving.
 const FINISH_TIME: Duration = Duration::from_millis(250);
+/// The most pixels of an image frame: past it the image is rendered smaller and the terminal scales it up
+/// (kitty, iTerm2) or shows it smaller (Sixel), so that a large window keeps its frame rate.
+pub const MAX_IMAGE_PIXELS: usize = 640 * 480;
+/// The cell width in pixels assumed when the terminal does not give its size in pixels; the height is this times
+/// the cell aspect.
+pub const ASSUMED_CELL_WIDTH: f32 = 8.0;
 
 /// Colours: detected or chosen.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -68,8 +76,10 @@ pub struct ViewerOptions {
     pub orbit: Orbit,
     /// The shading mode, effects, textures, wireframe and background at the start (and after a reset).
     pub plan: PlanOptions,
-    /// Half-block or ASCII cells.
+    /// Half-block, symbol or ASCII cells.
     pub cell_mode: CellMode,
+    /// Cells, or an image in a pixel graphics protocol (the cells then carry only the HUD and help).
+    pub graphics: GraphicsProtocol,
     /// Colours.
     pub color: ColorChoice,
     /// Cell height over cell width.
@@ -143,7 +153,8 @@ pub fn run(scene: &PreparedScene, name: &str, options: &ViewerOptions) -> Result
         ColorChoice::Fixed(mode) => mode,
     };
     let session = TerminalSession::enter().map_err(terminal_error)?;
-    let writer = FrameWriter::start(session.tty.output_clone().map_err(terminal_error)?, options.pacing);
+    let output = session.tty.output_clone().map_err(terminal_error)?;
+    let writer = FrameWriter::start(output.try_clone().map_err(terminal_error)?, options.graphics, options.pacing);
     let mut viewer = Viewer {
         scene,
         renderer: SceneRenderer::new(),
@@ -151,9 +162,11 @@ pub fn run(scene: &PreparedScene, name: &str, options: &ViewerOptions) -> Result
         state: ViewerState::new(orbit, options.plan, options.cell_aspect),
         canvas: Canvas::default(),
         cell_mode: options.cell_mode,
+        graphics: options.graphics,
         colors,
         cell_aspect: options.cell_aspect,
         size: session.tty.size().map_err(terminal_error)?,
+        size_in_pixels: session.tty.size_in_pixels(),
         last_stats: DrawStats::default(),
         background: Vec3::ZERO,
         last_report: None,
@@ -161,7 +174,12 @@ pub fn run(scene: &PreparedScene, name: &str, options: &ViewerOptions) -> Result
         frame_times: FrameClock::default(),
     };
     let result = viewer.run_loop(&session, &writer);
-    writer.finish(Instant::now() + FINISH_TIME);
+    let deadline = Instant::now() + FINISH_TIME;
+    writer.finish(deadline);
+    let mut end = Vec::new();
+    options.graphics.write_end(&mut end);
+    // The terminal may be gone already; nothing is left to tell it then.
+    let _ = write_until(&output, &end, deadline);
     drop(session);
     result
 }
@@ -205,9 +223,12 @@ struct Viewer<'a> {
     state: ViewerState,
     canvas: Canvas,
     cell_mode: CellMode,
+    graphics: GraphicsProtocol,
     colors: ColorMode,
     cell_aspect: f32,
     size: (u16, u16),
+    /// The terminal's text area in pixels, when it says.
+    size_in_pixels: Option<(u16, u16)>,
     last_stats: DrawStats,
     /// The colour the last frame was cleared to.
     background: Vec3,
@@ -237,8 +258,8 @@ impl Viewer<'_> {
                 dirty = true;
             }
             if dirty {
-                let grid = self.frame(writer)?;
-                writer.send(grid);
+                let frame = self.frame(writer)?;
+                writer.send(frame);
                 dirty = false;
             }
             let mut timeout = if self.state.turntable { TURNTABLE_FRAME } else { IDLE_POLL };
@@ -269,6 +290,7 @@ impl Viewer<'_> {
             for action in actions.drain(..) {
                 if let Action::Resize(cols, rows) = action {
                     self.size = (cols, rows);
+                    self.size_in_pixels = session.tty.size_in_pixels();
                     writer.invalidate();
                 }
                 match self.state.apply(action) {
@@ -283,18 +305,30 @@ impl Viewer<'_> {
         }
     }
 
-    /// Renders the current state into a cell grid the size of the terminal.
-    fn frame(&mut self, writer: &FrameWriter) -> Result<CellGrid, ViewerError> {
+    /// The pixel size to render for the terminal: the cells' pixels in cell mode, else the image's size
+    /// ([`image_size`]); and the picture's physical aspect (width over height).
+    fn render_size(&self) -> (usize, usize, f32) {
+        let (cols, rows) = self.size;
+        if self.graphics == GraphicsProtocol::Cells {
+            let (width, height) = self.cell_mode.pixel_size(usize::from(cols), usize::from(rows));
+            // A cell is `cell_aspect` times taller than wide.
+            return (width, height, f32::from(cols) / (f32::from(rows) * self.cell_aspect));
+        }
+        let (width, height) = image_size(self.graphics, self.size, self.size_in_pixels, self.cell_aspect);
+        (width, height, width as f32 / height.max(1) as f32)
+    }
+
+    /// Renders the current state into a frame for the terminal: cells the size of the terminal, and the image.
+    fn frame(&mut self, writer: &FrameWriter) -> Result<Frame, ViewerError> {
         let (cols, rows) = self.size;
         if cols < MIN_COLUMNS || rows < MIN_ROWS {
-            return Ok(overlay::notice(usize::from(cols), usize::from(rows), "terminal too small"));
+            let grid = overlay::notice(usize::from(cols), usize::from(rows), "terminal too small");
+            return Ok(Frame { grid, image: None });
         }
-        let (width, height) = self.cell_mode.pixel_size(usize::from(cols), usize::from(rows));
+        let (width, height, aspect) = self.render_size();
         let n = width * height;
         self.canvas.pixels.resize(n, 0);
         self.canvas.depth.resize(n, 0.0);
-        // Physical aspect: a cell is `cell_aspect` times taller than wide.
-        let aspect = f32::from(cols) / (f32::from(rows) * self.cell_aspect);
         let start = Instant::now();
         let mut target =
             Target::new(Rgb888(&mut self.canvas.pixels), &mut self.canvas.depth[..], width as u32, height as u32)
@@ -309,16 +343,27 @@ impl Viewer<'_> {
         self.background = plan.background;
         self.render_time = start.elapsed();
         self.frame_times.tick();
-        let background = rastty_core::color::pack_rgb888(self.background);
-        let mut grid =
-            self.cell_mode.to_cells(PixelFrame::new(&self.canvas.pixels, width, height), self.colors, background);
+        let (mut grid, image) = if self.graphics == GraphicsProtocol::Cells {
+            let background = rastty_core::color::pack_rgb888(self.background);
+            let pixels = PixelFrame::new(&self.canvas.pixels, width, height);
+            (self.cell_mode.to_cells(pixels, self.colors, background), None)
+        } else {
+            let image = FrameImage {
+                pixels: self.canvas.pixels.clone(),
+                width,
+                height,
+                columns: cols,
+                rows: self.graphics.image_rows(rows),
+            };
+            (CellGrid::blank(usize::from(cols), usize::from(rows)), Some(image))
+        };
         if self.state.hud {
             overlay::draw_hud(&mut grid, &self.hud_lines(writer.stats()));
         }
         if self.state.help {
             overlay::draw_centered_box(&mut grid, HELP);
         }
-        Ok(grid)
+        Ok(Frame { grid, image })
     }
 
     fn hud_lines(&self, written: WriterStats) -> Vec<String> {
@@ -352,8 +397,17 @@ impl Viewer<'_> {
                 if a.wireframe { "on" } else { "off" },
                 cols,
                 rows,
-                self.cell_mode.name(),
-                self.colors.name()
+                match self.graphics {
+                    GraphicsProtocol::Cells => self.cell_mode.name(),
+                    protocol => protocol.name(),
+                },
+                match self.graphics {
+                    GraphicsProtocol::Cells => self.colors.name().to_owned(),
+                    _ => {
+                        let (width, height, _) = self.render_size();
+                        format!("{width}x{height} px")
+                    }
+                }
             ),
         ];
         if let Some(report) = &self.last_report {
@@ -376,4 +430,32 @@ impl Viewer<'_> {
         }
         lines
     }
+}
+
+/// The pixel size of an image frame for a terminal of `size` cells, `size_in_pixels` when it says: the pixels of
+/// the cells the image covers ([`GraphicsProtocol::image_rows`]), cells of [`ASSUMED_CELL_WIDTH`] by
+/// `cell_aspect` times that when it does not say; scaled down to at most [`MAX_IMAGE_PIXELS`]; the height a whole
+/// number of [`GraphicsProtocol::row_multiple`]; at least one row of them.
+pub fn image_size(
+    protocol: GraphicsProtocol,
+    (cols, rows): (u16, u16),
+    size_in_pixels: Option<(u16, u16)>,
+    cell_aspect: f32,
+) -> (usize, usize) {
+    let (cell_width, cell_height) = match size_in_pixels {
+        Some((width, height)) => {
+            (f32::from(width) / f32::from(cols.max(1)), f32::from(height) / f32::from(rows.max(1)))
+        }
+        None => (ASSUMED_CELL_WIDTH, ASSUMED_CELL_WIDTH * cell_aspect),
+    };
+    let mut width = f32::from(cols) * cell_width;
+    let mut height = f32::from(protocol.image_rows(rows)) * cell_height;
+    let area = width * height;
+    if area > MAX_IMAGE_PIXELS as f32 {
+        let scale = (MAX_IMAGE_PIXELS as f32 / area).sqrt();
+        (width, height) = (width * scale, height * scale);
+    }
+    let multiple = protocol.row_multiple();
+    let height = ((height as usize) / multiple * multiple).max(multiple);
+    ((width as usize).max(1), height)
 }

@@ -146,6 +146,13 @@ impl Tty {
         let size = rustix::termios::tcgetwinsize(&self.output)?;
         Ok((size.ws_col, size.ws_row))
     }
+
+    /// The terminal's text area in pixels (width, height), when the terminal says (the window size's pixel fields;
+    /// many terminals leave them 0, and so do most over SSH).
+    pub fn size_in_pixels(&self) -> Option<(u16, u16)> {
+        let size = rustix::termios::tcgetwinsize(&self.output).ok()?;
+        (size.ws_xpixel > 0 && size.ws_ypixel > 0).then_some((size.ws_xpixel, size.ws_ypixel))
+    }
 }
 
 /// Writes all of `bytes` to the non-blocking `out`, waiting for room in steps of at most 20 ms, and asks

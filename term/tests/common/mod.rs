@@ -2,6 +2,7 @@
 
 #![allow(dead_code)] // Each test file uses its own subset.
 
+pub mod pty;
 pub mod tmux;
 
 use std::fs;

@@ -1,0 +1,171 @@
+//! How the viewer sends its picture: as cells, or as one image in a pixel graphics protocol.
+
+use std::fmt;
+use std::str::FromStr;
+
+use super::frame_palette::{Dither, reduce};
+use super::{iterm2, kitty, sixel};
+use crate::screen::PixelFrame;
+
+/// The image id the viewer shows its frames under (kitty).
+pub const IMAGE_ID: u32 = 1;
+
+/// The way the picture reaches the terminal.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum GraphicsProtocol {
+    /// Character cells ([`crate::screen::CellMode`]): every terminal.
+    #[default]
+    Cells,
+    /// The kitty graphics protocol (kitty, WezTerm, Ghostty, Konsole).
+    Kitty,
+    /// Sixel (xterm -ti vt340, foot, mlterm, WezTerm, Windows Terminal).
+    Sixel,
+    /// iTerm2's inline images (iTerm2, WezTerm).
+    Iterm2,
+}
+
+/// A frame to send as an image, and the cells it covers from the top-left cell.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct FrameImage {
+    /// `0x00RRGGBB`, row-major.
+    pub pixels: Vec<u32>,
+    /// Width in pixels.
+    pub width: usize,
+    /// Height in pixels.
+    pub height: usize,
+    /// Columns covered.
+    pub columns: u16,
+    /// Rows covered.
+    pub rows: u16,
+}
+
+impl GraphicsProtocol {
+    /// Every protocol.
+    pub const ALL: [GraphicsProtocol; 4] =
+        [GraphicsProtocol::Cells, GraphicsProtocol::Kitty, GraphicsProtocol::Sixel, GraphicsProtocol::Iterm2];
+
+    /// The name accepted by [`GraphicsProtocol::from_str`].
+    pub const fn name(self) -> &'static str {
+        match self {
+            GraphicsProtocol::Cells => "cells",
+            GraphicsProtocol::Kitty => "kitty",
+            GraphicsProtocol::Sixel => "sixel",
+            GraphicsProtocol::Iterm2 => "iterm2",
+        }
+    }
+
+    /// The rows of a `rows`-row terminal an image may cover. Sixel and iTerm2 move the cursor below the image, so
+    /// an image reaching the last row would scroll the screen: they leave it free. kitty keeps the cursor (`C=1`).
+    pub const fn image_rows(self, rows: u16) -> u16 {
+        match self {
+            GraphicsProtocol::Sixel | GraphicsProtocol::Iterm2 => rows.saturating_sub(1),
+            GraphicsProtocol::Cells | GraphicsProtocol::Kitty => rows,
+        }
+    }
+
+    /// Whether an image replaces the cells under it (Sixel, iTerm2): text drawn there before is gone, and text to
+    /// show over the image must be drawn after it. A kitty image lies under the text.
+    pub const fn covers_text(self) -> bool {
+        matches!(self, GraphicsProtocol::Sixel | GraphicsProtocol::Iterm2)
+    }
+
+    /// The pixel rows an image's height must be a whole number of (Sixel draws bands of six; a last, partial band
+    /// would leave its rows to the terminal).
+    pub const fn row_multiple(self) -> usize {
+        match self {
+            GraphicsProtocol::Sixel => 6,
+            _ => 1,
+        }
+    }
+
+    /// Appends the bytes that show `image` from the top-left cell (nothing for [`GraphicsProtocol::Cells`]).
+    pub fn write_image(self, out: &mut Vec<u8>, image: &FrameImage) {
+        let frame = PixelFrame::new(&image.pixels, image.width, image.height);
+        match self {
+            GraphicsProtocol::Cells => {}
+            GraphicsProtocol::Kitty => {
+                let placement = kitty::KittyPlacement {
+                    image_id: IMAGE_ID,
+                    column: 0,
+                    row: 0,
+                    columns: image.columns,
+                    rows: image.rows,
+                };
+                kitty::write_frame(out, frame, &placement);
+            }
+            GraphicsProtocol::Sixel => {
+                out.extend_from_slice(b"\x1b[H");
+                sixel::write_image(out, &reduce(frame, 256, Dither::None));
+            }
+            GraphicsProtocol::Iterm2 => {
+                out.extend_from_slice(b"\x1b[H");
+                iterm2::write_image(out, frame, image.columns, image.rows);
+            }
+        }
+    }
+
+    /// Appends what frees the terminal's memory of the viewer's image when the viewer ends (kitty: the image is
+    /// deleted; the others keep nothing once the screen is cleared).
+    pub fn write_end(self, out: &mut Vec<u8>) {
+        if self == GraphicsProtocol::Kitty {
+            kitty::write_delete(out, IMAGE_ID);
+        }
+    }
+}
+
+impl fmt::Display for GraphicsProtocol {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// The error of parsing an unknown protocol name.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct UnknownGraphicsProtocol(pub String);
+
+impl fmt::Display for UnknownGraphicsProtocol {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "unknown graphics protocol {:?} (expected cells, kitty, sixel or iterm2)", self.0)
+    }
+}
+
+impl std::error::Error for UnknownGraphicsProtocol {}
+
+impl FromStr for GraphicsProtocol {
+    type Err = UnknownGraphicsProtocol;
+
+    /// Accepts the names of [`GraphicsProtocol::name`] (case-insensitive).
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        let lower = s.to_ascii_lowercase();
+        Self::ALL.into_iter().find(|p| p.name() == lower).ok_or_else(|| UnknownGraphicsProtocol(s.to_owned()))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_round_trip() {
+        for protocol in GraphicsProtocol::ALL {
+            assert_eq!(protocol.name().parse::<GraphicsProtocol>(), Ok(protocol));
+        }
+        assert!("png".parse::<GraphicsProtocol>().is_err());
+    }
+
+    #[test]
+    fn images_start_at_the_top_left_cell() {
+        let image = FrameImage { pixels: vec![0xFF0000; 12], width: 4, height: 3, columns: 2, rows: 1 };
+        for protocol in [GraphicsProtocol::Kitty, GraphicsProtocol::Sixel, GraphicsProtocol::Iterm2] {
+            let mut out = Vec::new();
+            protocol.write_image(&mut out, &image);
+            assert!(out.starts_with(b"\x1b[H") || out.starts_with(b"\x1b[1;1H"), "{protocol}");
+        }
+        let mut out = Vec::new();
+        GraphicsProtocol::Cells.write_image(&mut out, &image);
+        GraphicsProtocol::Sixel.write_end(&mut out);
+        assert!(out.is_empty());
+        GraphicsProtocol::Kitty.write_end(&mut out);
+        assert_eq!(out, b"\x1b_Ga=d,d=I,i=1,q=2\x1b\\");
+    }
+}

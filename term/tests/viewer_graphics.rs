@@ -1,0 +1,116 @@
+//! The viewer's picture as pixel images (`--graphics kitty|sixel|iterm2`), on a pseudo-terminal of the test's own
+//! that gives its size in pixels (or not), decoded by decoders made for each format: `icy_sixel`, base64 and zlib
+//! for kitty's payload, the `png` crate for iTerm2's.
+
+use std::io::Read;
+use std::time::Instant;
+
+use base64::Engine;
+use rastty::graphics::GraphicsProtocol;
+use rastty::viewer::{MAX_IMAGE_PIXELS, image_size};
+
+use crate::common::pty::{Pty, Screen, Viewer};
+
+/// The viewer with `--graphics protocol` on an 80 x 24 terminal of `pixels`, until its first whole image is on
+/// the screen; returns the screen and the viewer.
+fn start(protocol: &str, pixels: (u16, u16), image_end: &'static [u8]) -> (Screen, Viewer) {
+    let Pty { master, slave } = Pty::open_with_pixels(80, 24, pixels);
+    let viewer = Viewer::start_with(&slave, &["--graphics", protocol]);
+    drop(slave);
+    let screen = Screen::start(master);
+    screen.wait_for("a whole image", |out| out.windows(image_end.len()).any(|w| w == image_end));
+    (screen, viewer)
+}
+
+/// Quits with `q` and checks the exit status; returns everything written.
+fn quit(mut screen: Screen, mut viewer: Viewer) -> Vec<u8> {
+    screen.type_bytes(b"q");
+    let (status, _) = viewer.wait_for_end(Instant::now());
+    assert_eq!(status.code(), Some(0), "exit status after q");
+    let output = screen.output();
+    screen.close();
+    output
+}
+
+/// The bytes of `text` from the first `start` to the end of the first `end` after it.
+fn first<'a>(text: &'a [u8], start: &[u8], end: &[u8]) -> &'a [u8] {
+    let from = text.windows(start.len()).position(|w| w == start).expect("the start of an image");
+    let length = text[from..].windows(end.len()).position(|w| w == end).expect("the end of the image");
+    &text[from..from + length + end.len()]
+}
+
+/// How many distinct colours `rgb` (three bytes a pixel) holds: a picture of the model holds many.
+fn colours(rgb: impl Iterator<Item = [u8; 3]>) -> usize {
+    rgb.collect::<std::collections::HashSet<_>>().len()
+}
+
+#[test]
+fn sixel_frames_fill_the_terminal_but_its_last_row() {
+    let (screen, viewer) = start("sixel", (640, 384), b"\x1b\\");
+    let output = screen.output();
+    let image = icy_sixel::SixelImage::decode(first(&output, b"\x1bP", b"\x1b\\")).expect("a Sixel image");
+    // 8 x 16 pixel cells; 23 rows (the last is left for the cursor), in whole bands of six: 366 pixel rows.
+    assert_eq!((image.width, image.height), (640, 366));
+    let many = colours(image.pixels.chunks_exact(4).map(|p| [p[0], p[1], p[2]]));
+    assert!(many > 20, "{many} colours: not a picture of the model");
+    quit(screen, viewer);
+}
+
+#[test]
+fn kitty_frames_are_one_image_replaced_in_place_and_deleted_at_the_end() {
+    let (screen, viewer) = start("kitty", (640, 384), b"m=0;");
+    // The HUD is cells over the image, and names the protocol and the image's size.
+    screen.type_bytes(b"i");
+    screen.wait_for("the HUD", |out| out.windows(15).any(|w| w == b"kitty 640x384 p"));
+    let output = quit(screen, viewer);
+    let text = String::from_utf8_lossy(&output).into_owned();
+    let images: Vec<&str> = text.split("\x1b_Ga=T,").skip(1).collect();
+    assert!(images.len() >= 2, "{} images: the HUD comes with a new frame", images.len());
+    let mut payload = String::new();
+    for (i, sequence) in text[text.find("\x1b_Ga=T,").unwrap()..].split("\x1b_G").skip(1).enumerate() {
+        let sequence = &sequence[..sequence.find("\x1b\\").expect("ST")];
+        let (keys, data) = sequence.split_once(';').expect("keys ; payload");
+        if i == 0 {
+            assert!(keys.starts_with("a=T,f=24,o=z,s=640,v=384,i=1,p=1,c=80,r=24,C=1,z=-1,q=2,"), "{keys}");
+        }
+        payload.push_str(data);
+        if keys.ends_with("m=0") {
+            break;
+        }
+    }
+    let compressed = base64::engine::general_purpose::STANDARD.decode(payload).expect("base64");
+    let mut rgb = Vec::new();
+    flate2::read::ZlibDecoder::new(&compressed[..]).read_to_end(&mut rgb).expect("zlib");
+    assert_eq!(rgb.len(), 640 * 384 * 3);
+    assert!(colours(rgb.chunks_exact(3).map(|c| [c[0], c[1], c[2]])) > 20);
+    let deleted = text.rfind("\x1b_Ga=d,d=I,i=1,q=2\x1b\\").expect("the image deleted at the end");
+    assert!(deleted > text.rfind("\x1b_Ga=T,").unwrap(), "an image sent after the delete");
+}
+
+#[test]
+fn iterm2_frames_assume_cells_twice_as_tall_as_wide_when_the_terminal_does_not_say() {
+    let (screen, viewer) = start("iterm2", (0, 0), b"\x07");
+    let output = screen.output();
+    let osc = first(&output, b"\x1b]1337;File=", b"\x07");
+    let text = std::str::from_utf8(osc).expect("ASCII");
+    let (arguments, data) = text.split_once(':').expect("arguments : data");
+    assert!(arguments.contains(";width=80;height=23;"), "{arguments}");
+    let png = base64::engine::general_purpose::STANDARD.decode(data.trim_end_matches('\x07')).expect("base64");
+    let mut reader = png::Decoder::new(std::io::Cursor::new(png)).read_info().expect("a PNG");
+    let mut rgb = vec![0; reader.output_buffer_size().expect("a size")];
+    let info = reader.next_frame(&mut rgb).expect("the image");
+    // 80 x 23 cells of 8 x 16 pixels.
+    assert_eq!((info.width, info.height), (640, 368));
+    assert!(colours(rgb.chunks_exact(3).map(|c| [c[0], c[1], c[2]])) > 20);
+    quit(screen, viewer);
+}
+
+#[test]
+fn images_of_big_windows_are_scaled_down_to_the_cap() {
+    let (width, height) = image_size(GraphicsProtocol::Kitty, (300, 100), Some((2400, 1600)), 2.0);
+    assert!(width * height <= MAX_IMAGE_PIXELS && width * height > MAX_IMAGE_PIXELS * 9 / 10, "{width}x{height}");
+    assert!(((width as f32 / height as f32) - 1.5).abs() < 0.01, "{width}x{height} keeps the window's shape");
+    let (_, height) = image_size(GraphicsProtocol::Sixel, (300, 100), Some((2400, 1600)), 2.0);
+    assert_eq!(height % 6, 0);
+    assert_eq!(image_size(GraphicsProtocol::Sixel, (16, 4), Some((16, 4)), 2.0).1, 6, "at least one band");
+}
