@@ -10,6 +10,7 @@ use std::str::FromStr;
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 use rastty::escaped::Escaped;
 use rastty::graphics::GraphicsProtocol;
+use rastty::graphics::frame_palette::Dither;
 use rastty::png_file::write_png;
 use rastty::scene_file::{open, parse_hex_color};
 use rastty::scene_render::{
@@ -17,7 +18,7 @@ use rastty::scene_render::{
     render_scene_image,
 };
 use rastty::screen::{CellMode, ColorMode};
-use rastty::viewer::{ColorChoice, ViewerExit, ViewerOptions};
+use rastty::viewer::{ColorChoice, GraphicsChoice, ViewerExit, ViewerOptions};
 use rastty_core::math::Vec3;
 
 /// Render 3D models in the terminal, or to PNG files.
@@ -47,10 +48,15 @@ struct ViewerArgs {
     /// Unicode 13's sextants), `braille` (2x4) or `ascii` (a character ramp, one pixel a cell).
     #[arg(long, default_value = "half", value_parser = CellMode::from_str)]
     mode: CellMode,
-    /// How the picture reaches the terminal: `cells` (per `--mode`), or one image a frame in the `kitty` graphics
-    /// protocol, `sixel` or `iterm2` inline images, for terminals that show pixels (the HUD and help stay cells).
-    #[arg(long, default_value = "cells", value_parser = GraphicsProtocol::from_str)]
-    graphics: GraphicsProtocol,
+    /// How the picture reaches the terminal: `auto` (asks the terminal: kitty, then iTerm2, then Sixel, else
+    /// cells; cells inside tmux or screen), `cells` (per `--mode`), or one image a frame in the `kitty` graphics
+    /// protocol, `sixel` or `iterm2` inline images (the HUD and help stay cells).
+    #[arg(long, default_value = "auto", value_parser = parse_graphics_choice)]
+    graphics: GraphicsChoice,
+    /// Dither Sixel frames (Floyd-Steinberg) to their 256-colour palette: smoother gradients, with noise that moves
+    /// as the picture does.
+    #[arg(long)]
+    dither: bool,
     /// Colours: auto (from COLORTERM, TERM and NO_COLOR), truecolor, 256, 16 or none.
     #[arg(long, default_value = "auto", value_parser = parse_color_choice)]
     color: ColorChoice,
@@ -192,6 +198,15 @@ fn field_of_view(s: &str) -> Result<f32, String> {
     })
 }
 
+fn parse_graphics_choice(s: &str) -> Result<GraphicsChoice, String> {
+    if s.eq_ignore_ascii_case("auto") {
+        return Ok(GraphicsChoice::Auto);
+    }
+    s.parse::<GraphicsProtocol>()
+        .map(GraphicsChoice::Fixed)
+        .map_err(|_| format!("{s:?} is not a graphics protocol (expected auto, cells, kitty, sixel or iterm2)"))
+}
+
 fn parse_cell_aspect(s: &str) -> Result<f32, String> {
     finite(s).and_then(|v| if (0.25..=8.0).contains(&v) { Ok(v) } else { Err(format!("{s:?} is not within 0.25..8")) })
 }
@@ -325,6 +340,7 @@ fn view(args: &ViewerArgs) -> Result<ExitCode, String> {
         plan,
         cell_mode: args.mode,
         graphics: args.graphics,
+        dither: if args.dither { Dither::FloydSteinberg } else { Dither::None },
         color: args.color,
         cell_aspect: args.cell_aspect,
         pacing: !args.no_pacing,

@@ -7,7 +7,7 @@ use std::time::Instant;
 
 use base64::Engine;
 use rastty::graphics::GraphicsProtocol;
-use rastty::viewer::{MAX_IMAGE_PIXELS, image_size};
+use rastty::viewer::{MAX_IMAGE_PIXELS, PROBE, PROBE_TIMEOUT, image_size};
 
 use crate::common::pty::{Pty, Screen, Viewer};
 
@@ -113,4 +113,53 @@ fn images_of_big_windows_are_scaled_down_to_the_cap() {
     let (_, height) = image_size(GraphicsProtocol::Sixel, (300, 100), Some((2400, 1600)), 2.0);
     assert_eq!(height % 6, 0);
     assert_eq!(image_size(GraphicsProtocol::Sixel, (16, 4), Some((16, 4)), 2.0).1, 6, "at least one band");
+}
+
+/// The viewer with no `--graphics` (auto) on an 80 x 24 terminal that gives no pixel size; once it has asked
+/// ([`PROBE`] seen), the terminal types `answer` (if any). Returns the screen, the viewer, and when it asked.
+fn start_auto(answer: Option<&[u8]>) -> (Screen, Viewer, Instant) {
+    let Pty { master, slave } = Pty::open(80, 24);
+    let viewer = Viewer::start_with(&slave, &[]);
+    drop(slave);
+    let screen = Screen::start(master);
+    screen.wait_for("the probe", |out| out.windows(PROBE.len()).any(|w| w == PROBE));
+    let asked = Instant::now();
+    if let Some(answer) = answer {
+        screen.type_bytes(answer);
+    }
+    (screen, viewer, asked)
+}
+
+#[test]
+fn auto_uses_kitty_when_the_terminal_answers_ok_and_its_cell_size() {
+    let (screen, viewer, _) = start_auto(Some(b"\x1b_Gi=31;OK\x1b\\\x1b[6;20;10t\x1b[?62;22c"));
+    // 80 x 24 cells of 10 x 20 pixels: 800 x 480, over the cap, scaled to 715 x 429.
+    screen.wait_for("a kitty image", |out| out.windows(15).any(|w| w == b"s=715,v=429,i=1"));
+    screen.type_bytes(b"i");
+    screen.wait_for("the HUD", |out| out.windows(12).any(|w| w == b"kitty (auto)"));
+    let output = quit(screen, viewer);
+    assert!(!output.windows(3).any(|w| w == "▀".as_bytes()), "half-blocks drawn with kitty graphics");
+}
+
+#[test]
+fn auto_uses_sixel_when_the_device_attributes_list_it() {
+    let (screen, viewer, _) = start_auto(Some(b"\x1b[?63;1;4;22c"));
+    screen.wait_for("a Sixel image", |out| out.windows(10).any(|w| w == b"\x1bP0;1;0q\"1"));
+    quit(screen, viewer);
+}
+
+#[test]
+fn auto_without_answers_draws_cells_after_the_timeout() {
+    let (screen, viewer, asked) = start_auto(None);
+    screen.wait_for_picture();
+    let waited = asked.elapsed();
+    assert!(waited >= PROBE_TIMEOUT / 2, "drew cells {waited:?} after asking: did it wait for an answer?");
+    assert!(waited < PROBE_TIMEOUT * 4, "drew cells {waited:?} after asking");
+    // A late answer is not taken for keys ('i' in it would open the HUD, 'q' would quit).
+    screen.type_bytes(b"\x1b_Gi=31;OK\x1b\\\x1b[?62;4c");
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    let output = screen.output();
+    assert!(!output.windows(3).any(|w| w == b"fps"), "the late answer opened the HUD");
+    let output = quit(screen, viewer);
+    assert!(!output.windows(4).any(|w| w == b"\x1b_Ga"), "an image after cells were chosen");
 }

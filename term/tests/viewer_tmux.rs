@@ -34,7 +34,8 @@ fn draws_turns_shows_the_hud_and_quits_cleanly() {
         let screen = tmux.screen();
         (screen.contains("built-in Spot") && screen.contains("fps")).then_some(screen)
     });
-    assert!(hud.contains("100x32 half-block truecolor"), "HUD:\n{hud}");
+    // Inside tmux, `--graphics auto` keeps to cells without asking.
+    assert!(hud.contains("100x32 half-block (auto) truecolor"), "HUD:\n{hud}");
 
     tmux.send_keys("q");
     let (status, tty_same) = tmux.wait_for_exit();

@@ -19,9 +19,11 @@ use rastty_core::target::{Rgb888, Target};
 
 use super::median;
 use rastty::builtin::BUILTIN_NAME;
+use rastty::graphics::{FrameImage, GraphicsProtocol};
 use rastty::scene_file::{FramedCamera, OpenError, Projection, open};
 use rastty::scene_render::{Orbit, PlanOptions, PreparedScene, ScenePlan, SceneRenderError, SceneRenderer};
 use rastty::screen::{CellGrid, CellMode, ColorMode, Encoder, PixelFrame, naive_full_frame};
+use rastty::viewer::image_size;
 
 /// Terminal sizes measured, in cells (columns, rows).
 pub const SIZES: [(u16, u16); 3] = [(80, 24), (120, 40), (200, 60)];
@@ -180,8 +182,10 @@ pub(super) struct TurntableFrame {
     pub grid: CellGrid,
     /// The [`ScenePlan`] and [`SceneRenderer::render`], clearing included.
     pub render: Duration,
-    /// Pixels to cells ([`CellMode::to_cells`]).
+    /// Pixels to cells ([`CellMode::to_cells`]; zero for an image frame).
     pub cells: Duration,
+    /// The picture as an image, when the turntable sends images.
+    pub image: Option<FrameImage>,
 }
 
 /// The turntable frames of one terminal size, cell mode and colour mode, as the viewer would make them.
@@ -195,6 +199,10 @@ pub(super) struct Turntable<'a> {
     step: f32,
     cell_mode: CellMode,
     colors: ColorMode,
+    /// Cells, or the protocol of the images it makes.
+    graphics: GraphicsProtocol,
+    /// The terminal's size in cells.
+    size: (u16, u16),
     width: usize,
     height: usize,
     aspect: f32,
@@ -231,6 +239,8 @@ impl<'a> Turntable<'a> {
             step,
             cell_mode,
             colors,
+            graphics: GraphicsProtocol::Cells,
+            size: (cols, rows),
             width,
             height,
             // As in the viewer: the physical aspect, a cell being CELL_ASPECT times taller than wide.
@@ -238,6 +248,22 @@ impl<'a> Turntable<'a> {
             pixels: vec![0; width * height],
             depth: vec![0.0; width * height],
         }
+    }
+
+    /// `frames` frames per turn at `cols` x `rows` cells as images in `protocol`, sized as the viewer sizes them
+    /// for a terminal that does not give its size in pixels ([`image_size`]).
+    pub(super) fn images(
+        scene: &'a PreparedScene,
+        size: (u16, u16),
+        protocol: GraphicsProtocol,
+        frames: usize,
+    ) -> Self {
+        let (width, height) = image_size(protocol, size, None, CELL_ASPECT);
+        let mut turntable = Self::new(scene, size, CellMode::HalfBlock, ColorMode::TrueColor, frames);
+        turntable.graphics = protocol;
+        (turntable.width, turntable.height, turntable.aspect) = (width, height, width as f32 / height as f32);
+        (turntable.pixels, turntable.depth) = (vec![0; width * height], vec![0.0; width * height]);
+        turntable
     }
 
     /// The pixel size of the frames.
@@ -257,13 +283,24 @@ impl<'a> Turntable<'a> {
             .map_err(ReportError::Render)?;
         self.renderer.render(self.scene, &plan, &mut target).map_err(ReportError::Render)?;
         let render = start.elapsed();
+        self.orbit.rotate(self.step, 0.0);
+        if self.graphics != GraphicsProtocol::Cells {
+            let (columns, rows) = self.size;
+            let image = FrameImage {
+                pixels: self.pixels.clone(),
+                width: self.width,
+                height: self.height,
+                columns,
+                rows: self.graphics.image_rows(rows),
+            };
+            return Ok(TurntableFrame { grid: CellGrid::default(), render, cells: Duration::ZERO, image: Some(image) });
+        }
         let background = rastty_core::color::pack_rgb888(plan.background);
         let frame = PixelFrame::new(&self.pixels, self.width, self.height);
         let start = Instant::now();
         let grid = self.cell_mode.to_cells(frame, self.colors, background);
         let cells = start.elapsed();
-        self.orbit.rotate(self.step, 0.0);
-        Ok(TurntableFrame { grid, render, cells })
+        Ok(TurntableFrame { grid, render, cells, image: None })
     }
 }
 

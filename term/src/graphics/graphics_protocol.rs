@@ -78,8 +78,9 @@ impl GraphicsProtocol {
         }
     }
 
-    /// Appends the bytes that show `image` from the top-left cell (nothing for [`GraphicsProtocol::Cells`]).
-    pub fn write_image(self, out: &mut Vec<u8>, image: &FrameImage) {
+    /// Appends the bytes that show `image` from the top-left cell (nothing for [`GraphicsProtocol::Cells`]);
+    /// `dither` is how a Sixel frame maps to its palette.
+    pub fn write_image(self, out: &mut Vec<u8>, image: &FrameImage, dither: Dither) {
         let frame = PixelFrame::new(&image.pixels, image.width, image.height);
         match self {
             GraphicsProtocol::Cells => {}
@@ -95,7 +96,7 @@ impl GraphicsProtocol {
             }
             GraphicsProtocol::Sixel => {
                 out.extend_from_slice(b"\x1b[H");
-                sixel::write_image(out, &reduce(frame, 256, Dither::None));
+                sixel::write_image(out, &reduce(frame, 256, dither));
             }
             GraphicsProtocol::Iterm2 => {
                 out.extend_from_slice(b"\x1b[H");
@@ -158,11 +159,11 @@ mod tests {
         let image = FrameImage { pixels: vec![0xFF0000; 12], width: 4, height: 3, columns: 2, rows: 1 };
         for protocol in [GraphicsProtocol::Kitty, GraphicsProtocol::Sixel, GraphicsProtocol::Iterm2] {
             let mut out = Vec::new();
-            protocol.write_image(&mut out, &image);
+            protocol.write_image(&mut out, &image, Dither::None);
             assert!(out.starts_with(b"\x1b[H") || out.starts_with(b"\x1b[1;1H"), "{protocol}");
         }
         let mut out = Vec::new();
-        GraphicsProtocol::Cells.write_image(&mut out, &image);
+        GraphicsProtocol::Cells.write_image(&mut out, &image, Dither::FloydSteinberg);
         GraphicsProtocol::Sixel.write_end(&mut out);
         assert!(out.is_empty());
         GraphicsProtocol::Kitty.write_end(&mut out);

@@ -77,6 +77,8 @@ pub fn action_for(input: &Input) -> Option<Action> {
         }),
         // The frame writer's business, not the user's.
         Input::StatusOk => None,
+        // Answers to the start-up probe (or late ones): not the user's either.
+        Input::DeviceAttributes { .. } | Input::CellPixels { .. } | Input::GraphicsReply { .. } => None,
     }
 }
 

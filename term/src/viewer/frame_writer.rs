@@ -25,6 +25,7 @@ use std::time::{Duration, Instant};
 
 use super::link_meter::{LinkMeter, STATUS_REQUEST};
 use super::tty::write_while;
+use crate::graphics::frame_palette::Dither;
 use crate::graphics::{FrameImage, GraphicsProtocol};
 use crate::screen::{CellGrid, Encoder, Tolerance};
 
@@ -88,13 +89,13 @@ pub struct FrameWriter {
 }
 
 impl FrameWriter {
-    /// Starts the writer thread, writing to `out`, a non-blocking handle to the terminal, images in `protocol`;
-    /// `pacing` off, every frame is exact and no status request is sent.
-    pub fn start(out: File, protocol: GraphicsProtocol, pacing: bool) -> Self {
+    /// Starts the writer thread, writing to `out`, a non-blocking handle to the terminal, images in `protocol`
+    /// (Sixel's palette mapped with `dither`); `pacing` off, every frame is exact and no status request is sent.
+    pub fn start(out: File, (protocol, dither): (GraphicsProtocol, Dither), pacing: bool) -> Self {
         let shared = Arc::new((Mutex::new(Mailbox::default()), Condvar::new()));
         let thread_shared = Arc::clone(&shared);
         let spawned = thread::Builder::new().name("rastty-writer".into()).spawn(move || {
-            write_loop(&out, &thread_shared, protocol, pacing);
+            write_loop(&out, &thread_shared, (protocol, dither), pacing);
             lock(&thread_shared).done = true;
             thread_shared.1.notify_all();
         });
@@ -173,11 +174,13 @@ struct Writer {
     bytes: Vec<u8>,
     /// How images go out.
     protocol: GraphicsProtocol,
+    /// How a Sixel image maps to its palette.
+    dither: Dither,
     /// Status requests and tolerances on; off, the meter never hears of a write and every frame is exact.
     pacing: bool,
 }
 
-fn write_loop(out: &File, shared: &Shared, protocol: GraphicsProtocol, pacing: bool) {
+fn write_loop(out: &File, shared: &Shared, (protocol, dither): (GraphicsProtocol, Dither), pacing: bool) {
     let mut writer = Writer {
         encoder: Encoder::new(),
         trial: Encoder::new(),
@@ -186,6 +189,7 @@ fn write_loop(out: &File, shared: &Shared, protocol: GraphicsProtocol, pacing: b
         last_frame: Instant::now(),
         bytes: Vec::new(),
         protocol,
+        dither,
         pacing,
     };
     while let Some(job) = writer.next_job(shared) {
@@ -309,13 +313,13 @@ impl Writer {
     fn encode_image(&mut self, grid: &CellGrid, image: &FrameImage) {
         if !self.protocol.covers_text() {
             self.encoder.encode(grid, &mut self.bytes);
-            self.protocol.write_image(&mut self.bytes, image);
+            self.protocol.write_image(&mut self.bytes, image, self.dither);
             return;
         }
         if self.encoder.shown().is_none_or(|shown| !shown.same_size(grid)) {
             self.encoder.encode(&CellGrid::blank(grid.width, grid.height), &mut self.bytes);
         }
-        self.protocol.write_image(&mut self.bytes, image);
+        self.protocol.write_image(&mut self.bytes, image, self.dither);
         self.encoder.assume_blank(grid.width, grid.height);
         self.encoder.encode(grid, &mut self.bytes);
     }

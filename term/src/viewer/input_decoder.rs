@@ -3,7 +3,12 @@
 //! What a terminal sends in raw mode: printable characters as themselves (UTF-8), Ctrl-C as 0x03, cursor keys as
 //! `ESC [ A` or `ESC O A` (with modifiers `ESC [ 1 ; 5 A`), mouse reports in the SGR form `ESC [ < b ; x ; y M`
 //! (`m` for a release), and other control sequences this viewer ignores (ECMA-48, 5.4: a CSI sequence is
-//! parameter bytes 0x30-0x3F, intermediate bytes 0x20-0x2F and one final byte 0x40-0x7E). A lone `ESC` is the
+//! parameter bytes 0x30-0x3F, intermediate bytes 0x20-0x2F and one final byte 0x40-0x7E). Terminals also answer
+//! queries: the status report, the primary device attributes (`ESC [ ? 62 ; 4 ; ... c`, 4 meaning Sixel), the cell
+//! size in pixels (`ESC [ 6 ; height ; width t`) and kitty's graphics reply (`ESC _ G ... ; OK ESC \`, an
+//! application program command). Control strings (APC, DCS, OSC, PM, SOS: ECMA-48, 5.6) run to the string
+//! terminator `ESC \` (or BEL after an OSC) and are skipped whole unless they are kitty's reply, so an answer that
+//! arrives late never reads as keys. A lone `ESC` is the
 //! Escape key only if nothing follows it soon: over a slow link a sequence can arrive in pieces, so the caller
 //! waits [`ESCAPE_WAIT`] for the rest before calling [`InputDecoder::flush`].
 
@@ -12,8 +17,8 @@ use std::time::Duration;
 /// How long a lone `ESC` waits for the rest of a sequence before it counts as the Escape key.
 pub const ESCAPE_WAIT: Duration = Duration::from_millis(50);
 
-/// Longest control sequence kept while waiting for its final byte; a longer one is dropped as garbage.
-const MAX_SEQUENCE: usize = 64;
+/// Longest control sequence or string kept while waiting for its end; a longer one is dropped as garbage.
+const MAX_SEQUENCE: usize = 512;
 
 const ESC: u8 = 0x1b;
 
@@ -68,6 +73,23 @@ pub enum Input {
     /// The terminal's answer to a status request (`ESC [ 0 n` after `ESC [ 5 n`): it has shown everything written
     /// before the request.
     StatusOk,
+    /// The primary device attributes (the answer to `ESC [ c`), and whether they include Sixel graphics (4).
+    DeviceAttributes {
+        /// Attribute 4 is listed.
+        sixel: bool,
+    },
+    /// The size of a cell in pixels (the answer to `ESC [ 16 t`).
+    CellPixels {
+        /// Width.
+        width: u16,
+        /// Height.
+        height: u16,
+    },
+    /// kitty's answer to a graphics command: `OK`, or an error.
+    GraphicsReply {
+        /// The answer was `OK`.
+        ok: bool,
+    },
 }
 
 /// Turns input bytes, in pieces of any size, into [`Input`]s.
@@ -166,6 +188,8 @@ fn decode_escape(bytes: &[u8]) -> Step {
         },
         // Escape pressed twice, or Escape and then a sequence: the first is the key.
         Some(&ESC) => Step::Event(Input::Key(Key::Esc), 1),
+        // Control strings: APC, DCS, OSC, PM, SOS.
+        Some(b'_' | b'P' | b']' | b'^' | b'X') => decode_string(bytes),
         // Alt with a key: not a key of the viewer's.
         Some(_) => Step::Skip(2),
     }
@@ -187,10 +211,45 @@ fn decode_csi(bytes: &[u8]) -> Step {
     if (params, last) == (&b"0"[..], b'n') {
         return Step::Event(Input::StatusOk, used);
     }
+    if let (Some(attributes), b'c') = (params.strip_prefix(b"?"), last) {
+        let sixel = attributes.split(|&b| b == b';').any(|a| a == b"4");
+        return Step::Event(Input::DeviceAttributes { sixel }, used);
+    }
+    if last == b't' {
+        let mut fields = params.split(|&b| b == b';').map(|f| std::str::from_utf8(f).ok()?.parse::<u16>().ok());
+        if let (Some(Some(6)), Some(Some(height)), Some(Some(width)), None) =
+            (fields.next(), fields.next(), fields.next(), fields.next())
+            && width > 0
+            && height > 0
+        {
+            return Step::Event(Input::CellPixels { width, height }, used);
+        }
+    }
     match cursor_key(last) {
         Some(key) => Step::Event(Input::Key(key), used),
         None => Step::Skip(used),
     }
+}
+
+/// A control string `ESC x ... ESC \\` (or `... BEL` after an OSC): kitty's graphics reply, or skipped whole.
+fn decode_string(bytes: &[u8]) -> Step {
+    let body = &bytes[2..];
+    let osc = bytes[1] == b']';
+    let end = body.iter().enumerate().find_map(|(i, &b)| match b {
+        ESC if body.get(i + 1) == Some(&b'\\') => Some((i, i + 2)),
+        ESC if i + 1 == body.len() => None,
+        0x07 if osc => Some((i, i + 1)),
+        _ => None,
+    });
+    let Some((content_end, used)) = end else { return Step::Incomplete };
+    let (content, used) = (&body[..content_end], 2 + used);
+    if bytes[1] == b'_'
+        && let Some(reply) = content.strip_prefix(b"G")
+        && let Some(at) = reply.iter().position(|&b| b == b';')
+    {
+        return Step::Event(Input::GraphicsReply { ok: &reply[at + 1..] == b"OK" }, used);
+    }
+    Step::Skip(used)
 }
 
 fn cursor_key(last: u8) -> Option<Key> {
@@ -321,9 +380,38 @@ mod tests {
         assert!(!waiting);
         // A sequence that never ends is dropped once too long, and decoding goes on.
         let mut endless = b"\x1b[".to_vec();
-        endless.extend(std::iter::repeat_n(b'1', 200));
+        endless.extend(std::iter::repeat_n(b'1', 600));
         let (events, waiting) = decoded(&[&endless, b"A", b"k"]);
         assert_eq!(events, [key(Key::Char('A')), key(Key::Char('k'))]);
         assert!(!waiting);
+    }
+
+    #[test]
+    fn answers_to_queries_are_events() {
+        let (events, waiting) =
+            decoded(&[b"\x1b_Gi=31;OK\x1b\\\x1b[6;18;9t\x1b[?62;4;22c\x1b_Gi=31;ENOENT:no\x1b\\\x1b[?1;2c"]);
+        assert_eq!(
+            events,
+            [
+                Input::GraphicsReply { ok: true },
+                Input::CellPixels { width: 9, height: 18 },
+                Input::DeviceAttributes { sixel: true },
+                Input::GraphicsReply { ok: false },
+                Input::DeviceAttributes { sixel: false },
+            ]
+        );
+        assert!(!waiting);
+    }
+
+    #[test]
+    fn control_strings_never_read_as_keys() {
+        // An OSC ended by BEL, another by ST, a DCS, an APC that is not kitty's: none of their letters are keys.
+        let whole: &[u8] =
+            b"\x1b]11;rgb:0000/0000/0000\x07\x1b]10;?\x1b\\\x1bPiq\x1b\\\x1b_hi\x1b\\q\x1b_Gi=31;OK\x1b\\";
+        for cut in 1..whole.len() {
+            let (events, waiting) = decoded(&[&whole[..cut], &whole[cut..]]);
+            assert_eq!(events, [key(Key::Char('q')), Input::GraphicsReply { ok: true }], "cut at {cut}");
+            assert!(!waiting);
+        }
     }
 }

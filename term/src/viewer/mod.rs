@@ -12,6 +12,7 @@
 
 mod controls;
 mod frame_writer;
+mod graphics_probe;
 mod input_decoder;
 mod link_meter;
 mod overlay;
@@ -21,6 +22,7 @@ mod tty;
 
 pub use controls::{Action, HELP, action_for};
 pub use frame_writer::{Frame, FrameWriter, REFINE_AFTER, TOLERANCES, WriterStats};
+pub use graphics_probe::{GraphicsEnv, PROBE, PROBE_TIMEOUT, ProbeAnswers, choose};
 pub use input_decoder::{ESCAPE_WAIT, Input, InputDecoder, Key, MouseKind};
 pub use link_meter::{ANSWER_TIMEOUT, FRAME_LINK_TIME, LinkMeter, MAX_IN_FLIGHT, MIN_LINK_TIME, STATUS_REQUEST};
 pub use state::{Effect, ViewerState};
@@ -37,6 +39,7 @@ use rastty_core::pipeline::DrawStats;
 use rastty_core::target::{Rgb888, Target};
 
 use crate::escaped::Escaped;
+use crate::graphics::frame_palette::Dither;
 use crate::graphics::{FrameImage, GraphicsProtocol};
 use crate::scene_render::{
     FrameReport, Orbit, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError, SceneRenderer,
@@ -69,6 +72,15 @@ pub enum ColorChoice {
     Fixed(ColorMode),
 }
 
+/// The way the picture reaches the terminal: asked of the terminal or chosen.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GraphicsChoice {
+    /// The best the terminal answers it has, asked with [`PROBE`] and decided by [`choose`].
+    Auto,
+    /// This protocol (or cells).
+    Fixed(GraphicsProtocol),
+}
+
 /// Everything the viewer is started with, besides the scene.
 #[derive(Clone, Debug)]
 pub struct ViewerOptions {
@@ -79,7 +91,9 @@ pub struct ViewerOptions {
     /// Half-block, symbol or ASCII cells.
     pub cell_mode: CellMode,
     /// Cells, or an image in a pixel graphics protocol (the cells then carry only the HUD and help).
-    pub graphics: GraphicsProtocol,
+    pub graphics: GraphicsChoice,
+    /// How a Sixel frame maps to its palette.
+    pub dither: Dither,
     /// Colours.
     pub color: ColorChoice,
     /// Cell height over cell width.
@@ -154,7 +168,31 @@ pub fn run(scene: &PreparedScene, name: &str, options: &ViewerOptions) -> Result
     };
     let session = TerminalSession::enter().map_err(terminal_error)?;
     let output = session.tty.output_clone().map_err(terminal_error)?;
-    let writer = FrameWriter::start(output.try_clone().map_err(terminal_error)?, options.graphics, options.pacing);
+    let mut typed = Vec::new();
+    let (graphics, answers) = match options.graphics {
+        GraphicsChoice::Fixed(protocol) => (protocol, ProbeAnswers::default()),
+        GraphicsChoice::Auto => {
+            let read = |name: &str| std::env::var_os(name).map(|v| v.to_string_lossy().into_owned());
+            let (term, tmux, program, lc) = (read("TERM"), read("TMUX"), read("TERM_PROGRAM"), read("LC_TERMINAL"));
+            let env = GraphicsEnv {
+                term: term.as_deref(),
+                tmux: tmux.as_deref(),
+                term_program: program.as_deref(),
+                lc_terminal: lc.as_deref(),
+            };
+            let answers = if env.cells_without_asking() {
+                ProbeAnswers::default()
+            } else {
+                match probe(&session, &output, &mut typed) {
+                    Ok(answers) => answers,
+                    Err(Gone(_)) => return Ok(ViewerExit::TerminalGone),
+                }
+            };
+            (choose(&env, &answers), answers)
+        }
+    };
+    let writer =
+        FrameWriter::start(output.try_clone().map_err(terminal_error)?, (graphics, options.dither), options.pacing);
     let mut viewer = Viewer {
         scene,
         renderer: SceneRenderer::new(),
@@ -162,22 +200,25 @@ pub fn run(scene: &PreparedScene, name: &str, options: &ViewerOptions) -> Result
         state: ViewerState::new(orbit, options.plan, options.cell_aspect),
         canvas: Canvas::default(),
         cell_mode: options.cell_mode,
-        graphics: options.graphics,
+        graphics,
+        graphics_chosen: options.graphics == GraphicsChoice::Auto,
+        cell_pixels: answers.cell_pixels,
         colors,
         cell_aspect: options.cell_aspect,
         size: session.tty.size().map_err(terminal_error)?,
-        size_in_pixels: session.tty.size_in_pixels(),
+        size_in_pixels: None,
         last_stats: DrawStats::default(),
         background: Vec3::ZERO,
         last_report: None,
         render_time: Duration::ZERO,
         frame_times: FrameClock::default(),
     };
-    let result = viewer.run_loop(&session, &writer);
+    viewer.size_in_pixels = viewer.text_area_pixels(&session.tty);
+    let result = viewer.run_loop(&session, &writer, typed);
     let deadline = Instant::now() + FINISH_TIME;
     writer.finish(deadline);
     let mut end = Vec::new();
-    options.graphics.write_end(&mut end);
+    graphics.write_end(&mut end);
     // The terminal may be gone already; nothing is left to tell it then.
     let _ = write_until(&output, &end, deadline);
     drop(session);
@@ -224,6 +265,10 @@ struct Viewer<'a> {
     canvas: Canvas,
     cell_mode: CellMode,
     graphics: GraphicsProtocol,
+    /// `graphics` was chosen by asking the terminal.
+    graphics_chosen: bool,
+    /// The cell size in pixels the terminal answered, if it did.
+    cell_pixels: Option<(u16, u16)>,
     colors: ColorMode,
     cell_aspect: f32,
     size: (u16, u16),
@@ -239,10 +284,25 @@ struct Viewer<'a> {
 }
 
 impl Viewer<'_> {
-    fn run_loop(&mut self, session: &TerminalSession, writer: &FrameWriter) -> Result<ViewerExit, ViewerError> {
+    /// The terminal's text area in pixels: as the window size says, else from the cell size it answered.
+    fn text_area_pixels(&self, tty: &Tty) -> Option<(u16, u16)> {
+        let (cols, rows) = self.size;
+        tty.size_in_pixels().or_else(|| {
+            let (width, height) = self.cell_pixels?;
+            Some((cols.saturating_mul(width), rows.saturating_mul(height)))
+        })
+    }
+
+    /// The loop: `typed`, the input that came while the terminal was probed, first.
+    fn run_loop(
+        &mut self,
+        session: &TerminalSession,
+        writer: &FrameWriter,
+        typed: Vec<Input>,
+    ) -> Result<ViewerExit, ViewerError> {
         let mut dirty = true;
         let mut last_spin = Instant::now();
-        let (mut decoder, mut inputs, mut actions) = (InputDecoder::new(), Vec::new(), Vec::new());
+        let (mut decoder, mut inputs, mut actions) = (InputDecoder::new(), typed, Vec::new());
         let mut buffer = [0u8; 4096];
         loop {
             if let Some(signal) = session.stop_signal() {
@@ -290,7 +350,7 @@ impl Viewer<'_> {
             for action in actions.drain(..) {
                 if let Action::Resize(cols, rows) = action {
                     self.size = (cols, rows);
-                    self.size_in_pixels = session.tty.size_in_pixels();
+                    self.size_in_pixels = self.text_area_pixels(&session.tty);
                     writer.invalidate();
                 }
                 match self.state.apply(action) {
@@ -397,9 +457,11 @@ impl Viewer<'_> {
                 if a.wireframe { "on" } else { "off" },
                 cols,
                 rows,
-                match self.graphics {
-                    GraphicsProtocol::Cells => self.cell_mode.name(),
-                    protocol => protocol.name(),
+                match (self.graphics, self.graphics_chosen) {
+                    (GraphicsProtocol::Cells, false) => self.cell_mode.name().to_owned(),
+                    (GraphicsProtocol::Cells, true) => format!("{} (auto)", self.cell_mode.name()),
+                    (protocol, false) => protocol.name().to_owned(),
+                    (protocol, true) => format!("{} (auto)", protocol.name()),
                 },
                 match self.graphics {
                     GraphicsProtocol::Cells => self.colors.name().to_owned(),
@@ -458,4 +520,31 @@ pub fn image_size(
     let multiple = protocol.row_multiple();
     let height = ((height as usize) / multiple * multiple).max(multiple);
     ((width as usize).max(1), height)
+}
+
+/// Writes [`PROBE`] and reads the terminal's answers until the device attributes come or [`PROBE_TIMEOUT`]
+/// passes; input that is not an answer (keys typed meanwhile) goes to `typed`.
+///
+/// # Errors
+/// [`Gone`] when the terminal went away.
+fn probe(session: &TerminalSession, output: &std::fs::File, typed: &mut Vec<Input>) -> Result<ProbeAnswers, Gone> {
+    let deadline = Instant::now() + PROBE_TIMEOUT;
+    let mut answers = ProbeAnswers::default();
+    if write_until(output, PROBE, deadline).map_err(|e| Gone(e.to_string()))? < PROBE.len() {
+        return Ok(answers);
+    }
+    let (mut decoder, mut events, mut buffer) = (InputDecoder::new(), Vec::new(), [0u8; 1024]);
+    while !answers.attributes {
+        let Some(left) = deadline.checked_duration_since(Instant::now()) else { break };
+        if let Woken::Input = session.tty.wait(left)? {
+            let n = session.tty.read(&mut buffer)?;
+            decoder.push(&buffer[..n], &mut events);
+        }
+        for event in events.drain(..) {
+            if !answers.take(&event) {
+                typed.push(event);
+            }
+        }
+    }
+    Ok(answers)
 }

@@ -159,6 +159,10 @@ impl Viewer {
             .env("TERM", "xterm-256color")
             .env("COLORTERM", "truecolor")
             .env_remove("NO_COLOR")
+            // `--graphics auto` asks this terminal, whatever runs the tests.
+            .env_remove("TMUX")
+            .env_remove("TERM_PROGRAM")
+            .env_remove("LC_TERMINAL")
             .stdin(stdio())
             .stdout(stdio())
             .stderr(stdio())
