@@ -60,9 +60,10 @@ struct ViewerArgs {
     /// Colours: auto (from COLORTERM, TERM and NO_COLOR), truecolor, 256, 16 or none.
     #[arg(long, default_value = "auto", value_parser = parse_color_choice)]
     color: ColorChoice,
-    /// Height of a terminal cell divided by its width.
-    #[arg(long, default_value_t = 2.0, allow_negative_numbers = true, value_parser = parse_cell_aspect)]
-    cell_aspect: f32,
+    /// Height of a terminal cell divided by its width (default: from the terminal's cell size in pixels when it
+    /// says, else 2).
+    #[arg(long, allow_negative_numbers = true, value_parser = parse_cell_aspect)]
+    cell_aspect: Option<f32>,
     /// Write every frame exact, as fast as the terminal takes it: no status requests, and no moving picture sent
     /// within a colour tolerance on a slow link.
     #[arg(long)]

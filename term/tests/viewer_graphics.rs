@@ -163,3 +163,21 @@ fn auto_without_answers_draws_cells_after_the_timeout() {
     let output = quit(screen, viewer);
     assert!(!output.windows(4).any(|w| w == b"\x1b_Ga"), "an image after cells were chosen");
 }
+
+#[test]
+fn the_cell_aspect_comes_from_the_terminal_unless_given() {
+    // 80 x 24 cells in 640 x 480 pixels: cells of 8 x 20, 2.5 times as tall as wide.
+    for (args, expected) in [
+        (&["--graphics", "cells"][..], "cell aspect 2.50 (terminal)"),
+        (&["--graphics", "cells", "--cell-aspect", "1.5"][..], "cell aspect 1.50 (--cell-aspect)"),
+    ] {
+        let Pty { master, slave } = Pty::open_with_pixels(80, 24, (640, 480));
+        let viewer = Viewer::start_with(&slave, args);
+        drop(slave);
+        let screen = Screen::start(master);
+        screen.wait_for_picture();
+        screen.type_bytes(b"i");
+        screen.wait_for(expected, |out| out.windows(expected.len()).any(|w| w == expected.as_bytes()));
+        quit(screen, viewer);
+    }
+}

@@ -59,6 +59,8 @@ const FINISH_TIME: Duration = Duration::from_millis(250);
 /// The most pixels of an image frame: past it the image is rendered smaller and the terminal scales it up
 /// (kitty, iTerm2) or shows it smaller (Sixel), so that a large window keeps its frame rate.
 pub const MAX_IMAGE_PIXELS: usize = 640 * 480;
+/// Cell height over width when neither `--cell-aspect` nor the terminal says: most monospace fonts.
+pub const DEFAULT_CELL_ASPECT: f32 = 2.0;
 /// The cell width in pixels assumed when the terminal does not give its size in pixels; the height is this times
 /// the cell aspect.
 pub const ASSUMED_CELL_WIDTH: f32 = 8.0;
@@ -96,8 +98,9 @@ pub struct ViewerOptions {
     pub dither: Dither,
     /// Colours.
     pub color: ColorChoice,
-    /// Cell height over cell width.
-    pub cell_aspect: f32,
+    /// Cell height over cell width; `None`: from the terminal's cell size in pixels when it says, else
+    /// [`DEFAULT_CELL_ASPECT`].
+    pub cell_aspect: Option<f32>,
     /// Pace the writer by the terminal's answers and send a moving picture within a tolerance on a slow link
     /// ([`FrameWriter`]); off, every frame is exact and written as fast as the terminal takes it.
     pub pacing: bool,
@@ -197,14 +200,15 @@ pub fn run(scene: &PreparedScene, name: &str, options: &ViewerOptions) -> Result
         scene,
         renderer: SceneRenderer::new(),
         name: name.into(),
-        state: ViewerState::new(orbit, options.plan, options.cell_aspect),
+        state: ViewerState::new(orbit, options.plan, DEFAULT_CELL_ASPECT),
         canvas: Canvas::default(),
         cell_mode: options.cell_mode,
         graphics,
         graphics_chosen: options.graphics == GraphicsChoice::Auto,
         cell_pixels: answers.cell_pixels,
         colors,
-        cell_aspect: options.cell_aspect,
+        cell_aspect: DEFAULT_CELL_ASPECT,
+        cell_aspect_given: options.cell_aspect,
         size: session.tty.size().map_err(terminal_error)?,
         size_in_pixels: None,
         last_stats: DrawStats::default(),
@@ -213,7 +217,7 @@ pub fn run(scene: &PreparedScene, name: &str, options: &ViewerOptions) -> Result
         render_time: Duration::ZERO,
         frame_times: FrameClock::default(),
     };
-    viewer.size_in_pixels = viewer.text_area_pixels(&session.tty);
+    viewer.measure_cells(&session.tty);
     let result = viewer.run_loop(&session, &writer, typed);
     let deadline = Instant::now() + FINISH_TIME;
     writer.finish(deadline);
@@ -270,7 +274,10 @@ struct Viewer<'a> {
     /// The cell size in pixels the terminal answered, if it did.
     cell_pixels: Option<(u16, u16)>,
     colors: ColorMode,
+    /// Cell height over width, as used: [`Self::cell_aspect_given`], else measured, else the default.
     cell_aspect: f32,
+    /// `--cell-aspect`, which overrides what the terminal says.
+    cell_aspect_given: Option<f32>,
     size: (u16, u16),
     /// The terminal's text area in pixels, when it says.
     size_in_pixels: Option<(u16, u16)>,
@@ -284,13 +291,29 @@ struct Viewer<'a> {
 }
 
 impl Viewer<'_> {
-    /// The terminal's text area in pixels: as the window size says, else from the cell size it answered.
-    fn text_area_pixels(&self, tty: &Tty) -> Option<(u16, u16)> {
+    /// Reads the terminal's text area in pixels (as the window size says, else from the cell size it answered)
+    /// and the cell aspect that follows from it, unless `--cell-aspect` gave one.
+    fn measure_cells(&mut self, tty: &Tty) {
         let (cols, rows) = self.size;
-        tty.size_in_pixels().or_else(|| {
+        self.size_in_pixels = tty.size_in_pixels().or_else(|| {
             let (width, height) = self.cell_pixels?;
             Some((cols.saturating_mul(width), rows.saturating_mul(height)))
-        })
+        });
+        let measured = self.size_in_pixels.filter(|_| cols > 0 && rows > 0).map(|(width, height)| {
+            let cell = (f32::from(width) / f32::from(cols), f32::from(height) / f32::from(rows));
+            (cell.1 / cell.0).clamp(0.25, 8.0)
+        });
+        self.cell_aspect = self.cell_aspect_given.or(measured).unwrap_or(DEFAULT_CELL_ASPECT);
+        self.state.set_cell_aspect(self.cell_aspect);
+    }
+
+    /// Where the cell aspect came from, for the HUD.
+    fn cell_aspect_source(&self) -> &'static str {
+        match (self.cell_aspect_given, self.size_in_pixels) {
+            (Some(_), _) => "--cell-aspect",
+            (None, Some(_)) => "terminal",
+            (None, None) => "assumed",
+        }
     }
 
     /// The loop: `typed`, the input that came while the terminal was probed, first.
@@ -350,7 +373,7 @@ impl Viewer<'_> {
             for action in actions.drain(..) {
                 if let Action::Resize(cols, rows) = action {
                     self.size = (cols, rows);
-                    self.size_in_pixels = self.text_area_pixels(&session.tty);
+                    self.measure_cells(&session.tty);
                     writer.invalidate();
                 }
                 match self.state.apply(action) {
@@ -471,6 +494,7 @@ impl Viewer<'_> {
                     }
                 }
             ),
+            format!("cell aspect {:.2} ({})", self.cell_aspect, self.cell_aspect_source()),
         ];
         if let Some(report) = &self.last_report {
             let ms = |d: Duration| d.as_secs_f64() * 1e3;

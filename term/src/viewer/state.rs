@@ -45,6 +45,11 @@ pub enum Effect {
 }
 
 impl ViewerState {
+    /// Cells are now `cell_aspect` times as tall as wide (the terminal said so after a resize).
+    pub fn set_cell_aspect(&mut self, cell_aspect: f32) {
+        self.cell_aspect = cell_aspect;
+    }
+
     /// The state at start-up, for cells `cell_aspect` times as tall as wide.
     pub fn new(orbit: Orbit, options: PlanOptions, cell_aspect: f32) -> Self {
         Self {
