@@ -10,7 +10,7 @@ use std::io::{self, Write};
 use std::time::Duration;
 
 use super::median;
-use super::terminal::{ReportError, Turntable, TurntableFrame};
+use super::terminal::{ReportError, Turntable, TurntableFrame, mean};
 use rastty::graphics::GraphicsProtocol;
 use rastty::graphics::frame_palette::Dither;
 use rastty::scene_render::PreparedScene;
@@ -59,8 +59,7 @@ impl ModeRow {
 
     /// Mean encoder bytes per frame after the first.
     pub fn mean_delta_bytes(&self) -> f64 {
-        let n = self.delta_bytes.len().max(1);
-        self.delta_bytes.iter().sum::<usize>() as f64 / n as f64
+        mean(&self.delta_bytes)
     }
 
     /// The median of each frame's render + cells + encode time.

@@ -172,7 +172,8 @@ impl Measurement {
     }
 }
 
-fn mean(values: &[usize]) -> f64 {
+/// The mean of `values` (0 for none).
+pub(super) fn mean(values: &[usize]) -> f64 {
     if values.is_empty() { 0.0 } else { values.iter().sum::<usize>() as f64 / values.len() as f64 }
 }
 

@@ -26,9 +26,9 @@ pub enum Dither {
 /// The most colours a palette holds.
 pub const MAX_COLORS: usize = 256;
 
-/// NeuQuant learns from one pixel in `1..=30` (its sampling factor): this one for a large frame (2.5 times as fast
-/// as 10 on a 687x444 frame of the built-in model, 6 against 16 ms), fewer for a small one, so that it sees at
-/// least [`SAMPLES_PER_COLOR`] pixels a palette entry.
+/// NeuQuant learns from one pixel in `1..=30` (its sampling factor): this one for a large frame (on a 687x444 frame
+/// of the built-in model it learnt in 6 to 8 ms, against 15 to 17 ms at 10, three runs each of a scratch timing),
+/// fewer for a small one, so that it sees at least [`SAMPLES_PER_COLOR`] pixels a palette entry.
 const MAX_SAMPLE_FACTOR: usize = 30;
 
 /// The fewest pixels NeuQuant learns from for each palette entry.

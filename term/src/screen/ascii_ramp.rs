@@ -7,6 +7,7 @@ use std::sync::OnceLock;
 
 use super::cell::Cell;
 use super::cell_grid::CellGrid;
+use super::color::Color;
 use super::color_mode::ColorMode;
 use super::oklab::srgb_to_linear;
 use super::picture_lightness::PictureLightness;
@@ -45,7 +46,7 @@ pub fn ascii_cell(pixel: u32, lightness: &PictureLightness, colors: ColorMode) -
     if lightness.is_background(pixel) {
         return Cell::BLANK;
     }
-    Cell::new(ramp_char(lightness.level(pixel)), colors.quantize(pixel), super::color::Color::Default)
+    Cell::new(ramp_char(lightness.level(pixel)), colors.quantize(pixel), Color::Default)
 }
 
 /// Fills `grid` (resized to the frame's size: one cell per pixel) with [`ascii_cell`]s; pixels equal to
@@ -61,7 +62,6 @@ pub fn fill_ascii_cells(grid: &mut CellGrid, frame: PixelFrame<'_>, colors: Colo
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::screen::Color;
 
     #[test]
     fn the_picture_spans_the_visible_ramp() {

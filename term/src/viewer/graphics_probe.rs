@@ -10,9 +10,12 @@
 //! Inside tmux or screen the queries would be answered by the multiplexer, not the terminal, and images would need
 //! pass-through: the viewer uses cells there without asking, as it does on the Linux console and `TERM=dumb`.
 
-use std::time::Duration;
+use std::fs::File;
+use std::time::{Duration, Instant};
 
-use super::input_decoder::Input;
+use super::input_decoder::{Input, InputDecoder};
+use super::terminal_session::TerminalSession;
+use super::tty::{Gone, Woken, write_until};
 use crate::graphics::GraphicsProtocol;
 
 /// The queries, in the order the answers come back.
@@ -94,6 +97,56 @@ pub fn choose(env: &GraphicsEnv<'_>, answers: &ProbeAnswers) -> GraphicsProtocol
     } else {
         GraphicsProtocol::Cells
     }
+}
+
+/// The protocol for this process's terminal (`TERM`, `TMUX`, `TERM_PROGRAM`, `LC_TERMINAL`, and the answers to
+/// [`PROBE`] unless [`GraphicsEnv::cells_without_asking`]), with the answers; input that is not an answer (keys
+/// typed meanwhile) goes to `typed`.
+///
+/// # Errors
+/// [`Gone`] when the terminal went away.
+pub(super) fn detect(
+    session: &TerminalSession,
+    output: &File,
+    typed: &mut Vec<Input>,
+) -> Result<(GraphicsProtocol, ProbeAnswers), Gone> {
+    let read = |name: &str| std::env::var_os(name).map(|v| v.to_string_lossy().into_owned());
+    let (term, tmux, program, lc) = (read("TERM"), read("TMUX"), read("TERM_PROGRAM"), read("LC_TERMINAL"));
+    let env = GraphicsEnv {
+        term: term.as_deref(),
+        tmux: tmux.as_deref(),
+        term_program: program.as_deref(),
+        lc_terminal: lc.as_deref(),
+    };
+    let answers = if env.cells_without_asking() { ProbeAnswers::default() } else { probe(session, output, typed)? };
+    Ok((choose(&env, &answers), answers))
+}
+
+/// Writes [`PROBE`] and reads the terminal's answers until the device attributes come or [`PROBE_TIMEOUT`]
+/// passes; input that is not an answer (keys typed meanwhile) goes to `typed`.
+///
+/// # Errors
+/// [`Gone`] when the terminal went away.
+fn probe(session: &TerminalSession, output: &File, typed: &mut Vec<Input>) -> Result<ProbeAnswers, Gone> {
+    let deadline = Instant::now() + PROBE_TIMEOUT;
+    let mut answers = ProbeAnswers::default();
+    if write_until(output, PROBE, deadline).map_err(|e| Gone(e.to_string()))? < PROBE.len() {
+        return Ok(answers);
+    }
+    let (mut decoder, mut events, mut buffer) = (InputDecoder::new(), Vec::new(), [0u8; 1024]);
+    while !answers.attributes {
+        let Some(left) = deadline.checked_duration_since(Instant::now()) else { break };
+        if let Woken::Input = session.tty.wait(left)? {
+            let n = session.tty.read(&mut buffer)?;
+            decoder.push(&buffer[..n], &mut events);
+        }
+        for event in events.drain(..) {
+            if !answers.take(&event) {
+                typed.push(event);
+            }
+        }
+    }
+    Ok(answers)
 }
 
 #[cfg(test)]

@@ -237,7 +237,6 @@ fn decode_string(bytes: &[u8]) -> Step {
     let osc = bytes[1] == b']';
     let end = body.iter().enumerate().find_map(|(i, &b)| match b {
         ESC if body.get(i + 1) == Some(&b'\\') => Some((i, i + 2)),
-        ESC if i + 1 == body.len() => None,
         0x07 if osc => Some((i, i + 1)),
         _ => None,
     });

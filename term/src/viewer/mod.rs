@@ -174,25 +174,10 @@ pub fn run(scene: &PreparedScene, name: &str, options: &ViewerOptions) -> Result
     let mut typed = Vec::new();
     let (graphics, answers) = match options.graphics {
         GraphicsChoice::Fixed(protocol) => (protocol, ProbeAnswers::default()),
-        GraphicsChoice::Auto => {
-            let read = |name: &str| std::env::var_os(name).map(|v| v.to_string_lossy().into_owned());
-            let (term, tmux, program, lc) = (read("TERM"), read("TMUX"), read("TERM_PROGRAM"), read("LC_TERMINAL"));
-            let env = GraphicsEnv {
-                term: term.as_deref(),
-                tmux: tmux.as_deref(),
-                term_program: program.as_deref(),
-                lc_terminal: lc.as_deref(),
-            };
-            let answers = if env.cells_without_asking() {
-                ProbeAnswers::default()
-            } else {
-                match probe(&session, &output, &mut typed) {
-                    Ok(answers) => answers,
-                    Err(Gone(_)) => return Ok(ViewerExit::TerminalGone),
-                }
-            };
-            (choose(&env, &answers), answers)
-        }
+        GraphicsChoice::Auto => match graphics_probe::detect(&session, &output, &mut typed) {
+            Ok(found) => found,
+            Err(Gone(_)) => return Ok(ViewerExit::TerminalGone),
+        },
     };
     let writer =
         FrameWriter::start(output.try_clone().map_err(terminal_error)?, (graphics, options.dither), options.pacing);
@@ -480,12 +465,12 @@ impl Viewer<'_> {
                 if a.wireframe { "on" } else { "off" },
                 cols,
                 rows,
-                match (self.graphics, self.graphics_chosen) {
-                    (GraphicsProtocol::Cells, false) => self.cell_mode.name().to_owned(),
-                    (GraphicsProtocol::Cells, true) => format!("{} (auto)", self.cell_mode.name()),
-                    (protocol, false) => protocol.name().to_owned(),
-                    (protocol, true) => format!("{} (auto)", protocol.name()),
-                },
+                match self.graphics {
+                    GraphicsProtocol::Cells => self.cell_mode.name(),
+                    protocol => protocol.name(),
+                }
+                .to_owned()
+                    + if self.graphics_chosen { " (auto)" } else { "" },
                 match self.graphics {
                     GraphicsProtocol::Cells => self.colors.name().to_owned(),
                     _ => {
@@ -544,31 +529,4 @@ pub fn image_size(
     let multiple = protocol.row_multiple();
     let height = ((height as usize) / multiple * multiple).max(multiple);
     ((width as usize).max(1), height)
-}
-
-/// Writes [`PROBE`] and reads the terminal's answers until the device attributes come or [`PROBE_TIMEOUT`]
-/// passes; input that is not an answer (keys typed meanwhile) goes to `typed`.
-///
-/// # Errors
-/// [`Gone`] when the terminal went away.
-fn probe(session: &TerminalSession, output: &std::fs::File, typed: &mut Vec<Input>) -> Result<ProbeAnswers, Gone> {
-    let deadline = Instant::now() + PROBE_TIMEOUT;
-    let mut answers = ProbeAnswers::default();
-    if write_until(output, PROBE, deadline).map_err(|e| Gone(e.to_string()))? < PROBE.len() {
-        return Ok(answers);
-    }
-    let (mut decoder, mut events, mut buffer) = (InputDecoder::new(), Vec::new(), [0u8; 1024]);
-    while !answers.attributes {
-        let Some(left) = deadline.checked_duration_since(Instant::now()) else { break };
-        if let Woken::Input = session.tty.wait(left)? {
-            let n = session.tty.read(&mut buffer)?;
-            decoder.push(&buffer[..n], &mut events);
-        }
-        for event in events.drain(..) {
-            if !answers.take(&event) {
-                typed.push(event);
-            }
-        }
-    }
-    Ok(answers)
 }
