@@ -49,8 +49,9 @@ struct ViewerArgs {
     #[arg(long, default_value = "half", value_parser = CellMode::from_str)]
     mode: CellMode,
     /// How the picture reaches the terminal: `auto` (asks the terminal: kitty, then iTerm2, then Sixel, else
-    /// cells; cells inside tmux or screen), `cells` (per `--mode`), or one image a frame in the `kitty` graphics
-    /// protocol, `sixel` or `iterm2` inline images (the HUD and help stay cells).
+    /// cells; inside tmux, kitty or iTerm2 through its pass-through when the pane allows it; cells inside
+    /// screen), `cells` (per `--mode`), or one image a frame in the `kitty` graphics protocol, `sixel` or `iterm2`
+    /// inline images (the HUD and help stay cells).
     #[arg(long, default_value = "auto", value_parser = parse_graphics_choice)]
     graphics: GraphicsChoice,
     /// Dither Sixel frames (Floyd-Steinberg) to their 256-colour palette: smoother gradients, with noise that moves

@@ -10,6 +10,7 @@ use rastty::graphics::GraphicsProtocol;
 use rastty::viewer::{MAX_IMAGE_PIXELS, PROBE, PROBE_TIMEOUT, image_size};
 
 use crate::common::pty::{Pty, Screen, Viewer};
+use crate::common::tmux::{SESSION, Tmux, tmux_wanted};
 
 /// The viewer with `--graphics protocol` on an 80 x 24 terminal of `pixels`, until its first whole image is on
 /// the screen; returns the screen and the viewer.
@@ -66,13 +67,22 @@ fn kitty_frames_are_one_image_replaced_in_place_and_deleted_at_the_end() {
     let text = String::from_utf8_lossy(&output).into_owned();
     let images: Vec<&str> = text.split("\x1b_Ga=T,").skip(1).collect();
     assert!(images.len() >= 2, "{} images: the HUD comes with a new frame", images.len());
+    let (keys, rgb) = kitty_image(&text);
+    assert!(keys.starts_with("a=T,f=24,o=z,s=640,v=384,i=1,p=1,c=80,r=24,C=1,z=-1,q=2,"), "{keys}");
+    assert_eq!(rgb.len(), 640 * 384 * 3);
+    assert!(colours(rgb.chunks_exact(3).map(|c| [c[0], c[1], c[2]])) > 20);
+    let deleted = text.rfind("\x1b_Ga=d,d=I,i=1,q=2\x1b\\").expect("the image deleted at the end");
+    assert!(deleted > text.rfind("\x1b_Ga=T,").unwrap(), "an image sent after the delete");
+}
+
+/// The first kitty image in `text`: the keys of its first chunk, and its pixels (RGB), decoded from base64 and zlib.
+fn kitty_image(text: &str) -> (String, Vec<u8>) {
+    let mut first_keys = None;
     let mut payload = String::new();
-    for (i, sequence) in text[text.find("\x1b_Ga=T,").unwrap()..].split("\x1b_G").skip(1).enumerate() {
+    for sequence in text[text.find("\x1b_Ga=T,").expect("a kitty image")..].split("\x1b_G").skip(1) {
         let sequence = &sequence[..sequence.find("\x1b\\").expect("ST")];
         let (keys, data) = sequence.split_once(';').expect("keys ; payload");
-        if i == 0 {
-            assert!(keys.starts_with("a=T,f=24,o=z,s=640,v=384,i=1,p=1,c=80,r=24,C=1,z=-1,q=2,"), "{keys}");
-        }
+        first_keys.get_or_insert_with(|| keys.to_owned());
         payload.push_str(data);
         if keys.ends_with("m=0") {
             break;
@@ -81,10 +91,7 @@ fn kitty_frames_are_one_image_replaced_in_place_and_deleted_at_the_end() {
     let compressed = base64::engine::general_purpose::STANDARD.decode(payload).expect("base64");
     let mut rgb = Vec::new();
     flate2::read::ZlibDecoder::new(&compressed[..]).read_to_end(&mut rgb).expect("zlib");
-    assert_eq!(rgb.len(), 640 * 384 * 3);
-    assert!(colours(rgb.chunks_exact(3).map(|c| [c[0], c[1], c[2]])) > 20);
-    let deleted = text.rfind("\x1b_Ga=d,d=I,i=1,q=2\x1b\\").expect("the image deleted at the end");
-    assert!(deleted > text.rfind("\x1b_Ga=T,").unwrap(), "an image sent after the delete");
+    (first_keys.expect("keys"), rgb)
 }
 
 #[test]
@@ -180,4 +187,114 @@ fn the_cell_aspect_comes_from_the_terminal_unless_given() {
         screen.wait_for(expected, |out| out.windows(expected.len()).any(|w| w == expected.as_bytes()));
         quit(screen, viewer);
     }
+}
+
+/// A tmux client attached to a terminal of the test's own; killed on drop.
+struct TmuxClientProcess(std::process::Child);
+
+impl Drop for TmuxClientProcess {
+    fn drop(&mut self) {
+        let _ = self.0.kill();
+        let _ = self.0.wait();
+    }
+}
+
+/// A private tmux server whose window is split in two, the viewer (`rastty ARGS...`, waiting for
+/// [`Tmux::go`]) in the right pane, with pass-through `allowed` or not, and a client attached on a 100 x 30
+/// pseudo-terminal of the test's own that tells tmux it is kitty (XTVERSION). Returns tmux, the client, the
+/// screen of the terminal outside tmux, and the viewer's pane's first column on that terminal.
+fn kitty_outside_tmux(test: &str, allowed: bool, args: &[&str]) -> (Tmux, TmuxClientProcess, Screen, u16) {
+    let args: Vec<&std::ffi::OsStr> = args.iter().map(std::ffi::OsStr::new).collect();
+    let tmux = Tmux::prepare(test, 100, 30, std::path::Path::new(env!("CARGO_BIN_EXE_rastty")), &args);
+    tmux.run(&["set", "-g", "allow-passthrough", if allowed { "on" } else { "off" }]);
+    tmux.run(&["split-window", "-h", "-b", "-d", "-l", "20", "-t", SESSION, "sleep 60"]);
+    let Pty { master, slave } = Pty::open(100, 30);
+    let stdio = || std::process::Stdio::from(slave.try_clone().expect("dup the slave"));
+    let client = tmux
+        .command()
+        .args(["attach-session", "-t", SESSION])
+        .env("TERM", "xterm-256color")
+        .stdin(stdio())
+        .stdout(stdio())
+        .stderr(stdio())
+        .spawn()
+        .expect("attach a tmux client");
+    let client = TmuxClientProcess(client);
+    drop(slave);
+    let screen = Screen::start(master);
+    screen.wait_for("tmux's XTVERSION query", |out| out.windows(4).any(|w| w == b"\x1b[>q"));
+    screen.type_bytes(b"\x1bP>|kitty(0.35.2)\x1b\\");
+    let name = tmux.wait_for("tmux to know the terminal", || {
+        let name = tmux.run(&["display-message", "-p", "-t", SESSION, "#{client_termtype}"]);
+        (name.trim() == "kitty(0.35.2)").then_some(name)
+    });
+    assert_eq!(name.trim(), "kitty(0.35.2)");
+    let left = tmux.run(&["display-message", "-p", "-t", "%0", "#{pane_left}"]);
+    let left: u16 = left.trim().parse().expect("the viewer's pane's column");
+    assert!(left > 0, "the viewer's pane is the right one");
+    tmux.go();
+    (tmux, client, screen, left)
+}
+
+/// The viewer's pane (`%0`) as text, wrapped lines joined.
+fn pane(tmux: &Tmux) -> String {
+    tmux.run(&["capture-pane", "-p", "-J", "-t", "%0"])
+}
+
+#[test]
+fn inside_tmux_kitty_images_pass_through_to_the_pane_on_the_terminal() {
+    if !tmux_wanted() {
+        return;
+    }
+    let (tmux, _client, mut screen, left) = kitty_outside_tmux("kitty-pass", true, &[]);
+    // tmux unwraps the image and writes it to the terminal, placed at the pane's top-left cell.
+    let placed = format!("\x1b[1;{}H\x1b_Ga=T,", left + 1);
+    screen.wait_for("a kitty image at the pane", |out| out.windows(placed.len()).any(|w| w == placed.as_bytes()));
+    screen.wait_for("the whole image", |out| out.windows(4).any(|w| w == b"m=0;"));
+    let text = String::from_utf8_lossy(&screen.output()).into_owned();
+    let (keys, rgb) = kitty_image(&text);
+    let size = tmux.run(&["display-message", "-p", "-t", "%0", "#{pane_width} #{pane_height}"]);
+    let (cols, rows) = size.trim().split_once(' ').expect("width height");
+    let (cols, rows): (u16, u16) = (cols.parse().unwrap(), rows.parse().unwrap());
+    // The image covers the pane's cells; its pixels follow the cell size tmux gives the pane.
+    assert!(keys.contains(&format!(",i=1,p=1,c={cols},r={rows},C=1,z=-1,q=2,")), "{keys}");
+    let key = |name: &str| -> usize {
+        let value = keys.split(',').find_map(|k| k.strip_prefix(name)).expect("the key");
+        value.parse().expect("a number")
+    };
+    let (width, height) = (key("s="), key("v="));
+    assert!(width * height <= MAX_IMAGE_PIXELS, "{keys}");
+    assert_eq!(rgb.len(), width * height * 3);
+    assert!(colours(rgb.chunks_exact(3).map(|c| [c[0], c[1], c[2]])) > 20);
+    tmux.run(&["select-pane", "-t", "%0"]);
+    tmux.send_keys("i");
+    tmux.wait_for("the HUD", || pane(&tmux).contains("kitty (auto)").then_some(()));
+    tmux.send_keys("q");
+    let (status, _) = tmux.wait_for_exit();
+    assert_eq!(status, 0, "exit status after q");
+    let delete = b"\x1b_Ga=d,d=I,i=1,q=2\x1b\\";
+    screen.wait_for("the image deleted", |out| out.windows(delete.len()).any(|w| w == delete));
+    screen.close();
+}
+
+#[test]
+fn inside_tmux_without_pass_through_auto_draws_cells_and_kitty_says_how_to_allow_it() {
+    if !tmux_wanted() {
+        return;
+    }
+    let (tmux, _client, mut screen, _) = kitty_outside_tmux("kitty-closed", false, &[]);
+    tmux.run(&["select-pane", "-t", "%0"]);
+    tmux.wait_for("a picture of cells", || pane(&tmux).contains('▀').then_some(()));
+    tmux.send_keys("q");
+    assert_eq!(tmux.wait_for_exit().0, 0, "exit status after q");
+    assert!(!screen.output().windows(4).any(|w| w == b"\x1b_Ga"), "an image without pass-through");
+    screen.close();
+    drop(tmux);
+
+    let (tmux, _client, mut screen, _) = kitty_outside_tmux("kitty-refused", false, &["--graphics", "kitty"]);
+    let (status, _) = tmux.wait_for_exit();
+    assert_eq!(status, 1, "exit status of a kitty image that cannot pass");
+    let shown = pane(&tmux);
+    assert!(shown.contains("allow-passthrough on"), "pane:\n{shown}");
+    screen.close();
 }

@@ -19,7 +19,7 @@ use rastty_core::target::{Rgb888, Target};
 
 use super::median;
 use rastty::builtin::BUILTIN_NAME;
-use rastty::graphics::{FrameImage, GraphicsProtocol};
+use rastty::graphics::{FrameImage, GraphicsProtocol, Passthrough};
 use rastty::scene_file::{FramedCamera, OpenError, Projection, open};
 use rastty::scene_render::{Orbit, PlanOptions, PreparedScene, ScenePlan, SceneRenderError, SceneRenderer};
 use rastty::screen::{CellGrid, CellMode, ColorMode, Encoder, PixelFrame, naive_full_frame};
@@ -293,6 +293,7 @@ impl<'a> Turntable<'a> {
                 height: self.height,
                 columns,
                 rows: self.graphics.image_rows(rows),
+                passthrough: Passthrough::Direct,
             };
             return Ok(TurntableFrame { grid: CellGrid::default(), render, cells: Duration::ZERO, image: Some(image) });
         }

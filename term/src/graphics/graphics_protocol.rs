@@ -1,9 +1,11 @@
 //! How the viewer sends its picture: as cells, or as one image in a pixel graphics protocol.
 
 use std::fmt;
+use std::io::Write;
 use std::str::FromStr;
 
 use super::frame_palette::{Dither, reduce};
+use super::passthrough::Passthrough;
 use super::{iterm2, kitty, sixel};
 use crate::screen::PixelFrame;
 
@@ -24,7 +26,7 @@ pub enum GraphicsProtocol {
     Iterm2,
 }
 
-/// A frame to send as an image, and the cells it covers from the top-left cell.
+/// A frame to send as an image, the cells it covers from the top-left cell, and the way it goes.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct FrameImage {
     /// `0x00RRGGBB`, row-major.
@@ -37,6 +39,8 @@ pub struct FrameImage {
     pub columns: u16,
     /// Rows covered.
     pub rows: u16,
+    /// Directly to the terminal, or through tmux (kitty and iTerm2 only: tmux draws Sixel itself, when it can).
+    pub passthrough: Passthrough,
 }
 
 impl GraphicsProtocol {
@@ -82,36 +86,41 @@ impl GraphicsProtocol {
     /// `dither` is how a Sixel frame maps to its palette.
     pub fn write_image(self, out: &mut Vec<u8>, image: &FrameImage, dither: Dither) {
         let frame = PixelFrame::new(&image.pixels, image.width, image.height);
+        let (column, row) = image.passthrough.origin();
+        let mut bytes = Vec::new();
         match self {
             GraphicsProtocol::Cells => {}
             GraphicsProtocol::Kitty => {
-                let placement = kitty::KittyPlacement {
-                    image_id: IMAGE_ID,
-                    column: 0,
-                    row: 0,
-                    columns: image.columns,
-                    rows: image.rows,
-                };
-                kitty::write_frame(out, frame, &placement);
+                let placement =
+                    kitty::KittyPlacement { image_id: IMAGE_ID, column, row, columns: image.columns, rows: image.rows };
+                kitty::write_frame(&mut bytes, frame, &placement);
             }
             GraphicsProtocol::Sixel => {
-                out.extend_from_slice(b"\x1b[H");
-                sixel::write_image(out, &reduce(frame, 256, dither));
+                write_cursor_move(&mut bytes, column, row);
+                sixel::write_image(&mut bytes, &reduce(frame, 256, dither));
             }
             GraphicsProtocol::Iterm2 => {
-                out.extend_from_slice(b"\x1b[H");
-                iterm2::write_image(out, frame, image.columns, image.rows);
+                write_cursor_move(&mut bytes, column, row);
+                iterm2::write_image(&mut bytes, frame, image.columns, image.rows);
             }
         }
+        image.passthrough.write(out, &bytes);
     }
 
     /// Appends what frees the terminal's memory of the viewer's image when the viewer ends (kitty: the image is
-    /// deleted; the others keep nothing once the screen is cleared).
-    pub fn write_end(self, out: &mut Vec<u8>) {
+    /// deleted; the others keep nothing once the screen is cleared), through `passthrough`.
+    pub fn write_end(self, out: &mut Vec<u8>, passthrough: Passthrough) {
         if self == GraphicsProtocol::Kitty {
-            kitty::write_delete(out, IMAGE_ID);
+            let mut bytes = Vec::new();
+            kitty::write_delete(&mut bytes, IMAGE_ID);
+            passthrough.write(out, &bytes);
         }
     }
+}
+
+/// Appends the cursor move (CUP, 1-based) to `column`, `row` (from 0).
+fn write_cursor_move(out: &mut Vec<u8>, column: u16, row: u16) {
+    let _ = write!(out, "\x1b[{};{}H", u32::from(row) + 1, u32::from(column) + 1);
 }
 
 impl fmt::Display for GraphicsProtocol {
@@ -156,17 +165,29 @@ mod tests {
 
     #[test]
     fn images_start_at_the_top_left_cell() {
-        let image = FrameImage { pixels: vec![0xFF0000; 12], width: 4, height: 3, columns: 2, rows: 1 };
+        let mut image = FrameImage {
+            pixels: vec![0xFF0000; 12],
+            width: 4,
+            height: 3,
+            columns: 2,
+            rows: 1,
+            passthrough: Passthrough::Direct,
+        };
         for protocol in [GraphicsProtocol::Kitty, GraphicsProtocol::Sixel, GraphicsProtocol::Iterm2] {
             let mut out = Vec::new();
             protocol.write_image(&mut out, &image, Dither::None);
-            assert!(out.starts_with(b"\x1b[H") || out.starts_with(b"\x1b[1;1H"), "{protocol}");
+            assert!(out.starts_with(b"\x1b[1;1H"), "{protocol}");
         }
         let mut out = Vec::new();
         GraphicsProtocol::Cells.write_image(&mut out, &image, Dither::FloydSteinberg);
-        GraphicsProtocol::Sixel.write_end(&mut out);
+        GraphicsProtocol::Sixel.write_end(&mut out, Passthrough::Direct);
         assert!(out.is_empty());
-        GraphicsProtocol::Kitty.write_end(&mut out);
+        GraphicsProtocol::Kitty.write_end(&mut out, Passthrough::Direct);
         assert_eq!(out, b"\x1b_Ga=d,d=I,i=1,q=2\x1b\\");
+        // Through tmux: wrapped, from the pane's top-left cell on the terminal.
+        image.passthrough = Passthrough::Tmux { column: 40, row: 1 };
+        out.clear();
+        GraphicsProtocol::Kitty.write_image(&mut out, &image, Dither::None);
+        assert!(out.starts_with(b"\x1bPtmux;\x1b\x1b[2;41H\x1b\x1b_Ga=T,"));
     }
 }

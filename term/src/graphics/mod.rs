@@ -6,6 +6,8 @@
 //! | Sixel: a palette per frame ([`frame_palette`]) and six pixel rows per band | [`sixel`] |
 //! | iTerm2 inline images: a PNG in one escape sequence | [`iterm2`] |
 //!
+//! Inside tmux, kitty's and iTerm2's strings reach the terminal through tmux's pass-through ([`passthrough`]).
+//!
 //! [`graphics_protocol::GraphicsProtocol`] is the viewer's choice among them (or cells), and writes a frame with
 //! the one chosen.
 
@@ -13,6 +15,8 @@ pub mod frame_palette;
 pub mod graphics_protocol;
 pub mod iterm2;
 pub mod kitty;
+pub mod passthrough;
 pub mod sixel;
 
 pub use graphics_protocol::{FrameImage, GraphicsProtocol};
+pub use passthrough::Passthrough;

@@ -7,19 +7,26 @@
 //! them off the screen) until the device attributes come or [`PROBE_TIMEOUT`] passes. Keys typed meanwhile are kept
 //! for the viewer. Then [`choose`] decides, once, before the first frame.
 //!
-//! Inside tmux or screen the queries would be answered by the multiplexer, not the terminal, and images would need
-//! pass-through: the viewer uses cells there without asking, as it does on the Linux console and `TERM=dumb`.
+//! Inside tmux the queries reach tmux, not the terminal: the viewer asks tmux about the terminal instead
+//! ([`TmuxClient`]) and sends kitty's or iTerm2's images through tmux's pass-through when the pane allows it; it
+//! asks tmux itself only for its cell size and device attributes ([`MULTIPLEXER_PROBE`]), which list Sixel when
+//! tmux draws Sixel itself. Inside screen, which cannot say what it runs in, on the Linux console and with
+//! `TERM=dumb` the viewer uses cells without asking.
 
 use std::fs::File;
 use std::time::{Duration, Instant};
 
 use super::input_decoder::{Input, InputDecoder};
 use super::terminal_session::TerminalSession;
+use super::tmux_client::TmuxClient;
 use super::tty::{Gone, Woken, write_until};
-use crate::graphics::GraphicsProtocol;
+use crate::graphics::{GraphicsProtocol, Passthrough};
 
 /// The queries, in the order the answers come back.
 pub const PROBE: &[u8] = b"\x1b_Gi=31,s=1,v=1,a=q,t=d,f=24;AAAA\x1b\\\x1b[16t\x1b[c";
+
+/// The queries inside tmux: [`PROBE`] without kitty's, which tmux would take for the pane's title.
+pub const MULTIPLEXER_PROBE: &[u8] = b"\x1b[16t\x1b[c";
 
 /// The longest wait for the terminal's answers; a terminal that has not answered the device attributes by then
 /// is taken to have no pixel graphics.
@@ -32,6 +39,8 @@ pub struct GraphicsEnv<'a> {
     pub term: Option<&'a str>,
     /// `TMUX` (set inside tmux).
     pub tmux: Option<&'a str>,
+    /// `TMUX_PANE` (the pane, inside tmux).
+    pub tmux_pane: Option<&'a str>,
     /// `TERM_PROGRAM` (`iTerm.app` in iTerm2).
     pub term_program: Option<&'a str>,
     /// `LC_TERMINAL` (`iTerm2`, passed on by iTerm2 over SSH).
@@ -39,16 +48,21 @@ pub struct GraphicsEnv<'a> {
 }
 
 impl GraphicsEnv<'_> {
-    /// Whether asking is pointless or unsafe: inside tmux or screen (the multiplexer answers, and images need
-    /// pass-through), on the Linux console or a dumb terminal (which may print the queries).
+    /// Whether asking is pointless or unsafe: inside screen (which cannot say what it runs in), with a tmux `TERM`
+    /// but no tmux to ask (over SSH from inside tmux), on the Linux console or a dumb terminal (which may print
+    /// the queries).
     pub fn cells_without_asking(&self) -> bool {
         let term = self.term.unwrap_or("");
-        self.tmux.is_some_and(|t| !t.is_empty())
-            || term.starts_with("screen")
-            || term.starts_with("tmux")
+        term.starts_with("screen")
+            || (term.starts_with("tmux") && !self.inside_tmux())
             || term == "linux"
             || term == "dumb"
             || term.is_empty()
+    }
+
+    /// Whether the viewer runs in a tmux pane it can ask about (`TMUX` and `TMUX_PANE` set).
+    pub fn inside_tmux(&self) -> bool {
+        self.tmux.is_some_and(|t| !t.is_empty()) && self.tmux_pane.is_some_and(|p| !p.is_empty())
     }
 
     /// Whether the environment names iTerm2.
@@ -83,25 +97,61 @@ impl ProbeAnswers {
     }
 }
 
-/// The protocol for a terminal that answered `answers` in environment `env`: kitty's graphics if it said `OK`,
-/// else iTerm2's images if the environment names iTerm2, else Sixel if the device attributes list it, else cells.
-pub fn choose(env: &GraphicsEnv<'_>, answers: &ProbeAnswers) -> GraphicsProtocol {
+/// The protocol for a terminal that answered `answers` in environment `env`, and the way its images go.
+///
+/// Directly: kitty's graphics if it said `OK`, else iTerm2's images if the environment names iTerm2, else Sixel if
+/// the device attributes list it, else cells. Inside tmux (`tmux` is what it said of the terminal, if it said):
+/// kitty's or iTerm2's images through the pass-through if the pane allows it and the terminal is one of them, else
+/// Sixel if tmux's own device attributes list it, else cells.
+pub fn choose(
+    env: &GraphicsEnv<'_>,
+    answers: &ProbeAnswers,
+    tmux: Option<&TmuxClient>,
+) -> (GraphicsProtocol, Passthrough) {
+    let direct = |protocol| (protocol, Passthrough::Direct);
     if env.cells_without_asking() {
-        GraphicsProtocol::Cells
-    } else if answers.kitty {
-        GraphicsProtocol::Kitty
+        return direct(GraphicsProtocol::Cells);
+    }
+    if env.inside_tmux() {
+        let through = tmux.and_then(|client| Some((client, client.passthrough()?)));
+        return match through {
+            Some((client, passthrough)) if client.kitty() => (GraphicsProtocol::Kitty, passthrough),
+            Some((client, passthrough)) if client.iterm2() => (GraphicsProtocol::Iterm2, passthrough),
+            _ if answers.sixel => direct(GraphicsProtocol::Sixel),
+            _ => direct(GraphicsProtocol::Cells),
+        };
+    }
+    if answers.kitty {
+        direct(GraphicsProtocol::Kitty)
     } else if env.iterm2() {
-        GraphicsProtocol::Iterm2
+        direct(GraphicsProtocol::Iterm2)
     } else if answers.sixel {
-        GraphicsProtocol::Sixel
+        direct(GraphicsProtocol::Sixel)
     } else {
-        GraphicsProtocol::Cells
+        direct(GraphicsProtocol::Cells)
     }
 }
 
-/// The protocol for this process's terminal (`TERM`, `TMUX`, `TERM_PROGRAM`, `LC_TERMINAL`, and the answers to
-/// [`PROBE`] unless [`GraphicsEnv::cells_without_asking`]), with the answers; input that is not an answer (keys
-/// typed meanwhile) goes to `typed`.
+/// The environment variables [`GraphicsEnv`] reads, as this process has them.
+struct ProcessEnv {
+    values: [Option<String>; 5],
+}
+
+impl ProcessEnv {
+    fn read() -> Self {
+        let read = |name: &str| std::env::var_os(name).map(|v| v.to_string_lossy().into_owned());
+        Self { values: ["TERM", "TMUX", "TMUX_PANE", "TERM_PROGRAM", "LC_TERMINAL"].map(read) }
+    }
+
+    fn env(&self) -> GraphicsEnv<'_> {
+        let [term, tmux, tmux_pane, term_program, lc_terminal] = self.values.each_ref().map(Option::as_deref);
+        GraphicsEnv { term, tmux, tmux_pane, term_program, lc_terminal }
+    }
+}
+
+/// The protocol for this process's terminal (`TERM`, `TMUX`, `TMUX_PANE`, `TERM_PROGRAM`, `LC_TERMINAL`, tmux's
+/// answer inside tmux, and the answers to [`PROBE`] unless [`GraphicsEnv::cells_without_asking`]), the way its
+/// images go, and the answers; input that is not an answer (keys typed meanwhile) goes to `typed`.
 ///
 /// # Errors
 /// [`Gone`] when the terminal went away.
@@ -109,28 +159,67 @@ pub(super) fn detect(
     session: &TerminalSession,
     output: &File,
     typed: &mut Vec<Input>,
-) -> Result<(GraphicsProtocol, ProbeAnswers), Gone> {
-    let read = |name: &str| std::env::var_os(name).map(|v| v.to_string_lossy().into_owned());
-    let (term, tmux, program, lc) = (read("TERM"), read("TMUX"), read("TERM_PROGRAM"), read("LC_TERMINAL"));
-    let env = GraphicsEnv {
-        term: term.as_deref(),
-        tmux: tmux.as_deref(),
-        term_program: program.as_deref(),
-        lc_terminal: lc.as_deref(),
+) -> Result<(GraphicsProtocol, Passthrough, ProbeAnswers), Gone> {
+    let process = ProcessEnv::read();
+    let env = process.env();
+    if env.cells_without_asking() {
+        return Ok((GraphicsProtocol::Cells, Passthrough::Direct, ProbeAnswers::default()));
+    }
+    let (tmux, queries) = match env.tmux_pane.filter(|_| env.inside_tmux()) {
+        Some(pane) => (TmuxClient::query(pane), MULTIPLEXER_PROBE),
+        None => (None, PROBE),
     };
-    let answers = if env.cells_without_asking() { ProbeAnswers::default() } else { probe(session, output, typed)? };
-    Ok((choose(&env, &answers), answers))
+    let answers = probe(session, output, queries, typed)?;
+    let (protocol, passthrough) = choose(&env, &answers, tmux.as_ref());
+    Ok((protocol, passthrough, answers))
 }
 
-/// Writes [`PROBE`] and reads the terminal's answers until the device attributes come or [`PROBE_TIMEOUT`]
-/// passes; input that is not an answer (keys typed meanwhile) goes to `typed`.
+/// The way images in `protocol`, chosen by the user, go from this process: through tmux's pass-through inside
+/// tmux (kitty and iTerm2; tmux draws Sixel itself, when built with it), else directly.
+///
+/// # Errors
+/// Inside tmux, when the pane does not allow pass-through (or tmux does not answer): the message says how to
+/// allow it.
+pub(super) fn route(protocol: GraphicsProtocol) -> Result<Passthrough, String> {
+    let process = ProcessEnv::read();
+    let env = process.env();
+    let (true, Some(pane), GraphicsProtocol::Kitty | GraphicsProtocol::Iterm2) =
+        (env.inside_tmux(), env.tmux_pane, protocol)
+    else {
+        return Ok(Passthrough::Direct);
+    };
+    TmuxClient::query(pane).and_then(|client| client.passthrough()).ok_or_else(|| {
+        format!(
+            "inside tmux, {protocol} images need the pane to allow pass-through \
+             (`tmux set -g allow-passthrough on`, tmux 3.3 or later)"
+        )
+    })
+}
+
+/// The pane's top-left cell on the terminal again (after a resize, the panes may have moved); `passthrough`
+/// as it was when tmux does not answer.
+pub(super) fn moved(passthrough: Passthrough) -> Passthrough {
+    let Passthrough::Tmux { .. } = passthrough else { return passthrough };
+    let process = ProcessEnv::read();
+    let client = process.env().tmux_pane.and_then(TmuxClient::query);
+    client.and_then(|client| client.passthrough()).unwrap_or(passthrough)
+}
+
+/// Writes `queries` ([`PROBE`] or [`MULTIPLEXER_PROBE`]) and reads the terminal's answers until the device
+/// attributes come or [`PROBE_TIMEOUT`] passes; input that is not an answer (keys typed meanwhile) goes to
+/// `typed`.
 ///
 /// # Errors
 /// [`Gone`] when the terminal went away.
-fn probe(session: &TerminalSession, output: &File, typed: &mut Vec<Input>) -> Result<ProbeAnswers, Gone> {
+fn probe(
+    session: &TerminalSession,
+    output: &File,
+    queries: &[u8],
+    typed: &mut Vec<Input>,
+) -> Result<ProbeAnswers, Gone> {
     let deadline = Instant::now() + PROBE_TIMEOUT;
     let mut answers = ProbeAnswers::default();
-    if write_until(output, PROBE, deadline).map_err(|e| Gone(e.to_string()))? < PROBE.len() {
+    if write_until(output, queries, deadline).map_err(|e| Gone(e.to_string()))? < queries.len() {
         return Ok(answers);
     }
     let (mut decoder, mut events, mut buffer) = (InputDecoder::new(), Vec::new(), [0u8; 1024]);
@@ -164,34 +253,44 @@ mod tests {
         answers
     }
 
-    const XTERM: GraphicsEnv<'static> =
-        GraphicsEnv { term: Some("xterm-256color"), tmux: None, term_program: None, lc_terminal: None };
+    const XTERM: GraphicsEnv<'static> = GraphicsEnv {
+        term: Some("xterm-256color"),
+        tmux: None,
+        tmux_pane: None,
+        term_program: None,
+        lc_terminal: None,
+    };
+
+    fn protocol(env: &GraphicsEnv<'_>, answers: &ProbeAnswers) -> GraphicsProtocol {
+        let (protocol, passthrough) = choose(env, answers, None);
+        assert_eq!(passthrough, Passthrough::Direct);
+        protocol
+    }
 
     #[test]
     fn scripted_terminals() {
         let kitty = answers(b"\x1b_Gi=31;OK\x1b\\\x1b[6;20;10t\x1b[?62;c");
         assert_eq!(kitty, ProbeAnswers { kitty: true, attributes: true, sixel: false, cell_pixels: Some((10, 20)) });
-        assert_eq!(choose(&XTERM, &kitty), GraphicsProtocol::Kitty);
+        assert_eq!(protocol(&XTERM, &kitty), GraphicsProtocol::Kitty);
         let xterm_vt340 = answers(b"\x1b[6;16;8t\x1b[?63;1;2;4;6;9;15;22c");
-        assert_eq!(choose(&XTERM, &xterm_vt340), GraphicsProtocol::Sixel);
+        assert_eq!(protocol(&XTERM, &xterm_vt340), GraphicsProtocol::Sixel);
         let plain_xterm = answers(b"\x1b[?1;2c");
-        assert_eq!(choose(&XTERM, &plain_xterm), GraphicsProtocol::Cells);
+        assert_eq!(protocol(&XTERM, &plain_xterm), GraphicsProtocol::Cells);
         let refused = answers(b"\x1b_Gi=31;EINVAL:bad\x1b\\\x1b[?62;22c");
         assert!(!refused.kitty && refused.attributes);
-        assert_eq!(choose(&XTERM, &refused), GraphicsProtocol::Cells);
+        assert_eq!(protocol(&XTERM, &refused), GraphicsProtocol::Cells);
         // No answer at all: cells.
-        assert_eq!(choose(&XTERM, &ProbeAnswers::default()), GraphicsProtocol::Cells);
+        assert_eq!(protocol(&XTERM, &ProbeAnswers::default()), GraphicsProtocol::Cells);
         // iTerm2 answers Sixel too, but its own images are full colour.
         let iterm2 = GraphicsEnv { term_program: Some("iTerm.app"), ..XTERM };
-        assert_eq!(choose(&iterm2, &xterm_vt340), GraphicsProtocol::Iterm2);
+        assert_eq!(protocol(&iterm2, &xterm_vt340), GraphicsProtocol::Iterm2);
     }
 
     #[test]
-    fn multiplexers_and_consoles_are_not_asked() {
-        let tmux = GraphicsEnv { tmux: Some("/tmp/tmux-0/default,1,0"), ..XTERM };
+    fn screen_and_consoles_are_not_asked() {
         for env in [
-            tmux,
             GraphicsEnv { term: Some("screen-256color"), ..XTERM },
+            // tmux's TERM with no tmux to ask: over SSH from inside tmux.
             GraphicsEnv { term: Some("tmux-256color"), ..XTERM },
             GraphicsEnv { term: Some("linux"), ..XTERM },
             GraphicsEnv { term: Some("dumb"), ..XTERM },
@@ -199,9 +298,43 @@ mod tests {
         ] {
             assert!(env.cells_without_asking(), "{env:?}");
             let kitty = ProbeAnswers { kitty: true, attributes: true, sixel: true, cell_pixels: None };
-            assert_eq!(choose(&env, &kitty), GraphicsProtocol::Cells, "{env:?}");
+            assert_eq!(protocol(&env, &kitty), GraphicsProtocol::Cells, "{env:?}");
         }
         assert!(!XTERM.cells_without_asking());
+    }
+
+    #[test]
+    fn inside_tmux_images_go_through_the_pass_through_to_a_terminal_that_shows_them() {
+        let env = GraphicsEnv {
+            term: Some("tmux-256color"),
+            tmux: Some("/tmp/tmux-0/default,1,0"),
+            tmux_pane: Some("%3"),
+            ..XTERM
+        };
+        assert!(!env.cells_without_asking() && env.inside_tmux());
+        let tmux_attributes = answers(b"\x1b[?1;2c");
+        let client = |answer: &str| TmuxClient::parse(answer).expect("an answer");
+        let kitty = client("1\tkitty(0.35.2)\txterm-256color\t40\t1\ton\tbottom");
+        assert_eq!(
+            choose(&env, &tmux_attributes, Some(&kitty)),
+            (GraphicsProtocol::Kitty, Passthrough::Tmux { column: 40, row: 1 })
+        );
+        let iterm2 = client("1\tiTerm2 3.5.0\txterm-256color\t0\t0\ton\tbottom");
+        assert_eq!(choose(&env, &tmux_attributes, Some(&iterm2)).0, GraphicsProtocol::Iterm2);
+        // Not allowed, an unknown terminal, or no answer from tmux: cells.
+        let closed = client("0\tkitty(0.35.2)\txterm-256color\t0\t0\ton\tbottom");
+        let unknown = client("1\t\txterm-256color\t0\t0\ton\tbottom");
+        for tmux in [Some(&closed), Some(&unknown), None] {
+            assert_eq!(choose(&env, &tmux_attributes, tmux), (GraphicsProtocol::Cells, Passthrough::Direct));
+        }
+        // tmux that draws Sixel itself says so: Sixel, straight to tmux. A kitty answer can only be tmux's.
+        let sixel_tmux = answers(b"\x1b[?1;2;4c");
+        assert_eq!(choose(&env, &sixel_tmux, Some(&unknown)), (GraphicsProtocol::Sixel, Passthrough::Direct));
+        let said_kitty = ProbeAnswers { kitty: true, ..tmux_attributes };
+        assert_eq!(choose(&env, &said_kitty, None).0, GraphicsProtocol::Cells);
+        // Without TMUX_PANE there is no pane to ask about.
+        let no_pane = GraphicsEnv { tmux_pane: None, ..env };
+        assert_eq!(choose(&no_pane, &tmux_attributes, Some(&kitty)).0, GraphicsProtocol::Cells);
     }
 
     #[test]

@@ -18,15 +18,17 @@ mod link_meter;
 mod overlay;
 mod state;
 mod terminal_session;
+mod tmux_client;
 mod tty;
 
 pub use controls::{Action, HELP, action_for};
 pub use frame_writer::{Frame, FrameWriter, REFINE_AFTER, TOLERANCES, WriterStats};
-pub use graphics_probe::{GraphicsEnv, PROBE, PROBE_TIMEOUT, ProbeAnswers, choose};
+pub use graphics_probe::{GraphicsEnv, MULTIPLEXER_PROBE, PROBE, PROBE_TIMEOUT, ProbeAnswers, choose};
 pub use input_decoder::{ESCAPE_WAIT, Input, InputDecoder, Key, MouseKind};
 pub use link_meter::{ANSWER_TIMEOUT, FRAME_LINK_TIME, LinkMeter, MAX_IN_FLIGHT, MIN_LINK_TIME, STATUS_REQUEST};
 pub use state::{Effect, ViewerState};
 pub use terminal_session::{TerminalSession, restore};
+pub use tmux_client::TmuxClient;
 pub use tty::{Gone, Tty, Woken, write_until, write_while};
 
 use std::fmt;
@@ -40,7 +42,7 @@ use rastty_core::target::{Rgb888, Target};
 
 use crate::escaped::Escaped;
 use crate::graphics::frame_palette::Dither;
-use crate::graphics::{FrameImage, GraphicsProtocol};
+use crate::graphics::{FrameImage, GraphicsProtocol, Passthrough};
 use crate::scene_render::{
     FrameReport, Orbit, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError, SceneRenderer,
 };
@@ -169,12 +171,19 @@ pub fn run(scene: &PreparedScene, name: &str, options: &ViewerOptions) -> Result
         ColorChoice::Auto => ColorMode::from_process_env(),
         ColorChoice::Fixed(mode) => mode,
     };
+    // A protocol the user chose must have its way to the terminal before the terminal is taken over.
+    let fixed = match options.graphics {
+        GraphicsChoice::Fixed(protocol) => {
+            Some((protocol, graphics_probe::route(protocol).map_err(ViewerError::Terminal)?))
+        }
+        GraphicsChoice::Auto => None,
+    };
     let session = TerminalSession::enter().map_err(terminal_error)?;
     let output = session.tty.output_clone().map_err(terminal_error)?;
     let mut typed = Vec::new();
-    let (graphics, answers) = match options.graphics {
-        GraphicsChoice::Fixed(protocol) => (protocol, ProbeAnswers::default()),
-        GraphicsChoice::Auto => match graphics_probe::detect(&session, &output, &mut typed) {
+    let (graphics, passthrough, answers) = match fixed {
+        Some((protocol, passthrough)) => (protocol, passthrough, ProbeAnswers::default()),
+        None => match graphics_probe::detect(&session, &output, &mut typed) {
             Ok(found) => found,
             Err(Gone(_)) => return Ok(ViewerExit::TerminalGone),
         },
@@ -189,6 +198,7 @@ pub fn run(scene: &PreparedScene, name: &str, options: &ViewerOptions) -> Result
         canvas: Canvas::default(),
         cell_mode: options.cell_mode,
         graphics,
+        passthrough,
         graphics_chosen: options.graphics == GraphicsChoice::Auto,
         cell_pixels: answers.cell_pixels,
         colors,
@@ -204,10 +214,11 @@ pub fn run(scene: &PreparedScene, name: &str, options: &ViewerOptions) -> Result
     };
     viewer.measure_cells(&session.tty);
     let result = viewer.run_loop(&session, &writer, typed);
+    let viewer_passthrough = viewer.passthrough;
     let deadline = Instant::now() + FINISH_TIME;
     writer.finish(deadline);
     let mut end = Vec::new();
-    graphics.write_end(&mut end);
+    graphics.write_end(&mut end, viewer_passthrough);
     // The terminal may be gone already; nothing is left to tell it then.
     let _ = write_until(&output, &end, deadline);
     drop(session);
@@ -254,6 +265,8 @@ struct Viewer<'a> {
     canvas: Canvas,
     cell_mode: CellMode,
     graphics: GraphicsProtocol,
+    /// How images reach the terminal: directly or through tmux.
+    passthrough: Passthrough,
     /// `graphics` was chosen by asking the terminal.
     graphics_chosen: bool,
     /// The cell size in pixels the terminal answered, if it did.
@@ -359,6 +372,7 @@ impl Viewer<'_> {
                 if let Action::Resize(cols, rows) = action {
                     self.size = (cols, rows);
                     self.measure_cells(&session.tty);
+                    self.passthrough = graphics_probe::moved(self.passthrough);
                     writer.invalidate();
                 }
                 match self.state.apply(action) {
@@ -422,6 +436,7 @@ impl Viewer<'_> {
                 height,
                 columns: cols,
                 rows: self.graphics.image_rows(rows),
+                passthrough: self.passthrough,
             };
             (CellGrid::blank(usize::from(cols), usize::from(rows)), Some(image))
         };

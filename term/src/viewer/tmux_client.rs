@@ -1,0 +1,129 @@
+//! What tmux knows of the terminal it runs in, for images through its pass-through.
+//!
+//! Inside tmux the viewer's queries reach tmux, not the terminal, and tmux does not hand the terminal's answers
+//! back to the pane. But tmux asked the terminal itself when the client attached (its name, from `XTVERSION`), and
+//! knows whether the pane allows pass-through and where the pane lies on the terminal. The viewer reads all of it
+//! with one `tmux display-message` ([`FORMAT`]), which must end within [`QUERY_TIMEOUT`].
+
+use std::io::Read;
+use std::process::{Command, Stdio};
+use std::thread;
+use std::time::{Duration, Instant};
+
+use crate::graphics::Passthrough;
+
+/// The longest wait for tmux's answer.
+pub const QUERY_TIMEOUT: Duration = Duration::from_millis(500);
+
+/// What is asked of tmux, one field per tab: pass-through allowed (`1`, `on` or `all`), the terminal's name from
+/// `XTVERSION` (tmux 3.3), its `TERM`, the pane's first column and row in the window, the status lines and where
+/// they are.
+pub const FORMAT: &str = "#{allow-passthrough}\t#{client_termtype}\t#{client_termname}\t#{pane_left}\t#{pane_top}\t\
+                          #{status}\t#{status-position}";
+
+/// The most bytes of tmux's answer read (it is one short line).
+const MAX_ANSWER: u64 = 4096;
+
+/// tmux's answer to [`FORMAT`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TmuxClient {
+    /// The pane passes wrapped strings on to the terminal.
+    pub passthrough: bool,
+    /// The terminal's name and version as it told tmux (`kitty(0.35.2)`, `WezTerm 20240203`), or empty.
+    pub terminal: String,
+    /// The terminal's `TERM` (`xterm-kitty`).
+    pub term: String,
+    /// The pane's top-left cell on the terminal (column, row, from 0).
+    pub origin: (u16, u16),
+}
+
+impl TmuxClient {
+    /// Reads tmux's answer to [`FORMAT`]; `None` when it is not one.
+    pub fn parse(answer: &str) -> Option<Self> {
+        let fields: Vec<&str> = answer.trim_end_matches(['\n', '\r']).split('\t').collect();
+        let [passthrough, terminal, term, left, top, status, position] = fields[..] else { return None };
+        let status_lines: u16 = match status {
+            "on" => 1,
+            "off" => 0,
+            lines => lines.parse().ok()?,
+        };
+        let status_above = if position == "top" { status_lines } else { 0 };
+        Some(Self {
+            passthrough: matches!(passthrough, "1" | "on" | "all"),
+            terminal: terminal.to_owned(),
+            term: term.to_owned(),
+            origin: (left.parse().ok()?, top.parse::<u16>().ok()?.checked_add(status_above)?),
+        })
+    }
+
+    /// Asks the tmux server of `$TMUX` about pane `pane` (`$TMUX_PANE`); `None` when tmux does not answer within
+    /// [`QUERY_TIMEOUT`] or the answer makes no sense.
+    pub fn query(pane: &str) -> Option<Self> {
+        let mut child = Command::new("tmux")
+            .args(["display-message", "-p", "-t", pane, FORMAT])
+            .stdin(Stdio::null())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::null())
+            .spawn()
+            .ok()?;
+        let deadline = Instant::now() + QUERY_TIMEOUT;
+        let succeeded = loop {
+            match child.try_wait() {
+                Ok(Some(status)) => break status.success(),
+                Ok(None) if Instant::now() < deadline => thread::sleep(Duration::from_millis(2)),
+                _ => break false,
+            }
+        };
+        if !succeeded {
+            let _ = child.kill();
+            let _ = child.wait();
+            return None;
+        }
+        let mut answer = String::new();
+        child.stdout.take()?.take(MAX_ANSWER).read_to_string(&mut answer).ok()?;
+        Self::parse(&answer)
+    }
+
+    /// Whether the terminal speaks kitty's graphics protocol, by its name: kitty, Ghostty, WezTerm.
+    pub fn kitty(&self) -> bool {
+        let terminal = self.terminal.to_ascii_lowercase();
+        ["kitty", "ghostty", "wezterm"].iter().any(|name| terminal.starts_with(name))
+            || matches!(self.term.as_str(), "xterm-kitty" | "xterm-ghostty" | "wezterm")
+    }
+
+    /// Whether the terminal is iTerm2, by its name.
+    pub fn iterm2(&self) -> bool {
+        self.terminal.starts_with("iTerm2")
+    }
+
+    /// The way images reach the terminal: through the pane's pass-through, from its top-left cell; `None` when the
+    /// pane does not allow it.
+    pub fn passthrough(&self) -> Option<Passthrough> {
+        let (column, row) = self.origin;
+        self.passthrough.then_some(Passthrough::Tmux { column, row })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn answers_of_tmux() {
+        let kitty = TmuxClient::parse("1\tkitty(0.35.2)\txterm-256color\t41\t0\ton\tbottom\n").unwrap();
+        assert!(kitty.kitty() && !kitty.iterm2());
+        assert_eq!(kitty.passthrough(), Some(Passthrough::Tmux { column: 41, row: 0 }));
+        // tmux 3.4 says `on` or `all`; a status line on top moves the panes down.
+        let top = TmuxClient::parse("all\t\txterm-kitty\t0\t3\t2\ttop").unwrap();
+        assert!(top.kitty());
+        assert_eq!(top.passthrough(), Some(Passthrough::Tmux { column: 0, row: 5 }));
+        let off = TmuxClient::parse("0\tiTerm2 3.5.0\txterm-256color\t0\t0\toff\ttop").unwrap();
+        assert!(off.iterm2() && !off.kitty());
+        assert_eq!(off.passthrough(), None);
+        let unknown = TmuxClient::parse("1\t\txterm-256color\t0\t0\ton\tbottom").unwrap();
+        assert!(!unknown.kitty() && !unknown.iterm2());
+        for bad in ["", "1\tkitty", "1\tk\tt\tx\t0\ton\tbottom", "1\tk\tt\t0\t0\tmaybe\tbottom"] {
+            assert_eq!(TmuxClient::parse(bad), None, "{bad:?}");
+        }
+    }
+}
