@@ -7,7 +7,7 @@ use std::time::Instant;
 
 use base64::Engine;
 use rastty::graphics::GraphicsProtocol;
-use rastty::viewer::{MAX_IMAGE_PIXELS, PROBE, PROBE_TIMEOUT, image_size};
+use rastty::viewer::{MAX_IMAGE_PIXELS, MIN_IMAGE_PIXELS, PROBE, PROBE_TIMEOUT, image_size, moving_image_cap};
 
 use crate::common::pty::{Pty, Screen, Viewer};
 use crate::common::tmux::{SESSION, Tmux, tmux_wanted};
@@ -114,12 +114,28 @@ fn iterm2_frames_assume_cells_twice_as_tall_as_wide_when_the_terminal_does_not_s
 
 #[test]
 fn images_of_big_windows_are_scaled_down_to_the_cap() {
-    let (width, height) = image_size(GraphicsProtocol::Kitty, (300, 100), Some((2400, 1600)), 2.0);
+    let (width, height) = image_size(GraphicsProtocol::Kitty, (300, 100), Some((2400, 1600)), 2.0, MAX_IMAGE_PIXELS);
     assert!(width * height <= MAX_IMAGE_PIXELS && width * height > MAX_IMAGE_PIXELS * 9 / 10, "{width}x{height}");
     assert!(((width as f32 / height as f32) - 1.5).abs() < 0.01, "{width}x{height} keeps the window's shape");
-    let (_, height) = image_size(GraphicsProtocol::Sixel, (300, 100), Some((2400, 1600)), 2.0);
+    let (_, height) = image_size(GraphicsProtocol::Sixel, (300, 100), Some((2400, 1600)), 2.0, MAX_IMAGE_PIXELS);
     assert_eq!(height % 6, 0);
-    assert_eq!(image_size(GraphicsProtocol::Sixel, (16, 4), Some((16, 4)), 2.0).1, 6, "at least one band");
+    assert_eq!(
+        image_size(GraphicsProtocol::Sixel, (16, 4), Some((16, 4)), 2.0, MAX_IMAGE_PIXELS).1,
+        6,
+        "at least one band"
+    );
+}
+
+#[test]
+fn moving_images_on_a_slow_link_are_smaller_in_steps_but_sixel_keeps_its_size() {
+    use GraphicsProtocol::{Iterm2, Kitty, Sixel};
+    assert_eq!(moving_image_cap(Kitty, None), MAX_IMAGE_PIXELS, "the link not measured");
+    assert_eq!(moving_image_cap(Kitty, Some(MAX_IMAGE_PIXELS * 2)), MAX_IMAGE_PIXELS);
+    assert_eq!(moving_image_cap(Kitty, Some(MAX_IMAGE_PIXELS - 1)), MAX_IMAGE_PIXELS / 2);
+    assert_eq!(moving_image_cap(Iterm2, Some(50_000)), MAX_IMAGE_PIXELS / 8);
+    assert_eq!(moving_image_cap(Kitty, Some(10)), MIN_IMAGE_PIXELS);
+    // The terminal shows a Sixel image at its own size: a smaller one would be a smaller picture.
+    assert_eq!(moving_image_cap(Sixel, Some(10)), MAX_IMAGE_PIXELS);
 }
 
 /// The viewer with no `--graphics` (auto) on an 80 x 24 terminal that gives no pixel size; once it has asked

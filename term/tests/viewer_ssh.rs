@@ -10,8 +10,9 @@
 //!   pane, timestamped as it arrives, so a frame is complete on the client's screen when its closing
 //!   synchronized-output mark (`ESC [?2026l`) arrives.
 //!
-//! Three tests, each with its own server and relay, run side by side: a session of the viewer as it is, one with
-//! `--no-pacing` (every frame exact, written as fast as the terminal takes it), and a connection dropped mid-turntable.
+//! Four tests, each with its own server and relay, run side by side: a session of the viewer as it is, one with
+//! `--no-pacing` (every frame exact, written as fast as the terminal takes it), a connection dropped mid-turntable,
+//! and kitty images (smaller while the picture moves, full size again at rest).
 //! They assert behaviour only, never timings: nothing sent while idle, the picture at rest after the keys is exact
 //! (the same as the viewer's own without SSH, which the writer may approximate while the picture moves), `q` ends
 //! with status 0 and gives the terminal back, and a dropped connection ends the remote viewer.
@@ -485,14 +486,18 @@ struct Session {
 impl Session {
     /// Starts the client; the remote viewer runs with `--no-pacing` unless `pacing`.
     fn start(test: &str, server: &SshServer, relay: &Relay, pacing: bool) -> Self {
+        Self::start_with(test, server, relay, if pacing { "" } else { " --no-pacing" })
+    }
+
+    /// Starts the client; the remote viewer runs with `options` (each with a space before it).
+    fn start_with(test: &str, server: &SshServer, relay: &Relay, options: &str) -> Self {
         let dir = tempfile::tempdir().expect("temporary directory");
         let remote_pid_file = dir.path().join("viewer.pid");
         // The remote shell records the viewer's process id (`exec` keeps it), so the test can watch it.
         let remote = format!(
-            "echo $$ > {}; exec {} --color truecolor{}",
+            "echo $$ > {}; exec {} --color truecolor{options}",
             shell_quote(&remote_pid_file),
             shell_quote(Path::new(env!("CARGO_BIN_EXE_rastty"))),
-            if pacing { "" } else { " --no-pacing" }
         );
         let args = server.client_args(relay.port, &remote);
         let args: Vec<&OsStr> = args.iter().map(OsStr::new).collect();
@@ -697,6 +702,79 @@ fn a_dropped_connection_ends_the_remote_viewer() {
         ended.as_secs_f64() * 1e3
     );
     let _ = session.tmux.run(&["kill-session", "-t", SESSION.trim_end_matches(':')]);
+}
+
+/// Pixel sizes (width, height) of images, in order.
+type ImageSizes = [(usize, usize)];
+
+/// The pixel size (`s`, `v`) of each whole kitty image in `bytes`, in order.
+fn kitty_image_sizes(bytes: &[u8]) -> Vec<(usize, usize)> {
+    let text = String::from_utf8_lossy(bytes);
+    let mut sizes = Vec::new();
+    for image in text.split("\x1b_Ga=T,").skip(1) {
+        // Only an image whose last chunk (`m=0`) has arrived is whole.
+        if !image.contains("m=0;") {
+            continue;
+        }
+        let keys = &image[..image.find(';').unwrap_or(0)];
+        let key = |name: &str| keys.split(',').find_map(|k| k.strip_prefix(name)?.parse().ok());
+        if let (Some(width), Some(height)) = (key("s="), key("v=")) {
+            sizes.push((width, height));
+        }
+    }
+    sizes
+}
+
+#[test]
+fn kitty_images_over_a_slow_ssh_link_shrink_while_moving_and_sharpen_at_rest() {
+    if !ssh_wanted() {
+        return;
+    }
+    let server = SshServer::start();
+    let relay = Relay::start(server.address);
+    let session = Session::start_with("ssh-kitty", &server, &relay, " --graphics kitty");
+    let (tmux, stream) = (&session.tmux, &session.stream);
+    let sizes = || stream.with(|r| kitty_image_sizes(&r.bytes));
+    let wait_for = |what: &str, test: &dyn Fn(&ImageSizes) -> bool| {
+        let start = Instant::now();
+        while !test(&sizes()) {
+            assert!(start.elapsed() < TIMEOUT, "timed out after {TIMEOUT:?} waiting for {what}: {:?}", sizes());
+            thread::sleep(Duration::from_millis(20));
+        }
+        start.elapsed()
+    };
+    wait_for("the first image", &|s| !s.is_empty());
+    let full = sizes()[0];
+    assert!(full.0 * full.1 > 100_000, "the first image, before the link is measured, is full size: {full:?}");
+
+    // Moving, on a link that carries a full image in about a second, the images get smaller.
+    tmux.send_keys("Space");
+    let first_small = sizes().len();
+    wait_for("a smaller image while the turntable runs", &|s| {
+        s.iter().skip(first_small).any(|&(w, h)| w * h <= full.0 * full.1 / 2)
+    });
+    thread::sleep(TURNTABLE_WARM_UP);
+    let moving = sizes();
+    // At rest, the picture is drawn again at full size.
+    tmux.send_keys("Space");
+    let stopped_at = moving.len();
+    let sharpened = wait_for("the full-size image at rest", &|s| s.len() > stopped_at && s.last() == Some(&full));
+    let smallest = moving.iter().map(|&(w, h)| w * h).min().unwrap_or(0);
+    eprintln!(
+        "kitty over SSH at 1 Mbit/s: first image {}x{}; {} images while moving, the smallest {smallest} pixels; \
+         full size again {:.0} ms after the turntable stopped",
+        full.0,
+        full.1,
+        moving.len(),
+        sharpened.as_secs_f64() * 1e3
+    );
+
+    let viewer = session.remote_viewer_pid();
+    tmux.send_keys("q");
+    let (status, tty_same) = tmux.wait_for_exit();
+    assert_eq!(status, 0, "ssh (the remote viewer) exited with {status} after q");
+    tmux.assert_restored(tty_same);
+    tmux.wait_for("the remote viewer to end after q", || process_gone(viewer).then_some(()));
 }
 
 /// The measurement behind docs/terminal.md: [`ROUNDS`] sessions of each writer, taking turns, side by side.

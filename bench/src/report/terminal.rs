@@ -23,7 +23,7 @@ use rastty::graphics::{FrameImage, GraphicsProtocol, Passthrough};
 use rastty::scene_file::{FramedCamera, OpenError, Projection, open};
 use rastty::scene_render::{Orbit, PlanOptions, PreparedScene, ScenePlan, SceneRenderError, SceneRenderer};
 use rastty::screen::{CellGrid, CellMode, ColorMode, Encoder, PixelFrame, naive_full_frame};
-use rastty::viewer::image_size;
+use rastty::viewer::{MAX_IMAGE_PIXELS, image_size};
 
 /// Terminal sizes measured, in cells (columns, rows).
 pub const SIZES: [(u16, u16); 3] = [(80, 24), (120, 40), (200, 60)];
@@ -259,7 +259,7 @@ impl<'a> Turntable<'a> {
         protocol: GraphicsProtocol,
         frames: usize,
     ) -> Self {
-        let (width, height) = image_size(protocol, size, None, CELL_ASPECT);
+        let (width, height) = image_size(protocol, size, None, CELL_ASPECT, MAX_IMAGE_PIXELS);
         let mut turntable = Self::new(scene, size, CellMode::HalfBlock, ColorMode::TrueColor, frames);
         turntable.graphics = protocol;
         (turntable.width, turntable.height, turntable.aspect) = (width, height, width as f32 / height as f32);

@@ -73,6 +73,12 @@ impl GraphicsProtocol {
         matches!(self, GraphicsProtocol::Sixel | GraphicsProtocol::Iterm2)
     }
 
+    /// Whether the terminal scales an image to the cells it covers (kitty, iTerm2), so that a smaller image shows
+    /// the same picture, coarser; a Sixel image is shown at its own size.
+    pub const fn scaled_by_terminal(self) -> bool {
+        matches!(self, GraphicsProtocol::Kitty | GraphicsProtocol::Iterm2)
+    }
+
     /// The pixel rows an image's height must be a whole number of (Sixel draws bands of six; a last, partial band
     /// would leave its rows to the terminal).
     pub const fn row_multiple(self) -> usize {

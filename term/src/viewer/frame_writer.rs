@@ -11,8 +11,11 @@
 //! [`REFINE_AFTER`], the writer sends the exact cells, from the top, in steps of the same size until the picture
 //! is exact.
 //!
-//! An image frame is sent whole and exact, so on a slow link the meter lowers its frame rate instead: a new
-//! frame waits until the terminal has answered for enough of the last ones, and only the newest is written.
+//! An image frame is sent whole and exact, so on a slow link the meter lowers its frame rate: a new frame waits
+//! until the terminal has answered for enough of the last ones, and only the newest is written. And the writer
+//! tells the viewer how many pixels an image may have to cross the link in [`IMAGE_LINK_TIME`]
+//! ([`WriterStats::image_pixels`]), from the link's rate and the bytes per pixel of the last image, so that the
+//! viewer renders moving images smaller and the terminal scales them up.
 //!
 //! Writing goes through the terminal's non-blocking handle ([`write_while`]), so a frame stuck on a slow link
 //! never holds the viewer: asked to finish, the writer completes the frame it is writing if it can by the
@@ -34,6 +37,8 @@ use crate::screen::{CellGrid, Encoder, Tolerance};
 pub const TOLERANCES: [f32; 10] = [0.0, 0.01, 0.02, 0.035, 0.05, 0.08, 0.12, 0.2, 0.3, 0.5];
 /// How long no new frame must come before an inexact picture is made exact.
 pub const REFINE_AFTER: Duration = Duration::from_millis(100);
+/// The link time an image frame may take while the picture moves: past it, images are rendered smaller.
+pub const IMAGE_LINK_TIME: Duration = Duration::from_millis(100);
 
 /// What the writer last did, for the viewer's HUD.
 #[derive(Clone, Copy, Debug, Default)]
@@ -50,6 +55,9 @@ pub struct WriterStats {
     pub tolerance: f32,
     /// The link's rate in bytes per second, once the terminal's answers have measured it.
     pub link_rate: Option<f64>,
+    /// The most pixels an image may have to cross the link in [`IMAGE_LINK_TIME`], once the link's rate and an
+    /// image's bytes are known.
+    pub image_pixels: Option<usize>,
 }
 
 /// What the viewer hands the writer for one picture.
@@ -178,6 +186,8 @@ struct Writer {
     dither: Dither,
     /// Status requests and tolerances on; off, the meter never hears of a write and every frame is exact.
     pacing: bool,
+    /// The pixels and bytes of the last image frame.
+    last_image: Option<(usize, usize)>,
 }
 
 fn write_loop(out: &File, shared: &Shared, (protocol, dither): (GraphicsProtocol, Dither), pacing: bool) {
@@ -191,6 +201,7 @@ fn write_loop(out: &File, shared: &Shared, (protocol, dither): (GraphicsProtocol
         protocol,
         dither,
         pacing,
+        last_image: None,
     };
     while let Some(job) = writer.next_job(shared) {
         let start = Instant::now();
@@ -214,6 +225,7 @@ fn write_loop(out: &File, shared: &Shared, (protocol, dither): (GraphicsProtocol
                     mailbox.stats.tolerance = tolerance.delta_e();
                 }
                 mailbox.stats.link_rate = writer.meter.rate();
+                mailbox.stats.image_pixels = writer.image_pixels();
             }
             // Left unfinished: the viewer is stopping.
             Ok(_) => return,
@@ -278,6 +290,7 @@ impl Writer {
                 let Frame { grid, image } = frame;
                 if let Some(image) = image {
                     self.encode_image(&grid, &image);
+                    self.last_image = Some((image.pixels.len(), self.bytes.len()));
                     self.inexact = None;
                     return self.with_status_request(Some(Tolerance::EXACT));
                 }
@@ -303,6 +316,15 @@ impl Writer {
             self.bytes.extend_from_slice(STATUS_REQUEST);
         }
         tolerance
+    }
+
+    /// The most pixels an image may have to cross the link in [`IMAGE_LINK_TIME`], at the last image's bytes
+    /// per pixel; `None` until the link's rate is measured (or when the terminal does not answer).
+    fn image_pixels(&self) -> Option<usize> {
+        let (pixels, bytes) = self.last_image.filter(|&(pixels, bytes)| pixels > 0 && bytes > 0)?;
+        let bytes_per_pixel = bytes as f64 / pixels as f64;
+        let rate = self.meter.rate().filter(|_| self.meter.budget().is_some())?;
+        Some((rate * IMAGE_LINK_TIME.as_secs_f64() / bytes_per_pixel) as usize)
     }
 
     /// Encodes an image frame: the image and the cells to show with it, both exact.

@@ -22,13 +22,13 @@ mod tmux_client;
 mod tty;
 
 pub use controls::{Action, HELP, action_for};
-pub use frame_writer::{Frame, FrameWriter, REFINE_AFTER, TOLERANCES, WriterStats};
+pub use frame_writer::{Frame, FrameWriter, IMAGE_LINK_TIME, REFINE_AFTER, TOLERANCES, WriterStats};
 pub use graphics_probe::{GraphicsEnv, MULTIPLEXER_PROBE, PROBE, PROBE_TIMEOUT, ProbeAnswers, choose};
 pub use input_decoder::{ESCAPE_WAIT, Input, InputDecoder, Key, MouseKind};
 pub use link_meter::{ANSWER_TIMEOUT, FRAME_LINK_TIME, LinkMeter, MAX_IN_FLIGHT, MIN_LINK_TIME, STATUS_REQUEST};
 pub use state::{Effect, ViewerState};
 pub use terminal_session::{TerminalSession, restore};
-pub use tmux_client::TmuxClient;
+pub use tmux_client::{TMUX_FORMAT, TMUX_QUERY_TIMEOUT, TmuxClient};
 pub use tty::{Gone, Tty, Woken, write_until, write_while};
 
 use std::fmt;
@@ -61,6 +61,8 @@ const FINISH_TIME: Duration = Duration::from_millis(250);
 /// The most pixels of an image frame: past it the image is rendered smaller and the terminal scales it up
 /// (kitty, iTerm2) or shows it smaller (Sixel), so that a large window keeps its frame rate.
 pub const MAX_IMAGE_PIXELS: usize = 640 * 480;
+/// The fewest pixels of a moving image on a slow link (160x120 in a 4:3 window).
+pub const MIN_IMAGE_PIXELS: usize = MAX_IMAGE_PIXELS / 16;
 /// Cell height over width when neither `--cell-aspect` nor the terminal says: most monospace fonts.
 pub const DEFAULT_CELL_ASPECT: f32 = 2.0;
 /// The cell width in pixels assumed when the terminal does not give its size in pixels; the height is this times
@@ -211,6 +213,8 @@ pub fn run(scene: &PreparedScene, name: &str, options: &ViewerOptions) -> Result
         last_report: None,
         render_time: Duration::ZERO,
         frame_times: FrameClock::default(),
+        image_cap: MAX_IMAGE_PIXELS,
+        sharpen_at: None,
     };
     viewer.measure_cells(&session.tty);
     let result = viewer.run_loop(&session, &writer, typed);
@@ -286,6 +290,10 @@ struct Viewer<'a> {
     last_report: Option<FrameReport>,
     render_time: Duration,
     frame_times: FrameClock,
+    /// The most pixels of the last image ([`moving_image_cap`], or [`MAX_IMAGE_PIXELS`] when still).
+    image_cap: usize,
+    /// When a picture sent smaller than [`MAX_IMAGE_PIXELS`] is drawn again at full size if nothing moves it.
+    sharpen_at: Option<Instant>,
 }
 
 impl Viewer<'_> {
@@ -338,12 +346,17 @@ impl Viewer<'_> {
                 last_spin = now;
                 dirty = true;
             }
-            if dirty {
-                let frame = self.frame(writer)?;
+            // A still picture that went out smaller (a slow link) is drawn again at full size.
+            let sharpen = !dirty && self.sharpen_at.is_some_and(|at| Instant::now() >= at);
+            if dirty || sharpen {
+                let frame = self.frame(writer, sharpen)?;
                 writer.send(frame);
                 dirty = false;
             }
             let mut timeout = if self.state.turntable { TURNTABLE_FRAME } else { IDLE_POLL };
+            if let Some(at) = self.sharpen_at {
+                timeout = timeout.min(at.saturating_duration_since(Instant::now()));
+            }
             if decoder.is_waiting() {
                 timeout = timeout.min(ESCAPE_WAIT);
             }
@@ -396,13 +409,18 @@ impl Viewer<'_> {
             // A cell is `cell_aspect` times taller than wide.
             return (width, height, f32::from(cols) / (f32::from(rows) * self.cell_aspect));
         }
-        let (width, height) = image_size(self.graphics, self.size, self.size_in_pixels, self.cell_aspect);
+        let (width, height) =
+            image_size(self.graphics, self.size, self.size_in_pixels, self.cell_aspect, self.image_cap);
         (width, height, width as f32 / height.max(1) as f32)
     }
 
-    /// Renders the current state into a frame for the terminal: cells the size of the terminal, and the image.
-    fn frame(&mut self, writer: &FrameWriter) -> Result<Frame, ViewerError> {
+    /// Renders the current state into a frame for the terminal: cells the size of the terminal, and the image,
+    /// at full size if `still`, else as large as the link carries while the picture moves.
+    fn frame(&mut self, writer: &FrameWriter, still: bool) -> Result<Frame, ViewerError> {
         let (cols, rows) = self.size;
+        let written = writer.stats();
+        self.image_cap = if still { MAX_IMAGE_PIXELS } else { moving_image_cap(self.graphics, written.image_pixels) };
+        self.sharpen_at = (self.image_cap < MAX_IMAGE_PIXELS).then(|| Instant::now() + REFINE_AFTER);
         if cols < MIN_COLUMNS || rows < MIN_ROWS {
             let grid = overlay::notice(usize::from(cols), usize::from(rows), "terminal too small");
             return Ok(Frame { grid, image: None });
@@ -441,7 +459,7 @@ impl Viewer<'_> {
             (CellGrid::blank(usize::from(cols), usize::from(rows)), Some(image))
         };
         if self.state.hud {
-            overlay::draw_hud(&mut grid, &self.hud_lines(writer.stats()));
+            overlay::draw_hud(&mut grid, &self.hud_lines(written));
         }
         if self.state.help {
             overlay::draw_centered_box(&mut grid, HELP);
@@ -518,15 +536,31 @@ impl Viewer<'_> {
     }
 }
 
+/// The most pixels of a moving image when the link carries `link_pixels` in [`IMAGE_LINK_TIME`]
+/// ([`WriterStats::image_pixels`]): the largest of [`MAX_IMAGE_PIXELS`] halved 0 to 4 times that fits, and at
+/// least [`MIN_IMAGE_PIXELS`]. In steps, so that the picture's sharpness does not flicker with each frame's bytes;
+/// only for protocols the terminal scales ([`GraphicsProtocol::scaled_by_terminal`]): a smaller Sixel image would
+/// show a smaller picture, so Sixel keeps its size and only its frame rate falls.
+pub fn moving_image_cap(protocol: GraphicsProtocol, link_pixels: Option<usize>) -> usize {
+    let Some(link) = link_pixels.filter(|_| protocol.scaled_by_terminal()) else { return MAX_IMAGE_PIXELS };
+    let mut cap = MAX_IMAGE_PIXELS;
+    while cap > link && cap > MIN_IMAGE_PIXELS {
+        cap /= 2;
+    }
+    cap
+}
+
 /// The pixel size of an image frame for a terminal of `size` cells, `size_in_pixels` when it says: the pixels of
 /// the cells the image covers ([`GraphicsProtocol::image_rows`]), cells of [`ASSUMED_CELL_WIDTH`] by
-/// `cell_aspect` times that when it does not say; scaled down to at most [`MAX_IMAGE_PIXELS`]; the height a whole
-/// number of [`GraphicsProtocol::row_multiple`]; at least one row of them.
+/// `cell_aspect` times that when it does not say; scaled down to at most `max_pixels` (at most
+/// [`MAX_IMAGE_PIXELS`], or less on a slow link: [`moving_image_cap`]); the height a whole number of
+/// [`GraphicsProtocol::row_multiple`]; at least one row of them.
 pub fn image_size(
     protocol: GraphicsProtocol,
     (cols, rows): (u16, u16),
     size_in_pixels: Option<(u16, u16)>,
     cell_aspect: f32,
+    max_pixels: usize,
 ) -> (usize, usize) {
     let (cell_width, cell_height) = match size_in_pixels {
         Some((width, height)) => {
@@ -537,8 +571,8 @@ pub fn image_size(
     let mut width = f32::from(cols) * cell_width;
     let mut height = f32::from(protocol.image_rows(rows)) * cell_height;
     let area = width * height;
-    if area > MAX_IMAGE_PIXELS as f32 {
-        let scale = (MAX_IMAGE_PIXELS as f32 / area).sqrt();
+    if area > max_pixels as f32 {
+        let scale = (max_pixels as f32 / area).sqrt();
         (width, height) = (width * scale, height * scale);
     }
     let multiple = protocol.row_multiple();

@@ -3,7 +3,7 @@
 //! Inside tmux the viewer's queries reach tmux, not the terminal, and tmux does not hand the terminal's answers
 //! back to the pane. But tmux asked the terminal itself when the client attached (its name, from `XTVERSION`), and
 //! knows whether the pane allows pass-through and where the pane lies on the terminal. The viewer reads all of it
-//! with one `tmux display-message` ([`FORMAT`]), which must end within [`QUERY_TIMEOUT`].
+//! with one `tmux display-message` ([`TMUX_FORMAT`]), which must end within [`TMUX_QUERY_TIMEOUT`].
 
 use std::io::Read;
 use std::process::{Command, Stdio};
@@ -13,18 +13,18 @@ use std::time::{Duration, Instant};
 use crate::graphics::Passthrough;
 
 /// The longest wait for tmux's answer.
-pub const QUERY_TIMEOUT: Duration = Duration::from_millis(500);
+pub const TMUX_QUERY_TIMEOUT: Duration = Duration::from_millis(500);
 
 /// What is asked of tmux, one field per tab: pass-through allowed (`1`, `on` or `all`), the terminal's name from
 /// `XTVERSION` (tmux 3.3), its `TERM`, the pane's first column and row in the window, the status lines and where
 /// they are.
-pub const FORMAT: &str = "#{allow-passthrough}\t#{client_termtype}\t#{client_termname}\t#{pane_left}\t#{pane_top}\t\
+pub const TMUX_FORMAT: &str = "#{allow-passthrough}\t#{client_termtype}\t#{client_termname}\t#{pane_left}\t#{pane_top}\t\
                           #{status}\t#{status-position}";
 
 /// The most bytes of tmux's answer read (it is one short line).
 const MAX_ANSWER: u64 = 4096;
 
-/// tmux's answer to [`FORMAT`].
+/// tmux's answer to [`TMUX_FORMAT`].
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TmuxClient {
     /// The pane passes wrapped strings on to the terminal.
@@ -38,7 +38,7 @@ pub struct TmuxClient {
 }
 
 impl TmuxClient {
-    /// Reads tmux's answer to [`FORMAT`]; `None` when it is not one.
+    /// Reads tmux's answer to [`TMUX_FORMAT`]; `None` when it is not one.
     pub fn parse(answer: &str) -> Option<Self> {
         let fields: Vec<&str> = answer.trim_end_matches(['\n', '\r']).split('\t').collect();
         let [passthrough, terminal, term, left, top, status, position] = fields[..] else { return None };
@@ -57,16 +57,16 @@ impl TmuxClient {
     }
 
     /// Asks the tmux server of `$TMUX` about pane `pane` (`$TMUX_PANE`); `None` when tmux does not answer within
-    /// [`QUERY_TIMEOUT`] or the answer makes no sense.
+    /// [`TMUX_QUERY_TIMEOUT`] or the answer makes no sense.
     pub fn query(pane: &str) -> Option<Self> {
         let mut child = Command::new("tmux")
-            .args(["display-message", "-p", "-t", pane, FORMAT])
+            .args(["display-message", "-p", "-t", pane, TMUX_FORMAT])
             .stdin(Stdio::null())
             .stdout(Stdio::piped())
             .stderr(Stdio::null())
             .spawn()
             .ok()?;
-        let deadline = Instant::now() + QUERY_TIMEOUT;
+        let deadline = Instant::now() + TMUX_QUERY_TIMEOUT;
         let succeeded = loop {
             match child.try_wait() {
                 Ok(Some(status)) => break status.success(),
