@@ -1,8 +1,12 @@
-//! Writes seed corpora for both fuzz targets: `cargo run --release --example seeds` from `fuzz/` (any toolchain).
+//! Writes seed corpora for every fuzz target: `cargo run --release --example seeds` from `fuzz/` (any toolchain).
 //!
 //! - `corpus/obj_load/`: hand-written OBJ/MTL files (quads, negative and relative indices, `v/vt/vn` forms,
 //!   groups and `usemtl` switches, `mtllib` in a subdirectory, `map_Kd` with options, CRLF, vertex colours, `l`
 //!   lines, a polygon, short faces) in the target's length-prefixed layout, with valid and corrupt textures.
+//! - `corpus/stl_load/`: a tetrahedron as ASCII STL (mixed case, flat and smooth) and as binary STL (a header that
+//!   starts with `solid`, and one with bytes after the last triangle).
+//! - `corpus/scene_parse/`: the scene files of `assets/scenes/`, and a scene of built-in meshes only (which the
+//!   target draws).
 //! - `corpus/raster/`: scenes found by decoding pseudo-random bytes exactly as the target does and keeping those
 //!   that shade at least one pixel, one per kind (shading model, texture, depth test, band, wireframe, clipping).
 //!   A candidate that breaks an invariant is not a seed: it is saved to `artifacts/raster/seed-panic-*` and
@@ -120,6 +124,70 @@ usemtl rawtga
 f 1/1 4/4 3/3
 ";
 
+const TETRA_ASCII: &str = "solid tetra
+facet normal 0 0 -1
+ outer loop
+  vertex 0 0 0
+  vertex 0 1 0
+  vertex 1 0 0
+ endloop
+endfacet
+FACET NORMAL 0 -1 0
+ OUTER LOOP
+  VERTEX 0 0 0
+  VERTEX 1 0 0
+  VERTEX 0 0 1
+ ENDLOOP
+ENDFACET
+facet normal -1 0 0
+ outer loop
+  vertex 0 0 0
+  vertex 0 0 1
+  vertex 0 1 0
+ endloop
+endfacet
+facet normal 0 0 0
+ outer loop
+  vertex 1 0 0
+  vertex 0 1 0
+  vertex 0 0 1
+ endloop
+endfacet
+endsolid tetra
+";
+
+/// A scene of built-in meshes only, with both kinds of light and shadows.
+const BUILTIN_SCENE: &str = "background = \"202830\"
+ambient = [0.1, 0.1, 0.1]
+
+[camera]
+position = [0, 1, 4]
+target = [0, 0.5, 0]
+fov = 40
+
+[[lights]]
+type = \"directional\"
+direction = [-0.3, -1, -0.5]
+shadows = true
+
+[[lights]]
+type = \"point\"
+position = [0, 6, 0]
+color = [1, 0.9, 0.8]
+
+[[objects]]
+mesh = \"builtin:spot\"
+rotate = [0, 30, 0]
+
+[[objects]]
+mesh = \"builtin:spot\"
+translate = [1.5, 0, 0]
+scale = 0.5
+[objects.material]
+color = [0.2, 0.6, 0.9]
+specular = 0.5
+";
+
 fn write(dir: &Path, name: &str, bytes: &[u8]) {
     fs::write(dir.join(name), bytes).unwrap_or_else(|e| panic!("writing {}: {e}", dir.join(name).display()));
 }
@@ -196,16 +264,81 @@ fn raster_seeds(dir: &Path, panics: &Path) -> (usize, usize) {
     (written, broken)
 }
 
+/// The tetrahedron's triangles as binary STL, after an 80-byte header starting with `header`.
+fn binary_tetra(header: &[u8]) -> Vec<u8> {
+    let corners: [[f32; 9]; 4] = [
+        [0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0],
+        [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0],
+        [0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0],
+        [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0],
+    ];
+    let mut bytes = vec![0u8; 80];
+    bytes[..header.len()].copy_from_slice(header);
+    bytes.extend_from_slice(&4u32.to_le_bytes());
+    for triangle in corners {
+        bytes.extend_from_slice(&[0; 12]);
+        for v in triangle {
+            bytes.extend_from_slice(&v.to_le_bytes());
+        }
+        bytes.extend_from_slice(&[0, 0]);
+    }
+    bytes
+}
+
+fn stl_seeds(dir: &Path) -> usize {
+    let mut padded = binary_tetra(b"");
+    padded.extend_from_slice(b"trailing bytes");
+    let seeds: [(&str, u8, Vec<u8>); 4] = [
+        ("ascii_flat_phong", 0x03, TETRA_ASCII.as_bytes().to_vec()),
+        ("ascii_smooth_60_wireframe", 0x80 | 42 | 0x08, TETRA_ASCII.as_bytes().to_vec()),
+        ("binary_solid_header_gouraud", 0x02, binary_tetra(b"solid but binary")),
+        ("binary_padded_smooth_ortho", 0x80 | 0x20 | 0x7f, padded),
+    ];
+    for (name, config, stl) in &seeds {
+        let data = rastty_fuzz::stl_load::encode(*config, stl);
+        assert!(rastty_fuzz::stl_load::run(&data), "seed {name} does not load");
+        write(dir, name, &data);
+    }
+    seeds.len()
+}
+
+fn scene_seeds(dir: &Path) -> usize {
+    assert!(rastty_fuzz::scene_parse::run(BUILTIN_SCENE.as_bytes()), "the built-in scene does not parse");
+    write(dir, "builtin_spots", BUILTIN_SCENE.as_bytes());
+    let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("../assets/scenes");
+    let mut count = 1;
+    let mut entries: Vec<_> =
+        fs::read_dir(&scenes).expect("assets/scenes").map(|e| e.expect("an entry").path()).collect();
+    entries.sort();
+    for path in entries.into_iter().filter(|p| p.extension().is_some_and(|e| e == "toml")) {
+        let text = fs::read(&path).expect("a scene file");
+        assert!(rastty_fuzz::scene_parse::run(&text), "{} does not parse", path.display());
+        write(dir, &path.file_name().expect("a name").to_string_lossy(), &text);
+        count += 1;
+    }
+    count
+}
+
 fn main() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus");
     let (obj, raster) = (root.join("obj_load"), root.join("raster"));
-    fs::create_dir_all(&obj).expect("creating corpus/obj_load");
-    fs::create_dir_all(&raster).expect("creating corpus/raster");
+    let (stl, scene) = (root.join("stl_load"), root.join("scene_parse"));
+    for dir in [&obj, &raster, &stl, &scene] {
+        fs::create_dir_all(dir).unwrap_or_else(|e| panic!("creating {}: {e}", dir.display()));
+    }
     // The checks print panics of candidates they catch; keep the output to the summary.
     std::panic::set_hook(Box::new(|info| eprintln!("{info}")));
     let o = obj_seeds(&obj);
+    let s = stl_seeds(&stl);
+    let p = scene_seeds(&scene);
     let (r, broken) = raster_seeds(&raster, &Path::new(env!("CARGO_MANIFEST_DIR")).join("artifacts").join("raster"));
-    println!("wrote {o} seeds to {} and {r} to {}", obj.display(), raster.display());
+    println!(
+        "wrote {o} seeds to {}, {s} to {}, {p} to {} and {r} to {}",
+        obj.display(),
+        stl.display(),
+        scene.display(),
+        raster.display()
+    );
     if broken > 0 {
         eprintln!("{broken} random candidates broke an invariant (saved in artifacts/raster/seed-panic-*)");
         std::process::exit(1);

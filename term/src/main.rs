@@ -11,6 +11,8 @@ use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 use rastty::escaped::Escaped;
 use rastty::graphics::GraphicsProtocol;
 use rastty::graphics::frame_palette::Dither;
+use rastty::input_file::{parse_byte_size, set_max_file_bytes};
+use rastty::model::ModelOptions;
 use rastty::png_file::write_png;
 use rastty::scene_file::{open, parse_hex_color};
 use rastty::scene_render::{
@@ -139,6 +141,13 @@ struct SceneArgs {
     /// Leave effects out (normal-maps, specular, glow-maps, shadows, ambient-occlusion).
     #[arg(long, value_name = "EFFECT,...", value_delimiter = ',', value_parser = SceneEffect::from_str)]
     without: Vec<SceneEffect>,
+    /// The largest file read (model, material library, image, scene file), in bytes or with K, M, G: larger files
+    /// are refused with a message.
+    #[arg(long, value_name = "SIZE", default_value = "256M", value_parser = parse_byte_size)]
+    max_file_size: u64,
+    /// STL models: share normals across edges where faces meet within this angle, in degrees (default: flat).
+    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true, value_parser = smooth_angle)]
+    smooth_angle: Option<f32>,
 }
 
 impl SceneArgs {
@@ -169,7 +178,8 @@ impl SceneArgs {
     /// prints the warnings, and prepares it. Returns it with its name and the look to draw it with: an image that
     /// cannot be loaded is a warning, and the scene is then drawn untextured.
     fn load(&self, path: Option<&Path>) -> Result<(PreparedScene, String, PlanOptions), String> {
-        let mut opened = open(path).map_err(|e| e.to_string())?;
+        set_max_file_bytes(self.max_file_size);
+        let mut opened = open(path, &ModelOptions { smooth_angle: self.smooth_angle }).map_err(|e| e.to_string())?;
         let mut textures = true;
         if let Some(texture) = &self.texture {
             if let Err(e) = opened.data.use_texture(texture) {
@@ -184,6 +194,13 @@ impl SceneArgs {
         let scene = PreparedScene::new(opened.data).map_err(|e| format!("{}: {e}", opened.name))?;
         Ok((scene, opened.name, self.plan(textures)))
     }
+}
+
+fn smooth_angle(s: &str) -> Result<f32, String> {
+    s.parse::<f32>()
+        .ok()
+        .filter(|v| (0.0..=180.0).contains(v))
+        .ok_or_else(|| format!("{s:?} is not an angle from 0 to 180 degrees"))
 }
 
 fn finite(s: &str) -> Result<f32, String> {

@@ -153,13 +153,103 @@ fn missing_model_names_the_file_and_the_os_reason() {
 }
 
 #[test]
-fn directory_as_model_names_it_and_the_os_reason() {
+fn directory_as_model_is_refused_by_name() {
     let dir = dir_with(&[]);
     fs::create_dir(dir.path().join("models")).unwrap();
     let message = rastty(dir.path(), ["render", "models", "-o", "out.png"]).expect_error();
-    let reason = os_reason(&dir.path().join("models"));
-    assert_eq!(message, format!("models: cannot read the file: {reason}"));
+    assert_eq!(message, "models: cannot read the file: not a regular file: a directory");
     assert_holds_only(dir.path(), &["models"]);
+}
+
+/// Runs `rastty ARGS` in `dir` as [`rastty`] does, but kills it after [`ENDS_WITHIN`] and fails: a file that is
+/// read without end must not hang the test.
+fn rastty_within<S: AsRef<OsStr>>(dir: &Path, args: impl IntoIterator<Item = S>) -> Run {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rastty"))
+        .args(args)
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the rastty binary runs");
+    let start = std::time::Instant::now();
+    while child.try_wait().expect("wait for rastty").is_none() {
+        if start.elapsed() > ENDS_WITHIN {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!("rastty still ran after {ENDS_WITHIN:?}");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+    let output = child.wait_with_output().expect("rastty's output");
+    Run { code: output.status.code(), stdout: output.stdout, stderr: output.stderr }
+}
+
+/// How long a run that must refuse a file at once may take.
+const ENDS_WITHIN: std::time::Duration = std::time::Duration::from_secs(10);
+
+#[test]
+fn devices_and_fifos_are_refused_at_once_as_models_scene_files_meshes_and_images() {
+    let dir = dir_with(&[
+        ("zero_mesh.toml", b"[[objects]]\nmesh = \"/dev/zero\"\n"),
+        (
+            "random_image.toml",
+            b"[[objects]]\nmesh = \"builtin:spot\"\n[objects.material]\ndiffuse = \"/dev/urandom\"\n",
+        ),
+    ]);
+    let made = Command::new("mkfifo").arg(dir.path().join("model.obj")).status().expect("run mkfifo");
+    assert!(made.success());
+    std::os::unix::fs::symlink("/dev/zero", dir.path().join("zero.toml")).unwrap();
+    let device = "cannot read the file: not a regular file: a character device";
+    let cases: [(&str, &[&str]); 6] = [
+        ("/dev/zero", &["/dev/zero: ", device]),
+        ("/dev/urandom", &["/dev/urandom: ", device]),
+        ("model.obj", &["model.obj: cannot read the file: not a regular file: a FIFO"]),
+        ("zero.toml", &["zero.toml", "not a regular file: a character device"]),
+        ("zero_mesh.toml", &["zero_mesh.toml", "/dev/zero", "not a regular file: a character device"]),
+        ("random_image.toml", &["random_image.toml", "/dev/urandom", "not a regular file: a character device"]),
+    ];
+    for (file, fragments) in cases {
+        let message = rastty_within(dir.path(), ["render", file, "-o", "out.png"]).expect_error();
+        for fragment in fragments {
+            assert!(message.contains(fragment), "{file}: {message:?} lacks {fragment:?}");
+        }
+    }
+    assert!(!dir.path().join("out.png").exists());
+}
+
+#[test]
+fn a_file_of_no_known_type_says_which_types_are_read() {
+    let dir = dir_with(&[("notes.txt", b"hello\n"), ("scene.glb", b"glTF\x02\0\0\0"), ("cube.STL", b"junk")]);
+    let message = rastty(dir.path(), ["render", "notes.txt", "-o", "out.png"]).expect_error();
+    assert_eq!(
+        message,
+        "notes.txt: not a model file this program reads (OBJ (.obj), STL (.stl, binary or ASCII) and glTF 2.0 \
+         (.gltf, .glb))"
+    );
+    let message = rastty(dir.path(), ["render", "scene.glb", "-o", "out.png"]).expect_error();
+    assert!(message.starts_with("scene.glb: glTF 2.0 models are recognised but not read yet"), "{message}");
+    // Known by its extension only: read as STL, whose checks say what is wrong.
+    let message = rastty(dir.path(), ["render", "cube.STL", "-o", "out.png"]).expect_error();
+    assert!(message.starts_with("cube.STL: 4 bytes is too short for an STL file"), "{message}");
+}
+
+#[test]
+fn files_over_the_size_limit_are_refused_with_both_sizes_and_the_option() {
+    let obj = TRIANGLE.repeat(40);
+    let dir = dir_with(&[("big.obj", obj.as_bytes())]);
+    let message = rastty(dir.path(), ["render", "big.obj", "-o", "out.png", "--max-file-size", "1K"]).expect_error();
+    assert_eq!(
+        message,
+        format!(
+            "big.obj: cannot read the file: {:.1} KiB is larger than the limit of 1.0 KiB for a file \
+             (raise it with --max-file-size)",
+            obj.len() as f64 / 1024.0
+        )
+    );
+    rastty(dir.path(), ["render", "big.obj", "-o", "out.png", "--max-file-size", "2M", "--size", "8x8"])
+        .expect_success();
+    rastty(dir.path(), ["render", "big.obj", "-o", "out.png", "--max-file-size", "12Q"]).expect_usage_error("12Q");
 }
 
 #[test]

@@ -14,6 +14,7 @@ mod scene_render;
 mod screen_cells;
 mod screen_encoder;
 mod screen_palette;
+mod stl_models;
 mod viewer_graphics;
 mod viewer_lifecycle;
 mod viewer_ssh;

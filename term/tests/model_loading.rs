@@ -8,8 +8,8 @@ use std::path::{Path, PathBuf};
 use image::{DynamicImage, ImageFormat};
 use proptest::prelude::*;
 use rastty::model::{
-    COORDINATE_LIMIT, DEFAULT_DIFFUSE, Element, Embedded, FALLBACK_NORMAL, LoadError, LoadErrorKind, Model, NoFiles,
-    TextureImage, load_obj, load_obj_bytes,
+    COORDINATE_LIMIT, DEFAULT_DIFFUSE, Element, Embedded, FALLBACK_NORMAL, LoadError, LoadErrorKind, Model,
+    ModelOptions, NoFiles, TextureImage, load_model, load_obj_bytes,
 };
 use rastty_core::math::{Vec2, Vec3};
 
@@ -32,7 +32,7 @@ fn load_with(obj: &str, files: &[(&str, &[u8])]) -> Result<Model, LoadError> {
     let mut all = files.to_vec();
     all.push(("model.obj", obj.as_bytes()));
     let dir = dir_with(&all);
-    load_obj(dir.path().join("model.obj"))
+    load_model(dir.path().join("model.obj"), &ModelOptions::default())
 }
 
 fn load(obj: &str) -> Model {
@@ -569,13 +569,14 @@ fn assert_one_line(e: &LoadError, starts: &str) -> String {
 fn a_missing_file_names_the_file_and_the_os_reason() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("nothing.obj");
-    let e = load_obj(&path).unwrap_err();
+    let e = load_model(&path, &ModelOptions::default()).unwrap_err();
     assert!(matches!(&e.kind, LoadErrorKind::Io(io) if io.kind() == std::io::ErrorKind::NotFound));
     let text = assert_one_line(&e, &path.display().to_string());
     assert!(text.ends_with("cannot read the file: No such file or directory (os error 2)"), "{text}");
 
-    let e = load_obj(dir.path()).unwrap_err();
+    let e = load_model(dir.path(), &ModelOptions::default()).unwrap_err();
     assert!(matches!(e.kind, LoadErrorKind::Io(_)), "a directory is not a file: {e}");
+    assert!(e.to_string().ends_with("cannot read the file: not a regular file: a directory"), "{e}");
 }
 
 #[test]

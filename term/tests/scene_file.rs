@@ -377,6 +377,10 @@ fn invalid_lights_name_the_key() {
 fn invalid_objects_and_materials_name_the_key() {
     let object = |lines: &str| error(&format!("{CAMERA}{SPOT}{lines}"));
     assert_eq!(object("scale = 0\n"), "scene.toml:7:9: objects[0].scale: must be positive, got 0");
+    assert_eq!(
+        object("smooth_angle = 200\n"),
+        "scene.toml:7:16: objects[0].smooth_angle: must be an angle from 0 to 180 degrees, got 200"
+    );
     assert_eq!(object("scale = [1, -1, 1]\n"), "scene.toml:7:9: objects[0].scale: must be positive, got [1, -1, 1]");
     assert_eq!(
         object("rotate = [0, nan, 0]\n"),

@@ -421,7 +421,7 @@ pub fn table_row(m: &Measurement) -> String {
 /// # Errors
 /// [`ReportError::Load`], [`ReportError::Render`] (a model without a finite vertex).
 pub fn builtin_scene() -> Result<PreparedScene, ReportError> {
-    let opened = open(None).map_err(ReportError::Load)?;
+    let opened = open(None, &rastty::model::ModelOptions::default()).map_err(ReportError::Load)?;
     PreparedScene::new(opened.data).map_err(ReportError::Render)
 }
 

@@ -65,6 +65,17 @@ pub enum LoadErrorKind {
     /// The OBJ parser rejected the file for a reason the loader's own line check did not find. Should not happen;
     /// kept so that such a file is an error rather than a surprise.
     Parser(String),
+    /// A coordinate of a triangle of a binary file (STL) is NaN, infinite, or beyond [`COORDINATE_LIMIT`].
+    BadTriangle {
+        /// 1-based triangle number.
+        triangle: usize,
+        /// The offending value.
+        value: f32,
+    },
+    /// The file is not laid out as its format says (a binary STL shorter than its triangle count): what is wrong.
+    Format(String),
+    /// The file is not of a type the loader reads: what it looks like, and the types that are read.
+    UnknownFormat(String),
 }
 
 /// The kind of element a face index refers to.
@@ -133,6 +144,17 @@ impl fmt::Display for LoadError {
             }
             LoadErrorKind::Image(reason) => write!(f, "{path}: cannot decode the image: {}", Escaped(reason)),
             LoadErrorKind::Parser(reason) => write!(f, "{path}: the OBJ parser failed: {}", Escaped(reason)),
+            LoadErrorKind::BadTriangle { triangle, value } if !value.is_finite() => {
+                write!(f, "{path}, triangle {triangle}: coordinate {value} is not a finite number")
+            }
+            LoadErrorKind::BadTriangle { triangle, value } => {
+                write!(
+                    f,
+                    "{path}, triangle {triangle}: coordinate {value:e} is beyond the limit of ±{COORDINATE_LIMIT:e}"
+                )
+            }
+            LoadErrorKind::Format(problem) => write!(f, "{path}: {}", Escaped(problem)),
+            LoadErrorKind::UnknownFormat(problem) => write!(f, "{path}: {}", Escaped(problem)),
         }
     }
 }

@@ -1,7 +1,8 @@
-//! Loading models (OBJ + MTL) and their textures into renderable form.
+//! Loading models (OBJ with MTL and textures, STL) into renderable form.
 //!
-//! [`load_obj`] reads a file; [`load_obj_bytes`] reads OBJ text held in memory (a built-in model embedded with
-//! `include_bytes!`), with a [`Resolver`] such as [`Embedded`] for its MTL and texture files. Both give a
+//! [`load_model`] reads a file of any type it recognises ([`ModelFormat`]); [`load_obj_bytes`] reads OBJ text held
+//! in memory (a built-in model embedded with `include_bytes!`), with a [`Resolver`] such as [`Embedded`] for its
+//! MTL and texture files, and [`load_stl_bytes`] STL data. Each gives a
 //! [`Model`]: one vertex array (positions, normals, optional texture coordinates), one `u32` index buffer cut into
 //! [`Part`]s by object, group and material, the [`Material`]s with their decoded [`TextureImage`]s, and the
 //! warnings met on the way. [`Model::part_mesh`] hands a part to the core as a [`rastty_core::mesh::Mesh`], and
@@ -26,22 +27,28 @@
 //! ```
 
 mod bounds;
+mod crease_normals;
 mod error;
 mod loaded_model;
 mod map_path;
 mod material;
+mod model_file;
 mod mtl_check;
 mod obj_check;
 mod obj_loader;
 mod resolver;
 mod smooth_normals;
+mod stl_loader;
 mod texture_image;
 
 pub use bounds::Bounds;
+pub use crease_normals::{IndexedSoup, MAX_GROUPS_PER_VERTEX, crease_normals};
 pub use error::{COORDINATE_LIMIT, Element, LoadError, LoadErrorKind};
 pub use loaded_model::{Model, Part};
 pub use material::{DEFAULT_DIFFUSE, Material};
-pub use obj_loader::{load_obj, load_obj_bytes};
+pub use model_file::{ModelFormat, ModelOptions, SUPPORTED_MODELS, load_model};
+pub use obj_loader::load_obj_bytes;
 pub use resolver::{Directory, Embedded, NoFiles, Resolver};
 pub use smooth_normals::{FALLBACK_NORMAL, smooth_normals};
+pub use stl_loader::{is_ascii_stl, is_binary_stl, load_stl_bytes};
 pub use texture_image::{MAX_TEXTURE_SIDE, TextureImage};

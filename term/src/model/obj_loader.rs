@@ -12,7 +12,7 @@ use super::map_path::map_file;
 use super::material::{DEFAULT_DIFFUSE, Material, diffuse_from_kd};
 use super::mtl_check::check_mtl;
 use super::obj_check::check_obj;
-use super::resolver::{Directory, Resolver};
+use super::resolver::Resolver;
 use super::smooth_normals::smooth_normals;
 use super::texture_image::TextureImage;
 use crate::escaped::{Escaped, path_text};
@@ -20,18 +20,6 @@ use crate::escaped::{Escaped, path_text};
 /// How `tobj` is asked to parse: one index per vertex, polygons fanned into triangles, points and lines dropped.
 const OPTIONS: tobj::LoadOptions =
     tobj::LoadOptions { single_index: true, triangulate: true, ignore_points: true, ignore_lines: true };
-
-/// Loads the OBJ file at `path`, its MTL libraries and their diffuse textures (resolved against the OBJ file's
-/// directory and each MTL file's directory).
-///
-/// # Errors
-/// See [`load_obj_bytes`]; also [`LoadErrorKind::Io`] when the OBJ file cannot be read.
-pub fn load_obj(path: impl AsRef<Path>) -> Result<Model, LoadError> {
-    let path = path.as_ref();
-    let bytes = std::fs::read(path).map_err(|e| LoadError::new(path, LoadErrorKind::Io(e)))?;
-    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    load_obj_bytes(path, &bytes, &Directory::new(dir))
-}
 
 /// Loads OBJ text held in memory; `name` names it in errors and warnings, and `resolver` supplies the MTL libraries
 /// and textures it refers to.

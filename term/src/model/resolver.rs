@@ -5,6 +5,8 @@ use std::borrow::Cow;
 use std::io;
 use std::path::{Component, Path, PathBuf};
 
+use crate::input_file::read_input_file;
+
 /// Supplies the files an OBJ file refers to.
 ///
 /// Paths are relative to the OBJ file's directory: an `mtllib` path as written in the OBJ file (backslashes turned
@@ -39,7 +41,7 @@ impl Directory {
 
 impl Resolver for Directory {
     fn read(&self, path: &Path) -> io::Result<Cow<'_, [u8]>> {
-        std::fs::read(self.dir.join(path)).map(Cow::Owned)
+        read_input_file(&self.dir.join(path)).map(Cow::Owned)
     }
 
     fn describe(&self, path: &Path) -> PathBuf {

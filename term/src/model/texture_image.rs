@@ -7,6 +7,7 @@ use image::{ImageFormat, ImageReader, Limits};
 use rastty_core::texture::{Texture, TextureError};
 
 use super::error::{LoadError, LoadErrorKind};
+use crate::input_file::read_input_file;
 
 /// The largest width and height accepted for a texture.
 pub const MAX_TEXTURE_SIDE: u32 = 16384;
@@ -30,7 +31,7 @@ impl TextureImage {
     /// [`LoadErrorKind::Io`] when the file cannot be read, [`LoadErrorKind::Image`] when it cannot be decoded.
     pub fn load(path: impl AsRef<Path>) -> Result<Self, LoadError> {
         let path = path.as_ref();
-        let bytes = std::fs::read(path).map_err(|e| LoadError::new(path, LoadErrorKind::Io(e)))?;
+        let bytes = read_input_file(path).map_err(|e| LoadError::new(path, LoadErrorKind::Io(e)))?;
         Self::decode(path, &bytes)
     }
 

@@ -1,5 +1,5 @@
 //! Loading a checked scene file: paths resolved against the scene file's directory, meshes loaded with
-//! [`crate::model::load_obj`], images with [`TextureImage::load`], each file once.
+//! [`crate::model::load_model`], images with [`TextureImage::load`], each file once.
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
@@ -22,7 +22,7 @@ use super::transform::object_transform;
 use super::validate::{BUILTIN_PREFIX, Checker, unit};
 use crate::builtin::builtin_model;
 use crate::escaped::{Escaped, path_text};
-use crate::model::{Model, TextureImage, load_obj};
+use crate::model::{Model, ModelOptions, TextureImage, load_model};
 
 fn vec3(t: Triple) -> Vec3 {
     Vec3::new(t[0], t[1], t[2])
@@ -123,8 +123,8 @@ struct Loader<'a> {
     checker: Checker<'a>,
     /// The scene file's directory (empty for a file in the current directory).
     base: &'a Path,
-    /// Meshes loaded so far, by identity (or the built-in name).
-    meshes: HashMap<PathBuf, Arc<Model>>,
+    /// Meshes loaded so far, by identity (or the built-in name) and smoothing angle.
+    meshes: HashMap<(PathBuf, Option<u32>), Arc<Model>>,
     /// Images loaded so far: identity to index in `images`.
     image_ids: HashMap<PathBuf, usize>,
     images: Vec<(PathBuf, Arc<TextureImage>)>,
@@ -133,14 +133,20 @@ struct Loader<'a> {
 
 impl Loader<'_> {
     fn object(&mut self, o: &ObjectSpec, key: &str) -> Result<SceneObject, SceneFileError> {
-        let (mesh_path, model) = self.mesh(&o.mesh, &format!("{key}.mesh"))?;
+        let options = ModelOptions { smooth_angle: o.smooth_angle.as_ref().map(|a| *a.get_ref()) };
+        let (mesh_path, model) = self.mesh(&o.mesh, &format!("{key}.mesh"), &options)?;
         let scale = o.scale.as_ref().map_or(Vec3::ONE, |s| vec3(s.get_ref().triple()));
         let transform = object_transform(vec3_or(&o.translate, Vec3::ZERO), vec3_or(&o.rotate, Vec3::ZERO), scale);
         let material = self.material(&o.material, &format!("{key}.material"), model.uvs.is_some())?;
         Ok(SceneObject { mesh_path, model, transform, material })
     }
 
-    fn mesh(&mut self, spec: &Spanned<String>, key: &str) -> Result<(PathBuf, Arc<Model>), SceneFileError> {
+    fn mesh(
+        &mut self,
+        spec: &Spanned<String>,
+        key: &str,
+        options: &ModelOptions,
+    ) -> Result<(PathBuf, Arc<Model>), SceneFileError> {
         let text = spec.get_ref();
         let (path, id) = if text.starts_with(BUILTIN_PREFIX) {
             // Validation admits only the built-in names there are.
@@ -150,10 +156,12 @@ impl Loader<'_> {
             let id = identity(&path);
             (path, id)
         };
+        // The same file smoothed differently is another mesh.
+        let id = (id, options.smooth_angle.map(f32::to_bits));
         if let Some(model) = self.meshes.get(&id) {
             return Ok((path, Arc::clone(model)));
         }
-        let loaded = if text.starts_with(BUILTIN_PREFIX) { builtin_model() } else { load_obj(&path) };
+        let loaded = if text.starts_with(BUILTIN_PREFIX) { builtin_model() } else { load_model(&path, options) };
         let model = Arc::new(loaded.map_err(|error| {
             let kind = SceneFileErrorKind::Mesh { path: path.clone(), error: Box::new(error) };
             SceneFileError::new(self.checker.file, Some(self.checker.locate(&spec.span())), Some(key.into()), kind)

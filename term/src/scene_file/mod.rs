@@ -72,6 +72,7 @@ use std::path::{Path, PathBuf};
 use serde::Deserialize;
 use toml::de::{DeTable, Deserializer};
 
+use crate::input_file::read_input_file;
 use key_path::{child, key_at};
 use validate::{Checker, validate};
 
@@ -109,7 +110,7 @@ impl SceneFile {
 /// report.
 pub fn load(path: impl AsRef<Path>) -> Result<SceneData, SceneFileError> {
     let path = path.as_ref();
-    let bytes = std::fs::read(path).map_err(|e| SceneFileError::new(path, None, None, SceneFileErrorKind::Io(e)))?;
+    let bytes = read_input_file(path).map_err(|e| SceneFileError::new(path, None, None, SceneFileErrorKind::Io(e)))?;
     let text = String::from_utf8(bytes).map_err(|e| {
         let valid = &e.as_bytes()[..e.utf8_error().valid_up_to()];
         let location = Location::of_offset(&String::from_utf8_lossy(valid), valid.len());

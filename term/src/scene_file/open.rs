@@ -7,7 +7,7 @@ use std::sync::Arc;
 use super::{BUILTIN_PREFIX, SceneData, SceneFileError};
 use crate::builtin::{BUILTIN_NAME, builtin_model};
 use crate::escaped::{Escaped, path_text};
-use crate::model::{LoadError, TextureImage, load_obj};
+use crate::model::{LoadError, ModelOptions, TextureImage, load_model};
 
 /// A scene file: a path ending in `.toml` (any case). Everything else is read as a model.
 pub fn is_scene_file(path: &Path) -> bool {
@@ -52,18 +52,18 @@ impl OpenedScene {
 }
 
 /// Loads `path` as a scene: a scene file ([`is_scene_file`]) with [`super::load`], any other file as a model
-/// ([`SceneData::from_model`]); the built-in model when `path` is `None`.
+/// ([`load_model`] with `options`, then [`SceneData::from_model`]); the built-in model when `path` is `None`.
 ///
 /// # Errors
 /// [`OpenError`] naming the file and what is wrong.
-pub fn open(path: Option<&Path>) -> Result<OpenedScene, OpenError> {
+pub fn open(path: Option<&Path>, options: &ModelOptions) -> Result<OpenedScene, OpenError> {
     match path {
         Some(path) if is_scene_file(path) => {
             let data = super::load(path).map_err(OpenError::SceneFile)?;
             Ok(OpenedScene { data, name: path.to_string_lossy().into_owned() })
         }
         Some(path) => {
-            let model = load_obj(path).map_err(OpenError::Model)?;
+            let model = load_model(path, options).map_err(OpenError::Model)?;
             let name = path.to_string_lossy().into_owned();
             Ok(OpenedScene { data: SceneData::from_model(model, path.to_path_buf()), name })
         }

@@ -140,10 +140,14 @@ pub enum LightType {
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields, expecting = "a table of object keys")]
 pub struct ObjectSpec {
-    /// `mesh = "PATH"`: an OBJ file, relative to the scene file's directory (an absolute path is used as is), with
-    /// its MTL library and textures; or `"builtin:spot"`, the model built into `rastty` (Spot, facing `+z`, with
-    /// her texture; see [`crate::builtin`]). Required.
+    /// `mesh = "PATH"`: a model file (OBJ with its MTL library and textures, or STL; see
+    /// [`crate::model::load_model`]), relative to the scene file's directory (an absolute path is used as is); or
+    /// `"builtin:spot"`, the model built into `rastty` (Spot, facing `+z`, with her texture; see
+    /// [`crate::builtin`]). Required.
     pub mesh: Spanned<String>,
+    /// `smooth_angle = DEGREES`: an STL mesh's normals are shared across edges where its faces meet within this
+    /// angle, from 0 to 180. Default: flat faces.
+    pub smooth_angle: Option<Spanned<f32>>,
     /// `translate = [x, y, z]`: moves the object, in world units. Default `[0, 0, 0]`.
     pub translate: Option<Spanned<Triple>>,
     /// `rotate = [x, y, z]`: rotations in degrees about the X, Y and Z axes, applied in that order (first about X,

@@ -289,6 +289,13 @@ fn object(c: &Checker<'_>, o: &ObjectSpec, key: &str) -> Result<(), SceneFileErr
             return Err(c.invalid(&o.mesh.span(), format!("{key}.mesh"), message));
         }
     }
+    if let Some(angle) = &o.smooth_angle {
+        let v = *angle.get_ref();
+        if !(0.0..=180.0).contains(&v) {
+            let message = format!("must be an angle from 0 to 180 degrees, got {v}");
+            return Err(c.invalid(&angle.span(), format!("{key}.smooth_angle"), message));
+        }
+    }
     if let Some(t) = &o.translate {
         c.finite3(t, &format!("{key}.translate"))?;
     }

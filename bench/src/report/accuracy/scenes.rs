@@ -81,7 +81,7 @@ fn floor(w: u32, h: u32) -> AccuracyScene {
 /// and 40-degree lens).
 fn model(w: u32, h: u32) -> Result<AccuracyScene, String> {
     let failed = |e: &dyn std::fmt::Display| format!("model: {e}");
-    let opened = open(None).map_err(|e| failed(&e))?;
+    let opened = open(None, &rastty::model::ModelOptions::default()).map_err(|e| failed(&e))?;
     let scene = PreparedScene::new(opened.data).map_err(|e| failed(&e))?;
     let camera = CameraOptions {
         yaw_degrees: Some(65.0),

@@ -6,7 +6,7 @@
 
 use std::path::{Path, PathBuf};
 
-use rastty::model::{TextureImage, load_obj};
+use rastty::model::{ModelOptions, TextureImage, load_model};
 use rastty_core::camera::{look_at, perspective};
 use rastty_core::math::{Mat4, Vec2, Vec3};
 
@@ -122,7 +122,7 @@ pub fn scenes(models: &Path, quick: bool, only: &[String]) -> Result<Vec<Scene>,
 }
 
 fn from_obj(name: &'static str, path: &Path, width: u32, height: u32, what: &str) -> Result<Scene, SceneError> {
-    let model = load_obj(path).map_err(|e| SceneError(e.to_string()))?;
+    let model = load_model(path, &ModelOptions::default()).map_err(|e| SceneError(e.to_string()))?;
     let file = path.file_stem().map(PathBuf::from).unwrap_or_default();
     let triangles = model.triangle_count();
     let mut scene = Scene {
