@@ -508,6 +508,17 @@ impl Session {
         Self { tmux, stream, started, remote_pid_file, _dir: dir }
     }
 
+    /// Quits with `q`: ssh (the remote viewer) exits with 0, the client's terminal is given back, and the remote
+    /// viewer ends.
+    fn quit(&self) {
+        let viewer = self.remote_viewer_pid();
+        self.tmux.send_keys("q");
+        let (status, tty_same) = self.tmux.wait_for_exit();
+        assert_eq!(status, 0, "ssh (the remote viewer) exited with {status} after q");
+        self.tmux.assert_restored(tty_same);
+        self.tmux.wait_for("the remote viewer to end after q", || process_gone(viewer).then_some(()));
+    }
+
     fn remote_viewer_pid(&self) -> u32 {
         self.tmux.wait_for("the remote viewer's process id", || {
             fs::read_to_string(&self.remote_pid_file).ok().and_then(|s| s.trim().parse().ok())
@@ -596,12 +607,7 @@ fn session(test: &str, server: &SshServer, relay: &Relay, pacing: bool, referenc
     tmux.send_keys("Space");
     stream.wait_until_quiet(stopped, "the turntable to stop");
 
-    let viewer = session.remote_viewer_pid();
-    tmux.send_keys("q");
-    let (status, tty_same) = tmux.wait_for_exit();
-    assert_eq!(status, 0, "ssh (the remote viewer) exited with {status} after q");
-    tmux.assert_restored(tty_same);
-    tmux.wait_for("the remote viewer to end after q", || process_gone(viewer).then_some(()));
+    session.quit();
     Figures {
         first_picture,
         first_change,
@@ -638,6 +644,16 @@ fn compare(what: &str, runs: &[(bool, f64)], lower: bool, unit: &str) -> String 
     )
 }
 
+/// An sshd of the test's own and a slow relay to it; `None` (after saying why) where the test is skipped.
+fn server_and_relay() -> Option<(SshServer, Relay)> {
+    if !ssh_wanted() {
+        return None;
+    }
+    let server = SshServer::start();
+    let relay = Relay::start(server.address);
+    Some((server, relay))
+}
+
 /// Everything a session needs: the server, the relay and the picture the keys must end at.
 struct Link {
     server: SshServer,
@@ -648,11 +664,7 @@ struct Link {
 impl Link {
     /// None (after saying why) where the test is skipped.
     fn start(test: &str) -> Option<Self> {
-        if !ssh_wanted() {
-            return None;
-        }
-        let server = SshServer::start();
-        let relay = Relay::start(server.address);
+        let (server, relay) = server_and_relay()?;
         let reference = exact_screen_after(test, &KEYS);
         Some(Self { server, relay, reference })
     }
@@ -678,11 +690,7 @@ fn the_viewer_without_pacing_over_a_slow_ssh_link() {
 
 #[test]
 fn a_dropped_connection_ends_the_remote_viewer() {
-    if !ssh_wanted() {
-        return;
-    }
-    let server = SshServer::start();
-    let relay = Relay::start(server.address);
+    let Some((server, relay)) = server_and_relay() else { return };
     // While the turntable fills the link, the client is killed; the remote viewer must end.
     let session = Session::start("ssh-drop", &server, &relay, true);
     session.stream.wait_until_quiet(session.started, "the first picture");
@@ -727,11 +735,7 @@ fn kitty_image_sizes(bytes: &[u8]) -> Vec<(usize, usize)> {
 
 #[test]
 fn kitty_images_over_a_slow_ssh_link_shrink_while_moving_and_sharpen_at_rest() {
-    if !ssh_wanted() {
-        return;
-    }
-    let server = SshServer::start();
-    let relay = Relay::start(server.address);
+    let Some((server, relay)) = server_and_relay() else { return };
     let session = Session::start_with("ssh-kitty", &server, &relay, " --graphics kitty");
     let (tmux, stream) = (&session.tmux, &session.stream);
     let sizes = || stream.with(|r| kitty_image_sizes(&r.bytes));
@@ -769,12 +773,7 @@ fn kitty_images_over_a_slow_ssh_link_shrink_while_moving_and_sharpen_at_rest() {
         sharpened.as_secs_f64() * 1e3
     );
 
-    let viewer = session.remote_viewer_pid();
-    tmux.send_keys("q");
-    let (status, tty_same) = tmux.wait_for_exit();
-    assert_eq!(status, 0, "ssh (the remote viewer) exited with {status} after q");
-    tmux.assert_restored(tty_same);
-    tmux.wait_for("the remote viewer to end after q", || process_gone(viewer).then_some(()));
+    session.quit();
 }
 
 /// The measurement behind docs/terminal.md: [`ROUNDS`] sessions of each writer, taking turns, side by side.

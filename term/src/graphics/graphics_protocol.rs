@@ -93,33 +93,29 @@ impl GraphicsProtocol {
     pub fn write_image(self, out: &mut Vec<u8>, image: &FrameImage, dither: Dither) {
         let frame = PixelFrame::new(&image.pixels, image.width, image.height);
         let (column, row) = image.passthrough.origin();
-        let mut bytes = Vec::new();
-        match self {
+        image.passthrough.write_with(out, |bytes| match self {
             GraphicsProtocol::Cells => {}
             GraphicsProtocol::Kitty => {
                 let placement =
                     kitty::KittyPlacement { image_id: IMAGE_ID, column, row, columns: image.columns, rows: image.rows };
-                kitty::write_frame(&mut bytes, frame, &placement);
+                kitty::write_frame(bytes, frame, &placement);
             }
             GraphicsProtocol::Sixel => {
-                write_cursor_move(&mut bytes, column, row);
-                sixel::write_image(&mut bytes, &reduce(frame, 256, dither));
+                write_cursor_move(bytes, column, row);
+                sixel::write_image(bytes, &reduce(frame, 256, dither));
             }
             GraphicsProtocol::Iterm2 => {
-                write_cursor_move(&mut bytes, column, row);
-                iterm2::write_image(&mut bytes, frame, image.columns, image.rows);
+                write_cursor_move(bytes, column, row);
+                iterm2::write_image(bytes, frame, image.columns, image.rows);
             }
-        }
-        image.passthrough.write(out, &bytes);
+        });
     }
 
     /// Appends what frees the terminal's memory of the viewer's image when the viewer ends (kitty: the image is
     /// deleted; the others keep nothing once the screen is cleared), through `passthrough`.
     pub fn write_end(self, out: &mut Vec<u8>, passthrough: Passthrough) {
         if self == GraphicsProtocol::Kitty {
-            let mut bytes = Vec::new();
-            kitty::write_delete(&mut bytes, IMAGE_ID);
-            passthrough.write(out, &bytes);
+            passthrough.write_with(out, |bytes| kitty::write_delete(bytes, IMAGE_ID));
         }
     }
 }

@@ -38,6 +38,18 @@ impl Passthrough {
         }
     }
 
+    /// Appends what `write` writes so that it reaches the terminal: straight into `out`, or (through tmux) into a
+    /// buffer of its own first, then wrapped ([`Self::write`]).
+    pub fn write_with(self, out: &mut Vec<u8>, write: impl FnOnce(&mut Vec<u8>)) {
+        if self == Passthrough::Direct {
+            write(out);
+            return;
+        }
+        let mut bytes = Vec::new();
+        write(&mut bytes);
+        self.write(out, &bytes);
+    }
+
     /// Appends `bytes` (escape strings, each ended by ST or BEL, and cursor moves before them) so that they
     /// reach the terminal: as they are, or each string wrapped for tmux with what precedes it.
     pub fn write(self, out: &mut Vec<u8>, bytes: &[u8]) {
