@@ -507,9 +507,16 @@ fn one_quad_model() -> Model {
         ],
         normals: vec![Vec3::Z; 4],
         uvs: Some(vec![Vec2::new(0.0, 0.0), Vec2::new(1.0, 0.0), Vec2::new(1.0, 1.0), Vec2::new(0.0, 1.0)]),
+        colors: None,
+        tangents: None,
         indices: vec![0, 1, 2, 0, 2, 3],
         parts: vec![Part { name: "quad".into(), indices: 0..6, material: Some(0) }],
-        materials: vec![ModelMaterial { name: "m".into(), diffuse: DEFAULT_DIFFUSE, texture: Some(texture) }],
+        materials: vec![ModelMaterial {
+            name: "m".into(),
+            diffuse: DEFAULT_DIFFUSE,
+            texture: Some(texture),
+            ..ModelMaterial::default()
+        }],
         warnings: Vec::new(),
     }
 }

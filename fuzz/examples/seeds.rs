@@ -5,6 +5,10 @@
 //!   lines, a polygon, short faces) in the target's length-prefixed layout, with valid and corrupt textures.
 //! - `corpus/stl_load/`: a tetrahedron as ASCII STL (mixed case, flat and smooth) and as binary STL (a header that
 //!   starts with `solid`, and one with bytes after the last triangle).
+//! - `corpus/gltf_load/`: a triangle as `.gltf` JSON with its buffer in a data URI (flat normals); a `.glb` of
+//!   squares placed by TRS, matrix, child and mirroring nodes, with normals, texture coordinates, colours, tangents,
+//!   a PNG in the binary chunk as base colour, normal and emissive map, a texture transform and two materials; and
+//!   a `.glb` of a strip, a fan, a sparse accessor and a line primitive.
 //! - `corpus/scene_parse/`: the scene files of `assets/scenes/`, and a scene of built-in meshes only (which the
 //!   target draws).
 //! - `corpus/raster/`: scenes found by decoding pseudo-random bytes exactly as the target does and keeping those
@@ -302,6 +306,124 @@ fn stl_seeds(dir: &Path) -> usize {
     seeds.len()
 }
 
+/// A triangle in `.gltf` JSON, its buffer (three `f32` corners) in a data URI: flat normals are computed.
+const GLTF_TRIANGLE: &str = r#"{"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+"nodes": [{"mesh": 0, "rotation": [0, 0.7071068, 0, 0.7071068]}],
+"buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+"bufferViews": [{"buffer": 0, "byteLength": 36}],
+"accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]}],
+"meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}]}"#;
+
+/// A binary glTF file of `json` and the binary chunk `bin` (each padded to 4 bytes, as the format asks).
+fn glb(json: &str, bin: &[u8]) -> Vec<u8> {
+    let mut json = json.as_bytes().to_vec();
+    json.resize(json.len().next_multiple_of(4), b' ');
+    let mut bin = bin.to_vec();
+    bin.resize(bin.len().next_multiple_of(4), 0);
+    let total = (12 + 8 + json.len() + 8 + bin.len()) as u32;
+    let mut out = b"glTF".to_vec();
+    for word in [2, total, json.len() as u32] {
+        out.extend_from_slice(&word.to_le_bytes());
+    }
+    out.extend_from_slice(b"JSON");
+    out.extend_from_slice(&json);
+    out.extend_from_slice(&(bin.len() as u32).to_le_bytes());
+    out.extend_from_slice(b"BIN\0");
+    out.extend_from_slice(&bin);
+    out
+}
+
+/// Little-endian bytes of `values`.
+fn floats(values: &[f32]) -> Vec<u8> {
+    values.iter().flat_map(|v| v.to_le_bytes()).collect()
+}
+
+/// Squares placed by every kind of node, with every attribute and map read.
+fn gltf_squares() -> Vec<u8> {
+    let mut bin = floats(&[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 0.0]); // 0: 48 positions
+    bin.extend(floats(&[0.0, 0.0, 1.0].repeat(4))); // 48: normals
+    bin.extend(floats(&[0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0])); // 96: 32 texture coordinates
+    bin.extend(floats(&[1.0, 0.0, 0.0, 1.0].repeat(4))); // 128: 64 tangents
+    bin.extend([255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255]); // 192: 16 colours
+    bin.extend([0u16, 1, 2, 0, 2, 3].iter().flat_map(|i| i.to_le_bytes())); // 208: 12 indices
+    let mut png = Vec::new();
+    rastty::png_file::encode_png(&mut png, 2, 2, &[0xFF0000, 0x00FF00, 0x8080FF, 0xFFFFFF]).expect("a PNG");
+    let png_at = bin.len().next_multiple_of(4); // 220
+    bin.resize(png_at, 0);
+    bin.extend_from_slice(&png);
+    let json = format!(
+        r#"{{"asset": {{"version": "2.0"}}, "extensionsUsed": ["KHR_texture_transform", "KHR_materials_emissive_strength"],
+"scene": 0, "scenes": [{{"nodes": [0, 1, 3]}}],
+"nodes": [{{"mesh": 0}}, {{"mesh": 1, "translation": [2, 0, 0], "children": [2]}},
+  {{"mesh": 0, "matrix": [0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1, 0, 0, 3, 0, 1]}}, {{"mesh": 1, "scale": [-1, 1, 1]}}],
+"buffers": [{{"byteLength": {}}}],
+"bufferViews": [{{"buffer": 0, "byteLength": 192}}, {{"buffer": 0, "byteOffset": 192, "byteLength": 16}},
+  {{"buffer": 0, "byteOffset": 208, "byteLength": 12}}, {{"buffer": 0, "byteOffset": {png_at}, "byteLength": {}}}],
+"accessors": [
+  {{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]}},
+  {{"bufferView": 0, "byteOffset": 48, "componentType": 5126, "count": 4, "type": "VEC3"}},
+  {{"bufferView": 0, "byteOffset": 96, "componentType": 5126, "count": 4, "type": "VEC2"}},
+  {{"bufferView": 0, "byteOffset": 128, "componentType": 5126, "count": 4, "type": "VEC4"}},
+  {{"bufferView": 1, "componentType": 5121, "normalized": true, "count": 4, "type": "VEC4"}},
+  {{"bufferView": 2, "componentType": 5123, "count": 6, "type": "SCALAR"}}],
+"meshes": [
+  {{"name": "textured", "primitives": [{{"attributes": {{"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2, "TANGENT": 3,
+    "COLOR_0": 4}}, "indices": 5, "material": 0}}]}},
+  {{"name": "plain", "primitives": [{{"attributes": {{"POSITION": 0}}, "indices": 5, "material": 1}}]}}],
+"materials": [
+  {{"name": "maps", "doubleSided": true, "normalTexture": {{"index": 0, "scale": 0.5}},
+    "emissiveTexture": {{"index": 0}}, "emissiveFactor": [1, 0.5, 0.25],
+    "extensions": {{"KHR_materials_emissive_strength": {{"emissiveStrength": 2}}}},
+    "pbrMetallicRoughness": {{"baseColorTexture": {{"index": 0, "extensions": {{"KHR_texture_transform":
+      {{"offset": [0.5, 0], "rotation": 0.3, "scale": [2, 2]}}}}}}, "metallicFactor": 1, "roughnessFactor": 0.2}}}},
+  {{"name": "plain", "pbrMetallicRoughness": {{"baseColorFactor": [0.2, 0.4, 0.8, 1]}}}}],
+"textures": [{{"source": 0}}], "images": [{{"bufferView": 3, "mimeType": "image/png"}}]}}"#,
+        bin.len(),
+        png.len()
+    );
+    glb(&json, &bin)
+}
+
+/// A strip with 8-bit indices, a fan, a sparse accessor over the strip's corners and a line primitive.
+fn gltf_strip_fan_sparse() -> Vec<u8> {
+    let mut bin = floats(&[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 0.0, 2.0, 0.0]); // 0: 60
+    bin.extend([0u8, 1, 2, 3, 4, 0, 0, 0]); // 60: strip indices (padded)
+    bin.extend([4u32].iter().flat_map(|i| i.to_le_bytes())); // 68: sparse index
+    bin.extend(floats(&[0.5, 3.0, 0.0])); // 72: sparse value
+    let json = format!(
+        r#"{{"asset": {{"version": "2.0"}}, "scenes": [{{"nodes": [0]}}], "nodes": [{{"mesh": 0}}],
+"buffers": [{{"byteLength": {}}}],
+"bufferViews": [{{"buffer": 0, "byteLength": 60}}, {{"buffer": 0, "byteOffset": 60, "byteLength": 5}},
+  {{"buffer": 0, "byteOffset": 68, "byteLength": 4}}, {{"buffer": 0, "byteOffset": 72, "byteLength": 12}}],
+"accessors": [
+  {{"bufferView": 0, "componentType": 5126, "count": 5, "type": "VEC3", "min": [0, 0, 0], "max": [1, 2, 0]}},
+  {{"bufferView": 1, "componentType": 5121, "count": 5, "type": "SCALAR"}},
+  {{"bufferView": 0, "componentType": 5126, "count": 5, "type": "VEC3", "min": [0, 0, 0], "max": [1, 3, 0],
+    "sparse": {{"count": 1, "indices": {{"bufferView": 2, "componentType": 5125}}, "values": {{"bufferView": 3}}}}}}],
+"meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}, "indices": 1, "mode": 5}},
+  {{"attributes": {{"POSITION": 2}}, "mode": 6}}, {{"attributes": {{"POSITION": 0}}, "mode": 1}}]}}]}}"#,
+        bin.len()
+    );
+    glb(&json, &bin)
+}
+
+fn gltf_seeds(dir: &Path) -> usize {
+    let seeds: [(&str, u8, Vec<u8>); 3] = [
+        ("triangle_data_uri_flat", 0x01, GLTF_TRIANGLE.as_bytes().to_vec()),
+        ("squares_every_map_phong_textured", 0x13, gltf_squares()),
+        ("strip_fan_sparse_wireframe", 0x0B, gltf_strip_fan_sparse()),
+    ];
+    for (name, config, gltf) in &seeds {
+        let data = rastty_fuzz::gltf_load::encode(*config, gltf);
+        if let Err(e) = rastty::model::load_gltf_bytes(*name, gltf, &rastty::model::NoFiles) {
+            panic!("seed {name} does not load: {e}");
+        }
+        assert!(rastty_fuzz::gltf_load::run(&data), "seed {name} does not load");
+        write(dir, name, &data);
+    }
+    seeds.len()
+}
+
 fn scene_seeds(dir: &Path) -> usize {
     assert!(rastty_fuzz::scene_parse::run(BUILTIN_SCENE.as_bytes()), "the built-in scene does not parse");
     write(dir, "builtin_spots", BUILTIN_SCENE.as_bytes());
@@ -322,20 +444,22 @@ fn scene_seeds(dir: &Path) -> usize {
 fn main() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus");
     let (obj, raster) = (root.join("obj_load"), root.join("raster"));
-    let (stl, scene) = (root.join("stl_load"), root.join("scene_parse"));
-    for dir in [&obj, &raster, &stl, &scene] {
+    let (stl, scene, gltf) = (root.join("stl_load"), root.join("scene_parse"), root.join("gltf_load"));
+    for dir in [&obj, &raster, &stl, &scene, &gltf] {
         fs::create_dir_all(dir).unwrap_or_else(|e| panic!("creating {}: {e}", dir.display()));
     }
     // The checks print panics of candidates they catch; keep the output to the summary.
     std::panic::set_hook(Box::new(|info| eprintln!("{info}")));
     let o = obj_seeds(&obj);
     let s = stl_seeds(&stl);
+    let g = gltf_seeds(&gltf);
     let p = scene_seeds(&scene);
     let (r, broken) = raster_seeds(&raster, &Path::new(env!("CARGO_MANIFEST_DIR")).join("artifacts").join("raster"));
     println!(
-        "wrote {o} seeds to {}, {s} to {}, {p} to {} and {r} to {}",
+        "wrote {o} seeds to {}, {s} to {}, {g} to {}, {p} to {} and {r} to {}",
         obj.display(),
         stl.display(),
+        gltf.display(),
         scene.display(),
         raster.display()
     );

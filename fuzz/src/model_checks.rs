@@ -33,6 +33,14 @@ pub fn check_model(model: &Model) {
         assert!(m <= COORDINATE_LIMIT, "position {p:?} beyond COORDINATE_LIMIT");
     }
     assert!(model.normals.iter().all(|v| v.is_finite()), "a non-finite normal");
+    if let Some(colors) = &model.colors {
+        assert_eq!(colors.len(), n, "colors.len() != positions.len()");
+        assert!(colors.iter().all(|c| c.is_finite()), "a non-finite colour");
+    }
+    if let Some(tangents) = &model.tangents {
+        assert_eq!(tangents.len(), n, "tangents.len() != positions.len()");
+        assert!(tangents.iter().all(|t| t.is_finite() && t.w.abs() == 1.0), "a tangent without handedness");
+    }
 
     // Parts: contiguous, in order, covering the index buffer, whole triangles, valid materials, meshes.
     let mut next = 0;
@@ -53,12 +61,14 @@ pub fn check_model(model: &Model) {
 
     for m in &model.materials {
         assert!(m.diffuse.is_finite(), "material {:?}: non-finite diffuse", m.name);
-        if let Some(t) = &m.texture {
+        for t in [&m.texture, &m.normal_map, &m.glow_map].into_iter().flatten() {
             assert!(t.width >= 1 && t.height >= 1, "an empty texture");
             assert!(t.width <= MAX_TEXTURE_SIDE && t.height <= MAX_TEXTURE_SIDE, "an oversized texture");
             assert_eq!(t.texels.len(), t.width as usize * t.height as usize, "texel count");
             assert!(t.texture().is_ok(), "the core refuses a loaded texture");
         }
+        assert!(m.specular.is_none_or(|s| s.is_finite()), "material {:?}: non-finite specular", m.name);
+        assert!(m.shininess.is_none_or(|s| s.is_finite() && s > 0.0), "material {:?}: bad shininess", m.name);
     }
     for w in &model.warnings {
         assert!(!has_control(w), "a warning holds a control character: {w:?}");

@@ -14,12 +14,14 @@ use rastty::graphics::frame_palette::Dither;
 use rastty::input_file::{parse_byte_size, set_max_file_bytes};
 use rastty::model::ModelOptions;
 use rastty::png_file::write_png;
+use rastty::render_stats::{FrameStats, PassCounts, SceneCounts, TurntableFrameTimes, TurntableSummary};
 use rastty::scene_file::{open, parse_hex_color};
 use rastty::scene_render::{
     CameraOptions, EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, ShadingMode, parse_size,
     render_scene_image,
 };
 use rastty::screen::{CellMode, ColorMode};
+use rastty::turntable_export::{DEFAULT_FPS, MAX_FPS, MAX_FRAMES, Turntable, TurntableError, TurntableOutput};
 use rastty::viewer::{ColorChoice, GraphicsChoice, ViewerExit, ViewerOptions};
 use rastty_core::math::Vec3;
 
@@ -35,14 +37,15 @@ struct Cli {
 
 #[derive(Subcommand, Debug)]
 enum Command {
-    /// Render a model or a scene file to a PNG file, or explain a scene's passes.
+    /// Render a model or a scene file to a PNG file (or a turntable to an animated GIF or PNG), or explain a scene's
+    /// passes.
     Render(RenderArgs),
 }
 
 /// Options of the interactive viewer.
 #[derive(Args, Debug)]
 struct ViewerArgs {
-    /// OBJ file or scene file (.toml) to show (default: the built-in model, Spot the cow).
+    /// Model (OBJ, STL, glTF) or scene file (.toml) to show (default: the built-in model, Spot the cow).
     model: Option<PathBuf>,
     #[command(flatten)]
     scene: SceneArgs,
@@ -76,12 +79,13 @@ struct ViewerArgs {
 /// Options of `rastty render`.
 #[derive(Args, Debug)]
 struct RenderArgs {
-    /// OBJ file or scene file (.toml) to render (default: the built-in model).
+    /// Model (OBJ, STL, glTF) or scene file (.toml) to render (default: the built-in model).
     model: Option<PathBuf>,
-    /// The PNG file to write (may be left out with --explain).
+    /// The PNG file to write (may be left out with --explain); with --turntable, a .gif or .png file (see there).
     #[arg(short, long, value_name = "OUT.png", required_unless_present = "explain")]
     output: Option<PathBuf>,
-    /// Print the passes the frame runs and what each draw computes; with -o, render too.
+    /// Print the passes the frame runs and what each draw computes; with -o, render too. With --turntable, the
+    /// first frame's.
     #[arg(long)]
     explain: bool,
     /// Image size.
@@ -92,9 +96,36 @@ struct RenderArgs {
     /// Anti-aliasing: render N times larger in each direction and average (1, 2, 3 or 4).
     #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=4))]
     supersample: u32,
-    /// Print triangle counts, the compiled pipeline and the render time.
+    /// Print triangle counts, the compiled pipeline and the render time. With --turntable, the first frame's counts,
+    /// then each frame's yaw (the --yaw that renders it alone), render, palette and encode times as it is written,
+    /// then their median, least and most.
     #[arg(long)]
     stats: bool,
+    /// Render N frames (1 to 3600) of one full turn about the camera's target: frame k at the starting yaw (--yaw,
+    /// else the scene's) plus 360k/N degrees, every other option as for one frame. The -o name picks the output:
+    /// NAME.gif, one GIF looping forever, each frame with its own 256-colour palette; NAME.png, one animated PNG
+    /// (APNG) looping forever, every colour kept (viewers that do not play APNG show the first frame); a .png name
+    /// with a run of # (frame-###.png), one PNG file per frame, the run replaced by the frame number zero-padded to
+    /// its length, or longer if N needs more digits (frame-000.png, frame-001.png, ...). A file is only put in
+    /// place once it is whole, and a sequence's files once the last frame is written.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_FRAMES)))]
+    turntable: Option<u32>,
+    /// Turntable frames per second, 1 to 50. An APNG shows each frame 1/FPS s exactly; a GIF stores delays in
+    /// hundredths of a second, so each frame gets its end time rounded to the nearest hundredth minus its start
+    /// time rounded (25 fps: 4 each; 30 fps: 3, 4, 3, 3, 4, 3, ...) and a turn lasts N/FPS s to the hundredth.
+    /// Browsers slow GIF delays under 2 hundredths, hence 50 at most.
+    #[arg(
+        long,
+        value_name = "FPS",
+        default_value_t = DEFAULT_FPS,
+        value_parser = clap::value_parser!(u32).range(1..=i64::from(MAX_FPS)),
+        requires = "turntable"
+    )]
+    fps: u32,
+    /// Turntable GIF: dither each frame (Floyd-Steinberg) to its palette: smoother gradients, with noise that
+    /// moves from frame to frame (and a larger file).
+    #[arg(long, requires = "turntable")]
+    dither: bool,
 }
 
 /// Camera and look, shared by the viewer and the renderer, for a model and a scene file alike. Each camera option
@@ -145,7 +176,8 @@ struct SceneArgs {
     /// are refused with a message.
     #[arg(long, value_name = "SIZE", default_value = "256M", value_parser = parse_byte_size)]
     max_file_size: u64,
-    /// STL models: share normals across edges where faces meet within this angle, in degrees (default: flat).
+    /// STL models named here: share normals across edges where faces meet within this angle, in degrees
+    /// (default: flat; a scene file sets smooth_angle per object).
     #[arg(long, value_name = "DEGREES", allow_negative_numbers = true, value_parser = smooth_angle)]
     smooth_angle: Option<f32>,
 }
@@ -272,8 +304,27 @@ fn main() -> ExitCode {
 }
 
 /// `rastty render [MODEL | SCENE.toml]`: `--explain` alone prints the plan without rendering; with `-o` the frame
-/// is rendered (and the plan printed first when `--explain` is given too).
+/// is rendered (and the plan printed first when `--explain` is given too), or with `--turntable` every frame of the
+/// turn.
 fn render(args: &RenderArgs) -> Result<(), String> {
+    // The turntable's output is checked before the scene is loaded: a wrong name fails at once.
+    let turntable = match (args.turntable, &args.output) {
+        (Some(frames), Some(output)) => {
+            let output = TurntableOutput::from_path(output).map_err(|e| e.to_string())?;
+            if args.dither && !output.is_gif() {
+                return Err("--dither maps GIF frames to their palettes; PNG frames keep every colour".into());
+            }
+            Some((frames, output))
+        }
+        (None, Some(output)) if output.extension().is_some_and(|e| e.eq_ignore_ascii_case("gif")) => {
+            let shown = output.display().to_string();
+            return Err(format!(
+                "{}: one frame is written as PNG; name a .png file, or give --turntable N for an animated GIF",
+                Escaped(&shown)
+            ));
+        }
+        _ => None,
+    };
     let (scene, name, options) = args.scene.load(args.model.as_deref())?;
     let camera = args.scene.camera().orbit(&scene).camera;
     let in_scene = |e: rastty::scene_render::SceneRenderError| format!("{}: {e}", Escaped(&name));
@@ -288,64 +339,61 @@ fn render(args: &RenderArgs) -> Result<(), String> {
         print!("{plan}");
         return Ok(());
     };
+    if let Some((frames, output)) = turntable {
+        return render_turntable(args, frames, &output, &scene, &name, &options);
+    }
     let image = render_scene_image(&scene, &camera, args.size, args.supersample, &options).map_err(in_scene)?;
     if args.explain {
         print!("{}", image.plan);
     }
     write_png(output, image.width, image.height, &image.pixels).map_err(|e| e.to_string())?;
     if args.stats {
-        let r = &image.report;
-        let ms = |d: std::time::Duration| d.as_secs_f64() * 1e3;
-        let objects = scene.data().objects.len();
-        let triangles: usize = scene.data().objects.iter().map(|o| o.model.triangle_count()).sum();
-        let (o, t) = (if objects == 1 { "" } else { "s" }, if triangles == 1 { "" } else { "s" });
-        println!("scene: {} ({objects} object{o}, {triangles} triangle{t})", Escaped(&name));
-        let bands = match r.bands {
-            1 => String::new(),
-            n => format!(" (in {n} bands of rows: a triangle counts once per band it may reach)"),
-        };
-        for (pass, done) in image.plan.shadow_passes.iter().zip(&r.shadow_passes) {
-            let s = &done.stats;
-            println!(
-                "shadow map of light {}: {}x{} texels, {} triangles in, {} drawn, {} fragments{bands}",
-                done.light, pass.map_size, pass.map_size, s.triangles_in, s.rasterized, s.fragments
-            );
-        }
-        let s = &r.forward;
-        println!(
-            "forward: {} draws; triangles {} in, {} culled, {} clipped, {} drawn ({} outside, {} degenerate, {} \
-             invalid); {} fragments{bands}",
-            r.variants.len(),
-            s.triangles_in,
-            s.culled,
-            s.clipped,
-            s.rasterized,
-            s.outside,
-            s.degenerate,
-            s.invalid,
-            s.fragments
-        );
-        let mut pipelines: Vec<String> = Vec::new();
-        for variant in r.variants.iter().map(ToString::to_string) {
-            if !pipelines.contains(&variant) {
-                println!("pipeline: {variant}");
-                pipelines.push(variant);
+        print!("{}", FrameStats { scene: &scene, name: &name, image: &image });
+    }
+    Ok(())
+}
+
+/// `rastty render --turntable N -o OUT`: the frames written as they are rendered, the first frame's plan and counts
+/// printed as it is written, and each frame's times after it.
+fn render_turntable(
+    args: &RenderArgs,
+    frames: u32,
+    output: &TurntableOutput,
+    scene: &PreparedScene,
+    name: &str,
+    options: &PlanOptions,
+) -> Result<(), String> {
+    let turntable = Turntable {
+        scene,
+        camera: args.scene.camera(),
+        options,
+        size: args.size,
+        supersample: args.supersample,
+        frames,
+        fps: args.fps,
+        dither: if args.dither { Dither::FloydSteinberg } else { Dither::None },
+    };
+    if args.stats {
+        print!("{}", SceneCounts { scene, name });
+    }
+    let report = turntable
+        .export(output, |frame| {
+            if frame.index == 0 && args.explain {
+                print!("{}", frame.image.plan);
             }
-        }
-        let samples = if args.supersample > 1 {
-            format!(" ({0}x{0} samples per pixel)", args.supersample)
-        } else {
-            String::new()
-        };
-        println!(
-            "render: {:.2} ms at {}x{}{samples}: shadows {:.2} ms, forward {:.2} ms, ambient occlusion {:.2} ms",
-            ms(image.render_time),
-            image.width,
-            image.height,
-            ms(r.shadow_time),
-            ms(r.forward_time),
-            ms(r.occlusion_time)
-        );
+            if frame.index == 0 && args.stats {
+                print!("{}", PassCounts(frame.image));
+            }
+            if args.stats {
+                print!("{}", TurntableFrameTimes(frame));
+            }
+        })
+        .map_err(|e| match e {
+            TurntableError::Render { .. } => format!("{}: {e}", Escaped(name)),
+            TurntableError::Output { .. } | TurntableError::Write { .. } => e.to_string(),
+        })?;
+    if args.stats {
+        print!("{}", TurntableSummary(&report));
     }
     Ok(())
 }

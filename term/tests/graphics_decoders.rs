@@ -5,7 +5,7 @@
 use std::io::Read;
 
 use base64::Engine;
-use rastty::graphics::frame_palette::{Dither, IndexedFrame, reduce};
+use rastty::graphics::frame_palette::{Dither, IndexedFrame, Learning, reduce};
 use rastty::graphics::{kitty, sixel};
 use rastty::screen::PixelFrame;
 
@@ -48,7 +48,7 @@ fn shown(frame: &IndexedFrame) -> Vec<[u8; 3]> {
 fn sixel_images_decode_to_their_palette_colours() {
     let (pixels, width, height) = picture();
     for dither in [Dither::None, Dither::FloydSteinberg] {
-        let frame = reduce(PixelFrame::new(&pixels, width, height), 256, dither);
+        let frame = reduce(PixelFrame::new(&pixels, width, height), 256, dither, Learning::Quick);
         let mut out = Vec::new();
         sixel::write_image(&mut out, &frame);
         let image = icy_sixel::SixelImage::decode(&out).expect("icy_sixel decodes the image");
@@ -67,7 +67,7 @@ fn sixel_images_decode_to_their_palette_colours() {
 fn sixel_images_of_few_colours_and_odd_sizes_decode_exactly() {
     for (width, height) in [(1, 1), (7, 5), (6, 6), (40, 13)] {
         let pixels: Vec<u32> = (0..width * height).map(|i| [0x000000, 0xFFFFFF, 0xFF0000][i % 3]).collect();
-        let frame = reduce(PixelFrame::new(&pixels, width, height), 256, Dither::None);
+        let frame = reduce(PixelFrame::new(&pixels, width, height), 256, Dither::None, Learning::Quick);
         let mut out = Vec::new();
         sixel::write_image(&mut out, &frame);
         let image = icy_sixel::SixelImage::decode(&out).expect("icy_sixel decodes the image");

@@ -5,6 +5,7 @@
 
 mod cli;
 mod common;
+mod gltf_models;
 mod graphics_decoders;
 mod model_loading;
 mod readme_picture;
@@ -15,6 +16,7 @@ mod screen_cells;
 mod screen_encoder;
 mod screen_palette;
 mod stl_models;
+mod turntable_export;
 mod viewer_graphics;
 mod viewer_lifecycle;
 mod viewer_ssh;

@@ -28,6 +28,9 @@ fn quit(mut screen: Screen, mut viewer: Viewer) -> Vec<u8> {
     screen.type_bytes(b"q");
     let (status, _) = viewer.wait_for_end(Instant::now());
     assert_eq!(status.code(), Some(0), "exit status after q");
+    // The viewer's last bytes may still be on their way through the pty when it has ended: wait for the
+    // alternate screen's end, which it writes last.
+    screen.wait_for("the terminal restored", |out| out.windows(8).any(|w| w == b"\x1b[?1049l"));
     let output = screen.output();
     screen.close();
     output
@@ -266,14 +269,18 @@ fn inside_tmux_kitty_images_pass_through_to_the_pane_on_the_terminal() {
     // tmux unwraps the image and writes it to the terminal, placed at the pane's top-left cell.
     let placed = format!("\x1b[1;{}H\x1b_Ga=T,", left + 1);
     screen.wait_for("a kitty image at the pane", |out| out.windows(placed.len()).any(|w| w == placed.as_bytes()));
-    screen.wait_for("the whole image", |out| out.windows(4).any(|w| w == b"m=0;"));
-    let text = String::from_utf8_lossy(&screen.output()).into_owned();
-    let (keys, rgb) = kitty_image(&text);
     let size = tmux.run(&["display-message", "-p", "-t", "%0", "#{pane_width} #{pane_height}"]);
     let (cols, rows) = size.trim().split_once(' ').expect("width height");
     let (cols, rows): (u16, u16) = (cols.parse().unwrap(), rows.parse().unwrap());
-    // The image covers the pane's cells; its pixels follow the cell size tmux gives the pane.
-    assert!(keys.contains(&format!(",i=1,p=1,c={cols},r={rows},C=1,z=-1,q=2,")), "{keys}");
+    // The image covers the pane's cells; its pixels follow the cell size tmux gives the pane. (On a loaded
+    // machine the first image may come before tmux has settled the pane's size: the one drawn for it is read.)
+    let sized = format!(",i=1,p=1,c={cols},r={rows},C=1,z=-1,q=2,");
+    let whole_after = |text: &str| text.rfind(&sized).is_some_and(|at| text[at..].contains("m=0;"));
+    screen.wait_for("a whole image of the pane's size", |out| whole_after(&String::from_utf8_lossy(out)));
+    let text = String::from_utf8_lossy(&screen.output()).into_owned();
+    let start = text[..text.rfind(&sized).expect("the image")].rfind("\x1b_Ga=T,").expect("its start");
+    let (keys, rgb) = kitty_image(&text[start..]);
+    assert!(keys.contains(&sized), "{keys}");
     let key = |name: &str| -> usize {
         let value = keys.split(',').find_map(|k| k.strip_prefix(name)).expect("the key");
         value.parse().expect("a number")

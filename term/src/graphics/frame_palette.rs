@@ -1,4 +1,4 @@
-//! A frame reduced to a palette of at most 256 colours, for the formats that need one (Sixel).
+//! A frame reduced to a palette of at most 256 colours, for the formats that need one (Sixel, the GIF turntable).
 //!
 //! A frame of at most as many distinct colours as the palette may hold keeps them exactly. Otherwise the palette
 //! comes from NeuQuant (Dekker, "Kohonen neural networks for optimal colour quantization", 1994; the `color_quant`
@@ -26,13 +26,45 @@ pub enum Dither {
 /// The most colours a palette holds.
 pub const MAX_COLORS: usize = 256;
 
-/// NeuQuant learns from one pixel in `1..=30` (its sampling factor): this one for a large frame (on a 687x444 frame
-/// of the built-in model it learnt in 6 to 8 ms, against 15 to 17 ms at 10, three runs each of a scratch timing),
-/// fewer for a small one, so that it sees at least [`SAMPLES_PER_COLOR`] pixels a palette entry.
+/// How much of a frame NeuQuant learns its palette from: one pixel in every `1..=30` (its sampling factor).
+///
+/// Measured once on the built-in model with its default camera (a scratch test, release build; the error is the
+/// summed distance of the three channels, in levels, averaged over the model's pixels, the background being exact):
+/// at 800x600, one pixel in 30 erred 4.7 in 15 ms, one in 10 3.9 in 28 ms, one in 5 3.5 in 53 ms, every pixel 3.0
+/// in 313 ms; at 320x240, one in 10 (the quick rule there) 6.8 in 5 ms, every pixel 3.7 in 42 ms. On
+/// `spot_lamp.toml` (a textured floor filling the frame) the same steps erred 6.2, 5.6, 5.4, 5.0 at 800x600 and
+/// 7.8 against 5.6 at 320x240.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Learning {
+    /// A frame shown live (Sixel), where the time counts: one pixel in 30 of a large frame, fewer skipped in a
+    /// small one, so that it sees at least 30 pixels a palette entry.
+    #[default]
+    Quick,
+    /// A frame written to a file (the GIF turntable), learnt once and looked at many times: every pixel of a frame
+    /// of up to [`THOROUGH_SAMPLES`] pixels, about that many of a larger one (one in 5 at 800x600), at most one in
+    /// 30.
+    Thorough,
+}
+
+impl Learning {
+    /// The sampling factor for a frame of `pixels` reduced to `colors` colours.
+    fn sample_factor(self, pixels: usize, colors: usize) -> usize {
+        let factor = match self {
+            Self::Quick => pixels / (colors * SAMPLES_PER_COLOR),
+            Self::Thorough => pixels.div_ceil(THOROUGH_SAMPLES),
+        };
+        factor.clamp(1, MAX_SAMPLE_FACTOR)
+    }
+}
+
+/// NeuQuant's largest sampling factor: it learns from one pixel in 30 at least.
 const MAX_SAMPLE_FACTOR: usize = 30;
 
-/// The fewest pixels NeuQuant learns from for each palette entry.
+/// The fewest pixels NeuQuant learns from for each palette entry ([`Learning::Quick`]).
 const SAMPLES_PER_COLOR: usize = 30;
+
+/// About how many pixels NeuQuant learns from with [`Learning::Thorough`].
+pub const THOROUGH_SAMPLES: usize = 100_000;
 
 /// Slots of the cache of searched colours (a power of two; each holds the last colour that hashed to it).
 const CACHE_SLOTS: usize = 1 << 14;
@@ -50,15 +82,16 @@ pub struct IndexedFrame {
     pub height: usize,
 }
 
-/// Reduces `frame` to at most `colors` colours (clamped to `2..=`[`MAX_COLORS`]).
-pub fn reduce(frame: PixelFrame<'_>, colors: usize, dither: Dither) -> IndexedFrame {
+/// Reduces `frame` to at most `colors` colours (clamped to `2..=`[`MAX_COLORS`]), the palette learnt as closely as
+/// `learning` says.
+pub fn reduce(frame: PixelFrame<'_>, colors: usize, dither: Dither, learning: Learning) -> IndexedFrame {
     let colors = colors.clamp(2, MAX_COLORS);
     let (width, height) = (frame.width(), frame.height());
     if let Some((palette, indices)) = exact(frame.pixels(), colors) {
         return IndexedFrame { palette, indices, width, height };
     }
     let rgba: Vec<u8> = frame.pixels().iter().flat_map(|p| rgb(*p).into_iter().chain([255])).collect();
-    let sample_factor = (frame.pixels().len() / (colors * SAMPLES_PER_COLOR)).clamp(1, MAX_SAMPLE_FACTOR);
+    let sample_factor = learning.sample_factor(frame.pixels().len(), colors);
     let quantizer = NeuQuant::new(sample_factor as i32, colors, &rgba);
     let palette: Vec<[u8; 3]> = quantizer.color_map_rgb().chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect();
     let nearest = |c: [u8; 3]| quantizer.index_of(&[c[0], c[1], c[2], 255]) as u8;
@@ -151,7 +184,7 @@ mod tests {
     #[test]
     fn few_colours_are_kept_exactly() {
         let pixels = [0x102030, 0xFFFFFF, 0x102030, 0x000000, 0xFFFFFF, 0x0000FF];
-        let frame = reduce(PixelFrame::new(&pixels, 3, 2), 4, Dither::FloydSteinberg);
+        let frame = reduce(PixelFrame::new(&pixels, 3, 2), 4, Dither::FloydSteinberg, Learning::Quick);
         assert_eq!(frame.palette.len(), 4);
         assert_eq!(shown(&frame), pixels.map(rgb));
     }
@@ -177,7 +210,7 @@ mod tests {
     #[test]
     fn a_gradient_gets_a_palette_of_the_size_asked_for_and_stays_close() {
         let pixels: Vec<u32> = (0..64 * 64).map(|i| ((i % 64) * 4) << 16 | ((i / 64) * 4) << 8 | 0x40).collect();
-        let frame = |dither| reduce(PixelFrame::new(&pixels, 64, 64), 32, dither);
+        let frame = |dither| reduce(PixelFrame::new(&pixels, 64, 64), 32, dither, Learning::Quick);
         let (flat, dithered) = (frame(Dither::None), frame(Dither::FloydSteinberg));
         for frame in [&flat, &dithered] {
             assert_eq!((frame.palette.len(), frame.indices.len()), (32, pixels.len()));
@@ -202,5 +235,29 @@ mod tests {
         let mean = indices.iter().map(|&i| f64::from(palette[usize::from(i)][0])).sum::<f64>() / indices.len() as f64;
         assert!((mean - 96.0).abs() < 4.0, "mean {mean}");
         assert!(indices.contains(&0) && indices.contains(&1));
+    }
+
+    #[test]
+    fn thorough_learning_sees_more_pixels_and_errs_less() {
+        // Quick: one pixel in 30 at most, at least 30 a colour; thorough: about THOROUGH_SAMPLES pixels.
+        assert_eq!(Learning::Quick.sample_factor(800 * 600, 256), 30);
+        assert_eq!(Learning::Quick.sample_factor(320 * 240, 256), 10);
+        assert_eq!(Learning::Thorough.sample_factor(800 * 600, 256), 5);
+        assert_eq!(Learning::Thorough.sample_factor(320 * 240, 256), 1);
+        assert_eq!(Learning::Thorough.sample_factor(8192 * 8192, 256), 30);
+        // A 256 x 256 two-channel gradient in 64 colours: learning from every pixel errs less than from one in 30.
+        let pixels: Vec<u32> = (0..256 * 256).map(|i| (i % 256) << 16 | (i / 256) << 8 | 0x80).collect();
+        let error = |learning| {
+            let frame = reduce(PixelFrame::new(&pixels, 256, 256), 64, Dither::None, learning);
+            let shown = shown(&frame);
+            let sum: u32 = shown
+                .iter()
+                .zip(&pixels)
+                .map(|(s, &p)| (0..3).map(|c| u32::from(s[c].abs_diff(rgb(p)[c]))).sum::<u32>())
+                .sum();
+            f64::from(sum) / pixels.len() as f64
+        };
+        let (quick, thorough) = (error(Learning::Quick), error(Learning::Thorough));
+        assert!(thorough < quick, "thorough {thorough}, quick {quick}");
     }
 }

@@ -4,7 +4,7 @@ use std::fmt;
 use std::io::Write;
 use std::str::FromStr;
 
-use super::frame_palette::{Dither, reduce};
+use super::frame_palette::{Dither, Learning, reduce};
 use super::passthrough::Passthrough;
 use super::{iterm2, kitty, sixel};
 use crate::screen::PixelFrame;
@@ -102,7 +102,7 @@ impl GraphicsProtocol {
             }
             GraphicsProtocol::Sixel => {
                 write_cursor_move(bytes, column, row);
-                sixel::write_image(bytes, &reduce(frame, 256, dither));
+                sixel::write_image(bytes, &reduce(frame, 256, dither, Learning::Quick));
             }
             GraphicsProtocol::Iterm2 => {
                 write_cursor_move(bytes, column, row);

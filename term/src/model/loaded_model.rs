@@ -2,7 +2,7 @@
 
 use std::ops::Range;
 
-use rastty_core::math::{Mat4, Vec2, Vec3};
+use rastty_core::math::{Mat4, Vec2, Vec3, Vec4};
 use rastty_core::mesh::{Indices, Mesh};
 
 use super::bounds::Bounds;
@@ -23,6 +23,13 @@ pub struct Model {
     /// Texture coordinates, one per position (`v` up, as in OBJ), or `None` when no face of the file uses texture
     /// coordinates. Vertices of parts without them get `(0, 0)`.
     pub uvs: Option<Vec<Vec2>>,
+    /// Vertex colours, one per position (glTF's `COLOR_0`), or `None` when the file gives none. Vertices of parts
+    /// without them get white.
+    pub colors: Option<Vec<Vec3>>,
+    /// Tangents for normal maps, one per position (`xyz` toward increasing `u`, `w` the handedness, as
+    /// [`rastty_core::mesh::compute_tangents`] gives them), when the file gives them for every vertex of the
+    /// parts that have a normal map (glTF's `TANGENT`); otherwise they are computed when needed.
+    pub tangents: Option<Vec<Vec4>>,
     /// Triangle vertex indices, three per triangle, into the vertex arrays.
     pub indices: Vec<u32>,
     /// The parts, in file order, covering [`Self::indices`] without gaps.
@@ -52,13 +59,13 @@ impl Model {
         self.indices.len() / 3
     }
 
-    /// The whole model as one mesh (positions, normals, texture coordinates if any), or `None` when the arrays are
+    /// The whole model as one mesh (positions, normals, texture coordinates and colours if any), or `None` when the arrays are
     /// inconsistent (only possible after changing them by hand).
     pub fn mesh(&self) -> Option<Mesh<'_>> {
         self.mesh_of(&self.indices)
     }
 
-    /// Part `part` as a mesh over the shared vertex arrays: positions, normals, texture coordinates if any, and
+    /// Part `part` as a mesh over the shared vertex arrays: positions, normals, texture coordinates and colours if any, and
     /// `Indices::U32` of the part's range. `None` when there is no such part or the arrays are inconsistent.
     pub fn part_mesh(&self, part: usize) -> Option<Mesh<'_>> {
         let range = self.parts.get(part)?.indices.clone();
@@ -112,11 +119,14 @@ impl Model {
     }
 
     fn mesh_of<'a>(&'a self, indices: &'a [u32]) -> Option<Mesh<'a>> {
-        let mesh = Mesh::new(&self.positions, Indices::U32(indices)).ok()?.with_normals(&self.normals).ok()?;
-        match &self.uvs {
-            Some(uvs) => mesh.with_uvs(uvs).ok(),
-            None => Some(mesh),
+        let mut mesh = Mesh::new(&self.positions, Indices::U32(indices)).ok()?.with_normals(&self.normals).ok()?;
+        if let Some(uvs) = &self.uvs {
+            mesh = mesh.with_uvs(uvs).ok()?;
         }
+        if let Some(colors) = &self.colors {
+            mesh = mesh.with_colors(colors).ok()?;
+        }
+        Some(mesh)
     }
 }
 
@@ -129,6 +139,8 @@ mod tests {
             positions: vec![Vec3::ZERO, Vec3::X, Vec3::Y, Vec3::Z],
             normals: vec![Vec3::Z; 4],
             uvs: None,
+            colors: None,
+            tangents: None,
             indices: vec![0, 1, 2, 0, 2, 3],
             parts: vec![
                 Part { name: "a".into(), indices: 0..3, material: None },

@@ -1,4 +1,4 @@
-//! Surface materials from MTL files: a diffuse colour and an optional texture.
+//! Surface materials of a model's parts: what the renderer needs of an MTL `newmtl` entry or a glTF material.
 
 use rastty_core::math::Vec3;
 
@@ -7,21 +7,47 @@ use super::texture_image::TextureImage;
 /// The diffuse colour of a material whose MTL entry has no (usable) `Kd`, and of parts without a material.
 pub const DEFAULT_DIFFUSE: Vec3 = Vec3::splat(0.8);
 
-/// A material: what the renderer needs of an MTL `newmtl` entry.
+/// A material: a colour and the maps and settings a model file gave for one of its parts. An OBJ file's MTL
+/// entries give the colour and the diffuse texture; a glTF material can give every field (see
+/// `docs/models.md` for how glTF's metallic-roughness model is mapped to these).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Material {
-    /// The name given by `newmtl`, raw (it may hold control characters: sanitise before printing).
+    /// The name given by `newmtl` or the glTF material, raw (it may hold control characters: sanitise before
+    /// printing).
     pub name: String,
-    /// Diffuse colour (`Kd`), each component clamped to `[0, 1]`; [`DEFAULT_DIFFUSE`] when absent or not finite.
+    /// Diffuse colour (`Kd`, or glTF's base colour factor), each component clamped to `[0, 1]`;
+    /// [`DEFAULT_DIFFUSE`] when absent or not finite.
     pub diffuse: Vec3,
-    /// The diffuse texture (`map_Kd`), when it names a file that could be read and decoded.
+    /// The diffuse texture (`map_Kd`, or glTF's base colour texture), when it names an image that could be read and
+    /// decoded.
     pub texture: Option<TextureImage>,
+    /// A tangent-space normal map (glTF's normal texture, its scale applied to the texels).
+    pub normal_map: Option<TextureImage>,
+    /// Emitted light, added to the lit colour (glTF's emissive texture times its factor and strength, or the
+    /// factor alone as one texel).
+    pub glow_map: Option<TextureImage>,
+    /// The highlight's colour, when the file gives one (glTF: from metallic and roughness); `None` keeps the
+    /// renderer's default.
+    pub specular: Option<Vec3>,
+    /// The highlight's Blinn-Phong exponent, when the file gives one (glTF: from roughness).
+    pub shininess: Option<f32>,
+    /// Both faces of each triangle are drawn (glTF's `doubleSided`); otherwise back faces are culled.
+    pub double_sided: bool,
 }
 
 impl Default for Material {
-    /// An unnamed, untextured material of [`DEFAULT_DIFFUSE`].
+    /// An unnamed, untextured, one-sided material of [`DEFAULT_DIFFUSE`].
     fn default() -> Self {
-        Self { name: String::new(), diffuse: DEFAULT_DIFFUSE, texture: None }
+        Self {
+            name: String::new(),
+            diffuse: DEFAULT_DIFFUSE,
+            texture: None,
+            normal_map: None,
+            glow_map: None,
+            specular: None,
+            shininess: None,
+            double_sided: false,
+        }
     }
 }
 

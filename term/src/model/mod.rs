@@ -1,8 +1,8 @@
-//! Loading models (OBJ with MTL and textures, STL) into renderable form.
+//! Loading models (OBJ with MTL and textures, STL, glTF 2.0) into renderable form.
 //!
 //! [`load_model`] reads a file of any type it recognises ([`ModelFormat`]); [`load_obj_bytes`] reads OBJ text held
 //! in memory (a built-in model embedded with `include_bytes!`), with a [`Resolver`] such as [`Embedded`] for its
-//! MTL and texture files, and [`load_stl_bytes`] STL data. Each gives a
+//! MTL and texture files, [`load_stl_bytes`] STL data and [`load_gltf_bytes`] glTF data. Each gives a
 //! [`Model`]: one vertex array (positions, normals, optional texture coordinates), one `u32` index buffer cut into
 //! [`Part`]s by object, group and material, the [`Material`]s with their decoded [`TextureImage`]s, and the
 //! warnings met on the way. [`Model::part_mesh`] hands a part to the core as a [`rastty_core::mesh::Mesh`], and
@@ -29,6 +29,10 @@
 mod bounds;
 mod crease_normals;
 mod error;
+mod gltf_accessor;
+mod gltf_loader;
+mod gltf_material;
+mod gltf_resources;
 mod loaded_model;
 mod map_path;
 mod material;
@@ -44,6 +48,8 @@ mod texture_image;
 pub use bounds::Bounds;
 pub use crease_normals::{IndexedSoup, MAX_GROUPS_PER_VERTEX, crease_normals};
 pub use error::{COORDINATE_LIMIT, Element, LoadError, LoadErrorKind};
+pub use gltf_accessor::MAX_VIEWLESS_ELEMENTS;
+pub use gltf_loader::{READ_EXTENSIONS, load_gltf_bytes};
 pub use loaded_model::{Model, Part};
 pub use material::{DEFAULT_DIFFUSE, Material};
 pub use model_file::{ModelFormat, ModelOptions, SUPPORTED_MODELS, load_model};

@@ -5,6 +5,7 @@ use std::fmt;
 use std::path::Path;
 
 use super::error::{LoadError, LoadErrorKind};
+use super::gltf_loader::load_gltf_bytes;
 use super::loaded_model::Model;
 use super::obj_loader::load_obj_bytes;
 use super::resolver::Directory;
@@ -81,7 +82,8 @@ pub struct ModelOptions {
 }
 
 /// Loads the model file at `path`, of any type in [`SUPPORTED_MODELS`], read with
-/// [`read_input_file`]; an OBJ file's MTL libraries and textures are resolved against its directory.
+/// [`read_input_file`]; the files an OBJ or glTF file names (MTL libraries, textures, buffers, images) are read
+/// from its folder, under the rule of [`Directory`].
 ///
 /// # Errors
 /// [`LoadErrorKind::Io`] when the file cannot be read (or is not a regular file, or is too large),
@@ -90,20 +92,19 @@ pub fn load_model(path: impl AsRef<Path>, options: &ModelOptions) -> Result<Mode
     let path = path.as_ref();
     let bytes = read_input_file(path).map_err(|e| LoadError::new(path, LoadErrorKind::Io(e)))?;
     match ModelFormat::detect(path, &bytes) {
-        Some(ModelFormat::Obj) => {
-            let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
-            load_obj_bytes(path, &bytes, &Directory::new(dir))
-        }
+        Some(ModelFormat::Obj) => load_obj_bytes(path, &bytes, &Directory::new(model_folder(path))),
         Some(ModelFormat::Stl) => load_stl_bytes(path, &bytes, options.smooth_angle),
-        Some(ModelFormat::Gltf) => {
-            let problem = "glTF 2.0 models are recognised but not read yet; convert the model to OBJ or STL";
-            Err(LoadError::new(path, LoadErrorKind::Format(problem.to_owned())))
-        }
+        Some(ModelFormat::Gltf) => load_gltf_bytes(path, &bytes, &Directory::new(model_folder(path))),
         None => {
             let problem = format!("not a model file this program reads ({SUPPORTED_MODELS})");
             Err(LoadError::new(path, LoadErrorKind::UnknownFormat(problem)))
         }
     }
+}
+
+/// The folder of the model file at `path`, which the files it names are read from.
+fn model_folder(path: &Path) -> &Path {
+    path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."))
 }
 
 #[cfg(test)]

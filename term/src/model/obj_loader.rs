@@ -257,7 +257,7 @@ fn build_materials(
                     }
                 }
             }
-            Material { name: m.name, diffuse, texture }
+            Material { name: m.name, diffuse, texture, ..Material::default() }
         })
         .collect();
     (result, warnings)

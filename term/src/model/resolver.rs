@@ -7,11 +7,13 @@ use std::path::{Component, Path, PathBuf};
 
 use crate::input_file::read_input_file;
 
-/// Supplies the files an OBJ file refers to.
+/// Supplies the files a model file refers to (an OBJ file's MTL libraries and textures, a glTF file's buffers and
+/// images).
 ///
-/// Paths are relative to the OBJ file's directory: an `mtllib` path as written in the OBJ file (backslashes turned
-/// into slashes), and a texture path joined to the directory of the MTL file that names it. They may hold `..`
-/// and may be absolute, as the files say.
+/// Paths are relative to the model file's folder: an `mtllib` path as written in the OBJ file (backslashes turned
+/// into slashes), a texture path joined to the folder of the MTL file that names it, a glTF URI with its
+/// `%`-escapes decoded. They may hold `..` and may be absolute, as the files say; [`Directory`] refuses those
+/// that leave the folder.
 pub trait Resolver {
     /// The contents of the file at `path`.
     ///
@@ -25,7 +27,14 @@ pub trait Resolver {
     }
 }
 
-/// Reads files from a directory of the file system (the OBJ file's directory).
+/// Reads files from a folder of the file system (the model file's), and only from it or below it.
+///
+/// **The rule for every model format:** a path a model file names is read only when it stays inside the model's
+/// folder: relative, and with no `..` that climbs above the folder once `.` and `name/..` are folded. Any other
+/// (`/etc/passwd`, `../../secret.png`, `C:/x.png`) is refused with an error saying so, which the loaders report
+/// like any unreadable file: a warning for an OBJ file's MTL library or texture and for a glTF image, an error for
+/// a glTF buffer. Symbolic links inside the folder are followed (putting one there is the user's own act). A
+/// scene file is not a model: the paths it names are the user's and may be anywhere.
 #[derive(Clone, Debug)]
 pub struct Directory {
     /// The directory relative paths are resolved against.
@@ -41,7 +50,11 @@ impl Directory {
 
 impl Resolver for Directory {
     fn read(&self, path: &Path) -> io::Result<Cow<'_, [u8]>> {
-        read_input_file(&self.dir.join(path)).map(Cow::Owned)
+        let inside = inside_folder(path).ok_or_else(|| {
+            let reason = "the path leaves the model's folder: a model's files are read only from its folder or below";
+            io::Error::new(io::ErrorKind::PermissionDenied, reason)
+        })?;
+        read_input_file(&self.dir.join(inside)).map(Cow::Owned)
     }
 
     fn describe(&self, path: &Path) -> PathBuf {
@@ -95,6 +108,16 @@ where
     }
 }
 
+/// `path` normalised ([`normalize`]) when it stays inside the folder it is relative to: not absolute, and no `..`
+/// left at its start.
+fn inside_folder(path: &Path) -> Option<PathBuf> {
+    let normal = normalize(path);
+    let inside = normal.components().all(|c| matches!(c, Component::Normal(_) | Component::CurDir));
+    // "C:/x" is relative on Unix, but never meant for this folder.
+    let drive = path.to_str().is_some_and(|s| s.as_bytes().get(1) == Some(&b':'));
+    (inside && !drive && !normal.as_os_str().is_empty()).then_some(normal)
+}
+
 /// Lexical normalisation: drops `.` components and folds `name/..` (a leading `..` is kept).
 fn normalize(path: &Path) -> PathBuf {
     let mut out: Vec<Component<'_>> = Vec::new();
@@ -121,6 +144,22 @@ mod tests {
         assert_eq!(&*r.read(Path::new("./tex/a.png")).unwrap(), b"A");
         assert_eq!(&*r.read(Path::new("tex/../m.mtl")).unwrap(), b"M");
         assert_eq!(r.read(Path::new("b.png")).unwrap_err().kind(), io::ErrorKind::NotFound);
+    }
+
+    #[test]
+    fn directories_refuse_paths_that_leave_the_folder() {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::create_dir(dir.path().join("tex")).unwrap();
+        std::fs::write(dir.path().join("tex/a.png"), b"A").unwrap();
+        std::fs::write(dir.path().join("outside.png"), b"O").unwrap();
+        let model = Directory::new(dir.path().join("tex"));
+        assert_eq!(&*model.read(Path::new("./a.png")).unwrap(), b"A");
+        assert_eq!(&*model.read(Path::new("x/../a.png")).unwrap(), b"A");
+        for escaping in ["../outside.png", "x/../../outside.png", "/etc/passwd", "C:/x.png", ".", ""] {
+            let e = model.read(Path::new(escaping)).unwrap_err();
+            assert_eq!(e.kind(), io::ErrorKind::PermissionDenied, "{escaping}");
+            assert!(e.to_string().contains("leaves the model's folder"), "{e}");
+        }
     }
 
     #[test]

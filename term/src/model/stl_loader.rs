@@ -71,6 +71,8 @@ pub fn load_stl_bytes(name: &Path, bytes: &[u8], smooth_angle: Option<f32>) -> R
         positions: soup.positions,
         normals: soup.normals,
         uvs: None,
+        colors: None,
+        tangents: None,
         indices: soup.indices,
         parts: vec![part],
         materials: Vec::new(),

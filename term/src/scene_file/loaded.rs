@@ -174,9 +174,10 @@ pub struct SceneObject {
 
 /// The `[objects.material]` keys of an object, with their images loaded. `None` means the key was left out.
 ///
-/// `color` and `diffuse` override the mesh's MTL materials for every part; when left out, each part keeps its
-/// MTL `Kd` and `map_Kd` ([`Self::color_over`] and [`Self::diffuse_over`] say which wins). The other keys have no
-/// MTL counterpart: when left out, the renderer's defaults apply.
+/// Each key given overrides the model's own materials (an OBJ file's MTL entries, a glTF file's materials) for
+/// every part; a key left out keeps the part's own value when its material has one ([`Self::color_over`],
+/// [`Self::diffuse_over`], [`Self::normal_over`], [`Self::glow_over`], [`Self::specular_over`] and
+/// [`Self::shininess_over`] say which wins), else the renderer's default.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct ObjectMaterial {
     /// The diffuse colour (components from 0 to 1).
@@ -210,6 +211,33 @@ impl ObjectMaterial {
     /// `map_Kd` (when it loaded), else none.
     pub fn diffuse_over<'a>(&'a self, mtl: Option<&'a model::Material>) -> Option<&'a TextureImage> {
         self.diffuse.as_deref().or(mtl.and_then(|m| m.texture.as_ref()))
+    }
+
+    /// The normal map of a part whose material is `mtl`: the scene's `normal_map` if given, else the model's own
+    /// (tangent space), else none.
+    pub fn normal_over<'a>(&'a self, mtl: Option<&'a model::Material>) -> Option<(&'a TextureImage, NormalSpace)> {
+        match &self.normal_map {
+            Some(map) => Some((&map.image, map.space)),
+            None => mtl.and_then(|m| m.normal_map.as_ref()).map(|image| (image, NormalSpace::Tangent)),
+        }
+    }
+
+    /// The glow map of a part whose material is `mtl`: the scene's `glow_map` if given, else the model's own
+    /// (glTF emission), else none.
+    pub fn glow_over<'a>(&'a self, mtl: Option<&'a model::Material>) -> Option<&'a TextureImage> {
+        self.glow_map.as_deref().or(mtl.and_then(|m| m.glow_map.as_ref()))
+    }
+
+    /// The specular colour of a part whose material is `mtl`: the scene's, else the model's own, else `None` (the
+    /// renderer's default).
+    pub fn specular_over(&self, mtl: Option<&model::Material>) -> Option<Vec3> {
+        self.specular.or(mtl.and_then(|m| m.specular))
+    }
+
+    /// The Blinn-Phong exponent of a part whose material is `mtl`: the scene's, else the model's own, else `None`
+    /// (the renderer's default).
+    pub fn shininess_over(&self, mtl: Option<&model::Material>) -> Option<f32> {
+        self.shininess.or(mtl.and_then(|m| m.shininess))
     }
 }
 

@@ -34,6 +34,23 @@ pub struct SceneImage {
 pub fn render_scene_image(
     scene: &PreparedScene,
     camera: &SceneCamera,
+    size: (u32, u32),
+    supersample: u32,
+    options: &PlanOptions,
+) -> Result<SceneImage, SceneRenderError> {
+    render_scene_image_with(&mut SceneRenderer::new(), scene, camera, size, supersample, options)
+}
+
+/// [`render_scene_image`] drawn by `renderer`, which keeps its threads and its shadow maps from one image to the
+/// next: a series of images of one scene (a turntable) starts no thread after the first and draws a shadow map
+/// again only when its light's view changed. The pixels are those of [`render_scene_image`].
+///
+/// # Errors
+/// Those of [`render_scene_image`].
+pub fn render_scene_image_with(
+    renderer: &mut SceneRenderer,
+    scene: &PreparedScene,
+    camera: &SceneCamera,
     (width, height): (u32, u32),
     supersample: u32,
     options: &PlanOptions,
@@ -45,7 +62,7 @@ pub fn render_scene_image(
         SceneRenderError::Target,
         |target| {
             let plan = ScenePlan::new(scene, camera, (target.width(), target.height()), options)?;
-            let report = SceneRenderer::new().render(scene, &plan, target)?;
+            let report = renderer.render(scene, &plan, target)?;
             Ok((plan, report))
         },
     )?;

@@ -55,11 +55,12 @@ impl PartMaps {
     /// (the switches change per frame), taking and leaving buffers in `made`.
     pub fn new(object: &SceneObject, part_index: usize, made: &mut InterleavedBuffers) -> Self {
         let m = &object.material;
+        let mtl = object.model.part_material(part_index);
         let images: [Option<&TextureImage>; 4] = [
-            m.diffuse_over(object.model.part_material(part_index)),
-            m.normal_map.as_ref().map(|n| &*n.image),
+            m.diffuse_over(mtl),
+            m.normal_over(mtl).map(|(image, _)| image),
             m.specular_map.as_deref(),
-            m.glow_map.as_deref(),
+            m.glow_over(mtl),
         ];
         let mut part = Self::NONE;
         // Groups of distinct images of one size, in role order; an image in two roles is stored once.

@@ -2,6 +2,7 @@
 //! the maps of switched-off effects left out.
 
 use rastty_core::math::Vec3;
+use rastty_core::pipeline::{Cull, DrawState};
 use rastty_core::shading::{Material, NormalMap, NormalSpace as CoreNormalSpace};
 use rastty_core::texture::TextureError;
 
@@ -16,10 +17,10 @@ use crate::scene_file::{NormalSpace, SceneObject};
 /// - colour and diffuse texture: the scene's `color` and `diffuse` when given, else the part's MTL `Kd` and
 ///   `map_Kd` ([`crate::scene_file::ObjectMaterial::color_over`] and `diffuse_over`); no texture when
 ///   `options.textures` is off;
-/// - specular colour: the scene's `specular`, else [`SPECULAR`]; zero (no highlights, and no specular map) when
-///   the specular effect is off;
-/// - shininess: the scene's, else [`SHININESS`];
-/// - normal and glow maps: the scene's, unless their effect is off;
+/// - specular colour: the scene's `specular`, else the part's own (glTF), else [`SPECULAR`]; zero (no highlights,
+///   and no specular map) when the specular effect is off;
+/// - shininess: the scene's, else the part's own, else [`SHININESS`];
+/// - normal and glow maps: the scene's, else the part's own (glTF), unless their effect is off;
 /// - filter and wrap: the scene's, for every map.
 ///
 /// Each map is read from `maps` (the part's [`crate::scene_render::PreparedScene::part_maps`]) when interleaved
@@ -41,29 +42,29 @@ pub fn part_material<'a>(
         Some(image) if options.textures => Some(texture(MapRole::Diffuse, image)?),
         _ => None,
     };
-    let normal_map = match &m.normal_map {
-        Some(map) if effects.normal_maps => {
-            let space = match map.space {
+    let normal_map = match m.normal_over(mtl) {
+        Some((image, space)) if effects.normal_maps => {
+            let space = match space {
                 NormalSpace::Tangent => CoreNormalSpace::Tangent,
                 NormalSpace::Object => CoreNormalSpace::Object,
             };
-            Some(NormalMap { texture: texture(MapRole::Normal, &map.image)?, space })
+            Some(NormalMap { texture: texture(MapRole::Normal, image)?, space })
         }
         _ => None,
     };
-    let specular = if effects.specular { m.specular.unwrap_or(SPECULAR) } else { Vec3::ZERO };
+    let specular = if effects.specular { m.specular_over(mtl).unwrap_or(SPECULAR) } else { Vec3::ZERO };
     let specular_map = match &m.specular_map {
         Some(image) if effects.specular => Some(texture(MapRole::Specular, image)?),
         _ => None,
     };
-    let glow_map = match &m.glow_map {
+    let glow_map = match m.glow_over(mtl) {
         Some(image) if effects.glow_maps => Some(texture(MapRole::Glow, image)?),
         _ => None,
     };
     Ok(Material {
         color: m.color_over(mtl),
         specular,
-        shininess: m.shininess.unwrap_or(SHININESS),
+        shininess: m.shininess_over(mtl).unwrap_or(SHININESS),
         diffuse,
         normal_map,
         specular_map,
@@ -71,4 +72,11 @@ pub fn part_material<'a>(
         filter: m.filter,
         wrap: m.wrap,
     })
+}
+
+/// How part `part` of `object` is drawn: both faces of each triangle when its material is double-sided (glTF's
+/// `doubleSided`), else front faces only ([`DrawState::DEFAULT`]).
+pub fn part_state(object: &SceneObject, part: usize) -> DrawState {
+    let double_sided = object.model.part_material(part).is_some_and(|m| m.double_sided);
+    if double_sided { DrawState { cull: Cull::None, ..DrawState::DEFAULT } } else { DrawState::DEFAULT }
 }

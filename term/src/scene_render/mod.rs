@@ -29,7 +29,8 @@
 //!   nothing. Its `Display` is the explanation, one line per pass and per draw.
 //! - [`SceneRenderer`]: runs plans, keeping shadow maps from frame to frame (they depend on the scene and the
 //!   lights, not the camera), into a whole frame or a band of its rows.
-//! - [`render_scene_image`]: plan and render into fresh buffers, with supersampling: `rastty render`.
+//! - [`render_scene_image`]: plan and render into fresh buffers, with supersampling: `rastty render`;
+//!   [`render_scene_image_with`] with a renderer kept from image to image (`rastty render --turntable`).
 //! - [`Orbit`]: the one camera of the viewer and `rastty render`: orbit about the scene's target, zoom, switch the
 //!   lens; [`CameraOptions`] sets it from the command line's `--yaw`, `--pitch`, `--distance`, `--fov`, `--ortho`,
 //!   `--near` and `--far`. [`ShadingMode`]: the `--shading` option and the viewer's `m` key, for every object.
@@ -91,10 +92,12 @@ pub use bounds::scene_bounds;
 pub use camera::{FrameCamera, PlaneSource};
 pub use camera_options::CameraOptions;
 pub use error::SceneRenderError;
-pub use image::{SampledFrame, SceneImage, parse_size, render_scene_image, render_supersampled};
+pub use image::{
+    SampledFrame, SceneImage, parse_size, render_scene_image, render_scene_image_with, render_supersampled,
+};
 pub use interleaved::{InterleavedBuffers, MapRole, PartMaps};
 pub use lights::{DroppedLight, LightName, Number, PlannedLight, Triple, core_light};
-pub use material::part_material;
+pub use material::{part_material, part_state};
 pub use orbit::Orbit;
 pub use plan::{
     AMBIENT_OCCLUSION, MAX_SHADOW_MAP, MIN_SHADOW_MAP, PCF_RADIUS, PlannedDraw, ScenePlan, ShadowPass, shadow_map_size,

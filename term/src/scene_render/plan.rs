@@ -2,14 +2,13 @@
 
 use rastty_core::math::{Vec3, float};
 use rastty_core::occlusion::AmbientOcclusion;
-use rastty_core::pipeline::DrawState;
 use rastty_core::shading::Transforms;
 use rastty_core::shading::{LightKind, LightUse, Material, Object, Variant};
 use rastty_core::shadow::{Bounds, ShadowView};
 
 use super::camera::FrameCamera;
 use super::lights::{DroppedLight, LightName, PlannedLight, core_light};
-use super::material::part_material;
+use super::material::{part_material, part_state};
 use super::{PlanOptions, PreparedScene, SceneRenderError};
 use crate::scene_file::SceneCamera;
 
@@ -220,7 +219,8 @@ impl ScenePlan {
                     .map_err(|error| SceneRenderError::Texture { draw: label.clone(), error })?;
                 let tangents = tangents_for(scene, index, &material);
                 let object = Object { mesh, tangents, transforms, shading, material };
-                let variant = Variant::resolve(&object, lights.iter().copied(), &DrawState::DEFAULT)
+                let state = part_state(&scene.data().objects[index], part_index);
+                let variant = Variant::resolve(&object, lights.iter().copied(), &state)
                     .map_err(|error| SceneRenderError::Draw { draw: label.clone(), error })?;
                 draws.push(PlannedDraw { object: index, part: part_index, label, transforms, variant });
             }

@@ -50,8 +50,11 @@ impl PreparedScene {
         let mut shared: HashMap<*const Model, Arc<[Vec4]>> = HashMap::new();
         let mut tangents = Vec::with_capacity(data.objects.len());
         for (object, label) in data.objects.iter().zip(&labels) {
-            let wanted = object.material.normal_map.as_ref().is_some_and(|m| m.space == NormalSpace::Tangent)
-                && object.model.uvs.is_some();
+            let model = &object.model;
+            let tangent_map = |part| object.material.normal_over(model.part_material(part));
+            let wanted = (0..model.parts.len())
+                .any(|part| tangent_map(part).is_some_and(|(_, s)| s == NormalSpace::Tangent))
+                && model.uvs.is_some();
             if !wanted {
                 tangents.push(None);
                 continue;
@@ -127,8 +130,11 @@ fn object_label(index: usize, object: &SceneObject) -> String {
     format!("object {} ({file})", index + 1)
 }
 
-/// One tangent per vertex of the whole model.
+/// One tangent per vertex of the whole model: the file's ([`Model::tangents`]) when it gave them, else computed.
 fn model_tangents(model: &Model) -> Result<Vec<Vec4>, TangentError> {
+    if let Some(tangents) = model.tangents.as_ref().filter(|t| t.len() == model.positions.len()) {
+        return Ok(tangents.clone());
+    }
     let mesh = model.mesh().ok_or(TangentError::MissingAttributes)?;
     let mut out = vec![Vec4::ZERO; mesh.vertex_count()];
     compute_tangents(&mesh, &mut out)?;

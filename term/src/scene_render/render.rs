@@ -7,7 +7,7 @@ use std::time::{Duration, Instant};
 
 use rastty_core::math::Vec3;
 use rastty_core::mesh::{Indices, Mesh};
-use rastty_core::pipeline::{DrawState, DrawStats, LineStyle, draw_wireframe};
+use rastty_core::pipeline::{DrawStats, LineStyle, draw_wireframe};
 use rastty_core::shading::{Light, Lighting, Object, ShadingError, Variant, draw_mesh};
 use rastty_core::shadow::{
     ShadowBias, ShadowError, ShadowMap, ShadowView, WindowRanges, clear_shadow_depth, draw_shadow_caster_band,
@@ -16,7 +16,7 @@ use rastty_core::shadow::{
 use rastty_core::target::{Rgb888, Target};
 
 use super::bins::TriangleBins;
-use super::material::part_material;
+use super::material::{part_material, part_state};
 use super::plan::{PlannedDraw, ShadowPass, tangents_for};
 use super::workers::Workers;
 use super::{PreparedScene, ScenePlan, SceneRenderError};
@@ -430,7 +430,7 @@ fn forward_band(
                 shading: draw.variant.shading,
                 material,
             };
-            let (drawn, stats) = draw_mesh(&mut target, &surface, lights, &DrawState::DEFAULT)
+            let (drawn, stats) = draw_mesh(&mut target, &surface, lights, &part_state(object, draw.part))
                 .map_err(|error| SceneRenderError::Draw { draw: draw.label.clone(), error })?;
             result.stats += stats;
             if plan.wireframe {

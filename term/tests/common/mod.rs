@@ -2,6 +2,7 @@
 
 #![allow(dead_code)] // Each test file uses its own subset.
 
+pub mod gltf_writer;
 pub mod pty;
 pub mod tmux;
 
@@ -32,4 +33,43 @@ pub fn rastty_in_empty_dir(args: &[&str]) -> std::process::Output {
         .args(args)
         .output()
         .expect("run rastty")
+}
+
+/// Runs the `rastty` binary with `args` in `dir` (stdin empty, stdout and stderr read as it writes them) and kills
+/// it, failing the test, when it runs longer than `limit`: a run that hangs fails its test rather than the suite.
+pub fn rastty_within(dir: &Path, args: &[&str], limit: std::time::Duration) -> std::process::Output {
+    use std::io::Read;
+    use std::process::{Command, Stdio};
+
+    let mut child = Command::new(env!("CARGO_BIN_EXE_rastty"))
+        .current_dir(dir)
+        .args(args)
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("run rastty");
+    // Read both pipes on threads, so that a child writing more than a pipe holds does not stall.
+    let drain = |mut pipe: Box<dyn Read + Send>| {
+        std::thread::spawn(move || {
+            let mut bytes = Vec::new();
+            let _ = pipe.read_to_end(&mut bytes);
+            bytes
+        })
+    };
+    let stdout = drain(Box::new(child.stdout.take().unwrap()));
+    let stderr = drain(Box::new(child.stderr.take().unwrap()));
+    let start = std::time::Instant::now();
+    let status = loop {
+        if let Some(status) = child.try_wait().expect("wait for rastty") {
+            break status;
+        }
+        if start.elapsed() > limit {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!("rastty {args:?} still ran after {limit:?}");
+        }
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    };
+    std::process::Output { status, stdout: stdout.join().unwrap(), stderr: stderr.join().unwrap() }
 }

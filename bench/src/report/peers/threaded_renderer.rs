@@ -38,6 +38,8 @@ impl ThreadedRenderer {
             positions: scene.positions.clone(),
             normals: scene.normals.clone(),
             uvs: scene.uvs.clone(),
+            colors: None,
+            tangents: None,
             indices: scene.indices.clone(),
             parts: vec![Part { name: scene.name.to_owned(), indices: 0..scene.indices.len(), material: Some(0) }],
             materials: vec![Material { diffuse: scene.albedo(rastty_core::math::Vec2::ZERO), ..Material::default() }],

@@ -1,0 +1,380 @@
+//! glTF 2.0 models (`.gltf` with its buffers and images, or `.glb`): every mesh of the default scene placed by its
+//! node's transforms, into one [`Model`].
+
+use std::collections::HashMap;
+use std::path::Path;
+
+use gltf::mesh::Mode;
+use gltf::{Document, Gltf, Semantic};
+use rastty_core::math::{Mat3, Mat4, Vec2, Vec3, Vec4};
+
+use super::error::{COORDINATE_LIMIT, LoadError, LoadErrorKind};
+use super::gltf_accessor::{Buffers, read_floats, read_indices};
+use super::gltf_material::{MaterialUse, convert, renderer_uv};
+use super::gltf_resources::{load_buffers, load_image};
+use super::loaded_model::{Model, Part};
+use super::resolver::Resolver;
+use super::texture_image::TextureImage;
+use crate::escaped::Escaped;
+
+/// The extensions a file may require: any other required extension (Draco or meshopt compression, ...) refuses
+/// the file, by name.
+pub const READ_EXTENSIONS: [&str; 2] = ["KHR_materials_emissive_strength", "KHR_texture_transform"];
+
+/// Loads a glTF 2.0 model held in `bytes` (JSON or binary), named `name` in messages, with `files` giving the
+/// files its buffers and images name.
+///
+/// Every mesh of the default scene (else the first scene; else every mesh, unplaced) is placed by its node's
+/// transform and its parents' (TRS or matrix), so the model holds the scene as it stands; a transform that
+/// mirrors turns its triangles' winding round, as the specification says. Triangle lists, strips and fans are
+/// read (points and lines are left out, with a warning); indices of 8, 16 or 32 bits; normals (flat normals are
+/// computed when a primitive has none, as the specification asks), `TEXCOORD_0` (its material's texture
+/// transform applied), `COLOR_0` and `TANGENT`. Materials as `docs/models.md` says (base colour, normal and emission
+/// maps, metallic-roughness as a highlight, double-sidedness); each part is one primitive, named after its mesh.
+///
+/// # Errors
+/// [`LoadErrorKind::Format`] for JSON the format does not allow, a required extension not in
+/// [`READ_EXTENSIONS`], a buffer that is missing or shorter than it says, an accessor whose data does not fit, an
+/// index beyond its vertices, a node reached twice, or coordinates that are not finite once placed;
+/// [`LoadErrorKind::NoTriangles`] when nothing is left to draw.
+pub fn load_gltf_bytes(name: impl AsRef<Path>, bytes: &[u8], files: &dyn Resolver) -> Result<Model, LoadError> {
+    let name = name.as_ref();
+    let fail = |problem: String| LoadError::new(name, LoadErrorKind::Format(problem));
+    glb_length_in_range(bytes).map_err(fail)?;
+    let Gltf { document, blob } = Gltf::from_slice_without_validation(bytes).map_err(|e| fail(e.to_string()))?;
+    let unread: Vec<String> = document
+        .extensions_required()
+        .filter(|e| !READ_EXTENSIONS.contains(e))
+        .map(|e| Escaped(e).to_string())
+        .collect();
+    if !unread.is_empty() {
+        return Err(fail(format!(
+            "the file requires {}, which this program does not read (it reads {})",
+            unread.join(", "),
+            READ_EXTENSIONS.join(" and ")
+        )));
+    }
+    positions_in_range(document.as_json()).map_err(fail)?;
+    let document = Document::from_json(document.into_json()).map_err(|e| fail(e.to_string()))?;
+    let buffers = load_buffers(&document, blob.as_deref(), files).map_err(fail)?;
+    let mut builder = Builder::new(&document, &buffers, files);
+    for (mesh, transform) in placed_meshes(&document).map_err(fail)? {
+        for primitive in mesh.primitives() {
+            builder.primitive(&mesh, &primitive, &transform).map_err(fail)?;
+        }
+    }
+    let model = builder.finish();
+    if model.indices.is_empty() {
+        return Err(LoadError::new(name, LoadErrorKind::NoTriangles));
+    }
+    if model.positions.len() > u32::MAX as usize {
+        return Err(LoadError::new(name, LoadErrorKind::TooManyVertices));
+    }
+    Ok(model)
+}
+
+/// A GLB file's header says a length of at least its own 12 bytes. The `gltf` crate (1.4.1) subtracts 12 from it
+/// unchecked, so a smaller one is refused here first.
+fn glb_length_in_range(bytes: &[u8]) -> Result<(), String> {
+    let Some(rest) = bytes.strip_prefix(b"glTF") else { return Ok(()) };
+    let length = rest.get(4..8).map(|l| u32::from_le_bytes([l[0], l[1], l[2], l[3]]));
+    match length {
+        Some(length) if length >= 12 => Ok(()),
+        Some(length) => Err(format!("the GLB header gives a length of {length} bytes, less than the header's 12")),
+        None => Err(format!("the GLB header is cut short at {} bytes", bytes.len())),
+    }
+}
+
+/// Every primitive's `POSITION` names an accessor that exists. The `gltf-json` crate's validation (1.4.1) reads
+/// that accessor before it checks the index, and panics on one out of range; so it is checked here first.
+fn positions_in_range(root: &gltf::json::Root) -> Result<(), String> {
+    let key = gltf::json::validation::Checked::Valid(Semantic::Positions);
+    for (m, mesh) in root.meshes.iter().enumerate() {
+        for (p, primitive) in mesh.primitives.iter().enumerate() {
+            let index = primitive.attributes.get(&key).map_or(0, |a| a.value());
+            if index >= root.accessors.len() && primitive.attributes.contains_key(&key) {
+                return Err(format!("mesh {m} primitive {p}: POSITION names accessor {index}, which does not exist"));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The meshes of the default scene (or the first) with their nodes' world transforms, in depth-first order.
+fn placed_meshes<'a>(document: &'a Document) -> Result<Vec<(gltf::Mesh<'a>, Mat4)>, String> {
+    let Some(scene) = document.default_scene().or_else(|| document.scenes().next()) else {
+        return Ok(document.meshes().map(|m| (m, Mat4::IDENTITY)).collect());
+    };
+    let mut seen = vec![false; document.nodes().len()];
+    let mut stack: Vec<(gltf::Node<'a>, Mat4)> = scene.nodes().map(|n| (n, Mat4::IDENTITY)).collect();
+    stack.reverse();
+    let mut out = Vec::new();
+    while let Some((node, parent)) = stack.pop() {
+        let index = node.index();
+        if std::mem::replace(&mut seen[index], true) {
+            return Err(format!("node {index} is reached twice: the nodes do not form a tree"));
+        }
+        let world = parent * node_matrix(&node);
+        if let Some(mesh) = node.mesh() {
+            out.push((mesh, world));
+        }
+        let first_child = stack.len();
+        stack.extend(node.children().map(|c| (c, world)));
+        stack[first_child..].reverse();
+    }
+    Ok(out)
+}
+
+/// A node's local transform as a matrix (glTF stores matrices column by column).
+fn node_matrix(node: &gltf::Node<'_>) -> Mat4 {
+    let c = node.transform().matrix();
+    let col = |i: usize| Vec4::new(c[i][0], c[i][1], c[i][2], c[i][3]);
+    Mat4::from_cols(col(0), col(1), col(2), col(3))
+}
+
+/// The model being gathered, primitive by primitive.
+struct Builder<'a, 'b> {
+    document: &'a Document,
+    buffers: &'a Buffers<'b>,
+    files: &'a dyn Resolver,
+    model: Model,
+    uvs: Vec<Vec2>,
+    colors: Vec<Vec3>,
+    tangents: Vec<Vec4>,
+    /// Whether any primitive had texture coordinates, colours; whether every one had tangents.
+    any_uvs: bool,
+    any_colors: bool,
+    all_tangents: bool,
+    /// glTF material index (`None` for the default material) to the model's, with its use.
+    materials: HashMap<Option<usize>, (usize, MaterialUse)>,
+    images: HashMap<usize, Option<TextureImage>>,
+    skipped_modes: Vec<Mode>,
+}
+
+impl<'a, 'b> Builder<'a, 'b> {
+    fn new(document: &'a Document, buffers: &'a Buffers<'b>, files: &'a dyn Resolver) -> Self {
+        Self {
+            document,
+            buffers,
+            files,
+            model: Model::default(),
+            uvs: Vec::new(),
+            colors: Vec::new(),
+            tangents: Vec::new(),
+            any_uvs: false,
+            any_colors: false,
+            all_tangents: true,
+            materials: HashMap::new(),
+            images: HashMap::new(),
+            skipped_modes: Vec::new(),
+        }
+    }
+
+    /// Adds `primitive` of `mesh` placed by `transform`.
+    fn primitive(
+        &mut self,
+        mesh: &gltf::Mesh<'_>,
+        primitive: &gltf::Primitive<'_>,
+        transform: &Mat4,
+    ) -> Result<(), String> {
+        let mode = primitive.mode();
+        if !matches!(mode, Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan) {
+            if !self.skipped_modes.contains(&mode) {
+                self.skipped_modes.push(mode);
+            }
+            return Ok(());
+        }
+        let label = format!("mesh {} primitive {}", mesh.index(), primitive.index());
+        let Some(positions) = primitive.get(&Semantic::Positions) else {
+            self.model.warnings.push(format!("{label} has no POSITION and is left out"));
+            return Ok(());
+        };
+        let at = |e: String| format!("{label}: {e}");
+        let positions: Vec<[f32; 3]> = read_floats(&positions, self.buffers, &[3]).map_err(at)?.elements(0.0).collect();
+        let count = positions.len();
+        let corners = match primitive.indices() {
+            Some(indices) => read_indices(&indices, self.buffers).map_err(at)?,
+            None => (0..u32::try_from(count).map_err(|_| at("too many vertices".into()))?).collect(),
+        };
+        if let Some(bad) = corners.iter().find(|&&i| i as usize >= count) {
+            return Err(at(format!("index {bad} is beyond its {count} vertices")));
+        }
+        let mut triangles = triangle_list(mode, &corners).map_err(at)?;
+        let (material_index, usage) = self.material(primitive.material());
+        let mirrored = transform.determinant() < 0.0;
+        if mirrored {
+            for t in &mut triangles {
+                t.swap(1, 2);
+            }
+        }
+        let normal_matrix: Mat3 = transform.normal_matrix();
+        let placed: Vec<Vec3> =
+            positions.iter().map(|p| transform.transform_point(Vec3::new(p[0], p[1], p[2]))).collect();
+        let beyond = |p: &&Vec3| [p.x, p.y, p.z].iter().any(|v| !v.is_finite() || v.abs() > COORDINATE_LIMIT);
+        if let Some(p) = placed.iter().find(beyond) {
+            return Err(at(format!(
+                "a vertex is at ({}, {}, {}) once placed, beyond the {COORDINATE_LIMIT:e} read",
+                p.x, p.y, p.z
+            )));
+        }
+        let normals = match primitive.get(&Semantic::Normals) {
+            Some(a) => Some(read_floats(&a, self.buffers, &[3]).map_err(at)?),
+            None => None,
+        };
+        let normals: Option<Vec<Vec3>> =
+            normals.map(|n| n.elements::<3>(0.0).map(|v| normal_matrix * Vec3::new(v[0], v[1], v[2])).collect());
+        let uvs: Option<Vec<Vec2>> = match primitive.get(&Semantic::TexCoords(0)) {
+            Some(a) => Some(
+                read_floats(&a, self.buffers, &[2])
+                    .map_err(at)?
+                    .elements::<2>(0.0)
+                    .map(|uv| renderer_uv(usage.uv_transform.apply(uv)))
+                    .collect(),
+            ),
+            None => None,
+        };
+        let colors: Option<Vec<Vec3>> = match primitive.get(&Semantic::Colors(0)) {
+            // Colours are from 0 to 1 (glTF 2.0 specification, section 3.7.2.1); clamped, so that none can
+            // overflow the shading.
+            Some(a) => Some(
+                read_floats(&a, self.buffers, &[3, 4])
+                    .map_err(at)?
+                    .elements::<3>(1.0)
+                    .map(|c| Vec3::new(c[0], c[1], c[2]).max(Vec3::ZERO).min(Vec3::ONE))
+                    .collect(),
+            ),
+            None => None,
+        };
+        let tangents: Option<Vec<Vec4>> = match primitive.get(&Semantic::Tangents) {
+            Some(a) => Some(
+                read_floats(&a, self.buffers, &[4])
+                    .map_err(at)?
+                    .elements::<4>(1.0)
+                    .map(|t| {
+                        let xyz = transform.transform_vector(Vec3::new(t[0], t[1], t[2])).normalize_or_zero();
+                        let w = if (t[3] < 0.0) != mirrored { -1.0 } else { 1.0 };
+                        xyz.extend(w)
+                    })
+                    .collect(),
+            ),
+            None => None,
+        };
+        let finite = |v: &[Vec3]| v.iter().all(|x| x.is_finite());
+        if !normals.as_deref().is_none_or(finite)
+            || !uvs.as_ref().is_none_or(|u| u.iter().all(|t| t.is_finite()))
+            || !tangents.as_ref().is_none_or(|t| t.iter().all(|t| t.is_finite()))
+        {
+            return Err(at("a normal, tangent or transformed texture coordinate is not finite".into()));
+        }
+        for (attribute, n) in [
+            ("NORMAL", normals.as_ref().map(Vec::len)),
+            ("TEXCOORD_0", uvs.as_ref().map(Vec::len)),
+            ("COLOR_0", colors.as_ref().map(Vec::len)),
+            ("TANGENT", tangents.as_ref().map(Vec::len)),
+        ] {
+            if n.is_some_and(|n| n != count) {
+                return Err(at(format!("{attribute} has {} entries for {count} positions", n.unwrap_or(0))));
+            }
+        }
+        self.any_uvs |= uvs.is_some();
+        self.any_colors |= colors.is_some();
+        self.all_tangents &= tangents.is_some() && normals.is_some();
+        // Without normals every triangle gets its own corners and its face's normal (flat, as the specification asks).
+        let corner_list: Vec<u32> = match normals {
+            Some(_) => (0..count as u32).collect(),
+            None => triangles.iter().flatten().copied().collect(),
+        };
+        let base = u32::try_from(self.model.positions.len()).map_err(|_| at("too many vertices".into()))?;
+        let first_index = self.model.indices.len();
+        for &c in &corner_list {
+            let c = c as usize;
+            self.model.positions.push(placed[c]);
+            self.uvs.push(uvs.as_ref().map_or(Vec2::ZERO, |u| u[c]));
+            self.colors.push(colors.as_ref().map_or(Vec3::ONE, |u| u[c]));
+            self.tangents.push(tangents.as_ref().map_or(Vec4::ZERO, |u| u[c]));
+        }
+        match &normals {
+            Some(normals) => {
+                self.model.normals.extend_from_slice(normals);
+                for t in &triangles {
+                    self.model.indices.extend(t.iter().map(|c| base + c));
+                }
+            }
+            None => {
+                for (k, t) in triangles.iter().enumerate() {
+                    let [a, b, c] = t.map(|i| placed[i as usize]);
+                    let normal = (b - a).cross(c - a).normalize_or_zero();
+                    self.model.normals.extend([normal; 3]);
+                    let first = base + 3 * k as u32;
+                    self.model.indices.extend([first, first + 1, first + 2]);
+                }
+            }
+        }
+        let name = mesh.name().unwrap_or_default().to_owned();
+        self.model.parts.push(Part {
+            name,
+            indices: first_index..self.model.indices.len(),
+            material: Some(material_index),
+        });
+        Ok(())
+    }
+
+    /// The model's material for glTF material `material`, converted on first use.
+    fn material(&mut self, material: gltf::Material<'_>) -> (usize, MaterialUse) {
+        if let Some(found) = self.materials.get(&material.index()) {
+            return *found;
+        }
+        let (document, buffers, files) = (self.document, self.buffers, self.files);
+        let (images, warnings) = (&mut self.images, &mut self.model.warnings);
+        let image = |index: usize| -> Option<TextureImage> {
+            images
+                .entry(index)
+                .or_insert_with(|| {
+                    load_image(document, index, buffers, files).map_err(|e| warnings.push(Escaped(&e).to_string())).ok()
+                })
+                .clone()
+        };
+        let mut notes = Vec::new();
+        let (converted, usage) = convert(&material, image, |w| notes.push(w));
+        self.model.warnings.extend(notes);
+        self.model.materials.push(converted);
+        let found = (self.model.materials.len() - 1, usage);
+        self.materials.insert(material.index(), found);
+        found
+    }
+
+    fn finish(mut self) -> Model {
+        for mode in &self.skipped_modes {
+            self.model.warnings.push(format!("primitives of mode {mode:?} are left out: only triangles are drawn"));
+        }
+        self.model.uvs = self.any_uvs.then_some(self.uvs);
+        self.model.colors = self.any_colors.then_some(self.colors);
+        self.model.tangents = (self.all_tangents && !self.model.positions.is_empty()).then_some(self.tangents);
+        self.model
+    }
+}
+
+/// The triangles of a primitive's corners (glTF 2.0 specification, section 3.7.2.1: strips alternate their
+/// winding, fans turn about the first corner).
+fn triangle_list(mode: Mode, corners: &[u32]) -> Result<Vec<[u32; 3]>, String> {
+    let n = corners.len();
+    Ok(match mode {
+        Mode::Triangles => {
+            if n % 3 != 0 {
+                return Err(format!("{n} corners do not make whole triangles"));
+            }
+            corners.chunks_exact(3).map(|t| [t[0], t[1], t[2]]).collect()
+        }
+        Mode::TriangleStrip => (0..n.saturating_sub(2))
+            .map(|i| {
+                if i % 2 == 0 {
+                    [corners[i], corners[i + 1], corners[i + 2]]
+                } else {
+                    [corners[i], corners[i + 2], corners[i + 1]]
+                }
+            })
+            .collect(),
+        Mode::TriangleFan => (1..n.saturating_sub(1)).map(|i| [corners[i], corners[i + 1], corners[0]]).collect(),
+        _ => Vec::new(),
+    })
+}

@@ -1,0 +1,217 @@
+//! glTF materials as the renderer's [`Material`]s: base colour, normal and emissive maps, double-sidedness, and
+//! the metallic-roughness model approximated by a Blinn-Phong highlight.
+
+use rastty_core::math::{Vec2, Vec3};
+
+use super::material::Material;
+use super::texture_image::TextureImage;
+
+/// The reflectance of a dielectric seen head-on, which metallic-roughness materials use for non-metals (glTF 2.0
+/// specification, appendix B: `F0 = 0.04`).
+const DIELECTRIC_F0: f32 = 0.04;
+/// The Blinn-Phong exponent's range: a roughness of 0 would give an infinite exponent.
+const SHININESS_RANGE: (f32, f32) = (1.0, 1024.0);
+
+/// A texture transform (`KHR_texture_transform`): `uv' = T(offset) R(rotation) S(scale) uv`, in glTF's
+/// texture space (`v` down).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct UvTransform {
+    /// Added last.
+    pub offset: [f32; 2],
+    /// Radians, counter-clockwise in texture space.
+    pub rotation: f32,
+    /// Applied first.
+    pub scale: [f32; 2],
+}
+
+impl UvTransform {
+    /// No change.
+    pub const IDENTITY: Self = Self { offset: [0.0, 0.0], rotation: 0.0, scale: [1.0, 1.0] };
+
+    /// The transform of a texture reference, or the identity without the extension.
+    pub fn of(info: &gltf::texture::Info<'_>) -> Self {
+        info.texture_transform().map_or(Self::IDENTITY, |t| Self {
+            offset: t.offset(),
+            rotation: t.rotation(),
+            scale: t.scale(),
+        })
+    }
+
+    /// `uv` (glTF space, `v` down) transformed (the extension's matrix: `x' = cos r sx x + sin r sy y + ox`,
+    /// `y' = -sin r sx x + cos r sy y + oy`).
+    pub fn apply(&self, uv: [f32; 2]) -> [f32; 2] {
+        let (s, c) = self.rotation.sin_cos();
+        let (x, y) = (uv[0] * self.scale[0], uv[1] * self.scale[1]);
+        [c * x + s * y + self.offset[0], -s * x + c * y + self.offset[1]]
+    }
+}
+
+/// A glTF texture coordinate (`v` down, from the image's top) as the renderer's (`v` up).
+pub(crate) fn renderer_uv(uv: [f32; 2]) -> Vec2 {
+    Vec2::new(uv[0], 1.0 - uv[1])
+}
+
+/// What a material needs of a primitive's vertices: the transform to bake into its texture coordinates.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct MaterialUse {
+    /// The base colour texture's transform (else the first map's), applied to `TEXCOORD_0` when loading.
+    pub uv_transform: UvTransform,
+}
+
+/// The renderer's material for glTF material `material`, with `image` giving decoded images by index; `warn`
+/// hears what is approximated or left out.
+pub(crate) fn convert(
+    material: &gltf::Material<'_>,
+    mut image: impl FnMut(usize) -> Option<TextureImage>,
+    mut warn: impl FnMut(String),
+) -> (Material, MaterialUse) {
+    let label = match material.name() {
+        Some(name) => format!("material {:?}", crate::escaped::Escaped(name).to_string()),
+        None => format!("material {}", material.index().map_or_else(|| "(default)".into(), |i| i.to_string())),
+    };
+    let pbr = material.pbr_metallic_roughness();
+    let [r, g, b, _] = pbr.base_color_factor();
+    let base = Vec3::new(r, g, b);
+    let base = if base.is_finite() { base.max(Vec3::ZERO).min(Vec3::ONE) } else { Vec3::ONE };
+    let mut transforms = Vec::new();
+    let mut texture_of = |info: Option<gltf::texture::Info<'_>>,
+                          role: &str,
+                          image: &mut dyn FnMut(usize) -> Option<TextureImage>,
+                          warn: &mut dyn FnMut(String)| {
+        let info = info?;
+        if info.tex_coord() != 0 {
+            warn(format!("{label}: the {role} texture uses texture coordinates {}; set 0 is used", info.tex_coord()));
+        }
+        transforms.push(UvTransform::of(&info));
+        image(info.texture().source().index())
+    };
+    let texture = texture_of(pbr.base_color_texture(), "base colour", &mut image, &mut warn);
+    let normal_map = material.normal_texture().and_then(|n| {
+        if n.tex_coord() != 0 {
+            warn(format!("{label}: the normal texture uses texture coordinates {}; set 0 is used", n.tex_coord()));
+        }
+        let scale = n.scale();
+        image(n.texture().source().index()).map(|map| scaled_normals(map, scale))
+    });
+    let strength = material.emissive_strength().unwrap_or(1.0);
+    let [er, eg, eb] = material.emissive_factor();
+    let emissive = Vec3::new(er, eg, eb) * strength;
+    let emissive = if emissive.is_finite() { emissive.max(Vec3::ZERO) } else { Vec3::ZERO };
+    let glow_map = match texture_of(material.emissive_texture(), "emissive", &mut image, &mut warn) {
+        Some(map) => Some(tinted(map, emissive)),
+        None if emissive != Vec3::ZERO => {
+            Some(tinted(TextureImage { width: 1, height: 1, texels: vec![0xFF_FF_FF] }, emissive))
+        }
+        None => None,
+    };
+    let metallic = finite_unit(pbr.metallic_factor(), 1.0);
+    let roughness = finite_unit(pbr.roughness_factor(), 1.0);
+    if pbr.metallic_roughness_texture().is_some() {
+        warn(format!("{label}: the metallic-roughness texture is not read; its factors are used"));
+    }
+    if material.occlusion_texture().is_some() {
+        warn(format!("{label}: the occlusion texture is not drawn yet"));
+    }
+    match material.alpha_mode() {
+        gltf::material::AlphaMode::Opaque => {}
+        gltf::material::AlphaMode::Mask => warn(format!("{label}: alpha mode MASK is drawn opaque (not cut out yet)")),
+        gltf::material::AlphaMode::Blend => warn(format!("{label}: alpha mode BLEND is drawn opaque")),
+    }
+    let uv_transform = transforms.first().copied().unwrap_or(UvTransform::IDENTITY);
+    if transforms.iter().any(|t| *t != uv_transform) {
+        warn(format!("{label}: its maps have different texture transforms; the base colour's is used for all"));
+    }
+    let (specular, shininess) = highlight(base, metallic, roughness);
+    let converted = Material {
+        name: material.name().unwrap_or_default().to_owned(),
+        diffuse: base,
+        texture,
+        normal_map,
+        glow_map,
+        specular: Some(specular),
+        shininess: Some(shininess),
+        double_sided: material.double_sided(),
+    };
+    (converted, MaterialUse { uv_transform })
+}
+
+/// The highlight for metallic-roughness factors: colour `F0 = mix(0.04, base, metallic)` (the glTF 2.0
+/// specification's appendix B), exponent `2 / a^2 - 2` with `a = roughness^2`, the Blinn-Phong exponent whose lobe
+/// matches a microfacet distribution of that width (Walter et al., "Microfacet Models for Refraction", 2007,
+/// eq. 29), clamped to 1..=1024. The diffuse colour stays the base colour: with lamps alone and no reflected
+/// surroundings, a metal darkened as the specification's BRDF does would be black.
+fn highlight(base: Vec3, metallic: f32, roughness: f32) -> (Vec3, f32) {
+    let f0 = Vec3::splat(DIELECTRIC_F0).lerp(base, metallic);
+    let a = roughness * roughness;
+    let shininess = if a > 0.0 { 2.0 / (a * a) - 2.0 } else { SHININESS_RANGE.1 };
+    (f0, shininess.clamp(SHININESS_RANGE.0, SHININESS_RANGE.1))
+}
+
+/// `value` clamped to `[0, 1]`, or `default` when it is not finite.
+fn finite_unit(value: f32, default: f32) -> f32 {
+    if value.is_finite() { value.clamp(0.0, 1.0) } else { default }
+}
+
+/// `map`'s texels times `factor`, each channel clamped to 255.
+fn tinted(mut map: TextureImage, factor: Vec3) -> TextureImage {
+    let scale = |texel: u32, shift: u32, f: f32| -> u32 {
+        let c = ((texel >> shift) & 0xFF) as f32 * f;
+        (c.round().clamp(0.0, 255.0) as u32) << shift
+    };
+    for t in &mut map.texels {
+        *t = scale(*t, 16, factor.x) | scale(*t, 8, factor.y) | scale(*t, 0, factor.z);
+    }
+    map
+}
+
+/// A tangent-space normal map with glTF's `scale` applied: `normalize(x * scale, y * scale, z)` per texel (glTF
+/// 2.0 specification, `normalTextureInfo.scale`), stored again as `rgb = n * 0.5 + 0.5`.
+fn scaled_normals(mut map: TextureImage, scale: f32) -> TextureImage {
+    if scale == 1.0 || !scale.is_finite() {
+        return map;
+    }
+    let decode = |c: u32| (c & 0xFF) as f32 / 255.0 * 2.0 - 1.0;
+    let encode = |v: f32| ((v * 0.5 + 0.5) * 255.0).round().clamp(0.0, 255.0) as u32;
+    for t in &mut map.texels {
+        let n = Vec3::new(decode(*t >> 16) * scale, decode(*t >> 8) * scale, decode(*t));
+        let n = n.try_normalize().unwrap_or(Vec3::Z);
+        *t = (encode(n.x) << 16) | (encode(n.y) << 8) | encode(n.z);
+    }
+    map
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn texture_transforms_follow_the_extension() {
+        let t = UvTransform { offset: [0.5, 0.25], rotation: 0.0, scale: [2.0, 3.0] };
+        assert_eq!(t.apply([1.0, 1.0]), [2.5, 3.25]);
+        let quarter = UvTransform { rotation: std::f32::consts::FRAC_PI_2, ..UvTransform::IDENTITY };
+        let [x, y] = quarter.apply([1.0, 0.0]);
+        assert!((x - 0.0).abs() < 1e-6 && (y + 1.0).abs() < 1e-6, "{x} {y}");
+        assert_eq!(renderer_uv([0.25, 0.0]), Vec2::new(0.25, 1.0));
+    }
+
+    #[test]
+    fn highlights_narrow_as_roughness_falls_and_take_the_colour_of_metals() {
+        let red = Vec3::new(1.0, 0.0, 0.0);
+        assert_eq!(highlight(red, 0.0, 1.0), (Vec3::splat(0.04), 1.0));
+        assert_eq!(highlight(red, 1.0, 0.5).0, red);
+        // a = 0.25: 2 / 0.0625 - 2 = 30.
+        assert_eq!(highlight(red, 1.0, 0.5).1, 30.0);
+        assert_eq!(highlight(red, 0.0, 0.0).1, 1024.0);
+    }
+
+    #[test]
+    fn emission_and_normal_scale_change_the_texels() {
+        let white = TextureImage { width: 1, height: 1, texels: vec![0xFF_FF_FF] };
+        assert_eq!(tinted(white, Vec3::new(1.0, 0.5, 2.0)).texels, vec![0xFF_80_FF]);
+        // (0, 0, 1) stays; a tilted normal flattens with scale 0.
+        let flat = TextureImage { width: 1, height: 1, texels: vec![0x80_80_FF] };
+        assert_eq!(scaled_normals(flat.clone(), 0.0).texels, flat.texels);
+        let tilted = TextureImage { width: 1, height: 1, texels: vec![0xFF_80_80] };
+        assert_eq!(scaled_normals(tilted, 0.0).texels, vec![0x80_80_FF]);
+    }
+}

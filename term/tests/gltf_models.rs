@@ -1,0 +1,343 @@
+//! glTF models made by the tests themselves (`common::gltf_writer`): Spot's OBJ written as `.gltf` and `.glb`,
+//! and a small scene of nodes and materials. Each feature has a known answer: Spot's own triangles and picture,
+//! where a node transform puts a part, what a texture transform does to texture coordinates, and the message of
+//! each kind of bad file.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+
+use rastty::model::{LoadError, Model, ModelOptions, load_model};
+use rastty_core::math::{Vec2, Vec3};
+
+use crate::common::gltf_writer::GltfWriter;
+
+/// Spot's OBJ file and texture in the repository.
+fn spot(file: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../assets/spot").join(file)
+}
+
+fn flat3(v: &[Vec3]) -> Vec<f32> {
+    v.iter().flat_map(|p| [p.x, p.y, p.z]).collect()
+}
+
+/// Spot as glTF in `dir`: `spot.gltf` (buffer in a data URI, texture a PNG file beside it) and `spot.glb`
+/// (texture inside the binary chunk), both with base colour 0.8 like an OBJ given `--texture`. Returns the OBJ's
+/// model.
+fn write_spot_gltf(dir: &Path) -> Model {
+    let obj = load_model(spot("spot.obj"), &ModelOptions::default()).expect("Spot's OBJ");
+    let uvs = obj.uvs.as_ref().expect("Spot has texture coordinates");
+    let png = fs::read(spot("spot_texture.png")).unwrap();
+    let mut w = GltfWriter::new();
+    let position = w.floats(&flat3(&obj.positions), "VEC3");
+    let normal = w.floats(&flat3(&obj.normals), "VEC3");
+    // glTF's v runs down from the image's top.
+    let uv: Vec<f32> = uvs.iter().flat_map(|t| [t.x, 1.0 - t.y]).collect();
+    let uv = w.floats(&uv, "VEC2");
+    let indices = w.indices(&obj.indices, 4);
+    let image_view = w.view(&png);
+    let rest = |image: &str| {
+        format!(
+            r#""scene": 0, "scenes": [{{"nodes": [0]}}], "nodes": [{{"mesh": 0, "name": "spot"}}],
+            "meshes": [{{"name": "spot", "primitives": [{{"attributes": {{"POSITION": {position}, "NORMAL": {normal},
+            "TEXCOORD_0": {uv}}}, "indices": {indices}, "material": 0}}]}}],
+            "materials": [{{"pbrMetallicRoughness": {{"baseColorFactor": [0.8, 0.8, 0.8, 1], "baseColorTexture":
+            {{"index": 0}}}}}}], "textures": [{{"source": 0}}], "images": [{image}]"#
+        )
+    };
+    fs::write(dir.join("spot_texture.png"), &png).unwrap();
+    fs::write(dir.join("spot.gltf"), w.embedded(&rest(r#"{"uri": "spot_texture.png"}"#))).unwrap();
+    let in_buffer = format!(r#"{{"bufferView": {image_view}, "mimeType": "image/png"}}"#);
+    fs::write(dir.join("spot.glb"), w.glb(&rest(&in_buffer))).unwrap();
+    obj
+}
+
+/// `rastty ARGS` in `dir`.
+fn rastty(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rastty"))
+        .args(args)
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .output()
+        .expect("the rastty binary runs")
+}
+
+/// The RGB bytes of the picture `rastty render MODEL -o OUT ARGS` draws at 160x120.
+fn picture(dir: &Path, model: &str, args: &[&str]) -> Vec<u8> {
+    let mut all = vec!["render", model, "-o", "out.png", "--size", "160x120"];
+    all.extend_from_slice(args);
+    let output = rastty(dir, &all);
+    assert!(output.status.success(), "rastty {all:?}: {}", String::from_utf8_lossy(&output.stderr));
+    image::open(dir.join("out.png")).expect("a PNG").to_rgb8().into_raw()
+}
+
+#[test]
+fn spot_as_gltf_and_glb_has_the_vertices_and_triangles_of_its_obj() {
+    let dir = tempfile::tempdir().unwrap();
+    let obj = write_spot_gltf(dir.path());
+    for name in ["spot.gltf", "spot.glb"] {
+        let model = load_model(dir.path().join(name), &ModelOptions::default()).expect(name);
+        assert!(model.warnings.is_empty(), "{name}: {:?}", model.warnings);
+        assert_eq!(model.positions, obj.positions, "{name}");
+        assert_eq!(model.normals, obj.normals, "{name}");
+        assert_eq!(model.indices, obj.indices, "{name}");
+        // 1 - (1 - v) rounds for v below 0.5: within one unit in the last place of 1.
+        let (a, b) = (model.uvs.as_ref().unwrap(), obj.uvs.as_ref().unwrap());
+        assert!(a.iter().zip(b).all(|(a, b)| a.x == b.x && (a.y - b.y).abs() <= f32::EPSILON), "{name}");
+        let material = model.part_material(0).expect("a material");
+        let texture = material.texture.as_ref().expect("the base colour texture");
+        assert_eq!((texture.width, texture.height), (1024, 1024), "{name}");
+        assert_eq!(material.diffuse, Vec3::splat(0.8));
+    }
+}
+
+#[test]
+fn spot_from_obj_and_gltf_gives_the_same_picture() {
+    let dir = tempfile::tempdir().unwrap();
+    write_spot_gltf(dir.path());
+    let obj = spot("spot.obj");
+    let obj = obj.to_str().unwrap();
+    let depth = picture(dir.path(), obj, &["--shading", "depth"]);
+    assert!(depth.chunks_exact(3).collect::<std::collections::HashSet<_>>().len() > 20, "a picture of Spot");
+    for name in ["spot.gltf", "spot.glb"] {
+        assert!(depth == picture(dir.path(), name, &["--shading", "depth"]), "{name}: another depth picture");
+    }
+    // Textured and lit (without the highlight, which glTF's roughness sets): the same but where a texture
+    // coordinate's last bit differs (see above) and picks a neighbouring texel.
+    let texture = spot("spot_texture.png");
+    let lit = picture(dir.path(), obj, &["--texture", texture.to_str().unwrap(), "--without", "specular"]);
+    for name in ["spot.gltf", "spot.glb"] {
+        let other = picture(dir.path(), name, &["--without", "specular"]);
+        let differing = lit.chunks_exact(3).zip(other.chunks_exact(3)).filter(|(a, b)| a != b).count();
+        assert!(differing * 1000 < lit.len() / 3, "{name}: {differing} of {} pixels differ", lit.len() / 3);
+    }
+}
+
+/// A unit square in the z = 0 plane facing +z, as accessors: (positions, normals, texture coordinates,
+/// indices).
+fn square(w: &mut GltfWriter) -> (usize, usize, usize, usize) {
+    let positions = w.floats(&[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 0.0], "VEC3");
+    let normals = w.floats(&[0.0, 0.0, 1.0].repeat(4), "VEC3");
+    let uvs = w.floats(&[0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0], "VEC2");
+    let indices = w.indices(&[0, 1, 2, 0, 2, 3], 2);
+    (positions, normals, uvs, indices)
+}
+
+/// A scene of four placed squares in two materials, a triangle strip and a fan without normals.
+fn scene_file(w: &mut GltfWriter) -> String {
+    let (p, n, t, i) = square(w);
+    let corners = w.floats(&[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 0.0, 2.0, 0.0], "VEC3");
+    let strip = w.indices(&[0, 1, 2, 3, 4], 1);
+    let fan = w.indices(&[0, 1, 3, 2], 4);
+    format!(
+        r#""scene": 0, "scenes": [{{"nodes": [0, 1, 3, 4]}}],
+        "nodes": [
+          {{"mesh": 0}},
+          {{"mesh": 1, "translation": [2, 0, 0], "children": [2]}},
+          {{"mesh": 0, "matrix": [0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1, 0, 0, 3, 0, 1]}},
+          {{"mesh": 0, "scale": [-1, 1, 1]}},
+          {{"mesh": 2, "translation": [0, 0, -5]}}
+        ],
+        "meshes": [
+          {{"name": "red square", "primitives": [{{"attributes": {{"POSITION": {p}, "NORMAL": {n}, "TEXCOORD_0": {t}}},
+            "indices": {i}, "material": 0}}]}},
+          {{"name": "glowing square", "primitives": [{{"attributes": {{"POSITION": {p}, "NORMAL": {n}}},
+            "indices": {i}, "material": 1}}]}},
+          {{"name": "strip and fan", "primitives": [
+            {{"attributes": {{"POSITION": {corners}}}, "indices": {strip}, "mode": 5}},
+            {{"attributes": {{"POSITION": {corners}}}, "indices": {fan}, "mode": 6}},
+            {{"attributes": {{"POSITION": {corners}}}, "mode": 1}}]}}
+        ],
+        "materials": [
+          {{"name": "red", "doubleSided": true, "pbrMetallicRoughness": {{"baseColorFactor": [1, 0, 0, 1],
+            "metallicFactor": 0, "roughnessFactor": 0.5}}}},
+          {{"name": "glow", "emissiveFactor": [0, 0.5, 0], "pbrMetallicRoughness": {{"baseColorFactor": [0, 0, 1, 1]}}}}
+        ]"#
+    )
+}
+
+fn corners_of(model: &Model, part: usize) -> Vec<Vec3> {
+    model.indices[model.parts[part].indices.clone()].iter().map(|&i| model.positions[i as usize]).collect()
+}
+
+#[test]
+fn nodes_place_their_meshes_and_materials_come_with_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut w = GltfWriter::new();
+    let rest = scene_file(&mut w);
+    fs::write(dir.path().join("scene.gltf"), w.embedded(&rest)).unwrap();
+    let model = load_model(dir.path().join("scene.gltf"), &ModelOptions::default()).unwrap();
+    // Depth first: node 0, node 1, its child node 2, node 3, then node 4's two triangle primitives.
+    let names: Vec<&str> = model.parts.iter().map(|p| p.name.as_str()).collect();
+    assert_eq!(names, ["red square", "glowing square", "red square", "red square", "strip and fan", "strip and fan"]);
+    let v = |x: f32, y: f32, z: f32| Vec3::new(x, y, z);
+    let square =
+        [v(0.0, 0.0, 0.0), v(1.0, 0.0, 0.0), v(1.0, 1.0, 0.0), v(0.0, 0.0, 0.0), v(1.0, 1.0, 0.0), v(0.0, 1.0, 0.0)];
+    assert_eq!(corners_of(&model, 0), square);
+    // Translated by (2, 0, 0).
+    assert_eq!(corners_of(&model, 1), square.map(|p| p + v(2.0, 0.0, 0.0)));
+    // Turned a quarter about z and raised by 3 under its parent's (2, 0, 0): (x, y) -> (2 - y, x + 3).
+    assert_eq!(corners_of(&model, 2), square.map(|p| v(2.0 - p.y, p.x + 3.0, 0.0)));
+    // Mirrored in x: the winding turns round, so the square still faces +z as drawn.
+    let mirrored = corners_of(&model, 3);
+    let expected: Vec<Vec3> = square.chunks(3).flat_map(|t| [t[0], t[2], t[1]]).map(|p| v(-p.x, p.y, p.z)).collect();
+    assert_eq!(mirrored, expected);
+    let [a, b, c] = [mirrored[0], mirrored[1], mirrored[2]];
+    assert!((b - a).cross(c - a).z > 0.0, "the mirrored square's triangles face +z");
+    let n = model.indices[model.parts[3].indices.start] as usize;
+    assert_eq!(model.normals[n], v(0.0, 0.0, 1.0));
+    // The strip alternates its winding; the fan turns about its first corner; both without normals get their
+    // faces' (flat), and the line primitive is left out with a warning.
+    let z = v(0.0, 0.0, -5.0);
+    let c = [v(0.0, 0.0, 0.0), v(1.0, 0.0, 0.0), v(0.0, 1.0, 0.0), v(1.0, 1.0, 0.0), v(0.0, 2.0, 0.0)].map(|p| p + z);
+    let strip = [c[0], c[1], c[2], c[1], c[3], c[2], c[2], c[3], c[4]];
+    assert_eq!(corners_of(&model, 4), strip);
+    assert_eq!(corners_of(&model, 5), [c[1], c[3], c[0], c[3], c[2], c[0]]);
+    for part in [4, 5] {
+        for &i in &model.indices[model.parts[part].indices.clone()] {
+            assert_eq!(model.normals[i as usize], v(0.0, 0.0, 1.0), "part {part}: flat normals face +z");
+        }
+    }
+    assert!(model.warnings.iter().any(|w| w.contains("Lines") && w.contains("left out")), "{:?}", model.warnings);
+    // Materials: red, double-sided, a highlight of F0 = 0.04 and exponent 2 / 0.25^2 - 2 = 30; blue glowing green.
+    let red = model.part_material(0).unwrap();
+    assert_eq!((red.name.as_str(), red.diffuse, red.double_sided), ("red", v(1.0, 0.0, 0.0), true));
+    assert_eq!((red.specular, red.shininess), (Some(Vec3::splat(0.04)), Some(30.0)));
+    let glow = model.part_material(1).unwrap();
+    assert_eq!((glow.diffuse, glow.double_sided), (v(0.0, 0.0, 1.0), false));
+    assert_eq!(glow.glow_map.as_ref().map(|g| g.texels.clone()), Some(vec![0x00_80_00]));
+    assert_eq!(model.parts[2].material, model.parts[0].material, "one material per glTF material");
+    // The parts without a material share the default one.
+    assert_eq!(model.part_material(4), model.part_material(5));
+}
+
+#[test]
+fn texture_transforms_move_texture_coordinates() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut png = Vec::new();
+    let mut encoder = png::Encoder::new(&mut png, 2, 2);
+    encoder.set_color(png::ColorType::Rgb);
+    encoder.write_header().unwrap().write_image_data(&[255, 0, 0, 0, 255, 0, 0, 0, 255, 255, 255, 255]).unwrap();
+    let mut w = GltfWriter::new();
+    let (p, n, t, i) = square(&mut w);
+    let image = w.view(&png);
+    let model_with = |transform: &str| {
+        format!(
+            r#""extensionsUsed": ["KHR_texture_transform"], "scenes": [{{"nodes": [0]}}], "nodes": [{{"mesh": 0}}],
+            "meshes": [{{"primitives": [{{"attributes": {{"POSITION": {p}, "NORMAL": {n}, "TEXCOORD_0": {t}}},
+              "indices": {i}, "material": 0}}]}}],
+            "materials": [{{"pbrMetallicRoughness": {{"baseColorTexture": {{"index": 0{transform}}}}}}}],
+            "textures": [{{"source": 0}}], "images": [{{"bufferView": {image}, "mimeType": "image/png"}}]"#
+        )
+    };
+    let transform = r#", "extensions": {"KHR_texture_transform": {"offset": [0.5, 0], "scale": [2, 2]}}"#;
+    fs::write(dir.path().join("moved.glb"), w.glb(&model_with(transform))).unwrap();
+    fs::write(dir.path().join("plain.glb"), w.glb(&model_with(""))).unwrap();
+    let uvs = |name: &str| load_model(dir.path().join(name), &ModelOptions::default()).unwrap().uvs.unwrap();
+    // glTF (u, v) -> (2u + 0.5, 2v) -> the renderer's (u', 1 - v').
+    let expected =
+        [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)].map(|(u, v)| Vec2::new(2.0 * u + 0.5, 1.0 - 2.0 * v));
+    assert_eq!(uvs("moved.glb"), expected);
+    assert_eq!(uvs("plain.glb"), [(0.0, 1.0), (1.0, 1.0), (1.0, 0.0), (0.0, 0.0)].map(|(u, v)| Vec2::new(u, v)));
+    let plain = picture(dir.path(), "plain.glb", &["--yaw", "0", "--pitch", "0"]);
+    assert!(
+        plain != picture(dir.path(), "moved.glb", &["--yaw", "0", "--pitch", "0"]),
+        "the transform changed nothing"
+    );
+}
+
+#[test]
+fn a_scene_file_places_a_gltf_model_and_draws_its_double_sided_part_without_culling() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut w = GltfWriter::new();
+    let rest = scene_file(&mut w);
+    fs::write(dir.path().join("squares.glb"), w.glb(&rest)).unwrap();
+    let light = "[[lights]]\ntype = \"directional\"\ndirection = [0, 0, -1]\n\n";
+    fs::write(dir.path().join("scene.toml"), format!("{light}[[objects]]\nmesh = \"squares.glb\"\n")).unwrap();
+    let output = rastty(dir.path(), &["render", "scene.toml", "--explain"]);
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let plan = String::from_utf8_lossy(&output.stdout);
+    let line = |part: &str| plan.lines().find(|l| l.contains(part)).map(str::to_owned).unwrap_or_default();
+    assert!(line("part \"red square\"").contains("cull none"), "{plan}");
+    assert!(line("part \"glowing square\"").contains("cull back") && line("glowing").contains("glow map"), "{plan}");
+    // Seen from behind, the double-sided red squares are still drawn; the one-sided glowing square is not.
+    let behind = picture(dir.path(), "scene.toml", &["--yaw", "180", "--pitch", "0", "--background", "000000"]);
+    let reddish = behind.chunks_exact(3).filter(|p| p[0] > 0 && p[1] == 0 && p[2] == 0).count();
+    let greenish = behind.chunks_exact(3).filter(|p| p[1] > p[0] && p[1] > p[2]).count();
+    assert!(reddish > 0 && greenish == 0, "from behind: {reddish} red, {greenish} green pixels");
+}
+
+/// The error loading `json` as `name` in a fresh folder (with `beside` files written there first).
+fn load_error(name: &str, bytes: &[u8], beside: &[(&str, &[u8])]) -> LoadError {
+    let dir = tempfile::tempdir().unwrap();
+    let folder = dir.path().join("model");
+    fs::create_dir(&folder).unwrap();
+    for (file, contents) in beside {
+        fs::write(dir.path().join(file), contents).unwrap();
+    }
+    fs::write(folder.join(name), bytes).unwrap();
+    load_model(folder.join(name), &ModelOptions::default()).expect_err(name)
+}
+
+#[test]
+fn bad_files_are_errors_that_say_what_is_wrong() {
+    let mut w = GltfWriter::new();
+    let (p, n, _, i) = square(&mut w);
+    let mesh = format!(
+        r#""scenes": [{{"nodes": [0]}}], "nodes": [{{"mesh": 0}}],
+        "meshes": [{{"primitives": [{{"attributes": {{"POSITION": {p}, "NORMAL": {n}}}, "indices": {i}}}]}}]"#
+    );
+    let good = w.embedded(&mesh);
+    let check = |name: &str, bytes: &[u8], beside: &[(&str, &[u8])], wanted: &[&str]| {
+        let e = load_error(name, bytes, beside).to_string();
+        assert!(e.contains(name), "{e}");
+        for w in wanted {
+            assert!(e.contains(w), "{name}: {e:?} lacks {w:?}");
+        }
+    };
+    let required = good.replacen(
+        "{",
+        r#"{"extensionsRequired": ["KHR_draco_mesh_compression"], "extensionsUsed": ["KHR_draco_mesh_compression"], "#,
+        1,
+    );
+    check("draco.gltf", required.as_bytes(), &[], &["requires KHR_draco_mesh_compression", "does not read"]);
+    check("broken.gltf", &good.as_bytes()[..good.len() / 2], &[], &["line 1"]);
+    check("truncated.glb", &w.glb(&mesh)[..100], &[], &[]);
+    let too_many = good.replacen(r#""count": 4, "type": "VEC3""#, r#""count": 40, "type": "VEC3""#, 1);
+    check("count.gltf", too_many.as_bytes(), &[], &["accessor 0", "40 elements", "do not fit"]);
+    assert!(load_model_text(&good).is_ok(), "the file the bad ones are made from loads");
+    let outside = w.json(Some("../outside.bin"), &mesh);
+    check("outside.gltf", outside.as_bytes(), &[("outside.bin", &w.bin)], &["buffer 0", "leaves the model's folder"]);
+    let missing = w.json(Some("missing.bin"), &mesh);
+    check("missing.gltf", missing.as_bytes(), &[], &["buffer 0", "missing.bin"]);
+    let short = w.json(Some("short.bin"), &mesh);
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(dir.path().join("short.bin"), &w.bin[..8]).unwrap();
+    fs::write(dir.path().join("short.gltf"), short).unwrap();
+    let e = load_model(dir.path().join("short.gltf"), &ModelOptions::default()).unwrap_err().to_string();
+    assert!(e.contains(&format!("declares {} bytes but its data holds 8", w.bin.len())), "{e}");
+    let cycle =
+        good.replacen(r#""nodes": [{"mesh": 0}]"#, r#""nodes": [{"children": [1]}, {"children": [0], "mesh": 0}]"#, 1);
+    check("cycle.gltf", cycle.as_bytes(), &[], &["node", "reached twice"]);
+    let points = good.replacen(r#""indices": 3}"#, r#""indices": 3, "mode": 0}"#, 1);
+    check("points.gltf", points.as_bytes(), &[], &["no triangles"]);
+    // The command line: exit status 1, the file and the reason on one line.
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(
+        dir.path().join("draco.glb"),
+        w.glb(&format!(r#""extensionsRequired": ["EXT_meshopt_compression"], {mesh}"#)),
+    )
+    .unwrap();
+    let output = rastty(dir.path(), &["render", "draco.glb", "-o", "x.png"]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("draco.glb") && stderr.contains("EXT_meshopt_compression"), "{stderr}");
+    assert!(!dir.path().join("x.png").exists());
+}
+
+/// Loads glTF JSON text from a fresh folder.
+fn load_model_text(json: &str) -> Result<Model, LoadError> {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(dir.path().join("m.gltf"), json).unwrap();
+    load_model(dir.path().join("m.gltf"), &ModelOptions::default())
+}
