@@ -28,11 +28,10 @@ pub(crate) struct Floats {
 }
 
 impl Floats {
-    /// The elements as `[f32; N]`, padding missing components with `pad` (an RGB colour read as RGBA gets
-    /// `pad = 1`).
-    pub fn elements<const N: usize>(&self, pad: f32) -> impl Iterator<Item = [f32; N]> + '_ {
+    /// The elements as `[f32; N]`: their first `N` components (an RGBA colour read as RGB drops its alpha).
+    pub fn elements<const N: usize>(&self) -> impl Iterator<Item = [f32; N]> + '_ {
         self.values.chunks_exact(self.components.max(1)).map(move |c| {
-            let mut out = [pad; N];
+            let mut out = [0.0; N];
             for (o, v) in out.iter_mut().zip(c) {
                 *o = *v;
             }
@@ -100,9 +99,8 @@ fn read_elements<T: Default + Clone>(
     let mut out = Vec::new();
     match accessor.view() {
         Some(view) => {
-            let bytes = strided(&view, buffers, accessor.offset(), count, element)
+            let (bytes, stride) = strided(&view, buffers, accessor.offset(), count, element)
                 .map_err(|e| format!("accessor {index}: {e}"))?;
-            let stride = view.stride().unwrap_or(element);
             out.reserve_exact(count * components);
             for i in 0..count {
                 push(&bytes[i * stride..i * stride + element], &mut out);
@@ -126,12 +124,10 @@ fn read_elements<T: Default + Clone>(
             IndexType::U16 => 2,
             IndexType::U32 => 4,
         };
-        let places = strided(&indices.view(), buffers, indices.offset(), n, index_size)
+        let (places, place_stride) = strided(&indices.view(), buffers, indices.offset(), n, index_size)
             .map_err(|e| format!("accessor {index}'s sparse indices: {e}"))?;
-        let values = strided(&sparse.values().view(), buffers, sparse.values().offset(), n, element)
+        let (values, value_stride) = strided(&sparse.values().view(), buffers, sparse.values().offset(), n, element)
             .map_err(|e| format!("accessor {index}'s sparse values: {e}"))?;
-        let (place_stride, value_stride) = (sparse.indices().view().stride().unwrap_or(index_size), element);
-        let value_stride = sparse.values().view().stride().unwrap_or(value_stride);
         let mut one = Vec::with_capacity(components);
         for i in 0..n {
             let place = unsigned(&places[i * place_stride..], index_size) as usize;
@@ -146,15 +142,15 @@ fn read_elements<T: Default + Clone>(
     Ok(out)
 }
 
-/// The bytes of `view` from `offset` that hold `count` elements of `element` bytes at the view's stride, checked
-/// to lie within the view and the view within its buffer.
+/// The bytes of `view` from `offset` that hold `count` elements of `element` bytes, and the view's stride between
+/// them; checked to lie within the view, and the view within its buffer.
 fn strided<'b>(
     view: &View<'_>,
     buffers: &'b Buffers<'_>,
     offset: usize,
     count: usize,
     element: usize,
-) -> Result<&'b [u8], String> {
+) -> Result<(&'b [u8], usize), String> {
     let buffer = buffers.get(view.buffer().index()).ok_or("its buffer is missing")?;
     let view_end = view.offset().checked_add(view.length()).filter(|end| *end <= buffer.len()).ok_or_else(|| {
         format!(
@@ -188,7 +184,7 @@ fn strided<'b>(
                 bytes.len()
             )
         })?;
-    Ok(&bytes[offset..end])
+    Ok((&bytes[offset..end], stride))
 }
 
 /// A little-endian unsigned integer of `size` (1, 2 or 4) bytes from the start of `bytes`.

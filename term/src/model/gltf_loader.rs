@@ -10,7 +10,7 @@ use rastty_core::math::{Mat3, Mat4, Vec2, Vec3, Vec4};
 
 use super::error::{COORDINATE_LIMIT, LoadError, LoadErrorKind};
 use super::gltf_accessor::{Buffers, read_floats, read_indices};
-use super::gltf_material::{MaterialUse, convert, renderer_uv};
+use super::gltf_material::{UvTransform, convert, renderer_uv};
 use super::gltf_resources::{load_buffers, load_image};
 use super::loaded_model::{Model, Part};
 use super::resolver::Resolver;
@@ -145,8 +145,9 @@ struct Builder<'a, 'b> {
     any_uvs: bool,
     any_colors: bool,
     all_tangents: bool,
-    /// glTF material index (`None` for the default material) to the model's, with its use.
-    materials: HashMap<Option<usize>, (usize, MaterialUse)>,
+    /// glTF material index (`None` for the default material) to the model's, with the transform its texture
+    /// coordinates take.
+    materials: HashMap<Option<usize>, (usize, UvTransform)>,
     images: HashMap<usize, Option<TextureImage>>,
     skipped_modes: Vec<Mode>,
 }
@@ -190,7 +191,7 @@ impl<'a, 'b> Builder<'a, 'b> {
             return Ok(());
         };
         let at = |e: String| format!("{label}: {e}");
-        let positions: Vec<[f32; 3]> = read_floats(&positions, self.buffers, &[3]).map_err(at)?.elements(0.0).collect();
+        let positions: Vec<[f32; 3]> = read_floats(&positions, self.buffers, &[3]).map_err(at)?.elements().collect();
         let count = positions.len();
         let corners = match primitive.indices() {
             Some(indices) => read_indices(&indices, self.buffers).map_err(at)?,
@@ -200,7 +201,7 @@ impl<'a, 'b> Builder<'a, 'b> {
             return Err(at(format!("index {bad} is beyond its {count} vertices")));
         }
         let mut triangles = triangle_list(mode, &corners).map_err(at)?;
-        let (material_index, usage) = self.material(primitive.material());
+        let (material_index, uv_transform) = self.material(primitive.material());
         let mirrored = transform.determinant() < 0.0;
         if mirrored {
             for t in &mut triangles {
@@ -217,48 +218,27 @@ impl<'a, 'b> Builder<'a, 'b> {
                 p.x, p.y, p.z
             )));
         }
-        let normals = match primitive.get(&Semantic::Normals) {
-            Some(a) => Some(read_floats(&a, self.buffers, &[3]).map_err(at)?),
-            None => None,
+        // Each optional attribute read, or `None` when the primitive has none.
+        let read = |semantic: Semantic, sizes: &[usize]| {
+            primitive.get(&semantic).map(|a| read_floats(&a, self.buffers, sizes)).transpose().map_err(at)
         };
-        let normals: Option<Vec<Vec3>> =
-            normals.map(|n| n.elements::<3>(0.0).map(|v| normal_matrix * Vec3::new(v[0], v[1], v[2])).collect());
-        let uvs: Option<Vec<Vec2>> = match primitive.get(&Semantic::TexCoords(0)) {
-            Some(a) => Some(
-                read_floats(&a, self.buffers, &[2])
-                    .map_err(at)?
-                    .elements::<2>(0.0)
-                    .map(|uv| renderer_uv(usage.uv_transform.apply(uv)))
-                    .collect(),
-            ),
-            None => None,
-        };
-        let colors: Option<Vec<Vec3>> = match primitive.get(&Semantic::Colors(0)) {
-            // Colours are from 0 to 1 (glTF 2.0 specification, section 3.7.2.1); clamped, so that none can
-            // overflow the shading.
-            Some(a) => Some(
-                read_floats(&a, self.buffers, &[3, 4])
-                    .map_err(at)?
-                    .elements::<3>(1.0)
-                    .map(|c| Vec3::new(c[0], c[1], c[2]).max(Vec3::ZERO).min(Vec3::ONE))
-                    .collect(),
-            ),
-            None => None,
-        };
-        let tangents: Option<Vec<Vec4>> = match primitive.get(&Semantic::Tangents) {
-            Some(a) => Some(
-                read_floats(&a, self.buffers, &[4])
-                    .map_err(at)?
-                    .elements::<4>(1.0)
-                    .map(|t| {
-                        let xyz = transform.transform_vector(Vec3::new(t[0], t[1], t[2])).normalize_or_zero();
-                        let w = if (t[3] < 0.0) != mirrored { -1.0 } else { 1.0 };
-                        xyz.extend(w)
-                    })
-                    .collect(),
-            ),
-            None => None,
-        };
+        let normals: Option<Vec<Vec3>> = read(Semantic::Normals, &[3])?
+            .map(|n| n.elements::<3>().map(|v| normal_matrix * Vec3::new(v[0], v[1], v[2])).collect());
+        let uvs: Option<Vec<Vec2>> = read(Semantic::TexCoords(0), &[2])?
+            .map(|t| t.elements::<2>().map(|uv| renderer_uv(uv_transform.apply(uv))).collect());
+        // Colours are from 0 to 1 (glTF 2.0 specification, section 3.7.2.1); clamped, so that none can overflow
+        // the shading.
+        let colors: Option<Vec<Vec3>> = read(Semantic::Colors(0), &[3, 4])?
+            .map(|c| c.elements::<3>().map(|c| Vec3::new(c[0], c[1], c[2]).max(Vec3::ZERO).min(Vec3::ONE)).collect());
+        let tangents: Option<Vec<Vec4>> = read(Semantic::Tangents, &[4])?.map(|t| {
+            t.elements::<4>()
+                .map(|t| {
+                    let xyz = transform.transform_vector(Vec3::new(t[0], t[1], t[2])).normalize_or_zero();
+                    let w = if (t[3] < 0.0) != mirrored { -1.0 } else { 1.0 };
+                    xyz.extend(w)
+                })
+                .collect()
+        });
         let finite = |v: &[Vec3]| v.iter().all(|x| x.is_finite());
         if !normals.as_deref().is_none_or(finite)
             || !uvs.as_ref().is_none_or(|u| u.iter().all(|t| t.is_finite()))
@@ -320,7 +300,7 @@ impl<'a, 'b> Builder<'a, 'b> {
     }
 
     /// The model's material for glTF material `material`, converted on first use.
-    fn material(&mut self, material: gltf::Material<'_>) -> (usize, MaterialUse) {
+    fn material(&mut self, material: gltf::Material<'_>) -> (usize, UvTransform) {
         if let Some(found) = self.materials.get(&material.index()) {
             return *found;
         }
@@ -335,10 +315,10 @@ impl<'a, 'b> Builder<'a, 'b> {
                 .clone()
         };
         let mut notes = Vec::new();
-        let (converted, usage) = convert(&material, image, |w| notes.push(w));
+        let (converted, uv_transform) = convert(&material, image, |w| notes.push(w));
         self.model.warnings.extend(notes);
         self.model.materials.push(converted);
-        let found = (self.model.materials.len() - 1, usage);
+        let found = (self.model.materials.len() - 1, uv_transform);
         self.materials.insert(material.index(), found);
         found
     }

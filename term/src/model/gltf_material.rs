@@ -1,6 +1,7 @@
 //! glTF materials as the renderer's [`Material`]s: base colour, normal and emissive maps, double-sidedness, and
 //! the metallic-roughness model approximated by a Blinn-Phong highlight.
 
+use gltf::texture::Info;
 use rastty_core::math::{Vec2, Vec3};
 
 use super::material::Material;
@@ -51,20 +52,14 @@ pub(crate) fn renderer_uv(uv: [f32; 2]) -> Vec2 {
     Vec2::new(uv[0], 1.0 - uv[1])
 }
 
-/// What a material needs of a primitive's vertices: the transform to bake into its texture coordinates.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct MaterialUse {
-    /// The base colour texture's transform (else the first map's), applied to `TEXCOORD_0` when loading.
-    pub uv_transform: UvTransform,
-}
-
-/// The renderer's material for glTF material `material`, with `image` giving decoded images by index; `warn`
-/// hears what is approximated or left out.
+/// The renderer's material for glTF material `material`, with `image` giving decoded images by index, and the
+/// transform to bake into the texture coordinates of its primitives: the base colour texture's, else the
+/// emissive texture's (`KHR_texture_transform`). `warn` hears what is approximated or left out.
 pub(crate) fn convert(
     material: &gltf::Material<'_>,
     mut image: impl FnMut(usize) -> Option<TextureImage>,
     mut warn: impl FnMut(String),
-) -> (Material, MaterialUse) {
+) -> (Material, UvTransform) {
     let label = match material.name() {
         Some(name) => format!("material {:?}", crate::escaped::Escaped(name).to_string()),
         None => format!("material {}", material.index().map_or_else(|| "(default)".into(), |i| i.to_string())),
@@ -73,31 +68,28 @@ pub(crate) fn convert(
     let [r, g, b, _] = pbr.base_color_factor();
     let base = Vec3::new(r, g, b);
     let base = if base.is_finite() { base.max(Vec3::ZERO).min(Vec3::ONE) } else { Vec3::ONE };
-    let mut transforms = Vec::new();
-    let mut texture_of = |info: Option<gltf::texture::Info<'_>>,
-                          role: &str,
-                          image: &mut dyn FnMut(usize) -> Option<TextureImage>,
-                          warn: &mut dyn FnMut(String)| {
-        let info = info?;
-        if info.tex_coord() != 0 {
-            warn(format!("{label}: the {role} texture uses texture coordinates {}; set 0 is used", info.tex_coord()));
+    let (base_texture, normal_texture) = (pbr.base_color_texture(), material.normal_texture());
+    let emissive_texture = material.emissive_texture();
+    let sets = [
+        ("base colour", base_texture.as_ref().map(Info::tex_coord)),
+        ("normal", normal_texture.as_ref().map(|n| n.tex_coord())),
+        ("emissive", emissive_texture.as_ref().map(Info::tex_coord)),
+    ];
+    for (role, set) in sets {
+        if let Some(set) = set.filter(|&set| set != 0) {
+            warn(format!("{label}: the {role} texture uses texture coordinates {set}; set 0 is used"));
         }
-        transforms.push(UvTransform::of(&info));
-        image(info.texture().source().index())
-    };
-    let texture = texture_of(pbr.base_color_texture(), "base colour", &mut image, &mut warn);
-    let normal_map = material.normal_texture().and_then(|n| {
-        if n.tex_coord() != 0 {
-            warn(format!("{label}: the normal texture uses texture coordinates {}; set 0 is used", n.tex_coord()));
-        }
-        let scale = n.scale();
-        image(n.texture().source().index()).map(|map| scaled_normals(map, scale))
-    });
+    }
+    let transforms: Vec<UvTransform> =
+        [&base_texture, &emissive_texture].into_iter().flatten().map(UvTransform::of).collect();
+    let texture = base_texture.and_then(|info| image(info.texture().source().index()));
+    let normal_map =
+        normal_texture.and_then(|n| image(n.texture().source().index()).map(|map| scaled_normals(map, n.scale())));
     let strength = material.emissive_strength().unwrap_or(1.0);
     let [er, eg, eb] = material.emissive_factor();
     let emissive = Vec3::new(er, eg, eb) * strength;
     let emissive = if emissive.is_finite() { emissive.max(Vec3::ZERO) } else { Vec3::ZERO };
-    let glow_map = match texture_of(material.emissive_texture(), "emissive", &mut image, &mut warn) {
+    let glow_map = match emissive_texture.and_then(|info| image(info.texture().source().index())) {
         Some(map) => Some(tinted(map, emissive)),
         None if emissive != Vec3::ZERO => {
             Some(tinted(TextureImage { width: 1, height: 1, texels: vec![0xFF_FF_FF] }, emissive))
@@ -132,7 +124,7 @@ pub(crate) fn convert(
         shininess: Some(shininess),
         double_sided: material.double_sided(),
     };
-    (converted, MaterialUse { uv_transform })
+    (converted, uv_transform)
 }
 
 /// The highlight for metallic-roughness factors: colour `F0 = mix(0.04, base, metallic)` (the glTF 2.0

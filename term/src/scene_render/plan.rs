@@ -2,6 +2,7 @@
 
 use rastty_core::math::{Vec3, float};
 use rastty_core::occlusion::AmbientOcclusion;
+use rastty_core::pipeline::DrawState;
 use rastty_core::shading::Transforms;
 use rastty_core::shading::{LightKind, LightUse, Material, Object, Variant};
 use rastty_core::shadow::{Bounds, ShadowView};
@@ -58,6 +59,9 @@ pub struct PlannedDraw {
     pub label: String,
     /// The draw's matrices.
     pub transforms: Transforms,
+    /// The part's draw state (culling: [`part_state`]), as asked for; the variant holds it adapted to the
+    /// transforms.
+    pub state: DrawState,
     /// What the draw computes: its varyings and fragment stages.
     pub variant: Variant,
 }
@@ -222,7 +226,7 @@ impl ScenePlan {
                 let state = part_state(&scene.data().objects[index], part_index);
                 let variant = Variant::resolve(&object, lights.iter().copied(), &state)
                     .map_err(|error| SceneRenderError::Draw { draw: label.clone(), error })?;
-                draws.push(PlannedDraw { object: index, part: part_index, label, transforms, variant });
+                draws.push(PlannedDraw { object: index, part: part_index, label, transforms, state, variant });
             }
         }
         Ok(draws)

@@ -16,7 +16,7 @@ use rastty_core::shadow::{
 use rastty_core::target::{Rgb888, Target};
 
 use super::bins::TriangleBins;
-use super::material::{part_material, part_state};
+use super::material::part_material;
 use super::plan::{PlannedDraw, ShadowPass, tangents_for};
 use super::workers::Workers;
 use super::{PreparedScene, ScenePlan, SceneRenderError};
@@ -430,7 +430,7 @@ fn forward_band(
                 shading: draw.variant.shading,
                 material,
             };
-            let (drawn, stats) = draw_mesh(&mut target, &surface, lights, &part_state(object, draw.part))
+            let (drawn, stats) = draw_mesh(&mut target, &surface, lights, &draw.state)
                 .map_err(|error| SceneRenderError::Draw { draw: draw.label.clone(), error })?;
             result.stats += stats;
             if plan.wireframe {
