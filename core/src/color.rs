@@ -6,7 +6,8 @@
 //!
 //! Packed formats:
 //! - **RGB888 in a `u32`**: `0x00RRGGBB` — red in bits 16..24, green in 8..16, blue in 0..8, top byte zero. This
-//!   is the layout of `softbuffer`/`minifb` frame buffers and of [`crate::texture::Texture`] texels.
+//!   is the layout of `softbuffer`/`minifb` frame buffers. [`crate::texture::Texture`] texels use the top byte
+//!   for transparency (`255 - alpha`, see [`texel_alpha`]), so a plain `0x00RRGGBB` texel is opaque.
 //! - **RGB565 in a `u16`**: red in bits 11..16, green in 5..11, blue in 0..5, the usual layout of SPI displays.
 
 use crate::math::{Vec3, float};
@@ -30,6 +31,21 @@ pub fn pack_rgb888(c: Vec3) -> u32 {
 pub fn unpack_rgb888(p: u32) -> Vec3 {
     const S: f32 = 1.0 / 255.0;
     Vec3::new(((p >> 16) & 0xFF) as f32 * S, ((p >> 8) & 0xFF) as f32 * S, (p & 0xFF) as f32 * S)
+}
+
+/// The alpha of a texture texel `0xTTRRGGBB`, `0..=255`: its top byte holds the transparency `255 - alpha`, so
+/// that texels written as `0x00RRGGBB` are opaque.
+///
+/// # Examples
+/// ```
+/// use rastty_core::color::texel_alpha;
+/// assert_eq!(texel_alpha(0x00FF8000), 255);
+/// assert_eq!(texel_alpha(0xFF123456), 0);
+/// ```
+#[must_use]
+#[inline(always)]
+pub const fn texel_alpha(p: u32) -> u32 {
+    255 - (p >> 24)
 }
 
 /// Packs a colour as RGB565.

@@ -6,6 +6,7 @@
 mod ambient_occlusion;
 mod clipping;
 mod common;
+mod cutout;
 mod depth;
 mod effects;
 mod fill_rule;
@@ -19,6 +20,7 @@ mod strips;
 mod supersample;
 mod tangents;
 mod texture;
+mod two_sided;
 mod vertex_cache;
 mod vertex_memory;
 mod wireframe;

@@ -13,8 +13,8 @@ use rastty_core::math::{Mat4, Vec3, Vec4};
 use rastty_core::mesh::{Indices, Mesh, compute_tangents};
 use rastty_core::pipeline::{Cull, DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation, Winding};
 use rastty_core::shading::{
-    Light, Lighting, Material, NormalMap, NormalSource, NormalSpace, Object, ShadingModel, SpecularSource, Transforms,
-    Variant, draw_mesh,
+    Cutout, Light, Lighting, Material, NormalMap, NormalSource, NormalSpace, Object, ShadingModel, SpecularSource,
+    Transforms, Variant, draw_mesh,
 };
 use rastty_core::shadow::{Bounds, ShadowBias, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster};
 use rastty_core::testing::draw_mesh_general;
@@ -55,11 +55,12 @@ const STATES: [(Interpolation, DepthTest, Cull, EdgeArithmetic); 5] = [
 ];
 
 /// Every choice of a variant, each against the general path: 6 shading models, meshes with and without vertex
-/// colours, 10 materials (highlights or none; a diffuse map under each filter and wrap mode; a tangent-space
-/// normal map; an object-space one with a glow map; a specular map; everything at once), 5 sets of lights (none;
+/// colours, 13 materials (highlights or none; a diffuse map under each filter and wrap mode; a tangent-space
+/// normal map; an object-space one with a glow map; a specular map; everything at once; two alpha cut-outs by
+/// map, one by opacity), 5 sets of lights (none;
 /// two directional; directional and point; a shadowed sun (filter radius 0) and a fill light; a shadowed sun
 /// (radius 2) and a shadowed lamp (radius 1)) and 2 projections; the fixed-function states of [`STATES`] in turn.
-/// 1,200 draws, clipped ones among them.
+/// 1,560 draws, clipped ones among them.
 #[test]
 fn every_choice_of_a_variant_equals_the_general_path() {
     let torus = Torus::new(1.0, 0.4, 24, 12);
@@ -76,6 +77,10 @@ fn every_choice_of_a_variant_equals_the_general_path() {
     let checker = Texture::new(&texels, 8, 8).unwrap();
     let bumps: Vec<u32> = (0..64).map(|i| if (i % 8 + i / 8) % 2 == 0 { 0xC080E0 } else { 0x4080E0 }).collect();
     let bumps = Texture::new(&bumps, 8, 8).unwrap();
+    // The checker with a transparency that varies texel by texel (alpha 255 down to 3), for the cut-outs.
+    let holes: Vec<u32> =
+        texels.iter().enumerate().map(|(i, t)| ((i as u32 * 7 + i as u32 / 8 * 3) % 8 * 36) << 24 | t).collect();
+    let holes = Texture::new(&holes, 8, 8).unwrap();
 
     // Shadow maps of the torus from a sun and from a lamp outside it, drawn once.
     let model = Mat4::from_axis_angle(Vec3::new(1.0, 0.3, 0.0), 1.1);
@@ -131,6 +136,18 @@ fn every_choice_of_a_variant_equals_the_general_path() {
         wrap: WrapMode::Clamp,
         ..base
     });
+    // Alpha cut-outs: per fragment (bilinear alpha, and nearest under a glow map and a normal map), and a whole
+    // surface below its cut-off.
+    materials.push(Material { diffuse: Some(holes), opacity: 0.9, alpha_cutoff: Some(0.5), ..base });
+    materials.push(Material {
+        diffuse: Some(holes),
+        normal_map: Some(NormalMap { texture: bumps, space: NormalSpace::Tangent }),
+        glow_map: Some(checker),
+        filter: FilterMode::Nearest,
+        alpha_cutoff: Some(0.3),
+        ..base
+    });
+    materials.push(Material { opacity: 0.4, alpha_cutoff: Some(0.5), ..base });
 
     // A camera close enough that the near plane cuts the torus, so clipped varyings are compared too.
     let view = look_at(Vec3::new(0.3, 0.5, 1.6), Vec3::ZERO, Vec3::Y).unwrap();
@@ -163,11 +180,22 @@ fn every_choice_of_a_variant_equals_the_general_path() {
                         let (general, general_depth, general_stats, general_variant) =
                             render(&object, &lights, &state, false);
                         assert_eq!(variant, general_variant);
-                        assert_eq!(fast_stats, general_stats, "{variant}");
+                        // A cut-out draw compares depth before it writes, batch by batch against one fragment
+                        // at a time: the fragments shaded may differ, never the fragments written.
+                        match variant.cutout {
+                            Cutout::None => assert_eq!(fast_stats, general_stats, "{variant}"),
+                            Cutout::Map(_) => assert_eq!(
+                                DrawStats { fragments: 0, ..fast_stats },
+                                DrawStats { fragments: 0, ..general_stats },
+                                "{variant}"
+                            ),
+                            Cutout::Everything => assert_eq!(fast_stats, DrawStats::default()),
+                        }
                         let differing = fast.iter().zip(&general).filter(|(a, b)| a != b).count();
                         assert_eq!(differing, 0, "{variant}: {differing} pixels differ");
                         assert_same_depths(&variant.to_string(), &general_depth, &fast_depth, W as usize, 0);
-                        assert!(fast_stats.fragments > 100, "{variant}: the scene must cover pixels");
+                        let drawn = variant.cutout != Cutout::Everything;
+                        assert!(!drawn || fast_stats.fragments > 100, "{variant}: the scene must cover pixels");
                         seen.note(&variant);
                         draws += 1;
                         clipped += u64::from(fast_stats.clipped > 0);
@@ -176,7 +204,7 @@ fn every_choice_of_a_variant_equals_the_general_path() {
             }
         }
     }
-    assert_eq!(draws, 2 * 6 * 2 * 10 * 5);
+    assert_eq!(draws, 2 * 6 * 2 * 13 * 5);
     assert!(clipped > 0);
     seen.assert_every_choice();
 }
@@ -193,6 +221,8 @@ struct Seen {
     point_lights: bool,
     shadows: Vec<u32>,
     affine: bool,
+    cutouts: Vec<&'static str>,
+    two_sided: [bool; 2],
 }
 
 impl Seen {
@@ -202,6 +232,15 @@ impl Seen {
         self.glow_map |= v.glow_map;
         self.point_lights |= v.point_lights > 0;
         self.affine |= v.state.interpolation == Interpolation::Affine;
+        self.two_sided[usize::from(v.two_sided)] = true;
+        let cutout = match v.cutout {
+            Cutout::None => "none",
+            Cutout::Map(_) => "map",
+            Cutout::Everything => "everything",
+        };
+        if !self.cutouts.contains(&cutout) {
+            self.cutouts.push(cutout);
+        }
         if !self.normals.contains(&v.normals) {
             self.normals.push(v.normals);
         }
@@ -222,6 +261,8 @@ impl Seen {
         assert_eq!(self.specular.len(), 3, "specular sources: {:?}", self.specular);
         assert_eq!(self.filters.len(), 4, "filter and wrap modes: {:?}", self.filters);
         assert_eq!(self.shadows.len(), 2, "shadow filter radii: {:?}", self.shadows);
+        assert_eq!(self.cutouts.len(), 3, "cut-outs: {:?}", self.cutouts);
+        assert_eq!(self.two_sided, [true, true], "one- and two-sided lighting");
     }
 }
 

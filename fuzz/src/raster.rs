@@ -265,6 +265,8 @@ struct ExtrasIn {
     normal_map: Option<NormalMapIn>,
     specular_map: bool,
     glow_map: bool,
+    /// An alpha cut-out: opacity and cut-off, in 255ths.
+    cutout: Option<(u8, u8)>,
 }
 
 /// One fuzz input: a scene to draw.
@@ -702,6 +704,8 @@ pub fn run(input: Input) -> Option<DrawStats> {
         glow_map: texture.filter(|_| extras.glow_map),
         filter,
         wrap,
+        opacity: extras.cutout.map_or(1.0, |(opacity, _)| f32::from(opacity) / 255.0),
+        alpha_cutoff: extras.cutout.map(|(_, cutoff)| f32::from(cutoff) / 255.0),
     };
 
     // Lights: directional or point, each with its shadow map if it casts one.

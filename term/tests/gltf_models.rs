@@ -246,6 +246,52 @@ fn texture_transforms_move_texture_coordinates() {
     );
 }
 
+/// A square with a 16x1 RGBA texture, opaque red on the left half and fully transparent green on the right, in
+/// a material of alpha mode `mode` (`"MASK"` or `"OPAQUE"`). Bilinear filtering blends the halves only near
+/// where they meet.
+fn half_clear_square(mode: &str) -> Vec<u8> {
+    let mut png = Vec::new();
+    let mut encoder = png::Encoder::new(&mut png, 16, 1);
+    encoder.set_color(png::ColorType::Rgba);
+    let texels = [[255, 0, 0, 255]; 8].into_iter().chain([[0, 255, 0, 0]; 8]).flatten().collect::<Vec<u8>>();
+    encoder.write_header().unwrap().write_image_data(&texels).unwrap();
+    let mut w = GltfWriter::new();
+    let (p, n, t, i) = square(&mut w);
+    let image = w.view(&png);
+    w.glb(&format!(
+        r#""scenes": [{{"nodes": [0]}}], "nodes": [{{"mesh": 0}}],
+        "meshes": [{{"primitives": [{{"attributes": {{"POSITION": {p}, "NORMAL": {n}, "TEXCOORD_0": {t}}},
+          "indices": {i}, "material": 0}}]}}],
+        "materials": [{{"alphaMode": "{mode}", "pbrMetallicRoughness": {{"baseColorTexture": {{"index": 0}}}}}}],
+        "textures": [{{"source": 0}}],
+        "images": [{{"bufferView": {image}, "mimeType": "image/png"}}]"#
+    ))
+}
+
+#[test]
+fn alpha_mask_cuts_out_what_its_texture_makes_transparent() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(dir.path().join("mask.glb"), half_clear_square("MASK")).unwrap();
+    fs::write(dir.path().join("opaque.glb"), half_clear_square("OPAQUE")).unwrap();
+    let model = load_model(dir.path().join("mask.glb"), &ModelOptions::default()).unwrap();
+    assert!(model.warnings.is_empty(), "{:?}", model.warnings);
+    let material = model.part_material(0).unwrap();
+    assert_eq!((material.alpha_cutoff, material.opacity), (Some(0.5), 1.0));
+    // Transparency (255 - alpha) in the top byte.
+    let texels = &material.texture.as_ref().unwrap().texels;
+    assert_eq!((texels[7], texels[8]), (0x00FF_0000, 0xFF00_FF00));
+    let output = rastty(dir.path(), &["render", "mask.glb", "--explain"]);
+    assert!(String::from_utf8_lossy(&output.stdout).contains("alpha cut-out below 0.5"));
+    let front = ["--yaw", "0", "--pitch", "0", "--shading", "unlit", "--background", "000000"];
+    let count = |picture: &[u8], rgb: [u8; 3]| picture.chunks_exact(3).filter(|p| *p == rgb).count();
+    let (masked, opaque) = (picture(dir.path(), "mask.glb", &front), picture(dir.path(), "opaque.glb", &front));
+    let (red, green) = ([255, 0, 0], [0, 255, 0]);
+    assert!(count(&opaque, red) > 100 && count(&opaque, green) > 100, "the opaque square shows both texels");
+    assert_eq!(count(&masked, red), count(&opaque, red), "the opaque half is drawn alike");
+    assert_eq!(count(&masked, green), 0, "the transparent half is cut out");
+    assert!(count(&masked, [0, 0, 0]) >= count(&opaque, [0, 0, 0]) + count(&opaque, green));
+}
+
 #[test]
 fn a_scene_file_places_a_gltf_model_and_draws_its_double_sided_part_without_culling() {
     let dir = tempfile::tempdir().unwrap();

@@ -498,9 +498,9 @@ fn tga_through_a_model_and_its_mtl() {
 
 #[test]
 fn tga_alpha_grey_and_palette() {
-    // 32-bit BGRA, top-left origin, 8 alpha bits: alpha is dropped, colour kept.
-    let bgra = [0u8, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 1, 0, 32, 0x28, 0x10, 0x20, 0x30, 0x00];
-    assert_eq!(TextureImage::decode(Path::new("a.tga"), &bgra).unwrap().texels, [0x302010]);
+    // 32-bit BGRA, top-left origin, 8 alpha bits: colour kept, alpha 0x40 as the transparency 0xBF on top.
+    let bgra = [0u8, 0, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 1, 0, 32, 0x28, 0x10, 0x20, 0x30, 0x40];
+    assert_eq!(TextureImage::decode(Path::new("a.tga"), &bgra).unwrap().texels, [0xBF30_2010]);
     // 8-bit grey.
     let grey = [0u8, 0, 3, 0, 0, 0, 0, 0, 0, 0, 0, 0, 3, 0, 1, 0, 8, 0x20, 0, 128, 255];
     assert_eq!(TextureImage::decode(Path::new("g.tga"), &grey).unwrap().texels, [0, 0x808080, 0xFFFFFF]);
@@ -513,11 +513,12 @@ fn tga_alpha_grey_and_palette() {
 fn png_colour_types_are_converted() {
     let rgba =
         png(DynamicImage::ImageRgba8(image::RgbaImage::from_raw(2, 1, vec![10, 20, 30, 0, 40, 50, 60, 255]).unwrap()));
-    assert_eq!(TextureImage::decode(Path::new("a.png"), &rgba).unwrap().texels, [0x0A141E, 0x28323C]);
+    // Alpha kept as the transparency 255 - alpha in the top byte: opaque texels are 0x00RRGGBB.
+    assert_eq!(TextureImage::decode(Path::new("a.png"), &rgba).unwrap().texels, [0xFF0A_141E, 0x0028_323C]);
     let grey = png(DynamicImage::ImageLuma8(image::GrayImage::from_raw(2, 1, vec![0, 200]).unwrap()));
     assert_eq!(TextureImage::decode(Path::new("g.png"), &grey).unwrap().texels, [0, 0xC8C8C8]);
     let grey_alpha = png(DynamicImage::ImageLumaA8(image::GrayAlphaImage::from_raw(1, 1, vec![7, 9]).unwrap()));
-    assert_eq!(TextureImage::decode(Path::new("ga.png"), &grey_alpha).unwrap().texels, [0x070707]);
+    assert_eq!(TextureImage::decode(Path::new("ga.png"), &grey_alpha).unwrap().texels, [0xF607_0707]);
     let deep = png(DynamicImage::ImageRgb16(image::ImageBuffer::from_raw(1, 1, vec![0xFFFF, 0, 0x8080]).unwrap()));
     assert_eq!(TextureImage::decode(Path::new("d.png"), &deep).unwrap().texels, [0xFF0080]);
 

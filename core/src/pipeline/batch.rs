@@ -14,7 +14,9 @@
 //! loop, so the values are the same.
 //!
 //! Depth is tested and written when a fragment is pushed, colour when its batch is shaded: the colours are written
-//! in the order the fragments were pushed, so a later fragment over the same pixel still wins.
+//! in the order the fragments were pushed, so a later fragment over the same pixel still wins. In a draw that
+//! discards fragments (an alpha cut-out) depth is only compared when a fragment is pushed, and tested and written
+//! with its colour, in the same order, if it is kept.
 
 use super::{Fragment, Varyings};
 

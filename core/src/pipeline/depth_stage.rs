@@ -7,6 +7,9 @@ use crate::target::{DEPTH_LANES, DepthBuffer};
 pub(crate) trait DepthStage: Copy {
     /// True when the fragment at `index` with depth `z` is to be shaded.
     fn test<D: DepthBuffer>(&self, depth: &mut D, index: usize, z: f32) -> bool;
+    /// [`Self::test`] without writing: false only when the fragment would fail it, now and after any later write
+    /// (stored depths only decrease). For fragments that may yet be discarded.
+    fn nearer<D: DepthBuffer>(&self, depth: &D, index: usize, z: f32) -> bool;
     /// [`Self::test`] for the covered ones of [`DEPTH_LANES`] consecutive pixels from `start`: how many survive.
     /// By default pixel by pixel.
     #[inline(always)]
@@ -37,6 +40,10 @@ impl DepthStage for DepthLess {
         depth.test_and_set(index, z)
     }
     #[inline(always)]
+    fn nearer<D: DepthBuffer>(&self, depth: &D, index: usize, z: f32) -> bool {
+        depth.nearer(index, z)
+    }
+    #[inline(always)]
     fn test_lanes<D: DepthBuffer>(
         &self,
         depth: &mut D,
@@ -57,6 +64,10 @@ impl DepthStage for DepthOff {
     fn test<D: DepthBuffer>(&self, _: &mut D, _: usize, _: f32) -> bool {
         true
     }
+    #[inline(always)]
+    fn nearer<D: DepthBuffer>(&self, _: &D, _: usize, _: f32) -> bool {
+        true
+    }
 }
 
 /// Either, decided per pixel (its lanes too, by [`DepthStage::test_lanes`]'s default): the general path.
@@ -69,6 +80,13 @@ impl DepthStage for DynamicDepth {
         match self.0 {
             DepthTest::Less => DepthLess.test(depth, index, z),
             DepthTest::Off => DepthOff.test(depth, index, z),
+        }
+    }
+    #[inline(always)]
+    fn nearer<D: DepthBuffer>(&self, depth: &D, index: usize, z: f32) -> bool {
+        match self.0 {
+            DepthTest::Less => DepthLess.nearer(depth, index, z),
+            DepthTest::Off => DepthOff.nearer(depth, index, z),
         }
     }
 }

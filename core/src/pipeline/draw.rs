@@ -224,7 +224,8 @@ where
     let rows = target.rows();
     let volume = ClipVolume::new(target.width(), target.height(), rows.start, rows.end);
     let raster = Rasterizer::new(target, state.subpixel_bits, state.cull, state.front_face);
-    let stages = Stages { shader, interpolator, depth };
+    // Asked once per draw; a constant false for shaders that never discard.
+    let stages = Stages { shader, interpolator, depth, cutout: S::CUTOUT && shader.cutout() };
     // The caller's memory for screen positions, taken out of the target for the draw (the pixel loop borrows the
     // target) and put back at the end. Screen vertices computed beforehand for the frame are read as they are,
     // when they are this draw's; a buffer holding every vertex of the mesh gets the position stage once per
@@ -335,7 +336,7 @@ where
         outcome.count(&mut stats);
     }
     if let Some(batch) = batch.as_mut().filter(|b| !b.is_empty()) {
-        shade_batch(shader, batch, target);
+        shade_batch(&stages, batch, target);
     }
     target.vertices = memory;
     stats

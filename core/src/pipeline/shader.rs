@@ -69,6 +69,34 @@ pub trait Shader {
     /// time, and writes no colour; [`Shader::fragment`] is never called. A constant, like [`Shader::BATCHED`].
     const FRAGMENT_STAGE: bool = true;
 
+    /// True for a shader that may discard fragments ([`Shader::cutout`]): a constant, so that the pixel loops of
+    /// the others compile without the discard.
+    const CUTOUT: bool = false;
+
+    /// Whether this draw discards fragments ([`Shader::kept`]), asked once per draw and only when
+    /// [`Shader::CUTOUT`] is set. A draw that does tests depth before shading without writing it, and writes depth
+    /// and colour only for the fragments kept, in the order the pixel loop found them: the pixels and depths of
+    /// drawing the kept fragments alone.
+    #[inline(always)]
+    fn cutout(&self) -> bool {
+        false
+    }
+
+    /// Whether a fragment of a [`Shader::cutout`] draw is kept (true by default).
+    #[inline(always)]
+    fn kept(&self, fragment: &Fragment, face: &Self::Face, varyings: &Self::Varyings) -> bool {
+        let _ = (fragment, face, varyings);
+        true
+    }
+
+    /// [`Shader::kept`] for a batch, into `keep[..batch.len()]`; by default fragment by fragment.
+    #[inline(always)]
+    fn kept_batch(&self, batch: &FragmentBatch<Self::Varyings, Self::Face>, keep: &mut [bool; BATCH_SIZE]) {
+        for (i, k) in keep.iter_mut().enumerate().take(batch.len()) {
+            *k = self.kept(&batch.fragment(i), batch.face(i), batch.varyings(i));
+        }
+    }
+
     /// Fragment stage for a batch: the colours of `batch`'s fragments into `colors[..batch.len()]`. A batch may
     /// hold fragments of several triangles: [`FragmentBatch::face`] and [`FragmentBatch::fragment`] give each
     /// fragment's. Called only when [`Shader::BATCHED`] is set; by default it calls [`Shader::fragment`] for each.

@@ -19,8 +19,13 @@ pub const VIEWS: u32 = 1 << 4;
 pub const POINT_LIGHTS: u32 = 1 << 5;
 /// Shadow maps (read by per-pixel lighting).
 pub const SHADOWS: u32 = 1 << 6;
+/// Alpha cut-outs ([`super::Material::alpha_cutoff`] with a diffuse map): without it the pixel loop compiles
+/// without the discard.
+pub const CUTOUT: u32 = 1 << 7;
+/// Two-sided per-pixel lighting ([`super::Variant::two_sided`]: a draw that keeps back faces).
+pub const TWO_SIDED: u32 = 1 << 8;
 /// Everything: what [`super::draw_mesh`] compiles.
-pub const ALL: u32 = UNLIT | FLAT | GOURAUD | PER_PIXEL | VIEWS | POINT_LIGHTS | SHADOWS;
+pub const ALL: u32 = UNLIT | FLAT | GOURAUD | PER_PIXEL | VIEWS | POINT_LIGHTS | SHADOWS | CUTOUT | TWO_SIDED;
 
 /// True when `caps` holds `bit`: a constant in a shader compiled for `caps`, so the code it guards is left out
 /// when false.

@@ -11,10 +11,10 @@ use super::TangentFrame;
 use super::light_terms::{face_light, vertex_light};
 use super::material::decode_normal;
 use super::{
-    LightKind, LightTerms, Lighting, Material, NormalSource, ShadingModel, SpecularSource, Transforms, Variant,
+    Cutout, LightKind, LightTerms, Lighting, Material, NormalSource, ShadingModel, SpecularSource, Transforms, Variant,
     world_normal,
 };
-use crate::color::unpack_rgb888;
+use crate::color::{texel_alpha, unpack_rgb888};
 use crate::math::{Vec2, Vec3, Vec4, float};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{Fragment, Shader};
@@ -107,18 +107,25 @@ impl<'a> GeneralShader<'a> {
     }
 
     /// Per-pixel lighting: the shading normal (interpolated or from a map), then each light with its shadow map.
-    fn per_pixel(&self, v: &GeneralVaryings) -> Vec3 {
+    ///
+    /// Two-sided, a back-facing fragment's normal and tangent frame are turned round (and an object-space map's
+    /// normal after it is read).
+    fn per_pixel(&self, v: &GeneralVaryings, front_facing: bool) -> Vec3 {
         let (variant, m) = (&self.variant, &self.material);
-        let geometric = v.normal.normalize_or_zero();
+        let sign = if variant.two_sided && !front_facing { -1.0 } else { 1.0 };
+        let (normal, tangent) =
+            if variant.two_sided { (v.normal * sign, v.tangent * sign) } else { (v.normal, v.tangent) };
+        let geometric = normal.normalize_or_zero();
         let shading = match (variant.normals, m.normal_map) {
             (NormalSource::TangentMap, Some(map)) => {
-                let (n, t) = (v.normal, v.tangent.truncate());
-                let b = n.cross(t) * v.tangent.w;
+                let (n, t) = (normal, tangent.truncate());
+                let b = n.cross(t) * tangent.w;
                 let d = decode_normal(self.texel(&map.texture, v.uv));
                 (t * d.x + b * d.y + n * d.z).normalize_or_zero()
             }
             (NormalSource::ObjectMap, Some(map)) => {
-                (self.transforms.normal * decode_normal(self.texel(&map.texture, v.uv))).normalize_or_zero()
+                let n = (self.transforms.normal * decode_normal(self.texel(&map.texture, v.uv))).normalize_or_zero();
+                if variant.two_sided { n * sign } else { n }
             }
             _ => geometric,
         };
@@ -152,6 +159,21 @@ impl Shader for GeneralShader<'_> {
     type Face = LightTerms;
     // The variant checked the mesh has what it reads.
     const ATTRIBUTES: Attributes = Attributes::NONE;
+    const CUTOUT: bool = true;
+
+    fn cutout(&self) -> bool {
+        self.variant.cutout != Cutout::None
+    }
+
+    /// The diffuse map's alpha at the fragment against the cut-off; nothing is kept when the whole draw is cut
+    /// out.
+    fn kept(&self, _: &Fragment, _: &LightTerms, v: &GeneralVaryings) -> bool {
+        match (self.variant.cutout, self.material.diffuse) {
+            (Cutout::Map(cutoff), Some(map)) => self.material.keeps(texel_alpha(self.texel(&map, v.uv)), cutoff),
+            (Cutout::Everything, _) => false,
+            _ => true,
+        }
+    }
 
     fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
         self.transforms.clip_from_object.project_point(mesh.position(i))
@@ -198,7 +220,7 @@ impl Shader for GeneralShader<'_> {
             ShadingModel::Unlit => self.albedo(if self.variant.vertex_colors { v.color } else { m.color }, v.uv),
             ShadingModel::Flat => self.finish(self.albedo(m.color, v.uv).mul_elem(face.diffuse), face.specular, v.uv),
             ShadingModel::Gouraud => self.finish(self.albedo(m.color, v.uv).mul_elem(v.diffuse), v.specular, v.uv),
-            ShadingModel::Phong => self.per_pixel(v),
+            ShadingModel::Phong => self.per_pixel(v, f.front_facing),
             ShadingModel::Depth { near, far } => {
                 let scale = 1.0 / (far - near);
                 let scale = if scale.is_finite() { scale } else { 0.0 };

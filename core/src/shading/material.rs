@@ -49,6 +49,14 @@ pub struct Material<'a> {
     pub filter: FilterMode,
     /// Wrap mode of every map.
     pub wrap: WrapMode,
+    /// The surface's alpha, times the diffuse map's ([`crate::color::texel_alpha`]); read only with an
+    /// `alpha_cutoff`.
+    pub opacity: f32,
+    /// Alpha cut-out: a fragment whose alpha (`opacity` times the diffuse map's, as `a / 255`) is below this is
+    /// discarded, its depth and colour left as they were (glTF's alpha mode `MASK`). A surface without a diffuse
+    /// map is drawn whole or, when `opacity` is below the cut-off, not at all. Read by the shading models that
+    /// colour (not the depth and normals views), and not by shadow maps, whose casters are drawn whole.
+    pub alpha_cutoff: Option<f32>,
 }
 
 impl Default for Material<'_> {
@@ -71,7 +79,17 @@ impl Material<'_> {
             glow_map: None,
             filter: FilterMode::Bilinear,
             wrap: WrapMode::Repeat,
+            opacity: 1.0,
+            alpha_cutoff: None,
         }
+    }
+
+    /// Whether a fragment whose diffuse-map alpha is `texel_alpha` (`0..=255`) is kept under `cutoff`: `opacity`
+    /// times `texel_alpha / 255` at least `cutoff`. One expression for every path, so that they keep the same
+    /// fragments.
+    #[inline(always)]
+    pub(crate) fn keeps(&self, texel_alpha: u32, cutoff: f32) -> bool {
+        texel_alpha as f32 * (self.opacity * (1.0 / 255.0)) >= cutoff
     }
 }
 

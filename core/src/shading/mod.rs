@@ -50,5 +50,5 @@ pub use shader::SurfaceShader;
 pub use shading_model::ShadingModel;
 pub use transforms::Transforms;
 pub(crate) use transforms::{TangentFrame, world_normal};
-pub use variant::{Layout, NormalSource, ShadingError, SpecularSource, Variant};
+pub use variant::{Cutout, Layout, NormalSource, ShadingError, SpecularSource, Variant};
 pub use varyings::{Absent, Slot, SurfaceVaryings};

@@ -22,6 +22,8 @@ pub(crate) struct Scratch {
     pub tangent: Column3,
     /// The tangent frame's handedness: the sign of the bitangent.
     pub handedness: Column,
+    /// 1 for a front-facing fragment, -1 for a back-facing one (two-sided lighting only).
+    pub facing: Column,
     /// Unit vector from the surface toward the eye (for highlights).
     pub view: Column3,
     /// Albedo: material colour, times the diffuse map.
@@ -51,6 +53,7 @@ impl Scratch {
             uv: Column2::ZERO,
             tangent: v3,
             handedness: [0.0; BATCH_SIZE],
+            facing: [1.0; BATCH_SIZE],
             view: v3,
             albedo: v3,
             diffuse: v3,

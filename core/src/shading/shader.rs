@@ -9,8 +9,9 @@ use super::maps::{MapReader, albedo, glow, specular_color};
 use super::normals::{self, object_map, tangent_map};
 use super::scratch::Scratch;
 use super::varyings::{Slot, SurfaceVaryings};
+use super::{Cutout, ShadingError, coarse, views};
 use super::{Layout, Lighting, Material, NormalSource, SpecularSource, Variant, lighting};
-use super::{ShadingError, coarse, views};
+use crate::color::texel_alpha;
 use crate::math::{Mat4, Vec2, Vec3, Vec4};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{BATCH_SIZE, Fragment, FragmentBatch, Shader};
@@ -50,8 +51,8 @@ where
     ///
     /// # Errors
     /// [`ShadingError::Unsupported`] when the slot types do not carry the variant's [`Variant::layout`]
-    /// (they may carry more), or `CAPS` ([`capabilities`]) leaves out its shading model, point lights or shadow
-    /// maps.
+    /// (they may carry more), or `CAPS` ([`capabilities`]) leaves out its shading model, point lights, shadow
+    /// maps or two-sided lighting.
     pub fn new(
         variant: Variant,
         transforms: Transforms,
@@ -73,7 +74,8 @@ where
         };
         let compiled = has(CAPS, model)
             && (variant.point_lights == 0 || has(CAPS, capabilities::POINT_LIGHTS))
-            && (variant.shadowed_lights == 0 || has(CAPS, capabilities::SHADOWS));
+            && (variant.shadowed_lights == 0 || has(CAPS, capabilities::SHADOWS))
+            && (!variant.two_sided || has(CAPS, capabilities::TWO_SIDED));
         if !(carried && compiled) {
             return Err(ShadingError::Unsupported);
         }
@@ -121,7 +123,8 @@ where
         match (v.normals, m.normal_map) {
             (NormalSource::TangentMap, Some(map)) if T::PRESENT => tangent_map(s, maps, &map.texture),
             (NormalSource::ObjectMap, Some(map)) if U::PRESENT => {
-                object_map(s, maps, &map.texture, &self.transforms.normal);
+                let two_sided = has(CAPS, capabilities::TWO_SIDED) && v.two_sided;
+                object_map(s, maps, &map.texture, &self.transforms.normal, two_sided);
             }
             _ => {}
         }
@@ -180,6 +183,41 @@ where
     // Normals and colours are read only by some models: the variant checks the mesh has them.
     const ATTRIBUTES: Attributes = Attributes { normals: false, uvs: U::PRESENT, colors: false };
     const BATCHED: bool = true;
+    const CUTOUT: bool = has(CAPS, capabilities::CUTOUT) && U::PRESENT;
+
+    /// A cut-off tested against the diffuse map's alpha ([`Cutout::Map`]).
+    #[inline(always)]
+    fn cutout(&self) -> bool {
+        matches!(self.variant.cutout, Cutout::Map(_))
+    }
+
+    /// One fragment as a batch of one.
+    fn kept(&self, f: &Fragment, face: &LightTerms, v: &Self::Varyings) -> bool {
+        let mut keep = [false; BATCH_SIZE];
+        self.kept_batch(&FragmentBatch::single(f, *face, *v), &mut keep);
+        keep[0]
+    }
+
+    /// Reads the diffuse map's alpha at the fragments' texture coordinates, with the draw's filter and wrap mode.
+    #[inline(always)]
+    fn kept_batch(&self, batch: &FragmentBatch<Self::Varyings, LightTerms>, keep: &mut [bool; BATCH_SIZE]) {
+        let (Cutout::Map(cutoff), Some(map), true) = (self.variant.cutout, self.material.diffuse, U::PRESENT) else {
+            return;
+        };
+        let uv = Column2::gather(batch.len(), |i| batch.varyings(i).uv.get().unwrap_or(Vec2::ZERO));
+        let mut texels = [0; BATCH_SIZE];
+        match (self.variant.filter, self.variant.wrap) {
+            (FilterMode::Nearest, WrapMode::Repeat) => MapReader::<Nearest, Repeat>::new().read(&map, &uv, &mut texels),
+            (FilterMode::Nearest, WrapMode::Clamp) => MapReader::<Nearest, Clamp>::new().read(&map, &uv, &mut texels),
+            (FilterMode::Bilinear, WrapMode::Repeat) => {
+                MapReader::<Bilinear, Repeat>::new().read(&map, &uv, &mut texels);
+            }
+            (FilterMode::Bilinear, WrapMode::Clamp) => MapReader::<Bilinear, Clamp>::new().read(&map, &uv, &mut texels),
+        }
+        for (k, &texel) in keep.iter_mut().zip(&texels).take(batch.len()) {
+            *k = self.material.keeps(texel_alpha(texel), cutoff);
+        }
+    }
 
     #[inline(always)]
     fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
@@ -266,6 +304,10 @@ where
                     let tangent = |i| batch.varyings(i).tangent.get().unwrap_or(Vec4::ZERO);
                     s.tangent = Column3::gather(len, |i| tangent(i).truncate());
                     s.handedness = columns::gather(len, |i| tangent(i).w);
+                }
+                if has(CAPS, capabilities::TWO_SIDED) && v.two_sided {
+                    s.facing = columns::gather(len, |i| if batch.fragment(i).front_facing { 1.0 } else { -1.0 });
+                    normals::face_the_viewer(&mut s);
                 }
                 self.shade(&mut s, colors);
             }

@@ -5,7 +5,7 @@ use core::fmt;
 use super::{LightUse, Object};
 use crate::math::{Vec3, Vec4};
 use crate::mesh::Attributes;
-use crate::pipeline::{DrawError, DrawState, FixedFunction};
+use crate::pipeline::{Cull, DrawError, DrawState, FixedFunction};
 use crate::shading::ShadingModel;
 use crate::texture::{FilterMode, WrapMode};
 
@@ -35,6 +35,18 @@ pub enum SpecularSource {
     Constant,
     /// The material's specular colour times the specular map.
     Map,
+}
+
+/// Whether a draw discards fragments by their alpha ([`super::Material::alpha_cutoff`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Cutout {
+    /// Drawn whole: no cut-off, a model that reads no colour, or an opacity at or above the cut-off and no map
+    /// to lower it.
+    None,
+    /// Per fragment: the opacity times the diffuse map's alpha is tested against this cut-off.
+    Map(f32),
+    /// Not drawn at all: the opacity is below the cut-off and no map is read.
+    Everything,
 }
 
 /// Why a draw was refused (nothing was drawn).
@@ -98,6 +110,11 @@ pub struct Variant {
     pub specular: SpecularSource,
     /// The glow map is added.
     pub glow_map: bool,
+    /// Fragments discarded by alpha.
+    pub cutout: Cutout,
+    /// Back faces are lit as seen from behind: per-pixel lighting of a draw that does not cull back faces turns
+    /// the normal of back-facing fragments round (glTF's double-sided lighting).
+    pub two_sided: bool,
     /// Filter of the maps sampled.
     pub filter: FilterMode,
     /// Wrap mode of the maps sampled.
@@ -142,6 +159,10 @@ impl Variant {
     /// - A tangent-space normal map needs `tangents` (one per vertex), and only then are tangents interpolated.
     /// - Lights reach the lit models: per triangle (flat, at its centroid), per vertex (Gouraud) or per pixel.
     ///   Shadow maps are read per pixel only.
+    /// - An alpha cut-off is tested per fragment only where the diffuse map is read; without it, the opacity
+    ///   decides for the whole draw ([`Cutout`]).
+    /// - Back faces, where a draw keeps them, are lit with their normal turned round: per-pixel lighting only
+    ///   (flat and Gouraud light both faces alike).
     /// - Highlights only for a non-zero [`super::Material::specular`] with at least one light.
     /// - The world position only for per-pixel point lights, highlights or shadows.
     /// - Affine interpolation under an orthographic projection, and the front face flipped for a mirroring model
@@ -206,6 +227,11 @@ impl Variant {
         };
         let albedo_map = colored && material.diffuse.is_some() && uvs;
         let glow_map = lit && material.glow_map.is_some() && uvs;
+        let cutout = match material.alpha_cutoff {
+            Some(cutoff) if albedo_map => Cutout::Map(cutoff),
+            Some(cutoff) if colored && !material.keeps(255, cutoff) => Cutout::Everything,
+            _ => Cutout::None,
+        };
         let state = object.transforms.adapt(state);
         Ok(Self {
             shading,
@@ -220,6 +246,8 @@ impl Variant {
             normals,
             specular,
             glow_map,
+            cutout,
+            two_sided: per_pixel && state.cull != Cull::Back,
             filter: material.filter,
             wrap: material.wrap,
             directional_lights,
@@ -293,6 +321,14 @@ impl fmt::Display for Variant {
         }
         if self.glow_map {
             f.write_str("; glow map")?;
+        }
+        if self.two_sided {
+            f.write_str("; two-sided")?;
+        }
+        match self.cutout {
+            Cutout::None => {}
+            Cutout::Map(cutoff) => write!(f, "; alpha cut-out below {cutoff}")?,
+            Cutout::Everything => f.write_str("; cut out entirely (not drawn)")?,
         }
         if self.uvs {
             let filter = match self.filter {

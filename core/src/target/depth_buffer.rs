@@ -22,6 +22,15 @@ pub trait DepthBuffer {
     ///
     /// `z` is always in `[0, 1]` and never NaN or `-0`: the pipeline passes every depth through [`clamp_depth`].
     fn test_and_set(&mut self, index: usize, z: f32) -> bool;
+    /// Whether `z` is nearer than the stored depth of pixel `index`, without storing it: a draw that may discard
+    /// fragments asks before shading and calls [`Self::test_and_set`] for those it keeps. A buffer may answer
+    /// true when unsure (the default: every fragment is then shaded and tested afterwards), never false for a
+    /// depth that [`Self::test_and_set`] would store.
+    #[inline(always)]
+    fn nearer(&self, index: usize, z: f32) -> bool {
+        let _ = (index, z);
+        true
+    }
     /// [`Self::test_and_set`] for pixel `start + i` with depth `z[i]`, for each `i` where `covered[i]`; returns how
     /// many passed. The pixels need not be in one row (the depth-only pass lets a group reach past a row's end,
     /// uncovered).
@@ -47,6 +56,10 @@ impl DepthBuffer for &mut [f32] {
             }
             _ => false,
         }
+    }
+    #[inline(always)]
+    fn nearer(&self, index: usize, z: f32) -> bool {
+        self.get(index).is_some_and(|&d| z < d)
     }
     /// Branch-free over a group whose stored depths are all non-negative numbers (sign bit clear, not NaN), as
     /// every depth this library stores is, so that it widens to SIMD; any other group (a caller may fill the buffer
@@ -134,6 +147,10 @@ impl DepthBuffer for &mut [u16] {
             }
             _ => false,
         }
+    }
+    #[inline(always)]
+    fn nearer(&self, index: usize, z: f32) -> bool {
+        self.get(index).is_some_and(|&d| depth_to_u16(z) < d)
     }
     fn clear(&mut self) {
         self.fill(u16::MAX);

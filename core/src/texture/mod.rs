@@ -1,8 +1,9 @@
 //! Textures over borrowed texels, and how they are sampled.
 //!
-//! A texture is a `&[u32]` of `0x00RRGGBB` texels, row 0 at the top of the image. Texture coordinates follow the
+//! A texture is a `&[u32]` of `0xTTRRGGBB` texels, row 0 at the top of the image. Texture coordinates follow the
 //! OBJ and OpenGL convention: `u` runs left to right, `v` bottom to top, and `(0, 0)` is the bottom-left corner of
-//! the image.
+//! the image. The top byte `TT` is the texel's transparency, `255 - alpha` ([`crate::color::texel_alpha`]): a
+//! plain `0x00RRGGBB` texel is opaque. Only an alpha cut-out reads it ([`crate::shading::Material::alpha_cutoff`]).
 //!
 //! Several maps of one size can share one slice, texel by texel ([`Texture::interleaved`]): a fragment reads all
 //! of a material's maps at the same texel, so their texels then come in on the same cache line instead of one line
@@ -62,7 +63,7 @@ impl core::fmt::Display for TextureError {
 
 impl core::error::Error for TextureError {}
 
-/// A borrowed image of `0x00RRGGBB` texels.
+/// A borrowed image of `0xTTRRGGBB` texels (`TT`: transparency; see the [module](self) documentation).
 #[derive(Clone, Copy, Debug)]
 pub struct Texture<'a> {
     texels: &'a [u32],

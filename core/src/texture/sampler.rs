@@ -61,7 +61,8 @@ pub trait Filter {
     /// textures of one size sampled at the same coordinates (a material's maps, usually) share it.
     type Addresses<const N: usize>: Copy;
 
-    /// Samples `texture` at `uv` with wrap mode `W`, as a packed `0x00RRGGBB` value.
+    /// Samples `texture` at `uv` with wrap mode `W`, as a packed `0xTTRRGGBB` value (every channel, transparency
+    /// too, filtered alike).
     fn sample_packed<W: Wrap>(texture: &Texture<'_>, uv: Vec2) -> u32;
 
     /// The addresses of the samples at each `(u[i], v[i])` in a `width x height` texture (as
@@ -180,16 +181,17 @@ impl Filter for Bilinear {
     }
 }
 
-/// `p + (q - p) * w / 256` on each channel of two `0x00RRGGBB` texels, rounded, for `w` in `0..256`.
+/// `p + (q - p) * w / 256` on each channel of two `0xTTRRGGBB` texels, rounded, for `w` in `0..256`.
 ///
-/// Red and blue are blended together in one multiply (16 bits apart, they cannot carry into each other), then
-/// green.
+/// Two channels 16 bits apart are blended in one multiply (they cannot carry into each other): red with blue,
+/// then transparency with green, shifted down first so that the products fit 32 bits. Green alone gives what it
+/// gave before the transparency byte was blended: `((g p + g q + 128) >> 8) << 8` either way.
 #[inline(always)]
 fn blend(p: u32, q: u32, w: u32) -> u32 {
     let v = 256 - w;
     let rb = (((p & 0xFF00FF) * v + (q & 0xFF00FF) * w + 0x80_0080) >> 8) & 0xFF00FF;
-    let g = (((p & 0x00FF00) * v + (q & 0x00FF00) * w + 0x00_8000) >> 8) & 0x00FF00;
-    rb | g
+    let tg = ((((p >> 8) & 0xFF00FF) * v + ((q >> 8) & 0xFF00FF) * w + 0x80_0080) >> 8) & 0xFF00FF;
+    rb | (tg << 8)
 }
 
 /// A filter chosen at run time.
@@ -220,7 +222,7 @@ mod tests {
     /// inside, outside and on the edges of the texture, and at NaN and infinities.
     #[test]
     fn lanes_sample_what_single_samples_do() {
-        let texels: [u32; 15] = core::array::from_fn(|i| (i as u32 * 0x10_2030) & 0xFF_FFFF);
+        let texels: [u32; 15] = core::array::from_fn(|i| i as u32 * 0x1110_2030);
         let texture = Texture::new(&texels, 5, 3).unwrap();
         let special = [0.0, 1.0, -0.0, 0.5, -1.25, 2.75, 1e-9, -1e-9, 1e9, f32::NAN, f32::INFINITY, f32::NEG_INFINITY];
         let uv: [Vec2; 64] = core::array::from_fn(|i| {
@@ -239,5 +241,24 @@ mod tests {
         check::<Nearest, Clamp>(&texture, &uv);
         check::<Bilinear, Repeat>(&texture, &uv);
         check::<Bilinear, Clamp>(&texture, &uv);
+    }
+
+    /// The transparency byte is blended like the colour channels, and the colour channels of texels with an
+    /// opaque top byte are what they were before it was blended (the old green formula, kept here).
+    #[test]
+    fn blend_filters_transparency_and_keeps_colours() {
+        assert_eq!(blend(0xFF00_0000, 0, 128), 0x8000_0000);
+        assert_eq!(blend(0xFF00_0000, 0x00FF_FFFF, 64) >> 24, (255 * 192 + 128) >> 8);
+        let old_green = |p: u32, q: u32, w: u32| (((p & 0xFF00) * (256 - w) + (q & 0xFF00) * w + 0x8000) >> 8) & 0xFF00;
+        let mut x = 0x1234_5678u32;
+        for _ in 0..10_000 {
+            // xorshift32 (Marsaglia 2003).
+            x ^= x << 13;
+            x ^= x >> 17;
+            x ^= x << 5;
+            let (p, q, w) = (x & 0xFF_FFFF, x.rotate_left(11) & 0xFF_FFFF, x >> 24);
+            assert_eq!(blend(p, q, w) & 0xFF00, old_green(p, q, w), "{p:06x} {q:06x} {w}");
+            assert_eq!(blend(p, q, w) >> 24, 0);
+        }
     }
 }

@@ -65,7 +65,7 @@ pub(crate) fn convert(
         None => format!("material {}", material.index().map_or_else(|| "(default)".into(), |i| i.to_string())),
     };
     let pbr = material.pbr_metallic_roughness();
-    let [r, g, b, _] = pbr.base_color_factor();
+    let [r, g, b, a] = pbr.base_color_factor();
     let base = Vec3::new(r, g, b);
     let base = if base.is_finite() { base.max(Vec3::ZERO).min(Vec3::ONE) } else { Vec3::ONE };
     let (base_texture, normal_texture) = (pbr.base_color_texture(), material.normal_texture());
@@ -104,11 +104,15 @@ pub(crate) fn convert(
     if material.occlusion_texture().is_some() {
         warn(format!("{label}: the occlusion texture is not drawn yet"));
     }
-    match material.alpha_mode() {
-        gltf::material::AlphaMode::Opaque => {}
-        gltf::material::AlphaMode::Mask => warn(format!("{label}: alpha mode MASK is drawn opaque (not cut out yet)")),
-        gltf::material::AlphaMode::Blend => warn(format!("{label}: alpha mode BLEND is drawn opaque")),
-    }
+    let alpha_cutoff = match material.alpha_mode() {
+        gltf::material::AlphaMode::Opaque => None,
+        // The specification's default cut-off is 0.5; one that is not finite cuts everything out.
+        gltf::material::AlphaMode::Mask => Some(material.alpha_cutoff().unwrap_or(0.5)),
+        gltf::material::AlphaMode::Blend => {
+            warn(format!("{label}: alpha mode BLEND is drawn opaque (no blending)"));
+            None
+        }
+    };
     let uv_transform = transforms.first().copied().unwrap_or(UvTransform::IDENTITY);
     if transforms.iter().any(|t| *t != uv_transform) {
         warn(format!("{label}: its maps have different texture transforms; the base colour's is used for all"));
@@ -123,6 +127,8 @@ pub(crate) fn convert(
         specular: Some(specular),
         shininess: Some(shininess),
         double_sided: material.double_sided(),
+        opacity: finite_unit(a, 1.0),
+        alpha_cutoff,
     };
     (converted, uv_transform)
 }

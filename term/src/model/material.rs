@@ -33,6 +33,10 @@ pub struct Material {
     pub shininess: Option<f32>,
     /// Both faces of each triangle are drawn (glTF's `doubleSided`); otherwise back faces are culled.
     pub double_sided: bool,
+    /// The surface's alpha (glTF's base colour factor's), times the texture's; read only with `alpha_cutoff`.
+    pub opacity: f32,
+    /// Fragments whose alpha is below this are not drawn (glTF's alpha mode `MASK` and its `alphaCutoff`).
+    pub alpha_cutoff: Option<f32>,
 }
 
 impl Default for Material {
@@ -47,6 +51,8 @@ impl Default for Material {
             specular: None,
             shininess: None,
             double_sided: false,
+            opacity: 1.0,
+            alpha_cutoff: None,
         }
     }
 }

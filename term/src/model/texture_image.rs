@@ -1,4 +1,4 @@
-//! Decoded texture images (PNG, TGA, JPEG) as `0x00RRGGBB` texels.
+//! Decoded texture images (PNG, TGA, JPEG) as the core's `0xTTRRGGBB` texels (`TT`: transparency).
 
 use std::io::Cursor;
 use std::path::Path;
@@ -12,7 +12,8 @@ use crate::input_file::read_input_file;
 /// The largest width and height accepted for a texture.
 pub const MAX_TEXTURE_SIDE: u32 = 16384;
 
-/// An owned texture: `width * height` texels, `0x00RRGGBB`, row-major with row 0 the top of the image (what
+/// An owned texture: `width * height` texels, `0xTTRRGGBB` with the transparency `255 - alpha` in the top byte
+/// (so opaque texels are `0x00RRGGBB`), row-major with row 0 the top of the image (what
 /// [`rastty_core::texture::Texture::new`] takes).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct TextureImage {
@@ -36,8 +37,9 @@ impl TextureImage {
     }
 
     /// Decodes an image held in memory. The format is recognised from the signature of the contents (PNG, JPEG) or,
-    /// failing that, from the extension of `name` (TGA has no signature). Every colour type is converted to RGB: grey is
-    /// replicated, palettes expanded, 16-bit channels reduced, alpha dropped (not blended). `name` is only used to
+    /// failing that, from the extension of `name` (TGA has no signature). Every colour type is converted to RGBA: grey is
+    /// replicated, palettes expanded, 16-bit channels reduced, and alpha (255 without one) kept as the texels'
+    /// transparency, read only by alpha cut-outs. `name` is only used to
     /// guess the format and in the error.
     ///
     /// # Errors
@@ -57,15 +59,16 @@ impl TextureImage {
         limits.max_image_width = Some(MAX_TEXTURE_SIDE);
         limits.max_image_height = Some(MAX_TEXTURE_SIDE);
         reader.limits(limits);
-        let rgb = reader.decode().map_err(|e| fail(e.to_string()))?.into_rgb8();
-        let (width, height) = rgb.dimensions();
+        let rgba = reader.decode().map_err(|e| fail(e.to_string()))?.into_rgba8();
+        let (width, height) = rgba.dimensions();
         if width == 0 || height == 0 {
             return Err(fail(format!("the image is empty ({width}x{height})")));
         }
-        let texels = rgb
+        // The core's texels: transparency (255 - alpha) in the top byte, so opaque texels are `0x00RRGGBB`.
+        let texels = rgba
             .as_raw()
-            .chunks_exact(3)
-            .map(|p| (u32::from(p[0]) << 16) | (u32::from(p[1]) << 8) | u32::from(p[2]))
+            .chunks_exact(4)
+            .map(|p| (u32::from(255 - p[3]) << 24) | (u32::from(p[0]) << 16) | (u32::from(p[1]) << 8) | u32::from(p[2]))
             .collect();
         Ok(Self { width, height, texels })
     }

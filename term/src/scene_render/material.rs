@@ -71,6 +71,8 @@ pub fn part_material<'a>(
         glow_map,
         filter: m.filter,
         wrap: m.wrap,
+        opacity: mtl.map_or(1.0, |mtl| mtl.opacity),
+        alpha_cutoff: mtl.and_then(|mtl| mtl.alpha_cutoff),
     })
 }
 
