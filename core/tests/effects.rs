@@ -176,6 +176,27 @@ fn a_black_glow_map_changes_nothing() {
 }
 
 #[test]
+fn a_white_occlusion_map_changes_nothing_and_a_black_one_takes_the_ambient_light() {
+    let f = Fixture::new();
+    let (white, black) = ([0xFFFFFF], [0x000000]);
+    let (plain, v, _) = render(&f, base_material(&f), &[sun()], false);
+    assert!(!v.occlusion_map);
+    let occluded = |map| Material { occlusion_map: Some(solid(map)), ..base_material(&f) };
+    let (mapped, v, _) = render(&f, occluded(&white), &[sun()], false);
+    assert!(v.occlusion_map);
+    assert_same(&plain, &mapped, "white occlusion map");
+    // No lights but the ambient: a black map leaves every pixel drawn exactly black.
+    let (ambient_only, _, _) = render(&f, base_material(&f), &[], false);
+    let (dark, v, _) = render(&f, occluded(&black), &[], false);
+    assert!(v.occlusion_map);
+    let background = ambient_only.color[0];
+    let drawn: Vec<usize> = (0..ambient_only.color.len()).filter(|&i| ambient_only.color[i] != background).collect();
+    assert!(drawn.len() > 500, "the torus covers pixels");
+    assert!(drawn.iter().all(|&i| dark.color[i] == [0; 3]), "occluded ambient light");
+    assert!(dark.color.iter().enumerate().all(|(i, c)| drawn.contains(&i) || *c == background));
+}
+
+#[test]
 fn a_zero_strength_point_light_changes_nothing() {
     let f = Fixture::new();
     let (one, v, _) = render(&f, Material { specular: Vec3::ZERO, ..base_material(&f) }, &[sun()], false);

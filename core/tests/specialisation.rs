@@ -55,12 +55,12 @@ const STATES: [(Interpolation, DepthTest, Cull, EdgeArithmetic); 5] = [
 ];
 
 /// Every choice of a variant, each against the general path: 6 shading models, meshes with and without vertex
-/// colours, 13 materials (highlights or none; a diffuse map under each filter and wrap mode; a tangent-space
+/// colours, 14 materials (highlights or none; a diffuse map under each filter and wrap mode; a tangent-space
 /// normal map; an object-space one with a glow map; a specular map; everything at once; two alpha cut-outs by
-/// map, one by opacity), 5 sets of lights (none;
+/// map, one by opacity; an occlusion map), 5 sets of lights (none;
 /// two directional; directional and point; a shadowed sun (filter radius 0) and a fill light; a shadowed sun
 /// (radius 2) and a shadowed lamp (radius 1)) and 2 projections; the fixed-function states of [`STATES`] in turn.
-/// 1,560 draws, clipped ones among them.
+/// 1,680 draws, clipped ones among them.
 #[test]
 fn every_choice_of_a_variant_equals_the_general_path() {
     let torus = Torus::new(1.0, 0.4, 24, 12);
@@ -148,6 +148,7 @@ fn every_choice_of_a_variant_equals_the_general_path() {
         ..base
     });
     materials.push(Material { opacity: 0.4, alpha_cutoff: Some(0.5), ..base });
+    materials.push(Material { occlusion_map: Some(bumps), diffuse: Some(checker), ..base });
 
     // A camera close enough that the near plane cuts the torus, so clipped varyings are compared too.
     let view = look_at(Vec3::new(0.3, 0.5, 1.6), Vec3::ZERO, Vec3::Y).unwrap();
@@ -204,7 +205,7 @@ fn every_choice_of_a_variant_equals_the_general_path() {
             }
         }
     }
-    assert_eq!(draws, 2 * 6 * 2 * 13 * 5);
+    assert_eq!(draws, 2 * 6 * 2 * 14 * 5);
     assert!(clipped > 0);
     seen.assert_every_choice();
 }
@@ -217,6 +218,7 @@ struct Seen {
     normals: Vec<NormalSource>,
     specular: Vec<SpecularSource>,
     glow_map: bool,
+    occlusion_map: bool,
     filters: Vec<(FilterMode, WrapMode)>,
     point_lights: bool,
     shadows: Vec<u32>,
@@ -230,6 +232,7 @@ impl Seen {
         self.vertex_colors |= v.vertex_colors;
         self.albedo_map |= v.albedo_map;
         self.glow_map |= v.glow_map;
+        self.occlusion_map |= v.occlusion_map;
         self.point_lights |= v.point_lights > 0;
         self.affine |= v.state.interpolation == Interpolation::Affine;
         self.two_sided[usize::from(v.two_sided)] = true;
@@ -257,6 +260,7 @@ impl Seen {
 
     fn assert_every_choice(&self) {
         assert!(self.vertex_colors && self.albedo_map && self.glow_map && self.point_lights && self.affine);
+        assert!(self.occlusion_map);
         assert_eq!(self.normals.len(), 6, "normal sources: {:?}", self.normals);
         assert_eq!(self.specular.len(), 3, "specular sources: {:?}", self.specular);
         assert_eq!(self.filters.len(), 4, "filter and wrap modes: {:?}", self.filters);

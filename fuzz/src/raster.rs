@@ -267,6 +267,8 @@ struct ExtrasIn {
     glow_map: bool,
     /// An alpha cut-out: opacity and cut-off, in 255ths.
     cutout: Option<(u8, u8)>,
+    /// The tiny texture is the occlusion map too.
+    occlusion_map: bool,
 }
 
 /// One fuzz input: a scene to draw.
@@ -702,6 +704,7 @@ pub fn run(input: Input) -> Option<DrawStats> {
         }),
         specular_map: texture.filter(|_| extras.specular_map),
         glow_map: texture.filter(|_| extras.glow_map),
+        occlusion_map: texture.filter(|_| extras.occlusion_map),
         filter,
         wrap,
         opacity: extras.cutout.map_or(1.0, |(opacity, _)| f32::from(opacity) / 255.0),

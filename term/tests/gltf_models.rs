@@ -247,9 +247,9 @@ fn texture_transforms_move_texture_coordinates() {
 }
 
 /// A square with a 16x1 RGBA texture, opaque red on the left half and fully transparent green on the right, in
-/// a material of alpha mode `mode` (`"MASK"` or `"OPAQUE"`). Bilinear filtering blends the halves only near
-/// where they meet.
-fn half_clear_square(mode: &str) -> Vec<u8> {
+/// a material of alpha mode `mode` (`"MASK"` or `"OPAQUE"`) and with `more` material keys. Bilinear filtering
+/// blends the halves only near where they meet.
+fn half_clear_square(mode: &str, more: &str) -> Vec<u8> {
     let mut png = Vec::new();
     let mut encoder = png::Encoder::new(&mut png, 16, 1);
     encoder.set_color(png::ColorType::Rgba);
@@ -262,7 +262,7 @@ fn half_clear_square(mode: &str) -> Vec<u8> {
         r#""scenes": [{{"nodes": [0]}}], "nodes": [{{"mesh": 0}}],
         "meshes": [{{"primitives": [{{"attributes": {{"POSITION": {p}, "NORMAL": {n}, "TEXCOORD_0": {t}}},
           "indices": {i}, "material": 0}}]}}],
-        "materials": [{{"alphaMode": "{mode}", "pbrMetallicRoughness": {{"baseColorTexture": {{"index": 0}}}}}}],
+        "materials": [{{"alphaMode": "{mode}", "pbrMetallicRoughness": {{"baseColorTexture": {{"index": 0}}}}{more}}}],
         "textures": [{{"source": 0}}],
         "images": [{{"bufferView": {image}, "mimeType": "image/png"}}]"#
     ))
@@ -271,8 +271,8 @@ fn half_clear_square(mode: &str) -> Vec<u8> {
 #[test]
 fn alpha_mask_cuts_out_what_its_texture_makes_transparent() {
     let dir = tempfile::tempdir().unwrap();
-    fs::write(dir.path().join("mask.glb"), half_clear_square("MASK")).unwrap();
-    fs::write(dir.path().join("opaque.glb"), half_clear_square("OPAQUE")).unwrap();
+    fs::write(dir.path().join("mask.glb"), half_clear_square("MASK", "")).unwrap();
+    fs::write(dir.path().join("opaque.glb"), half_clear_square("OPAQUE", "")).unwrap();
     let model = load_model(dir.path().join("mask.glb"), &ModelOptions::default()).unwrap();
     assert!(model.warnings.is_empty(), "{:?}", model.warnings);
     let material = model.part_material(0).unwrap();
@@ -290,6 +290,39 @@ fn alpha_mask_cuts_out_what_its_texture_makes_transparent() {
     assert_eq!(count(&masked, red), count(&opaque, red), "the opaque half is drawn alike");
     assert_eq!(count(&masked, green), 0, "the transparent half is cut out");
     assert!(count(&masked, [0, 0, 0]) >= count(&opaque, [0, 0, 0]) + count(&opaque, green));
+}
+
+#[test]
+fn the_occlusion_texture_scales_the_ambient_light_by_its_red_channel() {
+    let dir = tempfile::tempdir().unwrap();
+    let occlusion = r#", "occlusionTexture": {"index": 0, "strength": 0.5}"#;
+    fs::write(dir.path().join("occluded.glb"), half_clear_square("OPAQUE", occlusion)).unwrap();
+    let model = load_model(dir.path().join("occluded.glb"), &ModelOptions::default()).unwrap();
+    assert!(model.warnings.is_empty(), "{:?}", model.warnings);
+    // Red 255 on the left stays 1; red 0 on the right becomes 1 + 0.5 (0 - 1) = 0.5, grey 128.
+    let texels = &model.part_material(0).unwrap().occlusion_map.as_ref().unwrap().texels;
+    assert_eq!((texels[7], texels[8]), (0xFF_FFFF, 0x80_8080));
+    let explain = |more: &[&str]| {
+        let mut args = vec!["render", "occluded.glb", "--explain"];
+        args.extend_from_slice(more);
+        String::from_utf8_lossy(&rastty(dir.path(), &args).stdout).into_owned()
+    };
+    assert!(explain(&[]).contains("; occlusion map"), "{}", explain(&[]));
+    assert!(!explain(&["--without", "ambient-occlusion"]).contains("occlusion map"));
+    // Lit by a white ambient light alone (no lights in the scene file), the right half is half as bright.
+    let scene = "ambient = [1, 1, 1]\n\n[camera]\nposition = [0.5, 0.5, 2]\ntarget = [0.5, 0.5, 0]\n\n[[objects]]\nmesh = \"occluded.glb\"\n";
+    fs::write(dir.path().join("scene.toml"), scene).unwrap();
+    let args = ["--background", "000000", "--size", "160x120"];
+    let mut all = vec!["render", "scene.toml", "-o", "ambient.png"];
+    all.extend_from_slice(&args);
+    let output = rastty(dir.path(), &all);
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    let picture = image::open(dir.path().join("ambient.png")).unwrap().to_rgb8();
+    // Red on the left, green on the right: the brightest channel of each.
+    let brightest = |x| picture.get_pixel(x, 60).0.into_iter().max().unwrap();
+    let (left, right) = (brightest(60), brightest(100));
+    assert_eq!(left, 255, "the unoccluded half in full ambient light");
+    assert!(right.abs_diff(left / 2) <= 1, "the occluded half is half as bright: {left}, {right}");
 }
 
 #[test]

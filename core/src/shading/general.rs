@@ -131,7 +131,10 @@ impl<'a> GeneralShader<'a> {
         };
         let highlights = variant.specular != SpecularSource::None;
         let to_eye = if highlights { (self.transforms.eye - v.world).normalize_or_zero() } else { Vec3::ZERO };
-        let mut diffuse = self.lights.ambient;
+        let mut diffuse = match m.occlusion_map {
+            Some(map) if variant.occlusion_map => self.lights.ambient.mul_elem(unpack_rgb888(self.texel(&map, v.uv))),
+            _ => self.lights.ambient,
+        };
         let mut specular = Vec3::ZERO;
         for light in self.lights.lights {
             let to_light = match light.kind {

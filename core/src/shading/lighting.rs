@@ -13,7 +13,8 @@ use super::{LightKind, Lighting};
 use crate::math::{Vec3, float};
 use crate::pipeline::{BATCH_SIZE, lanes};
 
-/// Fills `s.diffuse` (and `s.specular` when `specular`) with the light arriving at each fragment.
+/// Fills `s.diffuse` (and `s.specular` when `specular`) with the light arriving at each fragment: the ambient
+/// light (`s.ambient` when `occluded`, else the lights' own), then each light's.
 ///
 /// Per light: `color * max(0, n . l) * shadow` to the diffuse light and, with `specular`,
 /// `color * max(0, n . h)^shininess * shadow` to the specular light where `n . l > 0` (Blinn, "Models of light
@@ -26,9 +27,10 @@ pub(crate) fn light<const CAPS: u32>(
     eye: Vec3,
     shininess: f32,
     specular: bool,
+    occluded: bool,
 ) {
     let len = s.len;
-    s.diffuse = Column3::splat(lights.ambient);
+    s.diffuse = if occluded { s.ambient } else { Column3::splat(lights.ambient) };
     if specular {
         s.specular = Column3::ZERO;
         // The direction to the eye, once for every light.

@@ -1,4 +1,4 @@
-//! Reading a draw's maps over a batch, and the colour maps: albedo, specular colour and glow.
+//! Reading a draw's maps over a batch, and the colour maps: albedo, specular colour, glow and occlusion.
 
 use core::marker::PhantomData;
 
@@ -48,6 +48,16 @@ pub(crate) fn specular_color<F: Filter, W: Wrap>(
     specular: Vec3,
 ) {
     modulated(&mut s.specular_color, &s.uv, maps, map, Some(&Column3::splat(specular)), s.len);
+}
+
+/// Ambient light: `ambient` times the occlusion map, into `s.ambient`.
+pub(crate) fn occluded_ambient<F: Filter, W: Wrap>(
+    s: &mut Scratch,
+    maps: &mut MapReader<F, W>,
+    map: &Texture<'_>,
+    ambient: Vec3,
+) {
+    modulated(&mut s.ambient, &s.uv, maps, map, Some(&Column3::splat(ambient)), s.len);
 }
 
 /// Emission: the glow map.

@@ -45,6 +45,9 @@ pub struct Material<'a> {
     pub specular_map: Option<Texture<'a>>,
     /// Light the surface emits itself, added after lighting.
     pub glow_map: Option<Texture<'a>>,
+    /// Scales the ambient light per texel, channel by channel (glTF's occlusion texture, whose red channel and
+    /// strength a loader turns into grey texels). Read by per-pixel lighting only.
+    pub occlusion_map: Option<Texture<'a>>,
     /// Filter of every map.
     pub filter: FilterMode,
     /// Wrap mode of every map.
@@ -77,6 +80,7 @@ impl Material<'_> {
             normal_map: None,
             specular_map: None,
             glow_map: None,
+            occlusion_map: None,
             filter: FilterMode::Bilinear,
             wrap: WrapMode::Repeat,
             opacity: 1.0,

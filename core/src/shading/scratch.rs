@@ -28,6 +28,8 @@ pub(crate) struct Scratch {
     pub view: Column3,
     /// Albedo: material colour, times the diffuse map.
     pub albedo: Column3,
+    /// Ambient light scaled by the occlusion map.
+    pub ambient: Column3,
     /// Light arriving: ambient plus diffuse.
     pub diffuse: Column3,
     /// Specular light arriving.
@@ -56,6 +58,7 @@ impl Scratch {
             facing: [1.0; BATCH_SIZE],
             view: v3,
             albedo: v3,
+            ambient: v3,
             diffuse: v3,
             specular: v3,
             specular_color: v3,

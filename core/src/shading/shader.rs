@@ -5,7 +5,7 @@ use core::marker::PhantomData;
 use super::capabilities::{self, has};
 use super::columns::{self, Column2, Column3};
 use super::light_terms::{face_light, vertex_light};
-use super::maps::{MapReader, albedo, glow, specular_color};
+use super::maps::{MapReader, albedo, glow, occluded_ambient, specular_color};
 use super::normals::{self, object_map, tangent_map};
 use super::scratch::Scratch;
 use super::varyings::{Slot, SurfaceVaryings};
@@ -133,7 +133,14 @@ where
             _ => s.albedo = Column3::splat(m.color),
         }
         let specular = v.specular != SpecularSource::None;
-        lighting::light::<CAPS>(s, &self.lights, self.transforms.eye, m.shininess, specular);
+        let occluded = match m.occlusion_map {
+            Some(map) if U::PRESENT && v.occlusion_map => {
+                occluded_ambient(s, maps, &map, self.lights.ambient);
+                true
+            }
+            _ => false,
+        };
+        lighting::light::<CAPS>(s, &self.lights, self.transforms.eye, m.shininess, specular, occluded);
         match (v.specular, m.specular_map) {
             (SpecularSource::Map, Some(map)) if U::PRESENT => specular_color(s, maps, &map, m.specular),
             _ => s.specular_color = Column3::splat(m.specular),

@@ -110,6 +110,8 @@ pub struct Variant {
     pub specular: SpecularSource,
     /// The glow map is added.
     pub glow_map: bool,
+    /// The ambient light is scaled by the occlusion map (per-pixel lighting).
+    pub occlusion_map: bool,
     /// Fragments discarded by alpha.
     pub cutout: Cutout,
     /// Back faces are lit as seen from behind: per-pixel lighting of a draw that does not cull back faces turns
@@ -155,7 +157,7 @@ impl Variant {
     ///   shading only, as its albedo.
     /// - Maps are sampled only on a mesh with texture coordinates; without, the draw is untextured. The albedo map
     ///   serves every model that colours (unlit, flat, Gouraud, per-pixel), the specular and glow maps the lit
-    ///   ones, normal maps per-pixel lighting only. The depth and normals views read no map.
+    ///   ones, normal and occlusion maps per-pixel lighting only. The depth and normals views read no map.
     /// - A tangent-space normal map needs `tangents` (one per vertex), and only then are tangents interpolated.
     /// - Lights reach the lit models: per triangle (flat, at its centroid), per vertex (Gouraud) or per pixel.
     ///   Shadow maps are read per pixel only.
@@ -227,6 +229,7 @@ impl Variant {
         };
         let albedo_map = colored && material.diffuse.is_some() && uvs;
         let glow_map = lit && material.glow_map.is_some() && uvs;
+        let occlusion_map = per_pixel && material.occlusion_map.is_some() && uvs;
         let cutout = match material.alpha_cutoff {
             Some(cutoff) if albedo_map => Cutout::Map(cutoff),
             Some(cutoff) if colored && !material.keeps(255, cutoff) => Cutout::Everything,
@@ -239,6 +242,7 @@ impl Variant {
             world: per_pixel && (specular != SpecularSource::None || point_lights > 0 || shadowed_lights > 0),
             uvs: albedo_map
                 || glow_map
+                || occlusion_map
                 || specular == SpecularSource::Map
                 || matches!(normals, NormalSource::TangentMap | NormalSource::ObjectMap),
             tangents: normals == NormalSource::TangentMap,
@@ -246,6 +250,7 @@ impl Variant {
             normals,
             specular,
             glow_map,
+            occlusion_map,
             cutout,
             two_sided: per_pixel && state.cull != Cull::Back,
             filter: material.filter,
@@ -321,6 +326,9 @@ impl fmt::Display for Variant {
         }
         if self.glow_map {
             f.write_str("; glow map")?;
+        }
+        if self.occlusion_map {
+            f.write_str("; occlusion map")?;
         }
         if self.two_sided {
             f.write_str("; two-sided")?;

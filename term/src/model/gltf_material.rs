@@ -70,10 +70,12 @@ pub(crate) fn convert(
     let base = if base.is_finite() { base.max(Vec3::ZERO).min(Vec3::ONE) } else { Vec3::ONE };
     let (base_texture, normal_texture) = (pbr.base_color_texture(), material.normal_texture());
     let emissive_texture = material.emissive_texture();
+    let occlusion_texture = material.occlusion_texture();
     let sets = [
         ("base colour", base_texture.as_ref().map(Info::tex_coord)),
         ("normal", normal_texture.as_ref().map(|n| n.tex_coord())),
         ("emissive", emissive_texture.as_ref().map(Info::tex_coord)),
+        ("occlusion", occlusion_texture.as_ref().map(|o| o.tex_coord())),
     ];
     for (role, set) in sets {
         if let Some(set) = set.filter(|&set| set != 0) {
@@ -101,9 +103,8 @@ pub(crate) fn convert(
     if pbr.metallic_roughness_texture().is_some() {
         warn(format!("{label}: the metallic-roughness texture is not read; its factors are used"));
     }
-    if material.occlusion_texture().is_some() {
-        warn(format!("{label}: the occlusion texture is not drawn yet"));
-    }
+    let occlusion_map = occlusion_texture
+        .and_then(|o| image(o.texture().source().index()).map(|map| occlusion_grey(map, o.strength())));
     let alpha_cutoff = match material.alpha_mode() {
         gltf::material::AlphaMode::Opaque => None,
         // The specification's default cut-off is 0.5; one that is not finite cuts everything out.
@@ -124,6 +125,7 @@ pub(crate) fn convert(
         texture,
         normal_map,
         glow_map,
+        occlusion_map,
         specular: Some(specular),
         shininess: Some(shininess),
         double_sided: material.double_sided(),
@@ -143,6 +145,18 @@ fn highlight(base: Vec3, metallic: f32, roughness: f32) -> (Vec3, f32) {
     let a = roughness * roughness;
     let shininess = if a > 0.0 { 2.0 / (a * a) - 2.0 } else { SHININESS_RANGE.1 };
     (f0, shininess.clamp(SHININESS_RANGE.0, SHININESS_RANGE.1))
+}
+
+/// glTF's occlusion texture as grey texels: its red channel `r` (in `[0, 1]`) becomes `1 + strength (r - 1)`
+/// (the specification's `lerp(1, r, strength)`, strength clamped to `[0, 1]`), in every channel, opaque.
+fn occlusion_grey(mut map: TextureImage, strength: f32) -> TextureImage {
+    let strength = finite_unit(strength, 1.0);
+    for t in &mut map.texels {
+        let r = ((*t >> 16) & 0xFF) as f32 / 255.0;
+        let grey = ((1.0 + strength * (r - 1.0)) * 255.0).round().clamp(0.0, 255.0) as u32;
+        *t = grey * 0x01_0101;
+    }
+    map
 }
 
 /// `value` clamped to `[0, 1]`, or `default` when it is not finite.
@@ -200,6 +214,15 @@ mod tests {
         // a = 0.25: 2 / 0.0625 - 2 = 30.
         assert_eq!(highlight(red, 1.0, 0.5).1, 30.0);
         assert_eq!(highlight(red, 0.0, 0.0).1, 1024.0);
+    }
+
+    #[test]
+    fn occlusion_takes_the_red_channel_at_its_strength() {
+        let map = TextureImage { width: 3, height: 1, texels: vec![0xFF00_00FF, 0x0080_FFFF, 0x00FF_0000] };
+        assert_eq!(occlusion_grey(map.clone(), 1.0).texels, [0x00_0000, 0x80_8080, 0xFF_FFFF]);
+        // Half strength: 1 + 0.5 (r - 1), so black becomes 0.5 (128) and 0x80 (0.502) 0.751 (192).
+        assert_eq!(occlusion_grey(map.clone(), 0.5).texels, [0x80_8080, 0xC0_C0C0, 0xFF_FFFF]);
+        assert_eq!(occlusion_grey(map, 0.0).texels, [0xFF_FFFF; 3]);
     }
 
     #[test]

@@ -26,6 +26,9 @@ pub struct Material {
     /// Emitted light, added to the lit colour (glTF's emissive texture times its factor and strength, or the
     /// factor alone as one texel).
     pub glow_map: Option<TextureImage>,
+    /// Scales the ambient light per texel (glTF's occlusion texture: its red channel `r` as the grey
+    /// `1 + strength (r - 1)`).
+    pub occlusion_map: Option<TextureImage>,
     /// The highlight's colour, when the file gives one (glTF: from metallic and roughness); `None` keeps the
     /// renderer's default.
     pub specular: Option<Vec3>,
@@ -48,6 +51,7 @@ impl Default for Material {
             texture: None,
             normal_map: None,
             glow_map: None,
+            occlusion_map: None,
             specular: None,
             shininess: None,
             double_sided: false,

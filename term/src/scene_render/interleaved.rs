@@ -21,6 +21,8 @@ pub enum MapRole {
     Specular,
     /// The glow map.
     Glow,
+    /// The occlusion map (the part's own: scene files have no key for it).
+    Occlusion,
 }
 
 /// Interleaved buffers already made, by the addresses of their images in order: parts (of any object) with the
@@ -44,23 +46,24 @@ struct Place {
 #[derive(Clone, Debug)]
 pub struct PartMaps {
     /// Per [`MapRole`], indexed by its discriminant.
-    places: [Option<Place>; 4],
+    places: [Option<Place>; 5],
 }
 
 impl PartMaps {
     /// No map interleaved: every map is read from its image.
-    pub const NONE: Self = Self { places: [None, None, None, None] };
+    pub const NONE: Self = Self { places: [None, None, None, None, None] };
 
     /// Interleaves the maps that part `part_index` of `object` has, whether or not their effects are switched on
     /// (the switches change per frame), taking and leaving buffers in `made`.
     pub fn new(object: &SceneObject, part_index: usize, made: &mut InterleavedBuffers) -> Self {
         let m = &object.material;
         let mtl = object.model.part_material(part_index);
-        let images: [Option<&TextureImage>; 4] = [
+        let images: [Option<&TextureImage>; 5] = [
             m.diffuse_over(mtl),
             m.normal_over(mtl).map(|(image, _)| image),
             m.specular_map.as_deref(),
             m.glow_over(mtl),
+            mtl.and_then(|mtl| mtl.occlusion_map.as_ref()),
         ];
         let mut part = Self::NONE;
         // Groups of distinct images of one size, in role order; an image in two roles is stored once.

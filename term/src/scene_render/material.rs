@@ -61,6 +61,10 @@ pub fn part_material<'a>(
         Some(image) if effects.glow_maps => Some(texture(MapRole::Glow, image)?),
         _ => None,
     };
+    let occlusion_map = match mtl.and_then(|mtl| mtl.occlusion_map.as_ref()) {
+        Some(image) if effects.ambient_occlusion => Some(texture(MapRole::Occlusion, image)?),
+        _ => None,
+    };
     Ok(Material {
         color: m.color_over(mtl),
         specular,
@@ -69,6 +73,7 @@ pub fn part_material<'a>(
         normal_map,
         specular_map,
         glow_map,
+        occlusion_map,
         filter: m.filter,
         wrap: m.wrap,
         opacity: mtl.map_or(1.0, |mtl| mtl.opacity),

@@ -16,7 +16,7 @@ pub enum SceneEffect {
     GlowMaps,
     /// Shadow maps: every shadow pass, and the shadow lookups of the forward pass.
     Shadows,
-    /// Ambient occlusion after the forward pass.
+    /// Ambient occlusion: the pass after the forward pass, and the occlusion maps of models (glTF).
     AmbientOcclusion,
 }
 
@@ -89,7 +89,7 @@ pub struct EffectToggles {
     pub glow_maps: bool,
     /// Shadow passes and lookups.
     pub shadows: bool,
-    /// Ambient occlusion.
+    /// Ambient occlusion: its pass and occlusion maps.
     pub ambient_occlusion: bool,
 }
 
