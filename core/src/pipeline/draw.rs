@@ -336,7 +336,7 @@ where
         outcome.count(&mut stats);
     }
     if let Some(batch) = batch.as_mut().filter(|b| !b.is_empty()) {
-        shade_batch(&stages, batch, target);
+        stats.fragments += shade_batch(&stages, batch, target);
     }
     target.vertices = memory;
     stats

@@ -401,15 +401,15 @@ impl<E: Edges> Coverage<E> {
                 let z = f.depth(ef[1], ef[2]);
                 let index = base + x as usize;
                 if S::CUTOUT && stages.cutout {
-                    // Shaded when nearer, written when kept and still nearer.
+                    // Shaded when nearer, written (and counted) when kept and still nearer.
                     if stages.depth.nearer(&target.depth, index, z) {
                         let (w1, w2) = stages.interpolator.weights(&setup, ef);
                         let var = v0.interpolate(&var_d1, w1, &var_d2, w2);
                         let fragment = Fragment { x: x as u32, y: y as u32, depth: z, front_facing: f.front_facing };
                         if stages.shader.kept(&fragment, face, &var) && stages.depth.test(&mut target.depth, index, z) {
                             target.color.write(index, stages.shader.fragment(&fragment, face, &var));
+                            shaded += 1;
                         }
-                        shaded += 1;
                     }
                 } else if stages.depth.test(&mut target.depth, index, z) {
                     // A constant: a depth-only shader compiles without the fragment stage.
@@ -530,9 +530,11 @@ impl<E: Edges> Coverage<E> {
                 };
                 if passed {
                     let fractions = stages.interpolator.fractions(&setup, ef);
-                    shaded += 1;
+                    if !CUTOUT {
+                        shaded += 1;
+                    }
                     if batch.push(x as u32, y as u32, z, fractions, index) {
-                        shade_batch(stages, batch, target);
+                        shaded += shade_batch(stages, batch, target);
                     }
                 }
                 e = edges.step(e);
@@ -545,7 +547,8 @@ impl<E: Edges> Coverage<E> {
 
 /// Shades `batch`'s fragments with the stages' shader, writes their colours in the order they were pushed, and
 /// empties it. In a cut-out draw only the fragments kept that still pass the depth test (against the depths
-/// written by those before them) are written, depth and colour.
+/// written by those before them) are written, depth and colour, and their number is returned (the fragments a
+/// cut-out draw counts); 0 otherwise (the others are counted when pushed).
 ///
 /// Not inlined: it runs once per batch, and the draw loop calls it from three places (on the firmware its code
 /// is 4.2 KB).
@@ -554,7 +557,8 @@ pub(crate) fn shade_batch<S, I, Z, C, D, M>(
     stages: &Stages<'_, S, I, Z>,
     batch: &mut FragmentBatch<S::Varyings, S::Face>,
     target: &mut Target<C, D, M>,
-) where
+) -> u64
+where
     S: Shader,
     Z: DepthStage,
     C: ColorBuffer,
@@ -568,15 +572,19 @@ pub(crate) fn shade_batch<S, I, Z, C, D, M>(
         let mut keep = [false; BATCH_SIZE];
         stages.shader.kept_batch(batch, &mut keep);
         let depths = batch.depths();
+        let mut written = 0;
         for (i, &index) in batch.indices().iter().enumerate() {
             if keep[i] && stages.depth.test(&mut target.depth, index, depths[i]) {
                 target.color.write(index, colors[i]);
+                written += 1;
             }
         }
-    } else {
-        for (&index, &color) in batch.indices().iter().zip(&colors) {
-            target.color.write(index, color);
-        }
+        batch.clear();
+        return written;
+    }
+    for (&index, &color) in batch.indices().iter().zip(&colors) {
+        target.color.write(index, color);
     }
     batch.clear();
+    0
 }

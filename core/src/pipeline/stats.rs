@@ -22,7 +22,8 @@ pub struct DrawStats {
     pub clipped: u64,
     /// Reached the pixel loop (they may still cover no pixel centre).
     pub rasterized: u64,
-    /// Fragments that passed the depth test and were shaded.
+    /// Fragments that passed the depth test and were shaded. In a draw that discards fragments
+    /// ([`super::Shader::cutout`]): the fragments kept that passed it, as written.
     pub fragments: u64,
 }
 

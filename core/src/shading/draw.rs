@@ -1,7 +1,7 @@
 //! Drawing a mesh: the variant is resolved once, then the pipeline compiled for its varyings runs.
 
 use super::varyings::Absent;
-use super::{Cutout, LightUse, Lighting, Material, ShadingError, ShadingModel, SurfaceShader, Transforms, Variant};
+use super::{LightUse, Lighting, Material, ShadingError, ShadingModel, SurfaceShader, Transforms, Variant};
 use crate::math::{Vec2, Vec3, Vec4};
 use crate::mesh::Mesh;
 use crate::pipeline::{DrawState, DrawStats, draw};
@@ -27,7 +27,8 @@ pub struct Object<'a> {
 /// for its varyings (each slot carried only when used) and its fragment stages (only the shading model, maps and
 /// light kinds it has), batch by batch.
 ///
-/// A draw cut out entirely ([`Cutout::Everything`]) draws nothing and counts nothing.
+/// A draw cut out entirely ([`crate::shading::Cutout::Everything`]) runs the pipeline, counting its triangles,
+/// and keeps no fragment.
 ///
 /// Shadow maps must be finished before (see [`crate::shadow::draw_shadow_caster`]).
 ///
@@ -40,9 +41,6 @@ pub fn draw_mesh<C: ColorBuffer, D: DepthBuffer, M: VertexMemory>(
     state: &DrawState,
 ) -> Result<(Variant, DrawStats), ShadingError> {
     let variant = Variant::resolve(object, lights.lights.iter().map(LightUse::from), state)?;
-    if variant.cutout == Cutout::Everything {
-        return Ok((variant, DrawStats::default()));
-    }
     let tangents = object.tangents.unwrap_or(&[]);
     let (mesh, state) = (&object.mesh, &variant.state);
     macro_rules! run {

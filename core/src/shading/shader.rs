@@ -52,7 +52,7 @@ where
     /// # Errors
     /// [`ShadingError::Unsupported`] when the slot types do not carry the variant's [`Variant::layout`]
     /// (they may carry more), or `CAPS` ([`capabilities`]) leaves out its shading model, point lights, shadow
-    /// maps or two-sided lighting.
+    /// maps, two-sided lighting or cut-outs.
     pub fn new(
         variant: Variant,
         transforms: Transforms,
@@ -75,7 +75,8 @@ where
         let compiled = has(CAPS, model)
             && (variant.point_lights == 0 || has(CAPS, capabilities::POINT_LIGHTS))
             && (variant.shadowed_lights == 0 || has(CAPS, capabilities::SHADOWS))
-            && (!variant.two_sided || has(CAPS, capabilities::TWO_SIDED));
+            && (!variant.two_sided || has(CAPS, capabilities::TWO_SIDED))
+            && (variant.cutout == Cutout::None || has(CAPS, capabilities::CUTOUT));
         if !(carried && compiled) {
             return Err(ShadingError::Unsupported);
         }
@@ -190,12 +191,13 @@ where
     // Normals and colours are read only by some models: the variant checks the mesh has them.
     const ATTRIBUTES: Attributes = Attributes { normals: false, uvs: U::PRESENT, colors: false };
     const BATCHED: bool = true;
-    const CUTOUT: bool = has(CAPS, capabilities::CUTOUT) && U::PRESENT;
+    const CUTOUT: bool = has(CAPS, capabilities::CUTOUT);
 
-    /// A cut-off tested against the diffuse map's alpha ([`Cutout::Map`]).
+    /// A cut-off tested against the diffuse map's alpha ([`Cutout::Map`]), or a draw cut out whole
+    /// ([`Cutout::Everything`]: counted like any draw, every fragment discarded).
     #[inline(always)]
     fn cutout(&self) -> bool {
-        matches!(self.variant.cutout, Cutout::Map(_))
+        self.variant.cutout != Cutout::None
     }
 
     /// One fragment as a batch of one.
@@ -209,6 +211,8 @@ where
     #[inline(always)]
     fn kept_batch(&self, batch: &FragmentBatch<Self::Varyings, LightTerms>, keep: &mut [bool; BATCH_SIZE]) {
         let (Cutout::Map(cutoff), Some(map), true) = (self.variant.cutout, self.material.diffuse, U::PRESENT) else {
+            // Cut out whole: nothing kept.
+            *keep = [false; BATCH_SIZE];
             return;
         };
         let uv = Column2::gather(batch.len(), |i| batch.varyings(i).uv.get().unwrap_or(Vec2::ZERO));
