@@ -8,7 +8,7 @@ use crate::common;
 use common::{ExactColor, PlainDepth, Torus, assert_same_depths, checker_texels};
 use rastty_core::camera::{look_at, perspective};
 use rastty_core::math::{Mat4, Vec3, Vec4};
-use rastty_core::mesh::{Mesh, compute_tangents};
+use rastty_core::mesh::{Indices, Mesh, compute_tangents};
 use rastty_core::pipeline::{DrawState, DrawStats};
 use rastty_core::shading::{
     Light, Lighting, Material, NormalMap, NormalSource, NormalSpace, Object, ShadingError, ShadingModel,
@@ -257,10 +257,11 @@ fn the_explanation_lists_only_what_is_used() {
     let f = Fixture::new();
     let (_, lean, _) =
         render(&f, Material { diffuse: None, specular: Vec3::ZERO, ..base_material(&f) }, &[sun()], false);
+    // The torus has vertex colours: every model that colours reads them.
     assert_eq!(
         lean.to_string(),
-        "phong; varyings normal; albedo colour; normals interpolated; no specular; lights 1 directional; \
-         perspective-correct, depth less, cull back"
+        "phong; varyings colour+normal; albedo colour x vertex colours; normals interpolated; no specular; lights 1 \
+         directional; perspective-correct, depth less, cull back"
     );
     let flat = [0x8080FF];
     let material = Material {
@@ -279,9 +280,9 @@ fn the_explanation_lists_only_what_is_used() {
     let (_, full, _) = render(&f, material, &[shadowed, lamp], false);
     assert_eq!(
         full.to_string(),
-        "phong; varyings normal+world+uv+tangent; albedo texture; normals tangent-space map; specular map; glow map; \
-         maps nearest/repeat; lights 1 directional + 1 point (1 with shadows, pcf 3x3); perspective-correct, \
-         depth less, cull back"
+        "phong; varyings colour+normal+world+uv+tangent; albedo colour x vertex colours x texture; normals \
+         tangent-space map; specular map; glow map; maps nearest/repeat; lights 1 directional + 1 point (1 with \
+         shadows, pcf 3x3); perspective-correct, depth less, cull back"
     );
 }
 
@@ -312,11 +313,14 @@ fn a_surface_shader_refuses_a_variant_it_was_not_compiled_for() {
     let material = Material { specular: Vec3::splat(0.3), ..Material::plain(Vec3::ONE) };
     let sources = [Light::directional(Vec3::Z, Vec3::ONE), Light::point(Vec3::new(0.0, 2.0, 2.0), Vec3::ONE)];
     let lights = Lighting { ambient: Vec3::ZERO, lights: &sources };
-    let variant = |shading, lights: &[Light<'_>]| {
-        let object = Object { mesh: f.torus.mesh(), tangents: None, transforms: transforms(), shading, material };
+    let uncoloured =
+        Mesh::new(&f.torus.positions, Indices::U16(&f.torus.indices)).unwrap().with_normals(&f.torus.normals).unwrap();
+    let variant_of = |mesh, shading, lights: &[Light<'_>]| {
+        let object = Object { mesh, tangents: None, transforms: transforms(), shading, material };
         Variant::resolve(&object, lights.iter().map(LightUse::from), &DrawState::default()).unwrap()
     };
-    type PerPixel<'a, const CAPS: u32> = SurfaceShader<'a, Vec3, Vec3, Absent, Absent, CAPS>;
+    let variant = |shading, lights: &[Light<'_>]| variant_of(uncoloured, shading, lights);
+    type PerPixel<'a, const CAPS: u32> = SurfaceShader<'a, Vec3, Vec3, Absent, Absent, Absent, CAPS>;
     let new = |v| PerPixel::<{ capabilities::PER_PIXEL }>::new(v, transforms(), &[], material, lights).map(|_| ());
     assert_eq!(new(variant(ShadingModel::Phong, &sources[..1])), Ok(()));
     // Another model, or a point light, is not compiled in.
@@ -324,6 +328,8 @@ fn a_surface_shader_refuses_a_variant_it_was_not_compiled_for() {
     assert_eq!(new(variant(ShadingModel::Phong, &sources)), Err(ShadingError::Unsupported));
     let all = |v| PerPixel::<{ capabilities::ALL }>::new(v, transforms(), &[], material, lights).map(|_| ());
     assert_eq!(all(variant(ShadingModel::Phong, &sources)), Ok(()));
+    // Vertex colours need the colour slot.
+    assert_eq!(all(variant_of(f.torus.mesh(), ShadingModel::Phong, &sources)), Err(ShadingError::Unsupported));
     // Slots that do not carry the layout: per-pixel lighting needs the normal.
     let bare = SurfaceShader::<Absent, Absent, Absent, Absent>::new(
         variant(ShadingModel::Phong, &sources[..1]),

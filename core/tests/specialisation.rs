@@ -54,13 +54,13 @@ const STATES: [(Interpolation, DepthTest, Cull, EdgeArithmetic); 5] = [
     (Interpolation::PerspectiveCorrect, DepthTest::Less, Cull::Back, EdgeArithmetic::Float),
 ];
 
-/// Every choice of a variant, each against the general path: 6 shading models, meshes with and without vertex
-/// colours, 14 materials (highlights or none; a diffuse map under each filter and wrap mode; a tangent-space
-/// normal map; an object-space one with a glow map; a specular map; everything at once; two alpha cut-outs by
-/// map, one by opacity; an occlusion map), 5 sets of lights (none;
-/// two directional; directional and point; a shadowed sun (filter radius 0) and a fill light; a shadowed sun
-/// (radius 2) and a shadowed lamp (radius 1)) and 2 projections; the fixed-function states of [`STATES`] in turn.
-/// 1,680 draws, clipped ones among them.
+/// Every choice of a variant, each against the general path: 6 shading models, 3 meshes (vertex colours and
+/// texture coordinates, both or either alone), 14 materials (highlights or none; a diffuse map under each filter
+/// and wrap mode; a tangent-space normal map; an object-space one with a glow map; a specular map; everything at
+/// once; two alpha cut-outs by map, one by opacity; an occlusion map), 5 sets of lights (none; two directional;
+/// directional and point; a shadowed sun (filter radius 0) and a fill light; a shadowed sun (radius 2) and a
+/// shadowed lamp (radius 1)) and 2 projections; the fixed-function states of [`STATES`] in turn.
+/// 2,520 draws, clipped ones among them.
 #[test]
 fn every_choice_of_a_variant_equals_the_general_path() {
     let torus = Torus::new(1.0, 0.4, 24, 12);
@@ -72,6 +72,12 @@ fn every_choice_of_a_variant_equals_the_general_path() {
         .with_normals(&torus.normals)
         .unwrap()
         .with_uvs(&torus.uvs)
+        .unwrap();
+    let colors_without_uvs = Mesh::new(&torus.positions, Indices::U16(&torus.indices))
+        .unwrap()
+        .with_normals(&torus.normals)
+        .unwrap()
+        .with_colors(&torus.colors)
         .unwrap();
     let texels = checker_texels();
     let checker = Texture::new(&texels, 8, 8).unwrap();
@@ -169,7 +175,7 @@ fn every_choice_of_a_variant_equals_the_general_path() {
     for projection in projections {
         let transforms = Transforms::new(model, view, projection);
         for shading in shadings {
-            for mesh in [with_colors, without_colors] {
+            for mesh in [with_colors, without_colors, colors_without_uvs] {
                 for material in &materials {
                     for lights in &light_sets {
                         let (interpolation, depth_test, cull, edges) = STATES[draws % STATES.len()];
@@ -195,7 +201,7 @@ fn every_choice_of_a_variant_equals_the_general_path() {
             }
         }
     }
-    assert_eq!(draws, 2 * 6 * 2 * 14 * 5);
+    assert_eq!(draws, 2 * 6 * 3 * 14 * 5);
     assert!(clipped > 0);
     seen.assert_every_choice();
 }
@@ -203,7 +209,8 @@ fn every_choice_of_a_variant_equals_the_general_path() {
 /// Which values of each of a variant's choices the matrix reached: a choice it never made proves nothing.
 #[derive(Default)]
 struct Seen {
-    vertex_colors: bool,
+    /// The shading models seen with vertex colours.
+    vertex_colors: Vec<&'static str>,
     albedo_map: bool,
     normals: Vec<NormalSource>,
     specular: Vec<SpecularSource>,
@@ -219,7 +226,9 @@ struct Seen {
 
 impl Seen {
     fn note(&mut self, v: &Variant) {
-        self.vertex_colors |= v.vertex_colors;
+        if v.vertex_colors && !self.vertex_colors.contains(&v.shading.name()) {
+            self.vertex_colors.push(v.shading.name());
+        }
         self.albedo_map |= v.albedo_map;
         self.glow_map |= v.glow_map;
         self.occlusion_map |= v.occlusion_map;
@@ -249,7 +258,8 @@ impl Seen {
     }
 
     fn assert_every_choice(&self) {
-        assert!(self.vertex_colors && self.albedo_map && self.glow_map && self.point_lights && self.affine);
+        assert!(self.albedo_map && self.glow_map && self.point_lights && self.affine);
+        assert_eq!(self.vertex_colors.len(), 4, "models with vertex colours: {:?}", self.vertex_colors);
         assert!(self.occlusion_map);
         assert_eq!(self.normals.len(), 6, "normal sources: {:?}", self.normals);
         assert_eq!(self.specular.len(), 3, "specular sources: {:?}", self.specular);
@@ -283,8 +293,8 @@ fn resolve_keeps_only_what_the_scene_uses() {
         Mesh::new(&torus.positions, Indices::U16(&torus.indices)).unwrap().with_normals(&torus.normals).unwrap();
     assert_eq!(
         explain(ShadingModel::Phong, Vec3::ONE, full, persp).unwrap(),
-        "phong; varyings normal+world+uv; albedo texture; normals interpolated; specular constant; maps \
-         bilinear/repeat; lights 1 directional; perspective-correct, depth less, cull back"
+        "phong; varyings colour+normal+world+uv; albedo colour x vertex colours x texture; normals interpolated; \
+         specular constant; maps bilinear/repeat; lights 1 directional; perspective-correct, depth less, cull back"
     );
     // No texture coordinates: untextured, whatever was asked.
     assert_eq!(
@@ -295,14 +305,14 @@ fn resolve_keeps_only_what_the_scene_uses() {
     // Orthographic: affine interpolation, no per-pixel division.
     assert_eq!(
         explain(ShadingModel::Gouraud, Vec3::ZERO, full, ortho).unwrap(),
-        "gouraud; varyings light+uv; albedo texture; normals per vertex; no specular; maps bilinear/repeat; \
-         lights 1 directional; affine, depth less, cull back"
+        "gouraud; varyings colour+light+uv; albedo colour x vertex colours x texture; normals per vertex; no \
+         specular; maps bilinear/repeat; lights 1 directional; affine, depth less, cull back"
     );
-    // Unlit never lights; with vertex colours it uses them.
+    // Unlit never lights; vertex colours are part of the albedo of every model that colours.
     assert_eq!(
         explain(ShadingModel::Unlit, Vec3::ONE, full, persp).unwrap(),
-        "unlit; varyings colour+uv; albedo vertex colours x texture; maps bilinear/repeat; perspective-correct, \
-         depth less, cull back"
+        "unlit; varyings colour+uv; albedo colour x vertex colours x texture; maps bilinear/repeat; \
+         perspective-correct, depth less, cull back"
     );
     // The views never sample maps.
     assert_eq!(

@@ -420,3 +420,37 @@ fn load_model_text(json: &str) -> Result<Model, LoadError> {
     fs::write(dir.path().join("m.gltf"), json).unwrap();
     load_model(dir.path().join("m.gltf"), &ModelOptions::default())
 }
+
+#[test]
+fn vertex_colours_multiply_the_base_colour_under_every_shading_model() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut w = GltfWriter::new();
+    let (p, n, _, i) = square(&mut w);
+    let colors = w.floats(&[0.0, 0.4, 0.8].repeat(4), "VEC3");
+    let rest = format!(
+        r#""scenes": [{{"nodes": [0]}}], "nodes": [{{"mesh": 0}}],
+        "meshes": [{{"primitives": [{{"attributes": {{"POSITION": {p}, "NORMAL": {n}, "COLOR_0": {colors}}},
+          "indices": {i}, "material": 0}}]}}],
+        "materials": [{{"pbrMetallicRoughness": {{"baseColorFactor": [1, 0.5, 0.5, 1], "metallicFactor": 0}}}}]"#
+    );
+    fs::write(dir.path().join("colored.glb"), w.glb(&rest)).unwrap();
+    let explain =
+        String::from_utf8_lossy(&rastty(dir.path(), &["render", "colored.glb", "--explain"]).stdout).into_owned();
+    assert!(
+        explain.contains("phong; varyings colour+normal") && explain.contains("albedo colour x vertex colours"),
+        "{explain}"
+    );
+    // Lit by a white ambient light alone: the base colour (1, 0.5, 0.5) times the vertex colour (0, 0.4, 0.8) is
+    // (0, 0.2, 0.4), bytes (0, 51, 102), whichever model draws it.
+    let scene = "ambient = [1, 1, 1]\n\n[camera]\nposition = [0.5, 0.5, 2]\ntarget = [0.5, 0.5, 0]\n\n[[objects]]\nmesh = \"colored.glb\"\n";
+    fs::write(dir.path().join("scene.toml"), scene).unwrap();
+    for shading in ["phong", "gouraud", "flat", "unlit"] {
+        let args = ["render", "scene.toml", "-o", "lit.png", "--size", "160x120", "--shading", shading];
+        let output = rastty(dir.path(), &args);
+        assert!(output.status.success(), "{shading}: {}", String::from_utf8_lossy(&output.stderr));
+        let picture = image::open(dir.path().join("lit.png")).unwrap().to_rgb8();
+        for (x, y) in [(80, 60), (50, 30), (110, 90)] {
+            assert_eq!(picture.get_pixel(x, y).0, [0, 51, 102], "{shading} at ({x}, {y})");
+        }
+    }
+}

@@ -11,7 +11,7 @@ use crate::target::{ColorBuffer, DepthBuffer, Target, VertexMemory};
 #[derive(Clone, Copy, Debug)]
 pub struct Object<'a> {
     /// The mesh (normals for Gouraud and per-pixel lighting and the normals view; texture coordinates for maps;
-    /// colours for unlit shading's albedo).
+    /// colours for the albedo).
     pub mesh: Mesh<'a>,
     /// One tangent per vertex ([`crate::mesh::compute_tangents`]), needed by a tangent-space normal map only.
     pub tangents: Option<&'a [Vec4]>,
@@ -44,22 +44,30 @@ pub fn draw_mesh<C: ColorBuffer, D: DepthBuffer, M: VertexMemory>(
     let tangents = object.tangents.unwrap_or(&[]);
     let (mesh, state) = (&object.mesh, &variant.state);
     macro_rules! run {
-        ($a:ty, $b:ty, $u:ty, $t:ty) => {{
-            let shader =
-                SurfaceShader::<$a, $b, $u, $t>::new(variant, object.transforms, tangents, object.material, *lights)?;
+        ($a:ty, $b:ty, $u:ty, $t:ty, $c:ty) => {{
+            let shader = SurfaceShader::<$a, $b, $u, $t, $c>::new(
+                variant,
+                object.transforms,
+                tangents,
+                object.material,
+                *lights,
+            )?;
             draw(target, mesh, &shader, state).map_err(ShadingError::Draw)?
         }};
     }
     let layout = variant.layout();
     let stats = match (layout.first, layout.second, layout.uvs, layout.tangents) {
-        (false, _, false, _) => run!(Absent, Absent, Absent, Absent),
-        (false, _, true, _) => run!(Absent, Absent, Vec2, Absent),
-        (true, false, false, _) => run!(Vec3, Absent, Absent, Absent),
-        (true, false, true, false) => run!(Vec3, Absent, Vec2, Absent),
-        (true, false, true, true) => run!(Vec3, Absent, Vec2, Vec4),
-        (true, true, false, _) => run!(Vec3, Vec3, Absent, Absent),
-        (true, true, true, false) => run!(Vec3, Vec3, Vec2, Absent),
-        (true, true, true, true) => run!(Vec3, Vec3, Vec2, Vec4),
+        // Vertex colours are rare: their draws carry every slot (those not read hold zeros), so that they add one
+        // compiled pipeline, not eight.
+        _ if layout.colors => run!(Vec3, Vec3, Vec2, Vec4, Vec3),
+        (false, _, false, _) => run!(Absent, Absent, Absent, Absent, Absent),
+        (false, _, true, _) => run!(Absent, Absent, Vec2, Absent, Absent),
+        (true, false, false, _) => run!(Vec3, Absent, Absent, Absent, Absent),
+        (true, false, true, false) => run!(Vec3, Absent, Vec2, Absent, Absent),
+        (true, false, true, true) => run!(Vec3, Absent, Vec2, Vec4, Absent),
+        (true, true, false, _) => run!(Vec3, Vec3, Absent, Absent, Absent),
+        (true, true, true, false) => run!(Vec3, Vec3, Vec2, Absent, Absent),
+        (true, true, true, true) => run!(Vec3, Vec3, Vec2, Vec4, Absent),
     };
     Ok((variant, stats))
 }

@@ -24,7 +24,7 @@ use crate::texture::{Bilinear, Clamp, FilterMode, Nearest, Repeat, Texture, Wrap
 /// pipeline skip a triangle).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct GeneralVaryings {
-    /// Vertex colour (unlit with vertex colours).
+    /// Vertex colour (any model that colours, on a mesh with colours).
     pub color: Vec3,
     /// World normal, unit length at the vertices (Gouraud, per-pixel, the normals view).
     pub normal: Vec3,
@@ -75,9 +75,12 @@ impl<'a> GeneralShader<'a> {
         }
     }
 
-    /// `base` times the diffuse map at `uv` when the variant reads it.
-    fn albedo(&self, base: Vec3, uv: Vec2) -> Vec3 {
-        match self.material.diffuse {
+    /// The material colour, times the vertex colour `color` when the variant reads it, times the diffuse map at
+    /// `uv` when it reads that.
+    fn albedo(&self, color: Vec3, uv: Vec2) -> Vec3 {
+        let m = &self.material;
+        let base = if self.variant.vertex_colors { m.color.mul_elem(color) } else { m.color };
+        match m.diffuse {
             Some(map) if self.variant.albedo_map => base.mul_elem(unpack_rgb888(self.texel(&map, uv))),
             _ => base,
         }
@@ -152,7 +155,7 @@ impl<'a> GeneralShader<'a> {
                 specular += light.color * share.map_or(k, |s| k * s);
             }
         }
-        self.finish(self.albedo(m.color, v.uv).mul_elem(diffuse), specular, v.uv)
+        self.finish(self.albedo(v.color, v.uv).mul_elem(diffuse), specular, v.uv)
     }
 }
 
@@ -191,8 +194,10 @@ impl Shader for GeneralShader<'_> {
         if v.tangents {
             out.tangent = self.tangent_frame.world_tangent(self.tangents, i);
         }
+        if v.vertex_colors {
+            out.color = mesh.color(i);
+        }
         match v.shading {
-            ShadingModel::Unlit if v.vertex_colors => out.color = mesh.color(i),
             ShadingModel::Gouraud => {
                 let light = vertex_light(t, &self.lights, self.material.shininess, v, mesh, i);
                 (out.diffuse, out.specular) = (light.diffuse, light.specular);
@@ -218,11 +223,10 @@ impl Shader for GeneralShader<'_> {
     }
 
     fn fragment(&self, f: &Fragment, face: &LightTerms, v: &GeneralVaryings) -> Vec3 {
-        let m = &self.material;
         match self.variant.shading {
-            ShadingModel::Unlit => self.albedo(if self.variant.vertex_colors { v.color } else { m.color }, v.uv),
-            ShadingModel::Flat => self.finish(self.albedo(m.color, v.uv).mul_elem(face.diffuse), face.specular, v.uv),
-            ShadingModel::Gouraud => self.finish(self.albedo(m.color, v.uv).mul_elem(v.diffuse), v.specular, v.uv),
+            ShadingModel::Unlit => self.albedo(v.color, v.uv),
+            ShadingModel::Flat => self.finish(self.albedo(v.color, v.uv).mul_elem(face.diffuse), face.specular, v.uv),
+            ShadingModel::Gouraud => self.finish(self.albedo(v.color, v.uv).mul_elem(v.diffuse), v.specular, v.uv),
             ShadingModel::Phong => self.per_pixel(v, f.front_facing),
             ShadingModel::Depth { near, far } => {
                 let scale = 1.0 / (far - near);

@@ -35,9 +35,10 @@ impl<F: Filter, W: Wrap> MapReader<F, W> {
     }
 }
 
-/// Albedo: `color` times the diffuse map.
-pub(crate) fn albedo<F: Filter, W: Wrap>(s: &mut Scratch, maps: &mut MapReader<F, W>, map: &Texture<'_>, color: Vec3) {
-    modulated(&mut s.albedo, &s.uv, maps, map, Some(&Column3::splat(color)), s.len);
+/// Albedo: its base colour (the material's, times the vertex colours) times the diffuse map.
+pub(crate) fn albedo<F: Filter, W: Wrap>(s: &mut Scratch, maps: &mut MapReader<F, W>, map: &Texture<'_>) {
+    let base = s.albedo;
+    modulated(&mut s.albedo, &s.uv, maps, map, Some(&base), s.len);
 }
 
 /// Specular colour: `specular` times the specular map.

@@ -26,7 +26,7 @@ pub(crate) struct Scratch {
     pub facing: Column,
     /// Unit vector from the surface toward the eye (for highlights).
     pub view: Column3,
-    /// Albedo: material colour, times the diffuse map.
+    /// Albedo: material colour, times the vertex colours, times the diffuse map.
     pub albedo: Column3,
     /// Ambient light scaled by the occlusion map.
     pub ambient: Column3,

@@ -8,7 +8,7 @@ use super::light_terms::{face_light, vertex_light};
 use super::maps::{MapReader, albedo, glow, occluded_ambient, specular_color};
 use super::normals::{self, object_map, tangent_map};
 use super::scratch::Scratch;
-use super::varyings::{Slot, SurfaceVaryings};
+use super::varyings::{Absent, Slot, SurfaceVaryings};
 use super::{Cutout, ShadingError, coarse, views};
 use super::{Layout, Lighting, Material, NormalSource, SpecularSource, Variant, lighting};
 use crate::color::texel_alpha;
@@ -22,12 +22,13 @@ use crate::texture::{Bilinear, Clamp, Filter, FilterMode, Nearest, Repeat, Wrap,
 /// its shading model, maps and lights.
 ///
 /// The varyings it carries are fixed by its type (`A` and `B`: the two `Vec3` slots of the variant's
-/// [`Layout`], `U`: texture coordinates, `T`: tangent; each the value's type or [`super::Absent`]). Everything
+/// [`Layout`], `U`: texture coordinates, `T`: tangent, `C`: vertex colour; each the value's type or
+/// [`Absent`]). Everything
 /// else, the shading model, which maps are sampled and how each light is applied, is decided once per batch of
 /// fragments and runs as a loop compiled for that choice, so the number of compiled loops is the sum of the
 /// choices, not their product.
 #[derive(Clone, Copy, Debug)]
-pub struct SurfaceShader<'a, A, B, U, T, const CAPS: u32 = { capabilities::ALL }> {
+pub struct SurfaceShader<'a, A, B, U, T, C = Absent, const CAPS: u32 = { capabilities::ALL }> {
     transforms: Transforms,
     tangent_frame: TangentFrame,
     tangents: &'a [Vec4],
@@ -36,15 +37,16 @@ pub struct SurfaceShader<'a, A, B, U, T, const CAPS: u32 = { capabilities::ALL }
     variant: Variant,
     /// The slots the variant fills (a general draw may carry more, which then hold zeros).
     layout: Layout,
-    _varyings: PhantomData<(A, B, U, T)>,
+    _varyings: PhantomData<(A, B, U, T, C)>,
 }
 
-impl<'a, A, B, U, T, const CAPS: u32> SurfaceShader<'a, A, B, U, T, CAPS>
+impl<'a, A, B, U, T, C, const CAPS: u32> SurfaceShader<'a, A, B, U, T, C, CAPS>
 where
     A: Slot<Vec3>,
     B: Slot<Vec3>,
     U: Slot<Vec2>,
     T: Slot<Vec4>,
+    C: Slot<Vec3>,
 {
     /// A shader for a resolved `variant`. `tangents` holds one per vertex when the variant reads tangents (may be
     /// empty otherwise).
@@ -64,7 +66,8 @@ where
         let carried = (!layout.first || A::PRESENT)
             && (!layout.second || B::PRESENT)
             && (!layout.uvs || U::PRESENT)
-            && (!layout.tangents || T::PRESENT);
+            && (!layout.tangents || T::PRESENT)
+            && (!layout.colors || C::PRESENT);
         let model = match variant.shading {
             ShadingModel::Unlit => capabilities::UNLIT,
             ShadingModel::Flat => capabilities::FLAT,
@@ -92,8 +95,8 @@ where
         })
     }
 
-    /// Runs the per-pixel lighting stages of the variant over `s`, whose varyings columns are filled, into
-    /// `colors`.
+    /// Runs the per-pixel lighting stages of the variant over `s`, whose varyings columns and base albedo are
+    /// filled, into `colors`.
     fn shade(&self, s: &mut Scratch, colors: &mut [Vec3; BATCH_SIZE]) {
         // One decision per batch: every map of a draw is read with the draw's filter and wrap mode. Without texture
         // coordinates no map is read, and one instance of the stages is compiled.
@@ -129,9 +132,8 @@ where
             }
             _ => {}
         }
-        match m.diffuse {
-            Some(map) if U::PRESENT && v.albedo_map => albedo(s, maps, &map, m.color),
-            _ => s.albedo = Column3::splat(m.color),
+        if let (true, true, Some(map)) = (U::PRESENT, v.albedo_map, m.diffuse) {
+            albedo(s, maps, &map);
         }
         let specular = v.specular != SpecularSource::None;
         let occluded = match m.occlusion_map {
@@ -178,18 +180,20 @@ where
     }
 }
 
-impl<A, B, U, T, const CAPS: u32> Shader for SurfaceShader<'_, A, B, U, T, CAPS>
+impl<A, B, U, T, C, const CAPS: u32> Shader for SurfaceShader<'_, A, B, U, T, C, CAPS>
 where
     A: Slot<Vec3>,
     B: Slot<Vec3>,
     U: Slot<Vec2>,
     T: Slot<Vec4>,
+    C: Slot<Vec3>,
 {
-    type Varyings = SurfaceVaryings<A, B, U, T>;
+    type Varyings = SurfaceVaryings<A, B, U, T, C>;
     /// Flat shading's light for the whole triangle (zero for the other models).
     type Face = LightTerms;
-    // Normals and colours are read only by some models: the variant checks the mesh has them.
-    const ATTRIBUTES: Attributes = Attributes { normals: false, uvs: U::PRESENT, colors: false };
+    // Normals, texture coordinates and colours are read only where the variant says, and it checks the mesh has
+    // them (a vertex-coloured draw carries texture coordinates, as zeros, for a mesh without).
+    const ATTRIBUTES: Attributes = Attributes::NONE;
     const BATCHED: bool = true;
     const CUTOUT: bool = has(CAPS, capabilities::CUTOUT);
 
@@ -253,14 +257,12 @@ where
             ShadingModel::Normals => {
                 (A::capture(|| world_normal(&t.normal, mesh.normal(i))), B::capture(|| Vec3::ZERO))
             }
-            ShadingModel::Unlit => {
-                (A::capture(|| if layout.first { mesh.color(i) } else { Vec3::ZERO }), B::capture(|| Vec3::ZERO))
-            }
             ShadingModel::Gouraud if has(CAPS, capabilities::GOURAUD) => {
                 let light = vertex_light(t, &self.lights, self.material.shininess, v, mesh, i);
                 (A::capture(|| light.diffuse), B::capture(|| light.specular))
             }
-            // Flat shading and the depth view read no slot (nor do models this shader leaves out: `new` refuses them).
+            // Unlit and flat shading and the depth view read neither slot (nor do models this shader leaves out: `new`
+            // refuses them).
             _ => (A::capture(|| Vec3::ZERO), B::capture(|| Vec3::ZERO)),
         };
         SurfaceVaryings {
@@ -273,6 +275,7 @@ where
                 }
                 self.tangent_frame.world_tangent(self.tangents, i)
             }),
+            color: C::capture(|| if layout.colors { mesh.color(i) } else { Vec3::ZERO }),
         }
     }
 
@@ -300,10 +303,19 @@ where
         let second = || Column3::gather(len, |i| batch.varyings(i).second.get().unwrap_or(Vec3::ZERO));
         let uv = || Column2::gather(len, |i| batch.varyings(i).uv.get().unwrap_or(Vec2::ZERO));
         let (m, v) = (&self.material, &self.variant);
+        // The albedo before the diffuse map: the material colour, times the vertex colours.
+        let base_albedo = || {
+            if C::PRESENT && v.vertex_colors {
+                Column3::gather(len, |i| m.color.mul_elem(batch.varyings(i).color.get().unwrap_or(Vec3::ZERO)))
+            } else {
+                Column3::splat(m.color)
+            }
+        };
         const COARSE: u32 = capabilities::UNLIT | capabilities::FLAT | capabilities::GOURAUD;
         match v.shading {
             ShadingModel::Phong if has(CAPS, capabilities::PER_PIXEL) => {
                 let mut s = Scratch::new(len);
+                s.albedo = base_albedo();
                 s.normal = first();
                 if self.layout.second {
                     s.world = second();
@@ -327,7 +339,7 @@ where
             }
             ShadingModel::Normals if has(CAPS, capabilities::VIEWS) => views::normals(first(), len, colors),
             ShadingModel::Unlit | ShadingModel::Flat | ShadingModel::Gouraud if has(CAPS, COARSE) => {
-                let albedo = if self.variant.vertex_colors { first() } else { Column3::splat(m.color) };
+                let albedo = base_albedo();
                 let uv = if self.layout.uvs { uv() } else { Column2::ZERO };
                 let (diffuse, specular) = match v.shading {
                     ShadingModel::Gouraud => (first(), second()),

@@ -94,7 +94,8 @@ impl core::error::Error for ShadingError {}
 pub struct Variant {
     /// The shading model.
     pub shading: ShadingModel,
-    /// The mesh's vertex colours are the albedo (unlit shading of a mesh with colours).
+    /// The albedo is the material colour times the mesh's vertex colours (a model that colours, on a mesh with
+    /// colours).
     pub vertex_colors: bool,
     /// The world position is interpolated (per-pixel lighting with point lights, highlights or shadows).
     pub world: bool,
@@ -137,8 +138,8 @@ pub struct Variant {
 /// Which of a draw's varying slots are carried ([`super::SurfaceVaryings`]): what its pipeline is compiled for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Layout {
-    /// The first `Vec3` slot: the world normal (per-pixel lighting, the normals view), the vertex colour (unlit)
-    /// or the diffuse light (Gouraud).
+    /// The first `Vec3` slot: the world normal (per-pixel lighting, the normals view) or the diffuse light
+    /// (Gouraud).
     pub first: bool,
     /// The second `Vec3` slot: the world position (per-pixel lighting) or the specular light (Gouraud). Only with
     /// the first.
@@ -147,14 +148,16 @@ pub struct Layout {
     pub uvs: bool,
     /// Tangents (a tangent-space normal map). Only with the first slot and texture coordinates.
     pub tangents: bool,
+    /// Vertex colours.
+    pub colors: bool,
 }
 
 impl Variant {
     /// Decides what a draw of `object` under `lights` (one [`LightUse`] per light, as
     /// `scene_lights.lights.iter().map(LightUse::from)` gives) computes.
     ///
-    /// - Normals are read by Gouraud and per-pixel lighting and the normals view only; vertex colours by unlit
-    ///   shading only, as its albedo.
+    /// - Normals are read by Gouraud and per-pixel lighting and the normals view only; vertex colours by every
+    ///   model that colours (unlit, flat, Gouraud, per-pixel), as a factor of its albedo (glTF's `COLOR_0`).
     /// - Maps are sampled only on a mesh with texture coordinates; without, the draw is untextured. The albedo map
     ///   serves every model that colours (unlit, flat, Gouraud, per-pixel), the specular and glow maps the lit
     ///   ones, normal and occlusion maps per-pixel lighting only. The depth and normals views read no map.
@@ -238,7 +241,7 @@ impl Variant {
         let state = object.transforms.adapt(state);
         Ok(Self {
             shading,
-            vertex_colors: shading == ShadingModel::Unlit && present.colors,
+            vertex_colors: colored && present.colors,
             world: per_pixel && (specular != SpecularSource::None || point_lights > 0 || shadowed_lights > 0),
             uvs: albedo_map
                 || glow_map
@@ -267,8 +270,7 @@ impl Variant {
     #[must_use]
     pub fn layout(&self) -> Layout {
         let first = match self.shading {
-            ShadingModel::Unlit => self.vertex_colors,
-            ShadingModel::Flat | ShadingModel::Depth { .. } => false,
+            ShadingModel::Unlit | ShadingModel::Flat | ShadingModel::Depth { .. } => false,
             ShadingModel::Gouraud | ShadingModel::Phong | ShadingModel::Normals => true,
         };
         let second = match self.shading {
@@ -276,7 +278,7 @@ impl Variant {
             ShadingModel::Phong => self.world,
             _ => false,
         };
-        Layout { first, second, uvs: self.uvs, tangents: self.tangents }
+        Layout { first, second, uvs: self.uvs, tangents: self.tangents, colors: self.vertex_colors }
     }
 }
 
@@ -284,13 +286,17 @@ impl fmt::Display for Variant {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let layout = self.layout();
         let (first, second) = match self.shading {
-            ShadingModel::Unlit => ("colour", ""),
             ShadingModel::Gouraud => ("light", "specular light"),
             _ => ("normal", "world"),
         };
         write!(f, "{}; varyings ", self.shading.name())?;
-        let carried =
-            [(layout.first, first), (layout.second, second), (layout.uvs, "uv"), (layout.tangents, "tangent")];
+        let carried = [
+            (layout.colors, "colour"),
+            (layout.first, first),
+            (layout.second, second),
+            (layout.uvs, "uv"),
+            (layout.tangents, "tangent"),
+        ];
         let mut names = carried.iter().filter(|(on, _)| *on).map(|(_, name)| *name);
         match names.next() {
             None => f.write_str("none")?,
@@ -304,8 +310,8 @@ impl fmt::Display for Variant {
         let lit = matches!(self.shading, ShadingModel::Flat | ShadingModel::Gouraud | ShadingModel::Phong);
         if lit || self.shading == ShadingModel::Unlit {
             f.write_str(match (self.vertex_colors, self.albedo_map) {
-                (true, true) => "; albedo vertex colours x texture",
-                (true, false) => "; albedo vertex colours",
+                (true, true) => "; albedo colour x vertex colours x texture",
+                (true, false) => "; albedo colour x vertex colours",
                 (false, true) => "; albedo texture",
                 (false, false) => "; albedo colour",
             })?;

@@ -67,13 +67,12 @@ macro_rules! carried {
 
 carried!(Vec2, Vec3, Vec4);
 
-/// What a draw interpolates, in four slots, each carried or [`Absent`] as its variant's layout says. The two
-/// `Vec3` slots hold what the shading model reads per vertex ([`super::Layout`]): the world normal and the world
-/// position (per-pixel lighting), the vertex colour (unlit), the diffuse and specular light (Gouraud), the world
-/// normal (the normals view). Each component is interpolated on its own with the same weights, so what a slot
-/// means changes no value.
+/// What a draw interpolates, in five slots, each carried or [`Absent`] as its variant's layout says. The first
+/// two `Vec3` slots hold what the shading model reads per vertex ([`super::Layout`]): the world normal and the
+/// world position (per-pixel lighting), the diffuse and specular light (Gouraud), the world normal (the normals
+/// view). Each component is interpolated on its own with the same weights, so what a slot means changes no value.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SurfaceVaryings<A, B, U, T> {
+pub struct SurfaceVaryings<A, B, U, T, C = Absent> {
     /// The first `Vec3` slot.
     pub first: A,
     /// The second `Vec3` slot.
@@ -82,9 +81,11 @@ pub struct SurfaceVaryings<A, B, U, T> {
     pub uv: U,
     /// World-space tangent in `xyz`, handedness in `w`.
     pub tangent: T,
+    /// The vertex colour (part of the albedo of every model that colours).
+    pub color: C,
 }
 
-impl<A: Varyings, B: Varyings, U: Varyings, T: Varyings> Varyings for SurfaceVaryings<A, B, U, T> {
+impl<A: Varyings, B: Varyings, U: Varyings, T: Varyings, C: Varyings> Varyings for SurfaceVaryings<A, B, U, T, C> {
     #[inline(always)]
     fn lerp(&self, o: &Self, t: f32) -> Self {
         Self {
@@ -92,6 +93,7 @@ impl<A: Varyings, B: Varyings, U: Varyings, T: Varyings> Varyings for SurfaceVar
             second: self.second.lerp(&o.second, t),
             uv: self.uv.lerp(&o.uv, t),
             tangent: self.tangent.lerp(&o.tangent, t),
+            color: self.color.lerp(&o.color, t),
         }
     }
     #[inline(always)]
@@ -101,6 +103,7 @@ impl<A: Varyings, B: Varyings, U: Varyings, T: Varyings> Varyings for SurfaceVar
             second: self.second.sub(&o.second),
             uv: self.uv.sub(&o.uv),
             tangent: self.tangent.sub(&o.tangent),
+            color: self.color.sub(&o.color),
         }
     }
     #[inline(always)]
@@ -110,10 +113,15 @@ impl<A: Varyings, B: Varyings, U: Varyings, T: Varyings> Varyings for SurfaceVar
             second: self.second.interpolate(&d1.second, w1, &d2.second, w2),
             uv: self.uv.interpolate(&d1.uv, w1, &d2.uv, w2),
             tangent: self.tangent.interpolate(&d1.tangent, w1, &d2.tangent, w2),
+            color: self.color.interpolate(&d1.color, w1, &d2.color, w2),
         }
     }
     #[inline(always)]
     fn is_finite(&self) -> bool {
-        self.first.is_finite() && self.second.is_finite() && self.uv.is_finite() && self.tangent.is_finite()
+        self.first.is_finite()
+            && self.second.is_finite()
+            && self.uv.is_finite()
+            && self.tangent.is_finite()
+            && self.color.is_finite()
     }
 }

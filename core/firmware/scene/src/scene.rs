@@ -46,11 +46,11 @@ const AMBIENT: Vec3 = Vec3::new(0.12, 0.12, 0.15);
 const STATE: DrawState = DrawState::DEFAULT;
 
 /// The slots the scene's variant carries: the normal and the world position (for the highlight), nothing else.
-const LAYOUT: Layout = Layout { first: true, second: true, uvs: false, tangents: false };
+const LAYOUT: Layout = Layout { first: true, second: true, uvs: false, tangents: false, colors: false };
 
 /// The shader the firmware links: per-pixel lighting from directional lights, the normal and the world position
 /// carried.
-pub type SpotShader<'a> = SurfaceShader<'a, Vec3, Vec3, Absent, Absent, { capabilities::PER_PIXEL }>;
+pub type SpotShader<'a> = SurfaceShader<'a, Vec3, Vec3, Absent, Absent, Absent, { capabilities::PER_PIXEL }>;
 
 /// One frame's scene: Spot, its place and the light, built once and drawn into each strip.
 #[derive(Clone, Copy, Debug)]
