@@ -546,9 +546,10 @@ impl<E: Edges> Coverage<E> {
 }
 
 /// Shades `batch`'s fragments with the stages' shader, writes their colours in the order they were pushed, and
-/// empties it. In a cut-out draw only the fragments kept that still pass the depth test (against the depths
-/// written by those before them) are written, depth and colour, and their number is returned (the fragments a
-/// cut-out draw counts); 0 otherwise (the others are counted when pushed).
+/// empties it. In a cut-out draw the fragments kept are found first (a batch with none is not shaded), and only
+/// those that still pass the depth test (against the depths written by those before them) are written, depth and
+/// colour; their number is returned (the fragments a cut-out draw counts); 0 otherwise (the others are counted
+/// when pushed).
 ///
 /// Not inlined: it runs once per batch, and the draw loop calls it from three places (on the firmware its code
 /// is 4.2 KB).
@@ -567,10 +568,13 @@ where
 {
     let mut colors = [Vec3::ZERO; BATCH_SIZE];
     batch.resolve();
-    stages.shader.shade_batch(batch, &mut colors);
-    if S::CUTOUT && stages.cutout {
+    let written = if S::CUTOUT && stages.cutout {
         let mut keep = [false; BATCH_SIZE];
         stages.shader.kept_batch(batch, &mut keep);
+        // A batch with nothing kept (a draw cut out whole, a clear stretch of the map) is not shaded.
+        if keep[..batch.len()].contains(&true) {
+            stages.shader.shade_batch(batch, &mut colors);
+        }
         let depths = batch.depths();
         let mut written = 0;
         for (i, &index) in batch.indices().iter().enumerate() {
@@ -579,12 +583,14 @@ where
                 written += 1;
             }
         }
-        batch.clear();
-        return written;
-    }
-    for (&index, &color) in batch.indices().iter().zip(&colors) {
-        target.color.write(index, color);
-    }
+        written
+    } else {
+        stages.shader.shade_batch(batch, &mut colors);
+        for (&index, &color) in batch.indices().iter().zip(&colors) {
+            target.color.write(index, color);
+        }
+        0
+    };
     batch.clear();
-    0
+    written
 }

@@ -111,13 +111,10 @@ impl<'a> GeneralShader<'a> {
 
     /// Per-pixel lighting: the shading normal (interpolated or from a map), then each light with its shadow map.
     ///
-    /// Two-sided, a back-facing fragment's normal and tangent frame are turned round (and an object-space map's
-    /// normal after it is read).
+    /// Two-sided, a back-facing fragment's geometric and shading normals are turned round.
     fn per_pixel(&self, v: &GeneralVaryings, front_facing: bool) -> Vec3 {
         let (variant, m) = (&self.variant, &self.material);
-        let sign = if variant.two_sided && !front_facing { -1.0 } else { 1.0 };
-        let (normal, tangent) =
-            if variant.two_sided { (v.normal * sign, v.tangent * sign) } else { (v.normal, v.tangent) };
+        let (normal, tangent) = (v.normal, v.tangent);
         let geometric = normal.normalize_or_zero();
         let shading = match (variant.normals, m.normal_map) {
             (NormalSource::TangentMap, Some(map)) => {
@@ -127,11 +124,12 @@ impl<'a> GeneralShader<'a> {
                 (t * d.x + b * d.y + n * d.z).normalize_or_zero()
             }
             (NormalSource::ObjectMap, Some(map)) => {
-                let n = (self.transforms.normal * decode_normal(self.texel(&map.texture, v.uv))).normalize_or_zero();
-                if variant.two_sided { n * sign } else { n }
+                (self.transforms.normal * decode_normal(self.texel(&map.texture, v.uv))).normalize_or_zero()
             }
             _ => geometric,
         };
+        let (geometric, shading) =
+            if variant.two_sided && !front_facing { (geometric * -1.0, shading * -1.0) } else { (geometric, shading) };
         let highlights = variant.specular != SpecularSource::None;
         let to_eye = if highlights { (self.transforms.eye - v.world).normalize_or_zero() } else { Vec3::ZERO };
         let mut diffuse = match m.occlusion_map {

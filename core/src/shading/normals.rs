@@ -7,15 +7,14 @@ use crate::math::{Mat3, Vec3};
 use crate::pipeline::{BATCH_SIZE, lanes};
 use crate::texture::{Filter, Texture, Wrap};
 
-/// Two-sided lighting: the interpolated normal, tangent and handedness of each back-facing fragment turned round
-/// (times [`Scratch::facing`]), so that its geometric normal and its tangent frame, and so a tangent-space map's
-/// normal, come out exactly negated.
+/// Two-sided lighting: the geometric and shading normals of each back-facing fragment turned round (times
+/// [`Scratch::facing`]). Turning round the interpolated normal and tangent frame before would give the same bits:
+/// each normal is a sum of their products, normalised, and negating every term negates it exactly.
 pub(crate) fn face_the_viewer(s: &mut Scratch) {
     for i in 0..lanes(s.len) {
         let sign = s.facing[i];
-        s.normal.set(i, s.normal.get(i) * sign);
-        s.tangent.set(i, s.tangent.get(i) * sign);
-        s.handedness[i] *= sign;
+        s.geometric.set(i, s.geometric.get(i) * sign);
+        s.shading.set(i, s.shading.get(i) * sign);
     }
 }
 
@@ -46,14 +45,12 @@ pub(crate) fn tangent_map<F: Filter, W: Wrap>(s: &mut Scratch, maps: &mut MapRea
     s.shading.normalize(s.len, &mut s.lane);
 }
 
-/// Object-space normal map: the decoded texel through the normal matrix, normalised; turned round for back faces
-/// when `two_sided` ([`Scratch::facing`]).
+/// Object-space normal map: the decoded texel through the normal matrix, normalised.
 pub(crate) fn object_map<F: Filter, W: Wrap>(
     s: &mut Scratch,
     maps: &mut MapReader<F, W>,
     map: &Texture<'_>,
     normal_matrix: &Mat3,
-    two_sided: bool,
 ) {
     let mut texels = [0; BATCH_SIZE];
     maps.read(map, &s.uv, &mut texels);
@@ -62,9 +59,4 @@ pub(crate) fn object_map<F: Filter, W: Wrap>(
         s.shading.set(i, *normal_matrix * m);
     }
     s.shading.normalize(s.len, &mut s.lane);
-    if two_sided {
-        for i in 0..lanes(s.len) {
-            s.shading.set(i, s.shading.get(i) * s.facing[i]);
-        }
-    }
 }

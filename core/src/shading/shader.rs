@@ -127,10 +127,12 @@ where
         match (v.normals, m.normal_map) {
             (NormalSource::TangentMap, Some(map)) if T::PRESENT => tangent_map(s, maps, &map.texture),
             (NormalSource::ObjectMap, Some(map)) if U::PRESENT => {
-                let two_sided = has(CAPS, capabilities::TWO_SIDED) && v.two_sided;
-                object_map(s, maps, &map.texture, &self.transforms.normal, two_sided);
+                object_map(s, maps, &map.texture, &self.transforms.normal);
             }
             _ => {}
+        }
+        if has(CAPS, capabilities::TWO_SIDED) && v.two_sided {
+            normals::face_the_viewer(s);
         }
         if let (true, true, Some(map)) = (U::PRESENT, v.albedo_map, m.diffuse) {
             albedo(s, maps, &map);
@@ -330,7 +332,6 @@ where
                 }
                 if has(CAPS, capabilities::TWO_SIDED) && v.two_sided {
                     s.facing = columns::gather(len, |i| if batch.fragment(i).front_facing { 1.0 } else { -1.0 });
-                    normals::face_the_viewer(&mut s);
                 }
                 self.shade(&mut s, colors);
             }
