@@ -1,8 +1,10 @@
 //! Colours: `f32` RGB for shading, packed integers for storage.
 //!
 //! Shading works on [`Vec3`] colours with channels nominally in `[0, 1]` (values above 1, from specular
-//! highlights, saturate when packed). No gamma curve is applied anywhere: colours are stored and shaded in the same
-//! (sRGB-encoded) space, as most small renderers do.
+//! highlights, saturate when packed). No gamma curve is applied in shading: colours are stored and shaded in the
+//! same (sRGB-encoded) space, as most small renderers do. The sRGB transfer functions ([`srgb_to_linear`],
+//! [`SrgbEncoder`]) serve where averaging must be in linear light: the mipmap chains of colour maps
+//! ([`crate::texture::build_mip_chain`]).
 //!
 //! Packed formats:
 //! - **RGB888 in a `u32`**: `0x00RRGGBB` — red in bits 16..24, green in 8..16, blue in 0..8, top byte zero. This
@@ -74,4 +76,75 @@ pub fn rgb565_to_rgb888(p: u16) -> u32 {
     let p = u32::from(p);
     let (r, g, b) = ((p >> 11) & 31, (p >> 5) & 63, p & 31);
     (((r << 3) | (r >> 2)) << 16) | (((g << 2) | (g >> 4)) << 8) | ((b << 3) | (b >> 2))
+}
+
+/// The sRGB decoding of an encoded channel `c` in `[0, 1]` to linear light (IEC 61966-2-1, the piecewise curve
+/// with exponent 2.4).
+///
+/// # Examples
+/// ```
+/// use rastty_core::color::srgb_to_linear;
+/// assert_eq!((srgb_to_linear(0.0), srgb_to_linear(1.0)), (0.0, 1.0));
+/// assert!((srgb_to_linear(0.5) - 0.214).abs() < 1e-3);
+/// ```
+#[must_use]
+pub fn srgb_to_linear(c: f32) -> f32 {
+    if c <= 0.04045 { c / 12.92 } else { float::pow((c + 0.055) / 1.055, 2.4) }
+}
+
+/// Linear light to 8-bit sRGB codes, by table: the boundaries between neighbouring codes (the midpoints of the
+/// encoded scale) decoded to linear light once, and each value's code the number of boundaries at or below it. So
+/// a value gets the code nearest its encoding with 8 comparisons instead of a power, the same on every target.
+#[derive(Clone, Debug)]
+pub struct SrgbEncoder {
+    boundaries: [f32; 255],
+}
+
+impl SrgbEncoder {
+    /// The table: 255 decodings.
+    #[must_use]
+    pub fn new() -> Self {
+        Self { boundaries: core::array::from_fn(|c| srgb_to_linear((c as f32 + 0.5) / 255.0)) }
+    }
+
+    /// The sRGB code, `0..=255`, of the linear value `l` (0 below the range and for NaN, 255 above).
+    ///
+    /// # Examples
+    /// ```
+    /// use rastty_core::color::{SrgbEncoder, srgb_to_linear};
+    /// let encoder = SrgbEncoder::new();
+    /// assert_eq!((encoder.code(0.0), encoder.code(0.5), encoder.code(1.0)), (0, 188, 255));
+    /// assert_eq!(encoder.code(srgb_to_linear(100.0 / 255.0)), 100);
+    /// ```
+    #[must_use]
+    pub fn code(&self, l: f32) -> u32 {
+        self.boundaries.partition_point(|&b| b <= l) as u32
+    }
+}
+
+impl Default for SrgbEncoder {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The table gives the code nearest each value's encoding, computed here in `f64` from the standard's formula
+    /// (values within 10^-4 of a code's edge, where `f32` decoding could tip them, are left out).
+    #[test]
+    fn the_encoder_gives_the_nearest_code() {
+        let encoder = SrgbEncoder::new();
+        let encode = |l: f64| if l <= 0.003_130_8 { l * 12.92 } else { 1.055 * l.powf(1.0 / 2.4) - 0.055 };
+        for i in 0..=20_000 {
+            let l = f64::from(i) / 20_000.0;
+            let scaled = encode(l) * 255.0;
+            if (scaled - scaled.floor() - 0.5).abs() < 1e-4 {
+                continue;
+            }
+            assert_eq!(encoder.code(l as f32), scaled.round() as u32, "linear {l}");
+        }
+    }
 }

@@ -9,8 +9,10 @@
 //! of a material's maps at the same texel, so their texels then come in on the same cache line instead of one line
 //! per map.
 
+mod mip_chain;
 mod sampler;
 
+pub use mip_chain::{MAX_MIP_LEVELS, MipChain, MipContent, build_mip_chain, mip_chain_texels};
 pub use sampler::{Bilinear, Clamp, Filter, FilterMode, Nearest, Repeat, Wrap, WrapMode};
 
 use crate::math::{Vec2, Vec3};

@@ -1,0 +1,273 @@
+//! Mipmap chains: a texture's levels of detail, each half the size of the one above, built once into texels the
+//! caller provides ([`mip_chain_texels`] says how many).
+//!
+//! Each texel of a level is the box-filtered average of the texels of the level above that it covers. A side of
+//! odd length `2n + 1` halves to `n`, and each texel then covers two and a fraction texels: three taps, weighted by
+//! how much of each it covers (the polyphase box of NVIDIA's "Non-Power-of-Two Mipmap Creation", 2005). Colour
+//! maps are averaged in linear light and encoded back to sRGB, so a level is as bright as the texels it stands
+//! for; other maps are averaged as stored. The sums are `f32` in a fixed order, so every target builds the same
+//! chain.
+
+use super::{MAX_TEXTURE_SIZE, Texture, TextureError};
+use crate::color::{SrgbEncoder, srgb_to_linear};
+use crate::math::float;
+
+/// Most levels a chain has, the texture itself included: a side of [`MAX_TEXTURE_SIZE`] (2^14) halves 14 times.
+pub const MAX_MIP_LEVELS: usize = 15;
+
+/// What a texture's texels mean, which decides how its levels are averaged.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MipContent {
+    /// sRGB-encoded colour (diffuse, specular and glow maps): averaged in linear light.
+    Color,
+    /// Values averaged as stored (normal and occlusion maps).
+    Data,
+}
+
+/// A texture and its levels of detail, from the texture itself down to 1x1.
+#[derive(Clone, Copy, Debug)]
+pub struct MipChain<'a> {
+    levels: [Texture<'a>; MAX_MIP_LEVELS],
+    count: usize,
+}
+
+impl<'a> MipChain<'a> {
+    /// The levels: the texture itself first, then each half the size of the one before, the last 1x1.
+    #[must_use]
+    pub fn levels(&self) -> &[Texture<'a>] {
+        &self.levels[..self.count]
+    }
+}
+
+/// A side of `size` texels one level down: half, rounded down, and at least 1 (OpenGL's rule).
+const fn half(size: u32) -> u32 {
+    if size > 1 { size / 2 } else { 1 }
+}
+
+/// The sizes of the levels of a `width x height` texture, its own first, down to 1x1.
+fn level_sizes(width: u32, height: u32) -> impl Iterator<Item = (u32, u32)> {
+    core::iter::successors(Some((width, height)), |&(w, h)| (w > 1 || h > 1).then_some((half(w), half(h))))
+}
+
+/// The texels the levels below a `width x height` texture need together: the length of the buffer
+/// [`build_mip_chain`] fills. 0 for a size no texture has (empty, or larger than [`MAX_TEXTURE_SIZE`]).
+///
+/// # Examples
+/// ```
+/// use rastty_core::texture::mip_chain_texels;
+/// // 512x512 + 256x256 + ... + 1x1.
+/// assert_eq!(mip_chain_texels(1024, 1024), 349_525);
+/// // 2x1, then 1x1.
+/// assert_eq!(mip_chain_texels(5, 3), 3);
+/// ```
+#[must_use]
+pub fn mip_chain_texels(width: u32, height: u32) -> usize {
+    if width == 0 || height == 0 || width > MAX_TEXTURE_SIZE || height > MAX_TEXTURE_SIZE {
+        return 0;
+    }
+    level_sizes(width, height).skip(1).map(|(w, h)| w as usize * h as usize).sum()
+}
+
+/// Builds the levels of detail of `texture`, whose texels mean `content`, into `out`, which must hold
+/// [`mip_chain_texels`] texels; the chain borrows both.
+///
+/// # Errors
+/// [`TextureError::Length`] when `out` is not of that length.
+///
+/// # Examples
+/// ```
+/// use rastty_core::texture::{MipContent, Texture, build_mip_chain, mip_chain_texels};
+/// // White and black: their average in linear light is 0.5, sRGB code 188, not the 128 of the codes' average.
+/// let texels = [0xFF_FFFF, 0x00_0000];
+/// let mut levels = vec![0; mip_chain_texels(2, 1)];
+/// let chain = build_mip_chain(Texture::new(&texels, 2, 1).unwrap(), MipContent::Color, &mut levels).unwrap();
+/// assert_eq!(chain.levels().len(), 2);
+/// assert_eq!(levels, [0xBC_BCBC]);
+/// ```
+pub fn build_mip_chain<'a>(
+    texture: Texture<'a>,
+    content: MipContent,
+    out: &'a mut [u32],
+) -> Result<MipChain<'a>, TextureError> {
+    let (width, height) = (texture.width(), texture.height());
+    let expected = mip_chain_texels(width, height);
+    if out.len() != expected {
+        return Err(TextureError::Length { expected, actual: out.len() });
+    }
+    // Each 8-bit code's value in the space it is averaged in: 256 conversions instead of one per texel read.
+    let decode: [f32; 256] = core::array::from_fn(|code| {
+        let c = code as f32 / 255.0;
+        match content {
+            MipContent::Color => srgb_to_linear(c),
+            MipContent::Data => c,
+        }
+    });
+    let encoder = SrgbEncoder::new();
+    let mut levels = [texture; MAX_MIP_LEVELS];
+    let mut count = 1;
+    let mut rest = out;
+    for (w, h) in level_sizes(width, height).skip(1) {
+        let (level, tail) = core::mem::take(&mut rest).split_at_mut(w as usize * h as usize);
+        rest = tail;
+        downsample(&levels[count - 1], content, &decode, &encoder, level, w, h);
+        levels[count] = Texture::new(level, w, h)?;
+        count += 1;
+    }
+    Ok(MipChain { levels, count })
+}
+
+/// The taps along one side of a level `size` texels long, for its texel `i`: the texels of the side above
+/// (`above` texels long) it covers, each with the share of it covered, the shares summing to 1. Unused taps
+/// weigh 0.
+fn taps(above: u32, size: u32, i: u32) -> [(u32, f32); 3] {
+    if above == size {
+        // A side already 1 texel long while the other still halves.
+        [(i, 1.0), (i, 0.0), (i, 0.0)]
+    } else if above == 2 * size {
+        [(2 * i, 0.5), (2 * i + 1, 0.5), (2 * i + 1, 0.0)]
+    } else {
+        // above = 2 size + 1: texel i spans [i above / size, (i + 1) above / size) of the side above, which covers
+        // texel 2i for (size - i) / size, texel 2i + 1 whole and texel 2i + 2 for (i + 1) / size; divided by the
+        // span's length, above / size.
+        let length = above as f32;
+        [(2 * i, (size - i) as f32 / length), (2 * i + 1, size as f32 / length), (2 * i + 2, (i + 1) as f32 / length)]
+    }
+}
+
+/// Fills `out`, a `width x height` level, from `above`, the level above it: each texel the weighted sum of the
+/// texels it covers, colour channels through `decode` and encoded back as `content` says (through `encoder` for
+/// colour), the transparency byte as stored.
+fn downsample(
+    above: &Texture<'_>,
+    content: MipContent,
+    decode: &[f32; 256],
+    encoder: &SrgbEncoder,
+    out: &mut [u32],
+    width: u32,
+    height: u32,
+) {
+    let (above_width, above_height) = (above.width(), above.height());
+    for y in 0..height {
+        let rows = taps(above_height, height, y);
+        for x in 0..width {
+            let columns = taps(above_width, width, x);
+            let mut sum = [0.0f32; 4];
+            for &(row, wy) in &rows {
+                for &(column, wx) in &columns {
+                    let weight = wy * wx;
+                    let texel = above.packed(column as i32, row as i32);
+                    for (channel, total) in sum.iter_mut().enumerate() {
+                        let code = (texel >> (8 * (3 - channel))) & 0xFF;
+                        let value = if channel == 0 { code as f32 / 255.0 } else { decode[code as usize] };
+                        *total += weight * value;
+                    }
+                }
+            }
+            let [transparency, r, g, b] = sum;
+            let encode = |v: f32| match content {
+                MipContent::Color => encoder.code(v),
+                MipContent::Data => float::quantize_unit(v, 255.0),
+            };
+            out[(y * width + x) as usize] =
+                float::quantize_unit(transparency, 255.0) << 24 | encode(r) << 16 | encode(g) << 8 | encode(b);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Builds the chain of `texels` (`width x height`) as `content` into `out`; the number of its levels.
+    fn levels_of<'a>(texels: &'a [u32], width: u32, height: u32, content: MipContent, out: &'a mut [u32]) -> usize {
+        let chain = build_mip_chain(Texture::new(texels, width, height).unwrap(), content, out).unwrap();
+        chain.levels().len()
+    }
+
+    #[test]
+    fn a_chain_has_a_level_for_each_halving_down_to_one_texel() {
+        assert_eq!(level_sizes(MAX_TEXTURE_SIZE, MAX_TEXTURE_SIZE).count(), MAX_MIP_LEVELS);
+        assert_eq!(level_sizes(MAX_TEXTURE_SIZE, 1).count(), MAX_MIP_LEVELS);
+        let sizes: [(u32, u32); 3] = core::array::from_fn(|i| level_sizes(7, 2).nth(i).unwrap());
+        assert_eq!(sizes, [(7, 2), (3, 1), (1, 1)]);
+        assert_eq!(level_sizes(7, 2).count(), 3);
+        assert_eq!(mip_chain_texels(7, 2), 3 + 1);
+        assert_eq!(mip_chain_texels(1, 1), 0);
+        for (w, h) in [(0, 4), (4, 0), (MAX_TEXTURE_SIZE + 1, 1)] {
+            assert_eq!(mip_chain_texels(w, h), 0);
+        }
+        let texels = [0; 4];
+        let mut short = [0; 2];
+        let result = build_mip_chain(Texture::new(&texels, 2, 2).unwrap(), MipContent::Data, &mut short);
+        assert_eq!(result.err(), Some(TextureError::Length { expected: 1, actual: 2 }));
+    }
+
+    /// Every 8-bit code survives decoding to linear light and encoding back, so a texture of one texel value keeps
+    /// it at every level, odd sides included, whatever its content.
+    #[test]
+    fn one_texel_value_stays_itself_at_every_level() {
+        let encoder = SrgbEncoder::new();
+        for code in 0..=255u32 {
+            assert_eq!(encoder.code(srgb_to_linear(code as f32 / 255.0)), code);
+        }
+        for texel in [0x3A_C0_11_7Fu32, 0x00_01_FE_80, 0xFF_FF_FF_FF] {
+            let texels = [texel; 7 * 5];
+            for content in [MipContent::Color, MipContent::Data] {
+                let mut out = [0; 3 * 2 + 1];
+                assert_eq!(levels_of(&texels, 7, 5, content, &mut out), 3);
+                assert_eq!(out, [texel; 7], "{texel:#010x} as {content:?}");
+            }
+        }
+    }
+
+    /// Three white texels and a black one: colour averages their light, 0.75, sRGB 0.8808, code 225; data averages
+    /// the codes, 191.25, code 191.
+    #[test]
+    fn colour_is_averaged_in_linear_light_and_data_as_stored() {
+        let texels = [0xFF_FFFF, 0xFF_FFFF, 0xFF_FFFF, 0];
+        let mut out = [0; 1];
+        levels_of(&texels, 2, 2, MipContent::Color, &mut out);
+        assert_eq!(out, [0xE1_E1E1]);
+        levels_of(&texels, 2, 2, MipContent::Data, &mut out);
+        assert_eq!(out, [0xBF_BFBF]);
+        // The transparency byte is averaged as stored under either content: 191.25 of 255.
+        let transparent = [0xFF00_0000, 0xFF00_0000, 0xFF00_0000, 0];
+        levels_of(&transparent, 2, 2, MipContent::Color, &mut out);
+        assert_eq!(out, [0xBF00_0000]);
+    }
+
+    /// An odd side of 2n + 1 texels halves to n, each texel covering two and a fraction texels.
+    #[test]
+    fn odd_sides_weigh_each_texel_by_the_share_covered() {
+        let grey = |v: u32| v << 16 | v << 8 | v;
+        // 3 -> 1: a third of each.
+        let texels = [0, 90, 255].map(grey);
+        let mut out = [0; 1];
+        levels_of(&texels, 3, 1, MipContent::Data, &mut out);
+        assert_eq!(out, [grey(115)]);
+        // 5 -> 2: (2/5, 2/5, 1/5) of texels 0..3 and (1/5, 2/5, 2/5) of texels 2..5, 40 and 160; then 2 -> 1, 100.
+        let texels = [0, 50, 100, 150, 200].map(grey);
+        let mut out = [0; 3];
+        levels_of(&texels, 5, 1, MipContent::Data, &mut out);
+        assert_eq!(out, [grey(40), grey(160), grey(100)]);
+        // The same down a column.
+        let mut column = [0; 3];
+        levels_of(&texels, 1, 5, MipContent::Data, &mut column);
+        assert_eq!(column, out);
+    }
+
+    /// A map interleaved with others gets the chain of its own texels.
+    #[test]
+    fn an_interleaved_map_gets_the_chain_of_its_own_texels() {
+        let first: [u32; 12] = core::array::from_fn(|i| i as u32 * 0x0A_0B0C);
+        let second: [u32; 12] = core::array::from_fn(|i| 0xFF_FFFF - i as u32 * 0x07_0503);
+        let both: [u32; 24] = core::array::from_fn(|i| if i % 2 == 0 { first[i / 2] } else { second[i / 2] });
+        for (k, own) in [first, second].iter().enumerate() {
+            let (mut alone, mut shared) = ([0; 3], [0; 3]);
+            levels_of(own, 4, 3, MipContent::Color, &mut alone);
+            let map = Texture::interleaved(&both, 4, 3, 2, k as u32).unwrap();
+            build_mip_chain(map, MipContent::Color, &mut shared).unwrap();
+            assert_eq!(alone, shared, "map {k}");
+        }
+    }
+}
