@@ -66,19 +66,11 @@ fn every_choice_of_a_variant_equals_the_general_path() {
     let torus = Torus::new(1.0, 0.4, 24, 12);
     let mut tangents = vec![Vec4::ZERO; torus.positions.len()];
     compute_tangents(&torus.mesh(), &mut tangents).unwrap();
+    // The torus with normals, and texture coordinates or colours or both.
+    let with_normals = Mesh::new(&torus.positions, Indices::U16(&torus.indices)).unwrap().with_normals(&torus.normals);
     let with_colors = torus.mesh();
-    let without_colors = Mesh::new(&torus.positions, Indices::U16(&torus.indices))
-        .unwrap()
-        .with_normals(&torus.normals)
-        .unwrap()
-        .with_uvs(&torus.uvs)
-        .unwrap();
-    let colors_without_uvs = Mesh::new(&torus.positions, Indices::U16(&torus.indices))
-        .unwrap()
-        .with_normals(&torus.normals)
-        .unwrap()
-        .with_colors(&torus.colors)
-        .unwrap();
+    let without_colors = with_normals.unwrap().with_uvs(&torus.uvs).unwrap();
+    let colors_without_uvs = with_normals.unwrap().with_colors(&torus.colors).unwrap();
     let texels = checker_texels();
     let checker = Texture::new(&texels, 8, 8).unwrap();
     let bumps: Vec<u32> = (0..64).map(|i| if (i % 8 + i / 8) % 2 == 0 { 0xC080E0 } else { 0x4080E0 }).collect();

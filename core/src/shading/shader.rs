@@ -23,10 +23,9 @@ use crate::texture::{Bilinear, Clamp, Filter, FilterMode, Nearest, Repeat, Wrap,
 ///
 /// The varyings it carries are fixed by its type (`A` and `B`: the two `Vec3` slots of the variant's
 /// [`Layout`], `U`: texture coordinates, `T`: tangent, `C`: vertex colour; each the value's type or
-/// [`Absent`]). Everything
-/// else, the shading model, which maps are sampled and how each light is applied, is decided once per batch of
-/// fragments and runs as a loop compiled for that choice, so the number of compiled loops is the sum of the
-/// choices, not their product.
+/// [`Absent`]). Everything else, the shading model, which maps are sampled and how each light is applied, is
+/// decided once per batch of fragments and runs as a loop compiled for that choice, so the number of compiled
+/// loops is the sum of the choices, not their product.
 #[derive(Clone, Copy, Debug)]
 pub struct SurfaceShader<'a, A, B, U, T, C = Absent, const CAPS: u32 = { capabilities::ALL }> {
     transforms: Transforms,
