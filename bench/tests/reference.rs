@@ -18,7 +18,7 @@ use rastty_bench::reference::{
 use rastty_core::camera::CameraError;
 use rastty_core::math::{Vec2, Vec3};
 use rastty_core::pipeline::Cull;
-use rastty_core::texture::WrapMode;
+use rastty_core::texture::{MipFilter, WrapMode};
 
 // ---------------------------------------------------------------------------------------------------------------
 // Helpers
@@ -309,7 +309,7 @@ fn culling_follows_the_screen_winding_and_mirroring() {
 /// A 256x1 red ramp: texel i has red i. Bilinear sampling at u in [0.5/256, 255.5/256] gives red
 /// (256 u - 0.5) / 255 exactly (linear between texel centres).
 fn ramp() -> TextureImage {
-    TextureImage { width: 256, height: 1, texels: (0..256u32).map(|i| i << 16).collect() }
+    TextureImage::new(256, 1, (0..256u32).map(|i| i << 16).collect())
 }
 
 #[test]
@@ -378,7 +378,7 @@ fn bilinear_sampling_is_exact_at_texel_centres_and_half_way() {
     let (w, h) = (4, 1);
     let mut quad = rectangle(0.0, 4.0, -1.0, 0.0, 0.0, [1.0; 3]);
     quad.uvs = Some(vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]);
-    quad.texture = Some(TextureImage { width: 2, height: 1, texels: vec![0x010203, 0x020304] });
+    quad.texture = Some(TextureImage::new(2, 1, vec![0x010203, 0x020304]));
     quad.wrap = WrapMode::Clamp;
     let scene = Scene { objects: vec![quad], ..Scene::new(w, h, pixel_camera(w, h)) };
     let renderer = Renderer::new(&scene).unwrap();
@@ -493,11 +493,8 @@ fn bad_scenes_are_errors() {
 /// A quad in the xy plane facing +z, with normals, texture coordinates and a texture (a 4x4 checker of two
 /// greys 8 levels apart: bilinear filtering shows, but varies little across a pixel).
 fn one_quad_model() -> Model {
-    let texture = TextureImage {
-        width: 4,
-        height: 4,
-        texels: (0..16u32).map(|i| if (i + i / 4) % 2 == 0 { 0xD0C0B0 } else { 0xC8B8A8 }).collect(),
-    };
+    let texture =
+        TextureImage::new(4, 4, (0..16u32).map(|i| if (i + i / 4) % 2 == 0 { 0xD0C0B0 } else { 0xC8B8A8 }).collect());
     Model {
         positions: vec![
             Vec3::new(-1.0, -1.0, 0.0),
@@ -521,10 +518,16 @@ fn one_quad_model() -> Model {
     }
 }
 
-/// `model` shown without a scene file, as rastty prepares it: one object fitted into the unit sphere, the viewer's
-/// camera and lights.
+/// `model` shown without a scene file, as rastty prepares it (one object fitted into the unit sphere, the viewer's
+/// camera and lights), with its maps sampled without mipmaps.
 fn model_scene(model: Model) -> PreparedScene {
-    PreparedScene::new(SceneData::from_model(model, PathBuf::from("test.obj"))).unwrap()
+    let mut data = SceneData::from_model(model, PathBuf::from("test.obj"));
+    // The reference's probe samples the texture at a pixel centre, as rastty does without mipmaps; with them a
+    // minified pixel is an average over its footprint (what the reference's image, not its probe, gives).
+    for object in &mut data.objects {
+        object.material.mip_filter = MipFilter::Off;
+    }
+    PreparedScene::new(data).unwrap()
 }
 
 /// The camera of `--yaw`, `--pitch` and `--distance` (in radii), and `--fov` or `--ortho`.

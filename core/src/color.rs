@@ -4,7 +4,7 @@
 //! highlights, saturate when packed). No gamma curve is applied in shading: colours are stored and shaded in the
 //! same (sRGB-encoded) space, as most small renderers do. The sRGB transfer functions ([`srgb_to_linear`],
 //! [`SrgbEncoder`]) serve where averaging must be in linear light: the mipmap chains of colour maps
-//! ([`crate::texture::build_mip_chain`]).
+//! ([`crate::texture::build_mip_levels`]).
 //!
 //! Packed formats:
 //! - **RGB888 in a `u32`**: `0x00RRGGBB` — red in bits 16..24, green in 8..16, blue in 0..8, top byte zero. This

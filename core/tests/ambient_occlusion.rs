@@ -8,7 +8,7 @@ use rastty_core::camera::{look_at, orthographic, perspective};
 use rastty_core::math::{Mat4, Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh};
 use rastty_core::occlusion::{AmbientOcclusion, OcclusionError};
-use rastty_core::pipeline::{Cull, DrawState, Fragment, Shader, draw};
+use rastty_core::pipeline::{Cull, DrawState, Fragment, Shader, Slopes, draw};
 use rastty_core::target::{NoColor, Target};
 
 /// The colour of every drawn pixel before occlusion: 200 in each channel, so a factor shows as `channel / 200`.
@@ -30,7 +30,7 @@ impl Shader for DepthOnly {
     }
     fn varyings(&self, _: &Mesh<'_>, _: usize) {}
     fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
-    fn fragment(&self, _: &Fragment, _: &(), _: &()) -> Vec3 {
+    fn fragment(&self, _: &Fragment, _: &(), _: &(), _: &Slopes<Self::Varyings>) -> Vec3 {
         Vec3::ZERO
     }
 }

@@ -5,7 +5,7 @@ use crate::common;
 use common::ScreenSpace;
 use rastty_core::math::{Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh};
-use rastty_core::pipeline::{DepthTest, DrawState, DrawStats, EdgeArithmetic, Fragment, Shader, draw};
+use rastty_core::pipeline::{DepthTest, DrawState, DrawStats, EdgeArithmetic, Fragment, Shader, Slopes, draw};
 use rastty_core::target::{DepthBuffer, Rgb888, Target, depth_to_u16};
 use rastty_core::testing::draw_unspecialised;
 
@@ -23,7 +23,7 @@ impl Shader for ByTriangle {
     fn face(&self, _: &Mesh<'_>, t: [usize; 3]) -> Vec3 {
         Vec3::new(t[0] as f32 / 255.0, 0.0, 0.0)
     }
-    fn fragment(&self, _: &Fragment, face: &Vec3, _: &()) -> Vec3 {
+    fn fragment(&self, _: &Fragment, face: &Vec3, _: &(), _: &Slopes<Self::Varyings>) -> Vec3 {
         *face
     }
 }
@@ -138,7 +138,7 @@ impl Shader for DepthOnly {
     }
     fn varyings(&self, _: &Mesh<'_>, _: usize) {}
     fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
-    fn fragment(&self, _: &Fragment, _: &(), _: &()) -> Vec3 {
+    fn fragment(&self, _: &Fragment, _: &(), _: &(), _: &Slopes<Self::Varyings>) -> Vec3 {
         unreachable!("a depth-only shader's fragment stage never runs")
     }
 }

@@ -12,6 +12,7 @@ mod effects;
 mod fill_rule;
 mod inverse_sqrt;
 mod math;
+mod mipmaps;
 mod robustness;
 mod shadows;
 mod specialisation;

@@ -7,7 +7,7 @@ use common::{Count, ScreenSpace, Torus, coverage};
 use rastty_core::camera::{look_at, perspective};
 use rastty_core::math::{Mat4, Vec2, Vec3};
 use rastty_core::mesh::{Attributes, Indices, Mesh, MeshError};
-use rastty_core::pipeline::{DrawError, DrawState, DrawStats, draw};
+use rastty_core::pipeline::{DrawError, DrawState, DrawStats, Slopes, draw};
 use rastty_core::shading::{Light, Lighting, Material, Object, ShadingModel, Transforms, draw_mesh};
 use rastty_core::target::{MAX_DIMENSION, NoColor, NoDepth, Rgb888, Target, TargetError};
 use rastty_core::testing::draw_mesh_general;
@@ -189,7 +189,7 @@ fn malformed_meshes_and_states_are_refused() {
         }
         fn varyings(&self, _: &Mesh<'_>, _: usize) {}
         fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
-        fn fragment(&self, _: &rastty_core::pipeline::Fragment, _: &(), _: &()) -> Vec3 {
+        fn fragment(&self, _: &rastty_core::pipeline::Fragment, _: &(), _: &(), _: &Slopes<Self::Varyings>) -> Vec3 {
             Vec3::ONE
         }
     }

@@ -18,7 +18,7 @@ use rastty_core::shading::{
 };
 use rastty_core::shadow::{Bounds, ShadowBias, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster};
 use rastty_core::testing::draw_mesh_general;
-use rastty_core::texture::{FilterMode, Texture, WrapMode};
+use rastty_core::texture::{FilterMode, MipContent, MipFilter, Texture, WrapMode, build_mip_levels, mip_chain_texels};
 
 const W: u32 = 48;
 const H: u32 = 40;
@@ -55,12 +55,13 @@ const STATES: [(Interpolation, DepthTest, Cull, EdgeArithmetic); 5] = [
 ];
 
 /// Every choice of a variant, each against the general path: 6 shading models, 3 meshes (vertex colours and
-/// texture coordinates, both or either alone), 14 materials (highlights or none; a diffuse map under each filter
+/// texture coordinates, both or either alone), 16 materials (highlights or none; a diffuse map under each filter
 /// and wrap mode; a tangent-space normal map; an object-space one with a glow map; a specular map; everything at
-/// once; two alpha cut-outs by map, one by opacity; an occlusion map), 5 sets of lights (none; two directional;
-/// directional and point; a shadowed sun (filter radius 0) and a fill light; a shadowed sun (radius 2) and a
-/// shadowed lamp (radius 1)) and 2 projections; the fixed-function states of [`STATES`] in turn.
-/// 2,520 draws, clipped ones among them.
+/// once; two alpha cut-outs by map, one by opacity; an occlusion map; mipmapped maps blending levels, with a
+/// cut-out, and at the nearest level, with a normal map), 5 sets of lights (none; two directional; directional
+/// and point; a shadowed sun (filter radius 0) and a fill light; a shadowed sun (radius 2) and a shadowed lamp
+/// (radius 1)) and 2 projections; the fixed-function states of [`STATES`] in turn. 2,880 draws, clipped ones
+/// among them.
 #[test]
 fn every_choice_of_a_variant_equals_the_general_path() {
     let torus = Torus::new(1.0, 0.4, 24, 12);
@@ -73,6 +74,17 @@ fn every_choice_of_a_variant_equals_the_general_path() {
     let colors_without_uvs = with_normals.unwrap().with_colors(&torus.colors).unwrap();
     let texels = checker_texels();
     let checker = Texture::new(&texels, 8, 8).unwrap();
+    // 128x128 texels of noise, with and without a varying transparency, and their levels of detail.
+    let noise: Vec<u32> = (0..128 * 128u32).map(|i| i.wrapping_mul(2_654_435_761) >> 8).collect();
+    let noise_holes: Vec<u32> = noise.iter().map(|t| t.rotate_left(13) & 0xFF00_0000 | t & 0xFF_FFFF).collect();
+    let mut noise_levels = vec![0; mip_chain_texels(128, 128)];
+    let mut noise_holes_levels = noise_levels.clone();
+    let noise = Texture::new(&noise, 128, 128).unwrap();
+    build_mip_levels(&noise, MipContent::Color, &mut noise_levels).unwrap();
+    let noise = noise.with_mip_levels(&noise_levels).unwrap();
+    let noise_holes = Texture::new(&noise_holes, 128, 128).unwrap();
+    build_mip_levels(&noise_holes, MipContent::Color, &mut noise_holes_levels).unwrap();
+    let noise_holes = noise_holes.with_mip_levels(&noise_holes_levels).unwrap();
     let bumps: Vec<u32> = (0..64).map(|i| if (i % 8 + i / 8) % 2 == 0 { 0xC080E0 } else { 0x4080E0 }).collect();
     let bumps = Texture::new(&bumps, 8, 8).unwrap();
     // The checker with a transparency that varies texel by texel (alpha 255 down to 3), for the cut-outs.
@@ -147,6 +159,24 @@ fn every_choice_of_a_variant_equals_the_general_path() {
     });
     materials.push(Material { opacity: 0.4, alpha_cutoff: Some(0.5), ..base });
     materials.push(Material { occlusion_map: Some(bumps), diffuse: Some(checker), ..base });
+    // Mipmapped maps, fine enough that a pixel spans several texels: levels blended (trilinear, with an alpha
+    // cut-out and a specular map) and the nearest level (nearest texels, clamped, with a normal and a glow map).
+    materials.push(Material {
+        diffuse: Some(noise_holes),
+        specular_map: Some(noise),
+        alpha_cutoff: Some(0.4),
+        mip_filter: MipFilter::Linear,
+        ..base
+    });
+    materials.push(Material {
+        diffuse: Some(noise),
+        normal_map: Some(NormalMap { texture: noise, space: NormalSpace::Tangent }),
+        glow_map: Some(noise),
+        filter: FilterMode::Nearest,
+        wrap: WrapMode::Clamp,
+        mip_filter: MipFilter::Nearest,
+        ..base
+    });
 
     // A camera close enough that the near plane cuts the torus, so clipped varyings are compared too.
     let view = look_at(Vec3::new(0.3, 0.5, 1.6), Vec3::ZERO, Vec3::Y).unwrap();
@@ -193,7 +223,7 @@ fn every_choice_of_a_variant_equals_the_general_path() {
             }
         }
     }
-    assert_eq!(draws, 2 * 6 * 3 * 14 * 5);
+    assert_eq!(draws, 2 * 6 * 3 * 16 * 5);
     assert!(clipped > 0);
     seen.assert_every_choice();
 }
@@ -209,6 +239,7 @@ struct Seen {
     glow_map: bool,
     occlusion_map: bool,
     filters: Vec<(FilterMode, WrapMode)>,
+    mip_filters: Vec<MipFilter>,
     point_lights: bool,
     shadows: Vec<u32>,
     affine: bool,
@@ -244,6 +275,9 @@ impl Seen {
         if v.uvs && !self.filters.contains(&(v.filter, v.wrap)) {
             self.filters.push((v.filter, v.wrap));
         }
+        if v.uvs && !self.mip_filters.contains(&v.mip_filter) {
+            self.mip_filters.push(v.mip_filter);
+        }
         if v.shadowed_lights > 0 && !self.shadows.contains(&v.pcf_radius) {
             self.shadows.push(v.pcf_radius);
         }
@@ -256,6 +290,7 @@ impl Seen {
         assert_eq!(self.normals.len(), 6, "normal sources: {:?}", self.normals);
         assert_eq!(self.specular.len(), 3, "specular sources: {:?}", self.specular);
         assert_eq!(self.filters.len(), 4, "filter and wrap modes: {:?}", self.filters);
+        assert_eq!(self.mip_filters.len(), 3, "filters between levels: {:?}", self.mip_filters);
         assert_eq!(self.shadows.len(), 2, "shadow filter radii: {:?}", self.shadows);
         assert_eq!(self.cutouts.len(), 3, "cut-outs: {:?}", self.cutouts);
         assert_eq!(self.two_sided, [true, true], "one- and two-sided lighting");

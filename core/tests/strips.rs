@@ -16,7 +16,7 @@ use rastty_core::camera::{look_at, perspective};
 use rastty_core::math::{Mat4, Vec3, Vec4};
 use rastty_core::mesh::{Mesh, compute_tangents};
 use rastty_core::pipeline::{
-    DepthTest, DrawState, DrawStats, EdgeArithmetic, Fragment, LineStyle, Shader, draw, draw_wireframe,
+    DepthTest, DrawState, DrawStats, EdgeArithmetic, Fragment, LineStyle, Shader, Slopes, draw, draw_wireframe,
 };
 use rastty_core::shading::{
     Light, Lighting, Material, NormalMap, NormalSpace, Object, ShadingModel, Transforms, draw_mesh,
@@ -169,7 +169,7 @@ impl Shader for DepthOnly {
     }
     fn varyings(&self, _: &Mesh<'_>, _: usize) {}
     fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
-    fn fragment(&self, _: &Fragment, _: &(), _: &()) -> Vec3 {
+    fn fragment(&self, _: &Fragment, _: &(), _: &(), _: &Slopes<Self::Varyings>) -> Vec3 {
         unreachable!("a depth-only shader's fragment stage never runs")
     }
 }

@@ -5,7 +5,7 @@ use std::cell::Cell;
 
 use rastty_core::math::{Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh};
-use rastty_core::pipeline::{Cull, DrawState, Fragment, Shader, draw};
+use rastty_core::pipeline::{Cull, DrawState, Fragment, Shader, Slopes, draw};
 use rastty_core::target::{NoColor, NoDepth, Target};
 
 /// Counts position and varyings runs; positions are already in clip space, all of them inside the frame.
@@ -28,7 +28,7 @@ impl Shader for Counting {
         i as f32
     }
     fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
-    fn fragment(&self, _: &Fragment, _: &(), _: &f32) -> Vec3 {
+    fn fragment(&self, _: &Fragment, _: &(), _: &f32, _: &Slopes<Self::Varyings>) -> Vec3 {
         Vec3::ONE
     }
 }

@@ -18,7 +18,7 @@ use rastty_core::math::{Mat4, Vec2, Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh, compute_tangents};
 use rastty_core::pipeline::{
     Cull, DepthTest, DrawError, DrawState, DrawStats, EdgeArithmetic, Fragment, Interpolation, LineStyle,
-    MAX_SUBPIXEL_BITS, Shader, Winding, draw, draw_wireframe,
+    MAX_SUBPIXEL_BITS, Shader, Slopes, Winding, draw, draw_wireframe,
 };
 use rastty_core::shading::{
     Light, LightKind, Lighting, Material, NormalMap, NormalSpace, Object, ShadingError, ShadingModel, Transforms,
@@ -29,7 +29,7 @@ use rastty_core::shadow::{
 };
 use rastty_core::target::{ColorBuffer, DepthBuffer, NoColor, Rgb888, Target, depth_to_u16};
 use rastty_core::testing::{draw_mesh_general, draw_unspecialised};
-use rastty_core::texture::{FilterMode, Texture, WrapMode};
+use rastty_core::texture::{FilterMode, MipContent, MipFilter, Texture, WrapMode, build_mip_levels, mip_chain_texels};
 
 const MAX_VERTICES: usize = 24;
 const MAX_TRIANGLES: usize = 16;
@@ -196,6 +196,8 @@ struct TextureIn {
     texels: Vec<u32>,
     bilinear: bool,
     clamp: bool,
+    /// Its levels of detail are built, and read as `mipmaps % 3` says: off, nearest level, blended.
+    mipmaps: u8,
 }
 
 #[derive(Arbitrary, Debug)]
@@ -428,7 +430,7 @@ impl<const FRAGMENT: bool> Shader for Positions<FRAGMENT> {
     }
     fn varyings(&self, _: &Mesh<'_>, _: usize) {}
     fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
-    fn fragment(&self, _: &Fragment, _: &(), _: &()) -> Vec3 {
+    fn fragment(&self, _: &Fragment, _: &(), _: &(), _: &Slopes<Self::Varyings>) -> Vec3 {
         assert!(FRAGMENT, "a depth-only shader's fragment stage ran");
         Vec3::ONE
     }
@@ -676,17 +678,21 @@ pub fn run(input: Input) -> Option<DrawStats> {
     };
 
     // Material.
-    let texels: Vec<u32>;
-    let (texture, filter, wrap) = match &input.texture {
-        None => (None, FilterMode::Bilinear, WrapMode::Repeat),
+    let (texels, mut levels): (Vec<u32>, Vec<u32>);
+    let (texture, filter, wrap, mip_filter) = match &input.texture {
+        None => (None, FilterMode::Bilinear, WrapMode::Repeat, MipFilter::Off),
         Some(t) => {
             let (tw, th) = (1 + u32::from(t.width) % 4, 1 + u32::from(t.height) % 4);
             let count = (tw * th) as usize;
             texels = (0..count).map(|i| if t.texels.is_empty() { 0 } else { t.texels[i % t.texels.len()] }).collect();
+            let texture = Texture::new(&texels, tw, th).expect("a valid tiny texture");
+            levels = vec![0; mip_chain_texels(tw, th)];
+            build_mip_levels(&texture, MipContent::Color, &mut levels).expect("levels sized by mip_chain_texels");
             (
-                Some(Texture::new(&texels, tw, th).expect("a valid tiny texture")),
+                Some(texture.with_mip_levels(&levels).expect("the levels built for it")),
                 if t.bilinear { FilterMode::Bilinear } else { FilterMode::Nearest },
                 if t.clamp { WrapMode::Clamp } else { WrapMode::Repeat },
+                [MipFilter::Off, MipFilter::Nearest, MipFilter::Linear][usize::from(t.mipmaps % 3)],
             )
         }
     };
@@ -707,6 +713,7 @@ pub fn run(input: Input) -> Option<DrawStats> {
         occlusion_map: texture.filter(|_| extras.occlusion_map),
         filter,
         wrap,
+        mip_filter,
         opacity: extras.cutout.map_or(1.0, |(opacity, _)| f32::from(opacity) / 255.0),
         alpha_cutoff: extras.cutout.map(|(_, cutoff)| f32::from(cutoff) / 255.0),
     };

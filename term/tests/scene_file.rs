@@ -15,7 +15,7 @@ use rastty::scene_file::{
     SceneFileError, SceneFileErrorKind, defaults, load, object_transform, parse,
 };
 use rastty_core::math::{Mat4, Vec3};
-use rastty_core::texture::{FilterMode, WrapMode};
+use rastty_core::texture::{FilterMode, MipFilter, WrapMode};
 
 // ---------------------------------------------------------------------------------------------------------------
 // Helpers
@@ -196,7 +196,8 @@ fn unknown_keys_are_named_with_their_table() {
     assert_eq!(
         error(&format!("{CAMERA}{SPOT}{SPOT}[objects.material]\ncolour = [1, 0, 0]\n")),
         "scene.toml:10:1: objects[1].material.colour: unknown key, expected one of `color`, `diffuse`, \
-         `normal_map`, `normal_space`, `specular`, `shininess`, `specular_map`, `glow_map`, `filter`, `wrap`"
+         `normal_map`, `normal_space`, `specular`, `shininess`, `specular_map`, `glow_map`, `filter`, `wrap`, \
+         `mipmaps`"
     );
     // A key holding control characters is escaped in the message.
     let text = error(&format!("{CAMERA}{SPOT}\"evil\\u001b[2J\" = 1\n"));
@@ -673,20 +674,28 @@ fn defaults_and_values_arrive_as_written() {
     assert_eq!(scene.ambient, defaults::AMBIENT);
     assert!(!scene.ambient_occlusion);
     let m = &scene.objects[0].material;
-    assert_eq!((m.filter, m.wrap), (FilterMode::Bilinear, WrapMode::Repeat));
+    assert_eq!((m.filter, m.wrap, m.mip_filter), (FilterMode::Bilinear, WrapMode::Repeat, MipFilter::Linear));
     assert_eq!((m.color, m.specular, m.shininess), (None, None, None));
 
     let text = format!(
         "background = \"#102030\"\nambient = [0.2, 0.2, 0.2]\nambient_occlusion = true\n{CAMERA}{SPOT}\
-         [objects.material]\nspecular = 0.25\nshininess = 12\nfilter = \"nearest\"\nwrap = \"clamp\"\n"
+         [objects.material]\nspecular = 0.25\nshininess = 12\nfilter = \"nearest\"\nwrap = \"clamp\"\n\
+         mipmaps = \"nearest\"\n"
     );
-    let scene = parse(text, "scene.toml").unwrap().load().unwrap();
+    let scene = parse(&text, "scene.toml").unwrap().load().unwrap();
     assert!(close(scene.background, Vec3::new(16.0, 32.0, 48.0) / 255.0));
     assert_eq!(scene.ambient, Vec3::splat(0.2));
     assert!(scene.ambient_occlusion);
     let m = &scene.objects[0].material;
     assert_eq!((m.specular, m.shininess), (Some(Vec3::splat(0.25)), Some(12.0)));
-    assert_eq!((m.filter, m.wrap), (FilterMode::Nearest, WrapMode::Clamp));
+    assert_eq!((m.filter, m.wrap, m.mip_filter), (FilterMode::Nearest, WrapMode::Clamp, MipFilter::Nearest));
+    let off = text.replace("mipmaps = \"nearest\"", "mipmaps = \"off\"");
+    assert_eq!(parse(off, "scene.toml").unwrap().load().unwrap().objects[0].material.mip_filter, MipFilter::Off);
+    let wrong = text.replace("mipmaps = \"nearest\"", "mipmaps = \"trilinear\"");
+    let error = parse(wrong, "scene.toml").unwrap_err().to_string();
+    let expected = "scene.toml:15:11: objects[0].material.mipmaps: unknown variant `trilinear`, expected one of \
+                    `off`, `nearest`, `linear`";
+    assert_eq!(error, expected);
 }
 
 #[test]

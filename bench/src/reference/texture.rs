@@ -62,7 +62,7 @@ mod tests {
     use super::*;
 
     fn image(width: u32, height: u32, texels: Vec<u32>) -> TextureImage {
-        TextureImage { width, height, texels }
+        TextureImage::new(width, height, texels)
     }
 
     #[test]

@@ -18,6 +18,7 @@
 //! discards fragments (an alpha cut-out) depth is only compared when a fragment is pushed, and tested and written
 //! with its colour, in the same order, if it is kept.
 
+use super::slopes::{FractionSteps, Slopes};
 use super::{Fragment, Varyings};
 
 /// True where the target has SIMD registers (x86-64, AArch64, WebAssembly with `simd128`): lane loops then run
@@ -53,6 +54,8 @@ struct Triangle<V, F> {
     varyings: [V; 3],
     face: F,
     front_facing: bool,
+    /// How its weight fractions change per pixel (zero when the draw asks for no [`Slopes`]).
+    steps: FractionSteps,
 }
 
 /// Up to [`BATCH_SIZE`] fragments of one draw, in the order the pixel loop found them, with their triangles'
@@ -73,7 +76,7 @@ pub struct FragmentBatch<V, F> {
     /// [`Self::resolve`] has run, the weights themselves.
     w1: Lanes,
     w2: Lanes,
-    /// The weights' common denominator per fragment, until resolved.
+    /// The weights' common denominator per fragment, until resolved; then its reciprocal.
     denominator: Lanes,
     x: [u32; BATCH_SIZE],
     y: [u32; BATCH_SIZE],
@@ -91,7 +94,12 @@ impl<V: Varyings, F: Copy> FragmentBatch<V, F> {
         let zero = v.sub(&v);
         Self {
             len: 0,
-            triangles: [Triangle { varyings: [v, zero, zero], face, front_facing: true }; BATCH_SIZE],
+            triangles: [Triangle {
+                varyings: [v, zero, zero],
+                face,
+                front_facing: true,
+                steps: FractionSteps::default(),
+            }; BATCH_SIZE],
             current: 0,
             current_used: false,
             triangle: [0; BATCH_SIZE],
@@ -106,28 +114,30 @@ impl<V: Varyings, F: Copy> FragmentBatch<V, F> {
         }
     }
 
-    /// A batch of one fragment with `varyings` (a triangle whose three vertices carry them) and `face`: for
-    /// shading a single fragment through a shader's batch stage, as its own
-    /// [`Shader::fragment`](super::Shader::fragment) may.
-    pub fn single(fragment: &Fragment, face: F, varyings: V) -> Self {
+    /// A batch of one fragment with `varyings` changing by `slopes` and `face`: for shading a single fragment
+    /// through a shader's batch stage, as its own [`Shader::fragment`](super::Shader::fragment) may. Its
+    /// triangle carries `varyings` plus `slopes.dx` and `slopes.dy` at its other vertices, with weights 0, and
+    /// weight slopes `(1, 0)` and `(0, 1)`: [`Self::varyings`] and [`Self::slopes`] give back what was passed
+    /// (finite slopes; a zero's sign may change).
+    pub fn single(fragment: &Fragment, face: F, varyings: V, slopes: &Slopes<V>) -> Self {
         let mut batch = Self::new(varyings, face);
-        let zero = varyings.sub(&varyings);
-        batch.start_triangle([varyings, zero, zero], face, fragment.front_facing);
+        let steps = FractionSteps { dx: [1.0, 0.0, 0.0], dy: [0.0, 1.0, 0.0] };
+        batch.start_triangle([varyings, slopes.dx, slopes.dy], face, fragment.front_facing, steps);
         batch.push(fragment.x, fragment.y, fragment.depth, [0.0, 0.0, 1.0], 0);
         batch.resolve();
         batch
     }
 
     /// Makes the fragments pushed next belong to a triangle whose varyings are `v0` at its first vertex and
-    /// `v0 + d1`, `v0 + d2` at the others.
+    /// `v0 + d1`, `v0 + d2` at the others, and whose weight fractions change by `steps` per pixel.
     #[inline(always)]
-    pub(crate) fn start_triangle(&mut self, [v0, d1, d2]: [V; 3], face: F, front_facing: bool) {
+    pub(crate) fn start_triangle(&mut self, [v0, d1, d2]: [V; 3], face: F, front_facing: bool, steps: FractionSteps) {
         if self.current_used {
             // Below `len` (each used slot has a fragment), which is below `BATCH_SIZE` between pushes.
             self.current = (self.current + 1).min(BATCH_SIZE - 1);
             self.current_used = false;
         }
-        self.triangles[self.current] = Triangle { varyings: [v0, d1, d2], face, front_facing };
+        self.triangles[self.current] = Triangle { varyings: [v0, d1, d2], face, front_facing, steps };
     }
 
     /// Adds a fragment of the current triangle at `(x, y)` with `depth` and the weights `n1 / d`, `n2 / d` of the
@@ -159,7 +169,7 @@ impl<V: Varyings, F: Copy> FragmentBatch<V, F> {
             let r = 1.0 / self.denominator[i];
             self.w1[i] *= r;
             self.w2[i] *= r;
-            self.denominator[i] = 1.0;
+            self.denominator[i] = r;
         }
         for i in 0..self.len {
             let [v0, d1, d2] = &self.triangles[usize::from(self.triangle[i])].varyings;
@@ -202,6 +212,22 @@ impl<V: Varyings, F: Copy> FragmentBatch<V, F> {
         &self.varyings[i]
     }
 
+    /// The screen-space slopes of fragment `i`'s varyings (`i < len`; zero in a draw that asks for none,
+    /// [`Shader::slopes`](super::Shader::slopes)).
+    #[inline(always)]
+    pub fn slopes(&self, i: usize) -> Slopes<V> {
+        self.slopes_of(i, |v| *v)
+    }
+
+    /// The screen-space slopes of one part of fragment `i`'s varyings, `part` of them (`i < len`): the
+    /// arithmetic of [`Self::slopes`] on that part alone.
+    #[inline(always)]
+    pub fn slopes_of<T: Varyings>(&self, i: usize, part: impl Fn(&V) -> T) -> Slopes<T> {
+        let triangle = &self.triangles[usize::from(self.triangle[i])];
+        let weight_slopes = triangle.steps.weight_slopes(self.w1[i], self.w2[i], self.denominator[i]);
+        Slopes::of(&part(&triangle.varyings[1]), &part(&triangle.varyings[2]), weight_slopes)
+    }
+
     /// The face of fragment `i`'s triangle (`i < BATCH_SIZE`).
     #[inline(always)]
     pub fn face(&self, i: usize) -> &F {
@@ -236,7 +262,7 @@ mod tests {
         // Triangle t: varyings 10 t at its first vertex, +1 and +2 at the others; face t; front-facing when even.
         for (t, count) in [(1u32, 1), (2, 0), (3, 2), (4, BATCH_SIZE + 3), (5, 1)] {
             let v0 = 10.0 * t as f32;
-            batch.start_triangle([v0, 1.0, 2.0], t, t % 2 == 0);
+            batch.start_triangle([v0, 1.0, 2.0], t, t % 2 == 0, FractionSteps::default());
             for k in 0..count {
                 // Weights 0.25 and 0.5 as fractions over 2.
                 let full = batch.push(k as u32, t, 0.5, [0.5, 1.0, 2.0], fragments);

@@ -64,7 +64,7 @@ impl core::error::Error for DrawError {}
 ///     }
 ///     fn varyings(&self, _: &Mesh<'_>, _: usize) {}
 ///     fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
-///     fn fragment(&self, _: &Fragment, _: &(), _: &()) -> Vec3 {
+///     fn fragment(&self, _: &Fragment, _: &(), _: &(), _: &Slopes<Self::Varyings>) -> Vec3 {
 ///         Vec3::new(1.0, 0.0, 0.0)
 ///     }
 /// }
@@ -225,7 +225,7 @@ where
     let volume = ClipVolume::new(target.width(), target.height(), rows.start, rows.end);
     let raster = Rasterizer::new(target, state.subpixel_bits, state.cull, state.front_face);
     // Asked once per draw; a constant false for shaders that never discard.
-    let stages = Stages { shader, interpolator, depth, cutout: S::CUTOUT && shader.cutout() };
+    let stages = Stages { shader, interpolator, depth, cutout: S::CUTOUT && shader.cutout(), slopes: shader.slopes() };
     // The caller's memory for screen positions, taken out of the target for the draw (the pixel loop borrows the
     // target) and put back at the end. Screen vertices computed beforehand for the frame are read as they are,
     // when they are this draw's; a buffer holding every vertex of the mesh gets the position stage once per

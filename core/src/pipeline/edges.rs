@@ -23,6 +23,9 @@ pub(crate) trait Edges: Copy {
     fn covered(&self, at: &Self::At) -> bool;
     /// The three values as non-negative weights: barycentric coordinates times twice the area.
     fn weights(&self, at: &Self::At) -> [f32; 3];
+    /// How [`Self::weights`] change one pixel to the right and one pixel down (inside the triangle, where no
+    /// weight is clamped).
+    fn steps(&self) -> [[f32; 3]; 2];
     /// The functions as [`EdgeLanes`] over the pixel centres `x0..=x1` by `y0..=y1`, when that computes exactly
     /// what [`Self::at`], [`Self::step`], [`Self::covered`] and [`Self::weights`] do there; `None` otherwise.
     #[inline(always)]
@@ -98,6 +101,11 @@ impl Edges for FixedEdges {
         [(e[0] - self.bias[0]) as f32, (e[1] - self.bias[1]) as f32, (e[2] - self.bias[2]) as f32]
     }
 
+    #[inline(always)]
+    fn steps(&self) -> [[f32; 3]; 2] {
+        [self.step_x.map(|s| s as f32), self.step_y.map(|s| s as f32)]
+    }
+
     /// A linear function is largest and smallest over a box at its corners: when those values fit `i32` (below its
     /// maximum, so the unbiased value `v + 1` fits too), all do, and `i32` comparisons and conversions to `f32` give
     /// what the `i64` ones give.
@@ -158,6 +166,11 @@ impl Edges for FloatEdges {
     fn weights(&self, e: &[f32; 3]) -> [f32; 3] {
         [float::max(e[0], 0.0), float::max(e[1], 0.0), float::max(e[2], 0.0)]
     }
+
+    #[inline(always)]
+    fn steps(&self) -> [[f32; 3]; 2] {
+        [self.a, self.b]
+    }
 }
 
 /// Either kind, chosen per pixel: the general path.
@@ -209,6 +222,14 @@ impl Edges for DynamicEdges {
             (Self::Fixed(e), DynamicAt::Fixed(v)) => e.weights(v),
             (Self::Float(e), DynamicAt::Float(v)) => e.weights(v),
             _ => [0.0; 3],
+        }
+    }
+
+    #[inline(always)]
+    fn steps(&self) -> [[f32; 3]; 2] {
+        match self {
+            Self::Fixed(e) => e.steps(),
+            Self::Float(e) => e.steps(),
         }
     }
 

@@ -5,6 +5,7 @@
 //! and 2 for [`super::Varyings::interpolate`].
 
 use super::Interpolation;
+use super::slopes::FractionSteps;
 
 /// Turns a pixel's edge-function values into varying weights.
 pub(crate) trait Interpolator: Copy {
@@ -16,14 +17,24 @@ pub(crate) trait Interpolator: Copy {
     /// weights are `n1 * (1 / d)` and `n2 * (1 / d)`. Split so that a batch of pixels can do its divisions at once
     /// (see [`super::FragmentBatch`]).
     fn fractions(&self, setup: &Self::Setup, e: [f32; 3]) -> [f32; 3];
+    /// How the fractions change when the edge-function values change by `step` (they are linear in them, the
+    /// denominator of affine weights constant).
+    fn fraction_step(&self, setup: &Self::Setup, step: [f32; 3]) -> [f32; 3];
 
-    /// The weights of vertices 1 and 2 at a pixel with edge-function values `e`.
+    /// The fractions' steps one pixel right and one down, for edge-function steps `[x, y]` ([`super::edges::Edges::steps`]).
     #[inline(always)]
-    fn weights(&self, setup: &Self::Setup, e: [f32; 3]) -> (f32, f32) {
+    fn fraction_steps(&self, setup: &Self::Setup, [x, y]: [[f32; 3]; 2]) -> FractionSteps {
+        FractionSteps { dx: self.fraction_step(setup, x), dy: self.fraction_step(setup, y) }
+    }
+
+    /// The weights of vertices 1 and 2 at a pixel with edge-function values `e`, and the reciprocal of their
+    /// fractions' denominator: `[w1, w2, 1 / d]`.
+    #[inline(always)]
+    fn weights(&self, setup: &Self::Setup, e: [f32; 3]) -> [f32; 3] {
         let [n1, n2, d] = self.fractions(setup, e);
         // For `d = 1` (affine) this folds away: `1 / 1` and `n * 1` are exact.
         let r = 1.0 / d;
-        (n1 * r, n2 * r)
+        [n1 * r, n2 * r, r]
     }
 }
 
@@ -47,6 +58,11 @@ impl Interpolator for PerspectiveCorrect {
         let (l0, l1, l2) = (e[0] * q[0], e[1] * q[1], e[2] * q[2]);
         [l1, l2, l0 + l1 + l2]
     }
+
+    #[inline(always)]
+    fn fraction_step(&self, q: &[f32; 3], step: [f32; 3]) -> [f32; 3] {
+        self.fractions(q, step)
+    }
 }
 
 /// Affine (screen-space linear): `w_k = e_k / area`. No division per pixel.
@@ -64,6 +80,11 @@ impl Interpolator for Affine {
     #[inline(always)]
     fn fractions(&self, inv_area: &f32, e: [f32; 3]) -> [f32; 3] {
         [e[1] * inv_area, e[2] * inv_area, 1.0]
+    }
+
+    #[inline(always)]
+    fn fraction_step(&self, inv_area: &f32, step: [f32; 3]) -> [f32; 3] {
+        [step[1] * inv_area, step[2] * inv_area, 0.0]
     }
 }
 
@@ -84,6 +105,14 @@ impl Interpolator for DynamicInterpolator {
         match self.0 {
             Interpolation::PerspectiveCorrect => PerspectiveCorrect.fractions(&setup.0, e),
             Interpolation::Affine => Affine.fractions(&setup.1, e),
+        }
+    }
+
+    #[inline(always)]
+    fn fraction_step(&self, setup: &Self::Setup, step: [f32; 3]) -> [f32; 3] {
+        match self.0 {
+            Interpolation::PerspectiveCorrect => PerspectiveCorrect.fraction_step(&setup.0, step),
+            Interpolation::Affine => Affine.fraction_step(&setup.1, step),
         }
     }
 }

@@ -12,7 +12,8 @@
 //!    covered pixel centres with exact integer edge functions and the top-left rule.
 //! 4. **Vertex stage, varyings** ([`Shader::varyings`]): only for the vertices of triangles that reach the pixel
 //!    loop (or must be clipped); a triangle with non-finite varyings is skipped.
-//! 5. **Fragment**: depth test ([`DepthTest`]), interpolation ([`Interpolation`]), [`Shader::fragment`], write;
+//! 5. **Fragment**: depth test ([`DepthTest`]), interpolation ([`Interpolation`]) with the varyings' screen-space
+//!    [`Slopes`] when the shader asks ([`Shader::slopes`]), [`Shader::fragment`], write;
 //!    or, for a [`Shader::BATCHED`] shader, up to [`BATCH_SIZE`] fragments at a time through
 //!    [`Shader::shade_batch`]; or, for a depth-only shader (no [`Shader::FRAGMENT_STAGE`]), the depth test alone,
 //!    [`DEPTH_LANES`](crate::target::DEPTH_LANES) pixels of a row at a time.
@@ -36,6 +37,7 @@ mod line;
 mod raster;
 mod screen_vertex;
 mod shader;
+mod slopes;
 mod state;
 mod stats;
 mod varyings;
@@ -48,6 +50,7 @@ pub use line::{LineStyle, draw_wireframe};
 pub use screen_vertex::ScreenVertex;
 pub(crate) use screen_vertex::frame_screen_vertices;
 pub use shader::{Fragment, Shader};
+pub use slopes::Slopes;
 pub use state::{Cull, DepthTest, DrawState, EdgeArithmetic, FixedFunction, Interpolation, MAX_SUBPIXEL_BITS, Winding};
 pub use stats::DrawStats;
 pub use varyings::Varyings;

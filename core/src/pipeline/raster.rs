@@ -14,7 +14,8 @@ use super::batch::{BATCH_SIZE, FragmentBatch};
 use super::depth_stage::DepthStage;
 use super::edges::{EdgeLanes, Edges, FixedEdges, FloatEdges};
 use super::interpolator::Interpolator;
-use super::{Cull, Fragment, Shader, Varyings, Winding};
+use super::slopes::FractionSteps;
+use super::{Cull, Fragment, Shader, Slopes, Varyings, Winding};
 use crate::camera::Viewport;
 use crate::math::{Vec3, Vec4, float};
 use crate::target::{ColorBuffer, DEPTH_LANES, DepthBuffer, Target, VertexMemory, clamp_depth};
@@ -318,6 +319,17 @@ pub(crate) struct Stages<'s, S, I, Z> {
     pub depth: Z,
     /// The shader discards fragments in this draw: [`Shader::CUTOUT`] and [`Shader::cutout`], asked once.
     pub cutout: bool,
+    /// The shader reads its varyings' slopes in this draw ([`Shader::slopes`], asked once).
+    pub slopes: bool,
+}
+
+impl<S, I: Interpolator, Z> Stages<'_, S, I, Z> {
+    /// The fraction steps of a triangle with interpolator set-up `setup` and edge functions `edges`, when the draw
+    /// reads slopes; zero otherwise.
+    #[inline(always)]
+    fn fraction_steps<E: Edges>(&self, setup: &I::Setup, edges: &E) -> FractionSteps {
+        if self.slopes { self.interpolator.fraction_steps(setup, edges.steps()) } else { FractionSteps::default() }
+    }
 }
 
 /// Largest bounding box, in pixel centres, that [`Coverage::covers_a_centre`] tests centre by centre.
@@ -382,8 +394,20 @@ impl<E: Edges> Coverage<E> {
         }
         let edges = &self.edges;
         let setup = stages.interpolator.setup(f.inv_w, f.inv_area);
+        let steps = stages.fraction_steps(&setup, edges);
         let [v0, v1, v2] = oriented(f.swapped, varyings);
         let (var_d1, var_d2) = (v1.sub(v0), v2.sub(v0));
+        // The fragment's varyings and, when the draw reads them, their slopes.
+        let interpolate = |ef: [f32; 3]| {
+            let [w1, w2, r] = stages.interpolator.weights(&setup, ef);
+            let var = v0.interpolate(&var_d1, w1, &var_d2, w2);
+            let slopes = if stages.slopes {
+                Slopes::of(&var_d1, &var_d2, steps.weight_slopes(w1, w2, r))
+            } else {
+                Slopes::zero(v0)
+            };
+            (var, slopes)
+        };
         let width = target.width() as usize;
         let row0 = target.rows().start as i32;
         let mut shaded = 0u64;
@@ -403,21 +427,21 @@ impl<E: Edges> Coverage<E> {
                 if S::CUTOUT && stages.cutout {
                     // Shaded when nearer, written (and counted) when kept and still nearer.
                     if stages.depth.nearer(&target.depth, index, z) {
-                        let (w1, w2) = stages.interpolator.weights(&setup, ef);
-                        let var = v0.interpolate(&var_d1, w1, &var_d2, w2);
+                        let (var, slopes) = interpolate(ef);
                         let fragment = Fragment { x: x as u32, y: y as u32, depth: z, front_facing: f.front_facing };
-                        if stages.shader.kept(&fragment, face, &var) && stages.depth.test(&mut target.depth, index, z) {
-                            target.color.write(index, stages.shader.fragment(&fragment, face, &var));
+                        if stages.shader.kept(&fragment, face, &var, &slopes)
+                            && stages.depth.test(&mut target.depth, index, z)
+                        {
+                            target.color.write(index, stages.shader.fragment(&fragment, face, &var, &slopes));
                             shaded += 1;
                         }
                     }
                 } else if stages.depth.test(&mut target.depth, index, z) {
                     // A constant: a depth-only shader compiles without the fragment stage.
                     if S::FRAGMENT_STAGE {
-                        let (w1, w2) = stages.interpolator.weights(&setup, ef);
-                        let var = v0.interpolate(&var_d1, w1, &var_d2, w2);
+                        let (var, slopes) = interpolate(ef);
                         let fragment = Fragment { x: x as u32, y: y as u32, depth: z, front_facing: f.front_facing };
-                        let color = stages.shader.fragment(&fragment, face, &var);
+                        let color = stages.shader.fragment(&fragment, face, &var, &slopes);
                         target.color.write(index, color);
                     }
                     shaded += 1;
@@ -506,8 +530,9 @@ impl<E: Edges> Coverage<E> {
         let f = &self.frame;
         let edges = &self.edges;
         let setup = stages.interpolator.setup(f.inv_w, f.inv_area);
+        let steps = stages.fraction_steps(&setup, edges);
         let [v0, v1, v2] = oriented(f.swapped, varyings);
-        batch.start_triangle([*v0, v1.sub(v0), v2.sub(v0)], *face, f.front_facing);
+        batch.start_triangle([*v0, v1.sub(v0), v2.sub(v0)], *face, f.front_facing, steps);
         let width = target.width() as usize;
         let row0 = target.rows().start as i32;
         let mut shaded = 0u64;

@@ -1,7 +1,7 @@
 //! The programmable stages: what a draw computes per vertex, per triangle and per pixel.
 
-use super::Varyings;
 use super::batch::{BATCH_SIZE, FragmentBatch};
+use super::{Slopes, Varyings};
 use crate::math::{Mat4, Vec3, Vec4};
 use crate::mesh::{Attributes, Mesh};
 
@@ -57,8 +57,23 @@ pub trait Shader {
     /// Triangle stage: computed once for each triangle that reaches the rasterizer.
     fn face(&self, mesh: &Mesh<'_>, triangle: [usize; 3]) -> Self::Face;
 
-    /// Fragment stage: the colour of one covered pixel that passed the depth test.
-    fn fragment(&self, fragment: &Fragment, face: &Self::Face, varyings: &Self::Varyings) -> Vec3;
+    /// Fragment stage: the colour of one covered pixel that passed the depth test, whose varyings change by
+    /// `slopes` per pixel (zero unless [`Shader::slopes`]).
+    fn fragment(
+        &self,
+        fragment: &Fragment,
+        face: &Self::Face,
+        varyings: &Self::Varyings,
+        slopes: &Slopes<Self::Varyings>,
+    ) -> Vec3;
+
+    /// Whether this draw's fragment stage reads the varyings' screen-space [`Slopes`] (to choose a texture's level
+    /// of detail), asked once per draw: the pipeline then works them out per fragment, exactly, from the
+    /// triangle's set-up (`pipeline/slopes.rs`), and hands over zeros otherwise.
+    #[inline(always)]
+    fn slopes(&self) -> bool {
+        false
+    }
 
     /// Whether the pixel loop gathers fragments into a [`FragmentBatch`] and calls [`Shader::shade_batch`] rather
     /// than [`Shader::fragment`] per pixel. A constant, so the pixel loop is chosen at compile time.
@@ -84,8 +99,14 @@ pub trait Shader {
 
     /// Whether a fragment of a [`Shader::cutout`] draw is kept (true by default).
     #[inline(always)]
-    fn kept(&self, fragment: &Fragment, face: &Self::Face, varyings: &Self::Varyings) -> bool {
-        let _ = (fragment, face, varyings);
+    fn kept(
+        &self,
+        fragment: &Fragment,
+        face: &Self::Face,
+        varyings: &Self::Varyings,
+        slopes: &Slopes<Self::Varyings>,
+    ) -> bool {
+        let _ = (fragment, face, varyings, slopes);
         true
     }
 
@@ -93,7 +114,7 @@ pub trait Shader {
     #[inline(always)]
     fn kept_batch(&self, batch: &FragmentBatch<Self::Varyings, Self::Face>, keep: &mut [bool; BATCH_SIZE]) {
         for (i, k) in keep.iter_mut().enumerate().take(batch.len()) {
-            *k = self.kept(&batch.fragment(i), batch.face(i), batch.varyings(i));
+            *k = self.kept(&batch.fragment(i), batch.face(i), batch.varyings(i), &batch.slopes(i));
         }
     }
 
@@ -103,7 +124,7 @@ pub trait Shader {
     #[inline(always)]
     fn shade_batch(&self, batch: &FragmentBatch<Self::Varyings, Self::Face>, colors: &mut [Vec3; BATCH_SIZE]) {
         for (i, c) in colors.iter_mut().enumerate().take(batch.len()) {
-            *c = self.fragment(&batch.fragment(i), batch.face(i), batch.varyings(i));
+            *c = self.fragment(&batch.fragment(i), batch.face(i), batch.varyings(i), &batch.slopes(i));
         }
     }
 }

@@ -3,7 +3,7 @@
 //! [`super::SurfaceShader`]'s last parameter is a set of these bits (by default [`ALL`]). A draw compiled for
 //! fewer leaves the other stages out of the program: a firmware that draws one kind of surface links the code of
 //! that one (its variant is checked against the set when the shader is made). Maps need no bit: a draw without
-//! texture coordinates (`U` absent) compiles no map code at all.
+//! texture coordinates (`U` absent) compiles no map code at all; mipmapped maps need [`MIPMAPS`].
 
 /// Unlit shading (material or vertex colours).
 pub const UNLIT: u32 = 1;
@@ -24,8 +24,11 @@ pub const SHADOWS: u32 = 1 << 6;
 pub const CUTOUT: u32 = 1 << 7;
 /// Two-sided per-pixel lighting ([`super::Variant::two_sided`]: a draw that keeps back faces).
 pub const TWO_SIDED: u32 = 1 << 8;
+/// Mipmapped maps ([`super::Variant::mip_filter`]): the slopes of the texture coordinates and the levels of
+/// detail.
+pub const MIPMAPS: u32 = 1 << 9;
 /// Everything: what [`super::draw_mesh`] compiles.
-pub const ALL: u32 = UNLIT | FLAT | GOURAUD | PER_PIXEL | VIEWS | POINT_LIGHTS | SHADOWS | CUTOUT | TWO_SIDED;
+pub const ALL: u32 = UNLIT | FLAT | GOURAUD | PER_PIXEL | VIEWS | POINT_LIGHTS | SHADOWS | CUTOUT | TWO_SIDED | MIPMAPS;
 
 /// True when `caps` holds `bit`: a constant in a shader compiled for `caps`, so the code it guards is left out
 /// when false.

@@ -1,12 +1,12 @@
 //! Unlit, flat and Gouraud shading over a batch: the albedo (material or vertex colours, times the diffuse map)
 //! under light computed once per triangle or per vertex, plus the highlight and the glow map.
 
-use super::columns::{Column2, Column3};
-use super::maps::{MapReader, modulated};
+use super::columns::Column3;
+use super::maps::{Coordinates, MapReader, modulated};
 use super::{Material, SpecularSource, Variant};
 use crate::math::Vec3;
 use crate::pipeline::BATCH_SIZE;
-use crate::texture::{Filter, Wrap};
+use crate::texture::{Filter, MipFilter, Wrap};
 
 /// The light a coarse model shades with.
 pub(crate) enum Light<'a> {
@@ -19,23 +19,25 @@ pub(crate) enum Light<'a> {
 
 /// Colours the batch: `albedo` (per fragment) times the diffuse map when the variant reads it, times the diffuse
 /// light, plus the specular colour (times the specular map) times the specular light, plus the glow map; maps
-/// read with filter `F` and wrap mode `W` at `uv`, and only when `maps` (false, a constant, leaves their code out).
+/// read with filter `F`, wrap mode `W` and `mip_filter` at `at`, and only when `maps_read` (false, a constant,
+/// leaves their code out).
 #[allow(clippy::too_many_arguments, clippy::needless_range_loop)] // lanes: one index into every column
 #[inline(always)]
 pub(crate) fn shade<F: Filter, W: Wrap>(
     v: &Variant,
     m: &Material<'_>,
     mut albedo: Column3,
-    uv: &Column2,
+    at: &Coordinates,
     light: &Light<'_>,
     len: usize,
     colors: &mut [Vec3; BATCH_SIZE],
     maps_read: bool,
+    mip_filter: MipFilter,
 ) {
-    let maps = &mut MapReader::<F, W>::new();
+    let maps = &mut MapReader::<F, W>::new(mip_filter);
     if let (true, true, Some(map)) = (maps_read, v.albedo_map, m.diffuse) {
         let base = albedo;
-        modulated(&mut albedo, uv, maps, &map, Some(&base), len);
+        modulated(&mut albedo, at, maps, &map, Some(&base), len);
     }
     let out = &mut colors[..len];
     let (diffuse, specular) = match light {
@@ -51,7 +53,7 @@ pub(crate) fn shade<F: Filter, W: Wrap>(
     if v.specular != SpecularSource::None {
         let mut color = Column3::splat(m.specular);
         if let (true, SpecularSource::Map, Some(map)) = (maps_read, v.specular, m.specular_map) {
-            modulated(&mut color, uv, maps, &map, Some(&Column3::splat(m.specular)), len);
+            modulated(&mut color, at, maps, &map, Some(&Column3::splat(m.specular)), len);
         }
         for (i, c) in out.iter_mut().enumerate() {
             *c += color.get(i).mul_elem(specular.get(i));
@@ -59,7 +61,7 @@ pub(crate) fn shade<F: Filter, W: Wrap>(
     }
     if let (true, true, Some(map)) = (maps_read, v.glow_map, m.glow_map) {
         let mut glow = Column3::ZERO;
-        modulated(&mut glow, uv, maps, &map, None, len);
+        modulated(&mut glow, at, maps, &map, None, len);
         for (i, c) in out.iter_mut().enumerate() {
             *c += glow.get(i);
         }

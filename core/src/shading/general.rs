@@ -17,8 +17,8 @@ use super::{
 use crate::color::{texel_alpha, unpack_rgb888};
 use crate::math::{Vec2, Vec3, Vec4, float};
 use crate::mesh::{Attributes, Mesh};
-use crate::pipeline::{Fragment, Shader};
-use crate::texture::{Bilinear, Clamp, FilterMode, Nearest, Repeat, Texture, WrapMode};
+use crate::pipeline::{Fragment, Shader, Slopes};
+use crate::texture::{Bilinear, Clamp, FilterMode, MipFilter, Nearest, Repeat, Texture, WrapMode};
 
 /// Everything any variant interpolates. Fields a variant does not use stay zero (so that they never make the
 /// pipeline skip a triangle).
@@ -41,6 +41,19 @@ pub struct GeneralVaryings {
 }
 
 crate::impl_varyings!(GeneralVaryings { color, normal, world, uv, tangent, diffuse, specular });
+
+/// Where a fragment reads its maps: its texture coordinates and their slopes.
+struct MapPoint {
+    uv: Vec2,
+    slopes: Slopes<Vec2>,
+}
+
+impl MapPoint {
+    /// Of a fragment with varyings `v` changing by `slopes`.
+    fn of(v: &GeneralVaryings, slopes: &Slopes<GeneralVaryings>) -> Self {
+        Self { uv: v.uv, slopes: Slopes { dx: slopes.dx.uv, dy: slopes.dy.uv } }
+    }
+}
 
 /// A shader that runs any resolved [`Variant`], branching on it for every vertex and fragment.
 #[derive(Clone, Copy, Debug)]
@@ -65,19 +78,21 @@ impl<'a> GeneralShader<'a> {
         Self { variant, transforms, tangent_frame: TangentFrame::new(&transforms), tangents, material, lights }
     }
 
-    /// The packed texel of `map` at `uv`, with the variant's filter and wrap mode.
-    fn texel(&self, map: &Texture<'_>, uv: Vec2) -> u32 {
+    /// The packed texel of `map` at `at`, with the variant's filter, wrap mode and filter between levels.
+    fn texel(&self, map: &Texture<'_>, at: &MapPoint) -> u32 {
+        let (chain, mip) = (map.mip_chain(), self.variant.mip_filter);
+        let lod = chain.level_of_detail(&at.slopes);
         match (self.variant.filter, self.variant.wrap) {
-            (FilterMode::Nearest, WrapMode::Repeat) => map.sample_packed::<Nearest, Repeat>(uv),
-            (FilterMode::Nearest, WrapMode::Clamp) => map.sample_packed::<Nearest, Clamp>(uv),
-            (FilterMode::Bilinear, WrapMode::Repeat) => map.sample_packed::<Bilinear, Repeat>(uv),
-            (FilterMode::Bilinear, WrapMode::Clamp) => map.sample_packed::<Bilinear, Clamp>(uv),
+            (FilterMode::Nearest, WrapMode::Repeat) => chain.sample_packed::<Nearest, Repeat>(at.uv, lod, mip),
+            (FilterMode::Nearest, WrapMode::Clamp) => chain.sample_packed::<Nearest, Clamp>(at.uv, lod, mip),
+            (FilterMode::Bilinear, WrapMode::Repeat) => chain.sample_packed::<Bilinear, Repeat>(at.uv, lod, mip),
+            (FilterMode::Bilinear, WrapMode::Clamp) => chain.sample_packed::<Bilinear, Clamp>(at.uv, lod, mip),
         }
     }
 
     /// The material colour, times the vertex colour `color` when the variant reads it, times the diffuse map at
     /// `uv` when it reads that.
-    fn albedo(&self, color: Vec3, uv: Vec2) -> Vec3 {
+    fn albedo(&self, color: Vec3, uv: &MapPoint) -> Vec3 {
         let m = &self.material;
         let base = if self.variant.vertex_colors { m.color.mul_elem(color) } else { m.color };
         match m.diffuse {
@@ -87,7 +102,7 @@ impl<'a> GeneralShader<'a> {
     }
 
     /// The specular colour: the material's, times the specular map when the variant reads it.
-    fn specular_color(&self, uv: Vec2) -> Vec3 {
+    fn specular_color(&self, uv: &MapPoint) -> Vec3 {
         let m = &self.material;
         match m.specular_map {
             Some(map) if self.variant.specular == SpecularSource::Map => {
@@ -98,7 +113,7 @@ impl<'a> GeneralShader<'a> {
     }
 
     /// `lit` plus the highlight (when the variant has one) and the glow map (when it reads it).
-    fn finish(&self, lit: Vec3, specular_light: Vec3, uv: Vec2) -> Vec3 {
+    fn finish(&self, lit: Vec3, specular_light: Vec3, uv: &MapPoint) -> Vec3 {
         let mut color = lit;
         if self.variant.specular != SpecularSource::None {
             color += self.specular_color(uv).mul_elem(specular_light);
@@ -112,7 +127,7 @@ impl<'a> GeneralShader<'a> {
     /// Per-pixel lighting: the shading normal (interpolated or from a map), then each light with its shadow map.
     ///
     /// Two-sided, a back-facing fragment's geometric and shading normals are turned round.
-    fn per_pixel(&self, v: &GeneralVaryings, front_facing: bool) -> Vec3 {
+    fn per_pixel(&self, v: &GeneralVaryings, uv: &MapPoint, front_facing: bool) -> Vec3 {
         let (variant, m) = (&self.variant, &self.material);
         let (normal, tangent) = (v.normal, v.tangent);
         let geometric = normal.normalize_or_zero();
@@ -120,11 +135,11 @@ impl<'a> GeneralShader<'a> {
             (NormalSource::TangentMap, Some(map)) => {
                 let (n, t) = (normal, tangent.truncate());
                 let b = n.cross(t) * tangent.w;
-                let d = decode_normal(self.texel(&map.texture, v.uv));
+                let d = decode_normal(self.texel(&map.texture, uv));
                 (t * d.x + b * d.y + n * d.z).normalize_or_zero()
             }
             (NormalSource::ObjectMap, Some(map)) => {
-                (self.transforms.normal * decode_normal(self.texel(&map.texture, v.uv))).normalize_or_zero()
+                (self.transforms.normal * decode_normal(self.texel(&map.texture, uv))).normalize_or_zero()
             }
             _ => geometric,
         };
@@ -133,7 +148,7 @@ impl<'a> GeneralShader<'a> {
         let highlights = variant.specular != SpecularSource::None;
         let to_eye = if highlights { (self.transforms.eye - v.world).normalize_or_zero() } else { Vec3::ZERO };
         let mut diffuse = match m.occlusion_map {
-            Some(map) if variant.occlusion_map => self.lights.ambient.mul_elem(unpack_rgb888(self.texel(&map, v.uv))),
+            Some(map) if variant.occlusion_map => self.lights.ambient.mul_elem(unpack_rgb888(self.texel(&map, uv))),
             _ => self.lights.ambient,
         };
         let mut specular = Vec3::ZERO;
@@ -153,7 +168,7 @@ impl<'a> GeneralShader<'a> {
                 specular += light.color * share.map_or(k, |s| k * s);
             }
         }
-        self.finish(self.albedo(v.color, v.uv).mul_elem(diffuse), specular, v.uv)
+        self.finish(self.albedo(v.color, uv).mul_elem(diffuse), specular, uv)
     }
 }
 
@@ -171,9 +186,11 @@ impl Shader for GeneralShader<'_> {
 
     /// The diffuse map's alpha at the fragment against the cut-off; nothing is kept when the whole draw is cut
     /// out.
-    fn kept(&self, _: &Fragment, _: &LightTerms, v: &GeneralVaryings) -> bool {
+    fn kept(&self, _: &Fragment, _: &LightTerms, v: &GeneralVaryings, slopes: &Slopes<GeneralVaryings>) -> bool {
         match (self.variant.cutout, self.material.diffuse) {
-            (Cutout::Map(cutoff), Some(map)) => self.material.keeps(texel_alpha(self.texel(&map, v.uv)), cutoff),
+            (Cutout::Map(cutoff), Some(map)) => {
+                self.material.keeps(texel_alpha(self.texel(&map, &MapPoint::of(v, slopes))), cutoff)
+            }
             (Cutout::Everything, _) => false,
             _ => true,
         }
@@ -220,12 +237,18 @@ impl Shader for GeneralShader<'_> {
         face_light(&self.transforms, &self.lights, self.material.shininess, &self.variant, mesh, triangle)
     }
 
-    fn fragment(&self, f: &Fragment, face: &LightTerms, v: &GeneralVaryings) -> Vec3 {
+    /// Reads slopes when the variant mipmaps.
+    fn slopes(&self) -> bool {
+        self.variant.mip_filter != MipFilter::Off
+    }
+
+    fn fragment(&self, f: &Fragment, face: &LightTerms, v: &GeneralVaryings, slopes: &Slopes<GeneralVaryings>) -> Vec3 {
+        let uv = &MapPoint::of(v, slopes);
         match self.variant.shading {
-            ShadingModel::Unlit => self.albedo(v.color, v.uv),
-            ShadingModel::Flat => self.finish(self.albedo(v.color, v.uv).mul_elem(face.diffuse), face.specular, v.uv),
-            ShadingModel::Gouraud => self.finish(self.albedo(v.color, v.uv).mul_elem(v.diffuse), v.specular, v.uv),
-            ShadingModel::Phong => self.per_pixel(v, f.front_facing),
+            ShadingModel::Unlit => self.albedo(v.color, uv),
+            ShadingModel::Flat => self.finish(self.albedo(v.color, uv).mul_elem(face.diffuse), face.specular, uv),
+            ShadingModel::Gouraud => self.finish(self.albedo(v.color, uv).mul_elem(v.diffuse), v.specular, uv),
+            ShadingModel::Phong => self.per_pixel(v, uv, f.front_facing),
             ShadingModel::Depth { near, far } => {
                 let scale = 1.0 / (far - near);
                 let scale = if scale.is_finite() { scale } else { 0.0 };

@@ -5,40 +5,112 @@ use core::marker::PhantomData;
 use super::columns::{Column2, Column3};
 use super::scratch::Scratch;
 use crate::color::unpack_rgb888;
-use crate::math::Vec3;
-use crate::pipeline::{BATCH_SIZE, lanes};
-use crate::texture::{Filter, Texture, Wrap};
+use crate::math::{Vec2, Vec3};
+use crate::pipeline::{BATCH_SIZE, Slopes, lanes};
+use crate::texture::{Filter, MipFilter, Texture, Wrap, level_of_detail};
 
-/// A batch's reads of the draw's maps at its texture coordinates, with one filter and wrap mode: the texel
-/// addresses are worked out for one map size and used again by every following map of that size.
+/// A batch's texture coordinates and, in a draw that mipmaps, their screen-space slopes.
+#[derive(Clone, Copy)]
+pub(crate) struct Coordinates {
+    pub uv: Column2,
+    /// `None` in a draw that does not mipmap (so that its batches do not clear four more columns).
+    pub slopes: Option<Slopes<Column2>>,
+}
+
+impl Coordinates {
+    /// Every lane at `(0, 0)`, no slopes.
+    pub const ZERO: Self = Self { uv: Column2::ZERO, slopes: None };
+
+    /// The coordinates `uv(i)` of the lanes of a batch of `len` and, when `slopes` is set, their slopes
+    /// `slopes_of(i)`.
+    #[inline(always)]
+    pub fn gather(
+        len: usize,
+        uv: impl Fn(usize) -> Vec2,
+        slopes: bool,
+        slopes_of: impl Fn(usize) -> Slopes<Vec2>,
+    ) -> Self {
+        let uv = Column2::gather(len, uv);
+        if !slopes {
+            return Self { uv, slopes: None };
+        }
+        let mut columns = Slopes { dx: Column2::ZERO, dy: Column2::ZERO };
+        for i in 0..len.min(BATCH_SIZE) {
+            let s = slopes_of(i);
+            (columns.dx.x[i], columns.dx.y[i]) = (s.dx.x, s.dx.y);
+            (columns.dy.x[i], columns.dy.y[i]) = (s.dy.x, s.dy.y);
+        }
+        Self { uv, slopes: Some(columns) }
+    }
+}
+
+/// A map's width, height and number of levels read.
+type MapShape = (u32, u32, usize);
+
+/// A batch's reads of the draw's maps at its texture coordinates, with one filter, wrap mode and filter between
+/// levels: where the maps are read (texel addresses, or each lane's level of detail) is worked out for one map
+/// size and used again by every following map of that size.
 pub(crate) struct MapReader<F: Filter, W: Wrap> {
+    mip_filter: MipFilter,
+    /// The texel addresses, for maps of the size they were made for.
     addresses: Option<((u32, u32), F::Addresses<BATCH_SIZE>)>,
+    /// Each lane's level of detail, for maps of the size and number of levels they were worked out for.
+    levels_of_detail: Option<(MapShape, [u32; BATCH_SIZE])>,
     _wrap: PhantomData<W>,
 }
 
 impl<F: Filter, W: Wrap> MapReader<F, W> {
-    /// A reader with no addresses yet.
+    /// A reader with no addresses yet, choosing levels of detail as `mip_filter` says.
     #[inline(always)]
-    pub fn new() -> Self {
-        Self { addresses: None, _wrap: PhantomData }
+    pub fn new(mip_filter: MipFilter) -> Self {
+        Self { mip_filter, addresses: None, levels_of_detail: None, _wrap: PhantomData }
     }
 
-    /// The texels of `map` at the lanes' coordinates `uv` (the same `uv` at every call), packed.
+    /// The texels of `map` at the lanes' coordinates `at` (the same at every call), packed: from its levels of
+    /// detail when the draw mipmaps and the map has them, else from the map alone.
     #[inline(always)]
-    pub fn read(&mut self, map: &Texture<'_>, uv: &Column2, out: &mut [u32; BATCH_SIZE]) {
+    pub fn read(&mut self, map: &Texture<'_>, at: &Coordinates, out: &mut [u32; BATCH_SIZE]) {
+        if self.mip_filter != MipFilter::Off && map.has_mip_levels() {
+            return self.read_levels(map, at, out);
+        }
         let size = (map.width(), map.height());
         let addresses = match &mut self.addresses {
             Some((made_for, addresses)) if *made_for == size => addresses,
-            slot => &mut slot.insert((size, F::addresses::<W, BATCH_SIZE>(size.0, size.1, &uv.x, &uv.y))).1,
+            slot => &mut slot.insert((size, F::addresses::<W, BATCH_SIZE>(size.0, size.1, &at.uv.x, &at.uv.y))).1,
         };
         F::read::<W, BATCH_SIZE>(map, addresses, out);
+    }
+
+    /// [`Self::read`] from the map's levels of detail, each lane at its own. Not inlined: one copy per filter and
+    /// wrap mode serves every draw's stages, which call it once per map and batch.
+    #[inline(never)]
+    fn read_levels(&mut self, map: &Texture<'_>, at: &Coordinates, out: &mut [u32; BATCH_SIZE]) {
+        let chain = map.mip_chain();
+        let shape = (map.width(), map.height(), chain.levels().len());
+        let lod = match &mut self.levels_of_detail {
+            Some((made_for, lod)) if *made_for == shape => lod,
+            slot => {
+                // Without slopes (coordinates gathered for a draw that does not mipmap), the texture itself.
+                let (w, h) = (shape.0 as f32, shape.1 as f32);
+                let lod = match &at.slopes {
+                    Some(Slopes { dx, dy }) => {
+                        core::array::from_fn(|i| level_of_detail(w, h, [dx.x[i], dx.y[i], dy.x[i], dy.y[i]], shape.2))
+                    }
+                    None => [0; BATCH_SIZE],
+                };
+                &mut slot.insert((shape, lod)).1
+            }
+        };
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = chain.sample_packed::<F, W>(Vec2::new(at.uv.x[i], at.uv.y[i]), lod[i], self.mip_filter);
+        }
     }
 }
 
 /// Albedo: its base colour (the material's, times the vertex colours) times the diffuse map.
 pub(crate) fn albedo<F: Filter, W: Wrap>(s: &mut Scratch, maps: &mut MapReader<F, W>, map: &Texture<'_>) {
     let base = s.albedo;
-    modulated(&mut s.albedo, &s.uv, maps, map, Some(&base), s.len);
+    modulated(&mut s.albedo, &s.at, maps, map, Some(&base), s.len);
 }
 
 /// Specular colour: `specular` times the specular map.
@@ -48,7 +120,7 @@ pub(crate) fn specular_color<F: Filter, W: Wrap>(
     map: &Texture<'_>,
     specular: Vec3,
 ) {
-    modulated(&mut s.specular_color, &s.uv, maps, map, Some(&Column3::splat(specular)), s.len);
+    modulated(&mut s.specular_color, &s.at, maps, map, Some(&Column3::splat(specular)), s.len);
 }
 
 /// Ambient light: `ambient` times the occlusion map, into `s.ambient`.
@@ -58,28 +130,28 @@ pub(crate) fn occluded_ambient<F: Filter, W: Wrap>(
     map: &Texture<'_>,
     ambient: Vec3,
 ) {
-    modulated(&mut s.ambient, &s.uv, maps, map, Some(&Column3::splat(ambient)), s.len);
+    modulated(&mut s.ambient, &s.at, maps, map, Some(&Column3::splat(ambient)), s.len);
 }
 
 /// Emission: the glow map.
 pub(crate) fn glow<F: Filter, W: Wrap>(s: &mut Scratch, maps: &mut MapReader<F, W>, map: &Texture<'_>) {
-    modulated(&mut s.emission, &s.uv, maps, map, None, s.len);
+    modulated(&mut s.emission, &s.at, maps, map, None, s.len);
 }
 
-/// The map at the texture coordinates of each lane of a batch of `len`, times that lane's `color` if given, into
-/// `out`.
+/// The map at the texture coordinates `at` of each lane of a batch of `len`, times that lane's `color` if given,
+/// into `out`.
 #[allow(clippy::needless_range_loop)] // lanes: one index into every column
 #[inline(always)]
 pub(crate) fn modulated<F: Filter, W: Wrap>(
     out: &mut Column3,
-    uv: &Column2,
+    at: &Coordinates,
     maps: &mut MapReader<F, W>,
     map: &Texture<'_>,
     color: Option<&Column3>,
     len: usize,
 ) {
     let mut texels = [0; BATCH_SIZE];
-    maps.read(map, uv, &mut texels);
+    maps.read(map, at, &mut texels);
     match color {
         // `color.mul_elem(texel)`, lane by lane.
         Some(color) => {
@@ -101,7 +173,7 @@ pub(crate) fn modulated<F: Filter, W: Wrap>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::texture::{Bilinear, Clamp, Nearest, Repeat};
+    use crate::texture::{Bilinear, Clamp, MipContent, Nearest, Repeat, build_mip_levels};
 
     /// A reader gives each map's own samples when maps of different sizes take turns (its addresses are made
     /// again whenever the size changes), for both filters.
@@ -118,10 +190,11 @@ mod tests {
             y: core::array::from_fn(|i| 1.3 - i as f32 * 0.0517),
         };
         fn check<F: Filter, W: Wrap>(maps: [&Texture<'_>; 5], uv: &Column2) {
-            let mut reader = MapReader::<F, W>::new();
+            let mut reader = MapReader::<F, W>::new(MipFilter::Off);
+            let at = Coordinates { uv: *uv, ..Coordinates::ZERO };
             for map in maps {
                 let (mut read, mut expected) = ([0; BATCH_SIZE], [0; BATCH_SIZE]);
-                reader.read(map, uv, &mut read);
+                reader.read(map, &at, &mut read);
                 F::sample_packed_lanes::<W, BATCH_SIZE>(map, &uv.x, &uv.y, &mut expected);
                 assert_eq!(read, expected, "{}x{}", map.width(), map.height());
             }
@@ -132,5 +205,52 @@ mod tests {
         check::<Nearest, Clamp>(maps, &uv);
         check::<Bilinear, Repeat>(maps, &uv);
         check::<Bilinear, Clamp>(maps, &uv);
+    }
+
+    /// A mipmapping reader gives each lane the chain's sample at the lane's own level of detail, for maps with
+    /// levels of different sizes taking turns and a map without levels, which is read alone.
+    #[test]
+    fn a_mipmapping_reader_samples_each_lane_at_its_level_of_detail() {
+        let big: [u32; 64] = core::array::from_fn(|i| (i as u32 * 0x03_0507) & 0xFF_FFFF);
+        let small: [u32; 12] = core::array::from_fn(|i| 0xFF_FFFF - i as u32 * 0x11_0203);
+        let (mut big_levels, mut small_levels) = ([0; 21], [0; 3]);
+        let big = Texture::new(&big, 8, 8).unwrap();
+        let small = Texture::new(&small, 4, 3).unwrap();
+        build_mip_levels(&big, MipContent::Color, &mut big_levels).unwrap();
+        build_mip_levels(&small, MipContent::Data, &mut small_levels).unwrap();
+        let (big, alone) = (big.with_mip_levels(&big_levels).unwrap(), big);
+        let small = small.with_mip_levels(&small_levels).unwrap();
+        // Slopes from magnified to beyond the last level.
+        let slopes = Slopes {
+            dx: Column2 { x: core::array::from_fn(|i| i as f32 * 0.04), y: [0.002; BATCH_SIZE] },
+            dy: Column2 { x: [0.0; BATCH_SIZE], y: core::array::from_fn(|i| (i % 5) as f32 * 0.07) },
+        };
+        let at = Coordinates {
+            uv: Column2 {
+                x: core::array::from_fn(|i| i as f32 * 0.0731),
+                y: core::array::from_fn(|i| 0.9 - i as f32 * 0.05),
+            },
+            slopes: Some(slopes),
+        };
+        let lane = |i: usize| Slopes {
+            dx: Vec2::new(slopes.dx.x[i], slopes.dx.y[i]),
+            dy: Vec2::new(slopes.dy.x[i], slopes.dy.y[i]),
+        };
+        for mip in [MipFilter::Nearest, MipFilter::Linear] {
+            let mut reader = MapReader::<Bilinear, Repeat>::new(mip);
+            let mut levels_seen = [false; 4];
+            for map in [&big, &small, &alone, &big] {
+                let mut read = [0; BATCH_SIZE];
+                reader.read(map, &at, &mut read);
+                let chain = map.mip_chain();
+                for (i, &texel) in read.iter().enumerate() {
+                    let lod = chain.level_of_detail(&lane(i));
+                    levels_seen[(lod / crate::texture::LEVEL) as usize] = true;
+                    let uv = Vec2::new(at.uv.x[i], at.uv.y[i]);
+                    assert_eq!(texel, chain.sample_packed::<Bilinear, Repeat>(uv, lod, mip), "{mip:?} lane {i}");
+                }
+            }
+            assert_eq!(levels_seen, [true; 4]);
+        }
     }
 }

@@ -1,7 +1,7 @@
 //! A surface's material with its maps: what a draw colours its pixels with.
 
 use crate::math::Vec3;
-use crate::texture::{FilterMode, Texture, WrapMode};
+use crate::texture::{FilterMode, MipFilter, Texture, WrapMode};
 
 /// The space a normal map's normals are given in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -26,8 +26,8 @@ pub struct NormalMap<'a> {
     pub space: NormalSpace,
 }
 
-/// How a surface looks: colours, Blinn-Phong exponent, and optional maps, all sampled with one filter and wrap
-/// mode.
+/// How a surface looks: colours, Blinn-Phong exponent, and optional maps, all sampled with one filter, wrap mode
+/// and filter between levels of detail.
 #[derive(Clone, Copy, Debug)]
 pub struct Material<'a> {
     /// Diffuse colour; multiplied by `diffuse` when there is one.
@@ -52,6 +52,9 @@ pub struct Material<'a> {
     pub filter: FilterMode,
     /// Wrap mode of every map.
     pub wrap: WrapMode,
+    /// How every map chooses among its levels of detail, where it has them ([`Texture::with_mip_levels`]): a
+    /// draw none of whose maps has levels samples the maps alone.
+    pub mip_filter: MipFilter,
     /// The surface's alpha, times the diffuse map's ([`crate::color::texel_alpha`]); read only with an
     /// `alpha_cutoff`.
     pub opacity: f32,
@@ -70,7 +73,8 @@ impl Default for Material<'_> {
 }
 
 impl Material<'_> {
-    /// A plain material: `color`, no highlights, no maps.
+    /// A plain material: `color`, no highlights, no maps (bilinear, repeating and blending levels of detail when
+    /// some are given).
     pub const fn plain(color: Vec3) -> Self {
         Self {
             color,
@@ -83,6 +87,7 @@ impl Material<'_> {
             occlusion_map: None,
             filter: FilterMode::Bilinear,
             wrap: WrapMode::Repeat,
+            mip_filter: MipFilter::Linear,
             opacity: 1.0,
             alpha_cutoff: None,
         }

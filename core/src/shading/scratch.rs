@@ -1,7 +1,8 @@
 //! The working set of one batch of fragments, as a structure of arrays: each stage reads and writes whole
 //! columns.
 
-use super::columns::{Column, Column2, Column3};
+use super::columns::{Column, Column3};
+use super::maps::Coordinates;
 use crate::pipeline::BATCH_SIZE;
 
 /// Per-fragment values of one batch. Only the first `len` lanes of each column are meaningful, and a column is
@@ -16,8 +17,8 @@ pub(crate) struct Scratch {
     /// Unit shading normal: the geometric one, or the normal map's.
     pub shading: Column3,
     pub world: Column3,
-    /// Texture coordinates.
-    pub uv: Column2,
+    /// Texture coordinates (and their slopes, in a draw that mipmaps).
+    pub at: Coordinates,
     /// World tangent.
     pub tangent: Column3,
     /// The tangent frame's handedness: the sign of the bitangent.
@@ -52,7 +53,7 @@ impl Scratch {
             geometric: v3,
             shading: v3,
             world: v3,
-            uv: Column2::ZERO,
+            at: Coordinates::ZERO,
             tangent: v3,
             handedness: [0.0; BATCH_SIZE],
             facing: [1.0; BATCH_SIZE],

@@ -3,9 +3,9 @@
 use core::marker::PhantomData;
 
 use super::capabilities::{self, has};
-use super::columns::{self, Column2, Column3};
+use super::columns::{self, Column3};
 use super::light_terms::{face_light, vertex_light};
-use super::maps::{MapReader, albedo, glow, occluded_ambient, specular_color};
+use super::maps::{Coordinates, MapReader, albedo, glow, occluded_ambient, specular_color};
 use super::normals::{self, object_map, tangent_map};
 use super::scratch::Scratch;
 use super::varyings::{Absent, Slot, SurfaceVaryings};
@@ -14,9 +14,9 @@ use super::{Layout, Lighting, Material, NormalSource, SpecularSource, Variant, l
 use crate::color::texel_alpha;
 use crate::math::{Mat4, Vec2, Vec3, Vec4};
 use crate::mesh::{Attributes, Mesh};
-use crate::pipeline::{BATCH_SIZE, Fragment, FragmentBatch, Shader};
+use crate::pipeline::{BATCH_SIZE, Fragment, FragmentBatch, Shader, Slopes};
 use crate::shading::{LightTerms, ShadingModel, TangentFrame, Transforms, world_normal};
-use crate::texture::{Bilinear, Clamp, Filter, FilterMode, Nearest, Repeat, Wrap, WrapMode};
+use crate::texture::{Bilinear, Clamp, Filter, FilterMode, MipFilter, Nearest, Repeat, Wrap, WrapMode};
 
 /// Shades a mesh with a [`Material`] under [`Lighting`], computing what its [`Variant`] says:
 /// its shading model, maps and lights.
@@ -53,7 +53,7 @@ where
     /// # Errors
     /// [`ShadingError::Unsupported`] when the slot types do not carry the variant's [`Variant::layout`]
     /// (they may carry more), or `CAPS` ([`capabilities`]) leaves out its shading model, point lights, shadow
-    /// maps, two-sided lighting or cut-outs.
+    /// maps, two-sided lighting, cut-outs or mipmaps.
     pub fn new(
         variant: Variant,
         transforms: Transforms,
@@ -78,7 +78,8 @@ where
             && (variant.point_lights == 0 || has(CAPS, capabilities::POINT_LIGHTS))
             && (variant.shadowed_lights == 0 || has(CAPS, capabilities::SHADOWS))
             && (!variant.two_sided || has(CAPS, capabilities::TWO_SIDED))
-            && (variant.cutout == Cutout::None || has(CAPS, capabilities::CUTOUT));
+            && (variant.cutout == Cutout::None || has(CAPS, capabilities::CUTOUT))
+            && (variant.mip_filter == MipFilter::Off || has(CAPS, capabilities::MIPMAPS));
         if !(carried && compiled) {
             return Err(ShadingError::Unsupported);
         }
@@ -92,6 +93,26 @@ where
             layout,
             _varyings: PhantomData,
         })
+    }
+
+    /// The batch's texture coordinates, with their slopes when the variant mipmaps.
+    #[inline(always)]
+    fn coordinates(&self, batch: &FragmentBatch<SurfaceVaryings<A, B, U, T, C>, LightTerms>) -> Coordinates {
+        let uv = |v: &SurfaceVaryings<A, B, U, T, C>| v.uv.get().unwrap_or(Vec2::ZERO);
+        Coordinates::gather(batch.len(), |i| uv(batch.varyings(i)), self.mipmaps(), |i| batch.slopes_of(i, uv))
+    }
+
+    /// Whether the draw reads mipmapped maps: a constant false for a shader compiled without texture coordinates
+    /// or [`capabilities::MIPMAPS`].
+    #[inline(always)]
+    fn mipmaps(&self) -> bool {
+        U::PRESENT && has(CAPS, capabilities::MIPMAPS) && self.variant.mip_filter != MipFilter::Off
+    }
+
+    /// The filter between levels the draw's maps are read with.
+    #[inline(always)]
+    fn mip_filter(&self) -> MipFilter {
+        if self.mipmaps() { self.variant.mip_filter } else { MipFilter::Off }
     }
 
     /// Runs the per-pixel lighting stages of the variant over `s`, whose varyings columns and base albedo are
@@ -114,7 +135,7 @@ where
     /// one size share their texel addresses.
     #[inline(always)]
     fn stages<F: Filter, Wr: Wrap>(&self, s: &mut Scratch, colors: &mut [Vec3; BATCH_SIZE]) {
-        let maps = &mut MapReader::<F, Wr>::new();
+        let maps = &mut MapReader::<F, Wr>::new(self.mip_filter());
         let v = &self.variant;
         let m = &self.material;
         // The geometric normal is the shading normal without a normal map, and offsets shadow lookups: with a map
@@ -205,10 +226,16 @@ where
         self.variant.cutout != Cutout::None
     }
 
+    /// The maps are read with slopes when the variant mipmaps.
+    #[inline(always)]
+    fn slopes(&self) -> bool {
+        self.mipmaps()
+    }
+
     /// One fragment as a batch of one.
-    fn kept(&self, f: &Fragment, face: &LightTerms, v: &Self::Varyings) -> bool {
+    fn kept(&self, f: &Fragment, face: &LightTerms, v: &Self::Varyings, slopes: &Slopes<Self::Varyings>) -> bool {
         let mut keep = [false; BATCH_SIZE];
-        self.kept_batch(&FragmentBatch::single(f, *face, *v), &mut keep);
+        self.kept_batch(&FragmentBatch::single(f, *face, *v, slopes), &mut keep);
         keep[0]
     }
 
@@ -220,15 +247,22 @@ where
             *keep = [false; BATCH_SIZE];
             return;
         };
-        let uv = Column2::gather(batch.len(), |i| batch.varyings(i).uv.get().unwrap_or(Vec2::ZERO));
+        let at = self.coordinates(batch);
         let mut texels = [0; BATCH_SIZE];
+        let mip = self.mip_filter();
         match (self.variant.filter, self.variant.wrap) {
-            (FilterMode::Nearest, WrapMode::Repeat) => MapReader::<Nearest, Repeat>::new().read(&map, &uv, &mut texels),
-            (FilterMode::Nearest, WrapMode::Clamp) => MapReader::<Nearest, Clamp>::new().read(&map, &uv, &mut texels),
-            (FilterMode::Bilinear, WrapMode::Repeat) => {
-                MapReader::<Bilinear, Repeat>::new().read(&map, &uv, &mut texels);
+            (FilterMode::Nearest, WrapMode::Repeat) => {
+                MapReader::<Nearest, Repeat>::new(mip).read(&map, &at, &mut texels)
             }
-            (FilterMode::Bilinear, WrapMode::Clamp) => MapReader::<Bilinear, Clamp>::new().read(&map, &uv, &mut texels),
+            (FilterMode::Nearest, WrapMode::Clamp) => {
+                MapReader::<Nearest, Clamp>::new(mip).read(&map, &at, &mut texels)
+            }
+            (FilterMode::Bilinear, WrapMode::Repeat) => {
+                MapReader::<Bilinear, Repeat>::new(mip).read(&map, &at, &mut texels);
+            }
+            (FilterMode::Bilinear, WrapMode::Clamp) => {
+                MapReader::<Bilinear, Clamp>::new(mip).read(&map, &at, &mut texels);
+            }
         }
         for (k, &texel) in keep.iter_mut().zip(&texels).take(batch.len()) {
             *k = self.material.keeps(texel_alpha(texel), cutoff);
@@ -290,9 +324,9 @@ where
     }
 
     /// One fragment as a batch of one.
-    fn fragment(&self, f: &Fragment, face: &LightTerms, v: &Self::Varyings) -> Vec3 {
+    fn fragment(&self, f: &Fragment, face: &LightTerms, v: &Self::Varyings, slopes: &Slopes<Self::Varyings>) -> Vec3 {
         let mut colors = [Vec3::ZERO; BATCH_SIZE];
-        self.shade_batch(&FragmentBatch::single(f, *face, *v), &mut colors);
+        self.shade_batch(&FragmentBatch::single(f, *face, *v, slopes), &mut colors);
         colors[0]
     }
 
@@ -302,7 +336,6 @@ where
         let len = batch.len();
         let first = || Column3::gather(len, |i| batch.varyings(i).first.get().unwrap_or(Vec3::ZERO));
         let second = || Column3::gather(len, |i| batch.varyings(i).second.get().unwrap_or(Vec3::ZERO));
-        let uv = || Column2::gather(len, |i| batch.varyings(i).uv.get().unwrap_or(Vec2::ZERO));
         let (m, v) = (&self.material, &self.variant);
         // The albedo before the diffuse map: the material colour, times the vertex colours.
         let base_albedo = || {
@@ -322,7 +355,7 @@ where
                     s.world = second();
                 }
                 if self.layout.uvs {
-                    s.uv = uv();
+                    s.at = self.coordinates(batch);
                 }
                 if self.layout.tangents && T::PRESENT {
                     let tangent = |i| batch.varyings(i).tangent.get().unwrap_or(Vec4::ZERO);
@@ -340,7 +373,7 @@ where
             ShadingModel::Normals if has(CAPS, capabilities::VIEWS) => views::normals(first(), len, colors),
             ShadingModel::Unlit | ShadingModel::Flat | ShadingModel::Gouraud if has(CAPS, COARSE) => {
                 let albedo = base_albedo();
-                let uv = if self.layout.uvs { uv() } else { Column2::ZERO };
+                let at = if self.layout.uvs { self.coordinates(batch) } else { Coordinates::ZERO };
                 let (diffuse, specular) = match v.shading {
                     ShadingModel::Gouraud => (first(), second()),
                     ShadingModel::Flat => (
@@ -355,21 +388,22 @@ where
                     }
                     _ => coarse::Light::None,
                 };
+                let mip = self.mip_filter();
                 match (v.filter, v.wrap) {
                     (_, _) if !U::PRESENT => {
-                        coarse::shade::<Nearest, Clamp>(v, m, albedo, &uv, &light, len, colors, U::PRESENT);
+                        coarse::shade::<Nearest, Clamp>(v, m, albedo, &at, &light, len, colors, U::PRESENT, mip);
                     }
                     (FilterMode::Nearest, WrapMode::Repeat) => {
-                        coarse::shade::<Nearest, Repeat>(v, m, albedo, &uv, &light, len, colors, U::PRESENT);
+                        coarse::shade::<Nearest, Repeat>(v, m, albedo, &at, &light, len, colors, U::PRESENT, mip);
                     }
                     (FilterMode::Nearest, WrapMode::Clamp) => {
-                        coarse::shade::<Nearest, Clamp>(v, m, albedo, &uv, &light, len, colors, U::PRESENT);
+                        coarse::shade::<Nearest, Clamp>(v, m, albedo, &at, &light, len, colors, U::PRESENT, mip);
                     }
                     (FilterMode::Bilinear, WrapMode::Repeat) => {
-                        coarse::shade::<Bilinear, Repeat>(v, m, albedo, &uv, &light, len, colors, U::PRESENT);
+                        coarse::shade::<Bilinear, Repeat>(v, m, albedo, &at, &light, len, colors, U::PRESENT, mip);
                     }
                     (FilterMode::Bilinear, WrapMode::Clamp) => {
-                        coarse::shade::<Bilinear, Clamp>(v, m, albedo, &uv, &light, len, colors, U::PRESENT);
+                        coarse::shade::<Bilinear, Clamp>(v, m, albedo, &at, &light, len, colors, U::PRESENT, mip);
                     }
                 }
             }

@@ -7,7 +7,7 @@ use crate::math::{Vec3, Vec4};
 use crate::mesh::Attributes;
 use crate::pipeline::{Cull, DrawError, DrawState, FixedFunction};
 use crate::shading::ShadingModel;
-use crate::texture::{FilterMode, WrapMode};
+use crate::texture::{FilterMode, MipFilter, WrapMode};
 
 /// Where the shading normal comes from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -122,6 +122,9 @@ pub struct Variant {
     pub filter: FilterMode,
     /// Wrap mode of the maps sampled.
     pub wrap: WrapMode,
+    /// How the maps sampled choose among their levels of detail: the material's when one of them has levels,
+    /// [`MipFilter::Off`] otherwise (the draw then reads no slopes).
+    pub mip_filter: MipFilter,
     /// Directional lights.
     pub directional_lights: usize,
     /// Point lights.
@@ -161,6 +164,8 @@ impl Variant {
     /// - Maps are sampled only on a mesh with texture coordinates; without, the draw is untextured. The albedo map
     ///   serves every model that colours (unlit, flat, Gouraud, per-pixel), the specular and glow maps the lit
     ///   ones, normal and occlusion maps per-pixel lighting only. The depth and normals views read no map.
+    /// - Maps are read through their levels of detail, as the material's [`MipFilter`] says, only when one of the
+    ///   maps read has levels ([`crate::texture::Texture::with_mip_levels`]); only then are slopes worked out.
     /// - A tangent-space normal map needs `tangents` (one per vertex), and only then are tangents interpolated.
     /// - Lights reach the lit models: per triangle (flat, at its centroid), per vertex (Gouraud) or per pixel.
     ///   Shadow maps are read per pixel only.
@@ -238,16 +243,21 @@ impl Variant {
             Some(cutoff) if colored && !material.keeps(255, cutoff) => Cutout::Everything,
             _ => Cutout::None,
         };
+        let normal_map = matches!(normals, NormalSource::TangentMap | NormalSource::ObjectMap);
+        let read = [
+            (albedo_map, material.diffuse),
+            (normal_map, material.normal_map.map(|map| map.texture)),
+            (specular == SpecularSource::Map, material.specular_map),
+            (glow_map, material.glow_map),
+            (occlusion_map, material.occlusion_map),
+        ];
+        let mipmapped = read.iter().any(|(reads, map)| *reads && map.is_some_and(|map| map.has_mip_levels()));
         let state = object.transforms.adapt(state);
         Ok(Self {
             shading,
             vertex_colors: colored && present.colors,
             world: per_pixel && (specular != SpecularSource::None || point_lights > 0 || shadowed_lights > 0),
-            uvs: albedo_map
-                || glow_map
-                || occlusion_map
-                || specular == SpecularSource::Map
-                || matches!(normals, NormalSource::TangentMap | NormalSource::ObjectMap),
+            uvs: read.iter().any(|(reads, _)| *reads),
             tangents: normals == NormalSource::TangentMap,
             albedo_map,
             normals,
@@ -258,6 +268,7 @@ impl Variant {
             two_sided: per_pixel && state.cull != Cull::Back,
             filter: material.filter,
             wrap: material.wrap,
+            mip_filter: if mipmapped { material.mip_filter } else { MipFilter::Off },
             directional_lights,
             point_lights,
             shadowed_lights,
@@ -345,9 +356,13 @@ impl fmt::Display for Variant {
             Cutout::Everything => f.write_str("; cut out entirely (not drawn)")?,
         }
         if self.uvs {
-            let filter = match self.filter {
-                FilterMode::Nearest => "nearest",
-                FilterMode::Bilinear => "bilinear",
+            let filter = match (self.filter, self.mip_filter) {
+                (FilterMode::Nearest, MipFilter::Off) => "nearest",
+                (FilterMode::Bilinear, MipFilter::Off) => "bilinear",
+                (FilterMode::Nearest, MipFilter::Nearest) => "nearest of the nearest level",
+                (FilterMode::Bilinear, MipFilter::Nearest) => "bilinear of the nearest level",
+                (FilterMode::Nearest, MipFilter::Linear) => "nearest of two levels",
+                (FilterMode::Bilinear, MipFilter::Linear) => "trilinear",
             };
             let wrap = match self.wrap {
                 WrapMode::Repeat => "repeat",

@@ -12,7 +12,7 @@ use core::ops::Range;
 use crate::camera::{CameraError, look_at, orthographic, perspective};
 use crate::math::{Mat4, Vec3, Vec4, float};
 use crate::mesh::{Attributes, Mesh};
-use crate::pipeline::{BATCH_SIZE, Cull, DrawState, DrawStats, Fragment, Shader, draw, lanes};
+use crate::pipeline::{BATCH_SIZE, Cull, DrawState, DrawStats, Fragment, Shader, Slopes, draw, lanes};
 use crate::shading::LightKind;
 use crate::shading::columns::{self, Column, Column3};
 use crate::target::{MAX_DIMENSION, NoColor, Target};
@@ -210,7 +210,7 @@ impl Shader for CasterShader {
     #[inline(always)]
     fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
     #[inline(always)]
-    fn fragment(&self, _: &Fragment, _: &(), _: &()) -> Vec3 {
+    fn fragment(&self, _: &Fragment, _: &(), _: &(), _: &Slopes<Self::Varyings>) -> Vec3 {
         Vec3::ZERO
     }
 }

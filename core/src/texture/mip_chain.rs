@@ -24,7 +24,7 @@ pub enum MipContent {
     Data,
 }
 
-/// A texture and its levels of detail, from the texture itself down to 1x1.
+/// A texture and its levels of detail, from the texture itself down to 1x1 ([`Texture::mip_chain`]).
 #[derive(Clone, Copy, Debug)]
 pub struct MipChain<'a> {
     levels: [Texture<'a>; MAX_MIP_LEVELS],
@@ -32,6 +32,23 @@ pub struct MipChain<'a> {
 }
 
 impl<'a> MipChain<'a> {
+    /// The chain of `texture`, whose levels below it are `below` (laid out as [`build_mip_levels`] fills them,
+    /// interleaved like the texture), or `texture` alone when `below` is empty.
+    pub(super) fn new(texture: Texture<'a>, below: &'a [u32]) -> Self {
+        let mut levels = [texture; MAX_MIP_LEVELS];
+        let mut count = 1;
+        let (maps, map) = texture.interleaving();
+        let mut rest = below;
+        for (w, h) in level_sizes(texture.width(), texture.height()).skip(1) {
+            let Some((level, tail)) = rest.split_at_checked(w as usize * h as usize * maps as usize) else { break };
+            let Ok(texture) = Texture::interleaved(level, w, h, maps, map) else { break };
+            levels[count] = texture;
+            count += 1;
+            rest = tail;
+        }
+        Self { levels, count }
+    }
+
     /// The levels: the texture itself first, then each half the size of the one before, the last 1x1.
     #[must_use]
     pub fn levels(&self) -> &[Texture<'a>] {
@@ -49,8 +66,9 @@ fn level_sizes(width: u32, height: u32) -> impl Iterator<Item = (u32, u32)> {
     core::iter::successors(Some((width, height)), |&(w, h)| (w > 1 || h > 1).then_some((half(w), half(h))))
 }
 
-/// The texels the levels below a `width x height` texture need together: the length of the buffer
-/// [`build_mip_chain`] fills. 0 for a size no texture has (empty, or larger than [`MAX_TEXTURE_SIZE`]).
+/// The texels the levels below a `width x height` texture need together: per map, the length of the buffer
+/// [`build_mip_levels`] fills (times the number of maps interleaved). 0 for a size no texture has (empty, or
+/// larger than [`MAX_TEXTURE_SIZE`]).
 ///
 /// # Examples
 /// ```
@@ -68,29 +86,30 @@ pub fn mip_chain_texels(width: u32, height: u32) -> usize {
     level_sizes(width, height).skip(1).map(|(w, h)| w as usize * h as usize).sum()
 }
 
-/// Builds the levels of detail of `texture`, whose texels mean `content`, into `out`, which must hold
-/// [`mip_chain_texels`] texels; the chain borrows both.
+/// Builds the levels of detail below `texture`, whose texels mean `content`, into `out`: [`mip_chain_texels`]
+/// texels times the number of maps the texture interleaves, laid out level by level, largest first, and within a
+/// level interleaved like the texture (this map's texels at its place; the others' left as they are, so that the
+/// chains of a slice's maps go into one buffer). [`Texture::with_mip_levels`] then samples them.
 ///
 /// # Errors
 /// [`TextureError::Length`] when `out` is not of that length.
 ///
 /// # Examples
 /// ```
-/// use rastty_core::texture::{MipContent, Texture, build_mip_chain, mip_chain_texels};
+/// use rastty_core::texture::{MipContent, Texture, build_mip_levels, mip_chain_texels};
 /// // White and black: their average in linear light is 0.5, sRGB code 188, not the 128 of the codes' average.
 /// let texels = [0xFF_FFFF, 0x00_0000];
+/// let texture = Texture::new(&texels, 2, 1).unwrap();
 /// let mut levels = vec![0; mip_chain_texels(2, 1)];
-/// let chain = build_mip_chain(Texture::new(&texels, 2, 1).unwrap(), MipContent::Color, &mut levels).unwrap();
-/// assert_eq!(chain.levels().len(), 2);
+/// build_mip_levels(&texture, MipContent::Color, &mut levels).unwrap();
 /// assert_eq!(levels, [0xBC_BCBC]);
+/// let texture = texture.with_mip_levels(&levels).unwrap();
+/// assert_eq!(texture.mip_chain().levels().len(), 2);
 /// ```
-pub fn build_mip_chain<'a>(
-    texture: Texture<'a>,
-    content: MipContent,
-    out: &'a mut [u32],
-) -> Result<MipChain<'a>, TextureError> {
+pub fn build_mip_levels(texture: &Texture<'_>, content: MipContent, out: &mut [u32]) -> Result<(), TextureError> {
     let (width, height) = (texture.width(), texture.height());
-    let expected = mip_chain_texels(width, height);
+    let (maps, map) = texture.interleaving();
+    let expected = mip_chain_texels(width, height) * maps as usize;
     if out.len() != expected {
         return Err(TextureError::Length { expected, actual: out.len() });
     }
@@ -103,17 +122,23 @@ pub fn build_mip_chain<'a>(
         }
     });
     let encoder = SrgbEncoder::new();
-    let mut levels = [texture; MAX_MIP_LEVELS];
-    let mut count = 1;
-    let mut rest = out;
+    // Level k is built from level k - 1: the texture itself, then the level just built, which starts at `above`.
+    let (mut above, mut start) = (None::<(usize, u32, u32)>, 0);
     for (w, h) in level_sizes(width, height).skip(1) {
-        let (level, tail) = core::mem::take(&mut rest).split_at_mut(w as usize * h as usize);
-        rest = tail;
-        downsample(&levels[count - 1], content, &decode, &encoder, level, w, h);
-        levels[count] = Texture::new(level, w, h)?;
-        count += 1;
+        let len = w as usize * h as usize * maps as usize;
+        let (built, rest) = out.split_at_mut(start);
+        let level = Level { texels: &mut rest[..len], width: w, height: h, maps, map };
+        match above {
+            None => downsample(texture, content, &decode, &encoder, level),
+            Some((from, aw, ah)) => {
+                let source = Texture::interleaved(&built[from..], aw, ah, maps, map)?;
+                downsample(&source, content, &decode, &encoder, level);
+            }
+        }
+        above = Some((start, w, h));
+        start += len;
     }
-    Ok(MipChain { levels, count })
+    Ok(())
 }
 
 /// The taps along one side of a level `size` texels long, for its texel `i`: the texels of the side above
@@ -134,23 +159,24 @@ fn taps(above: u32, size: u32, i: u32) -> [(u32, f32); 3] {
     }
 }
 
-/// Fills `out`, a `width x height` level, from `above`, the level above it: each texel the weighted sum of the
-/// texels it covers, colour channels through `decode` and encoded back as `content` says (through `encoder` for
-/// colour), the transparency byte as stored.
-fn downsample(
-    above: &Texture<'_>,
-    content: MipContent,
-    decode: &[f32; 256],
-    encoder: &SrgbEncoder,
-    out: &mut [u32],
+/// One level being built: `width x height` texels of map `map` of `maps` interleaved in `texels`.
+struct Level<'a> {
+    texels: &'a mut [u32],
     width: u32,
     height: u32,
-) {
+    maps: u32,
+    map: u32,
+}
+
+/// Fills `out` from `above`, the level above it: each texel the weighted sum of the texels it covers, colour
+/// channels through `decode` and encoded back as `content` says (through `encoder` for colour), the transparency
+/// byte as stored.
+fn downsample(above: &Texture<'_>, content: MipContent, decode: &[f32; 256], encoder: &SrgbEncoder, out: Level<'_>) {
     let (above_width, above_height) = (above.width(), above.height());
-    for y in 0..height {
-        let rows = taps(above_height, height, y);
-        for x in 0..width {
-            let columns = taps(above_width, width, x);
+    for y in 0..out.height {
+        let rows = taps(above_height, out.height, y);
+        for x in 0..out.width {
+            let columns = taps(above_width, out.width, x);
             let mut sum = [0.0f32; 4];
             for &(row, wy) in &rows {
                 for &(column, wx) in &columns {
@@ -168,7 +194,8 @@ fn downsample(
                 MipContent::Color => encoder.code(v),
                 MipContent::Data => float::quantize_unit(v, 255.0),
             };
-            out[(y * width + x) as usize] =
+            let index = (y * out.width + x) as usize * out.maps as usize + out.map as usize;
+            out.texels[index] =
                 float::quantize_unit(transparency, 255.0) << 24 | encode(r) << 16 | encode(g) << 8 | encode(b);
         }
     }
@@ -179,9 +206,10 @@ mod tests {
     use super::*;
 
     /// Builds the chain of `texels` (`width x height`) as `content` into `out`; the number of its levels.
-    fn levels_of<'a>(texels: &'a [u32], width: u32, height: u32, content: MipContent, out: &'a mut [u32]) -> usize {
-        let chain = build_mip_chain(Texture::new(texels, width, height).unwrap(), content, out).unwrap();
-        chain.levels().len()
+    fn levels_of(texels: &[u32], width: u32, height: u32, content: MipContent, out: &mut [u32]) -> usize {
+        let texture = Texture::new(texels, width, height).unwrap();
+        build_mip_levels(&texture, content, out).unwrap();
+        texture.with_mip_levels(out).unwrap().mip_chain().levels().len()
     }
 
     #[test]
@@ -198,8 +226,12 @@ mod tests {
         }
         let texels = [0; 4];
         let mut short = [0; 2];
-        let result = build_mip_chain(Texture::new(&texels, 2, 2).unwrap(), MipContent::Data, &mut short);
-        assert_eq!(result.err(), Some(TextureError::Length { expected: 1, actual: 2 }));
+        let texture = Texture::new(&texels, 2, 2).unwrap();
+        let wrong = Some(TextureError::Length { expected: 1, actual: 2 });
+        assert_eq!(build_mip_levels(&texture, MipContent::Data, &mut short).err(), wrong);
+        assert_eq!(texture.with_mip_levels(&short).err(), wrong);
+        // Without levels, the chain is the texture alone.
+        assert_eq!(texture.mip_chain().levels().len(), 1);
     }
 
     /// Every 8-bit code survives decoding to linear light and encoding back, so a texture of one texel value keeps
@@ -256,18 +288,29 @@ mod tests {
         assert_eq!(column, out);
     }
 
-    /// A map interleaved with others gets the chain of its own texels.
+    /// Maps interleaved in one slice get the chains of their own texels, interleaved level by level in one buffer.
     #[test]
-    fn an_interleaved_map_gets_the_chain_of_its_own_texels() {
+    fn interleaved_maps_get_the_chains_of_their_own_texels() {
         let first: [u32; 12] = core::array::from_fn(|i| i as u32 * 0x0A_0B0C);
         let second: [u32; 12] = core::array::from_fn(|i| 0xFF_FFFF - i as u32 * 0x07_0503);
         let both: [u32; 24] = core::array::from_fn(|i| if i % 2 == 0 { first[i / 2] } else { second[i / 2] });
+        // 4x3, then 2x1 and 1x1: 3 texels per map.
+        let mut shared = [0; 6];
+        for k in 0..2 {
+            let map = Texture::interleaved(&both, 4, 3, 2, k).unwrap();
+            build_mip_levels(&map, MipContent::Color, &mut shared).unwrap();
+        }
         for (k, own) in [first, second].iter().enumerate() {
-            let (mut alone, mut shared) = ([0; 3], [0; 3]);
+            let mut alone = [0; 3];
             levels_of(own, 4, 3, MipContent::Color, &mut alone);
-            let map = Texture::interleaved(&both, 4, 3, 2, k as u32).unwrap();
-            build_mip_chain(map, MipContent::Color, &mut shared).unwrap();
-            assert_eq!(alone, shared, "map {k}");
+            let own_levels: [u32; 3] = core::array::from_fn(|i| shared[2 * i + k]);
+            assert_eq!(alone, own_levels, "map {k}");
+            let map = Texture::interleaved(&both, 4, 3, 2, k as u32).unwrap().with_mip_levels(&shared).unwrap();
+            let chain = map.mip_chain();
+            let sizes: [(u32, u32); 3] =
+                core::array::from_fn(|i| (chain.levels()[i].width(), chain.levels()[i].height()));
+            assert_eq!(sizes, [(4, 3), (2, 1), (1, 1)]);
+            assert_eq!(chain.levels()[2].packed(0, 0), alone[2], "map {k}");
         }
     }
 }

@@ -10,9 +10,12 @@
 //! per map.
 
 mod mip_chain;
+mod mipmapped;
 mod sampler;
 
-pub use mip_chain::{MAX_MIP_LEVELS, MipChain, MipContent, build_mip_chain, mip_chain_texels};
+pub use mip_chain::{MAX_MIP_LEVELS, MipChain, MipContent, build_mip_levels, mip_chain_texels};
+pub(crate) use mipmapped::level_of_detail;
+pub use mipmapped::{LEVEL, MipFilter};
 pub use sampler::{Bilinear, Clamp, Filter, FilterMode, Nearest, Repeat, Wrap, WrapMode};
 
 use crate::math::{Vec2, Vec3};
@@ -75,6 +78,8 @@ pub struct Texture<'a> {
     stride: usize,
     /// This map's place among them.
     offset: usize,
+    /// The levels of detail below this one, interleaved like it ([`Texture::with_mip_levels`]); empty without.
+    mips: &'a [u32],
 }
 
 impl<'a> Texture<'a> {
@@ -118,7 +123,38 @@ impl<'a> Texture<'a> {
             return Err(TextureError::Length { expected, actual: texels.len() });
         }
         let (width, height, stride, offset) = (width as i32, height as i32, maps as usize, map as usize);
-        Ok(Self { texels, width, height, stride, offset })
+        Ok(Self { texels, width, height, stride, offset, mips: &[] })
+    }
+
+    /// This texture with its levels of detail, `levels`, as [`build_mip_levels`] filled them (for an interleaved
+    /// map: the buffer all its slice's maps were built into). Mipmapped sampling ([`crate::texture::MipFilter`])
+    /// reads them; the others read the texture alone.
+    ///
+    /// # Errors
+    /// [`TextureError::Length`] when `levels` is not [`mip_chain_texels`] texels times the maps interleaved.
+    pub fn with_mip_levels(self, levels: &'a [u32]) -> Result<Self, TextureError> {
+        let expected = mip_chain_texels(self.width(), self.height()) * self.stride;
+        if levels.len() != expected {
+            return Err(TextureError::Length { expected, actual: levels.len() });
+        }
+        Ok(Self { mips: levels, ..self })
+    }
+
+    /// Whether levels of detail are attached ([`Texture::with_mip_levels`]; a 1x1 texture never has any).
+    #[must_use]
+    pub fn has_mip_levels(&self) -> bool {
+        !self.mips.is_empty()
+    }
+
+    /// The texture and its levels of detail ([`Texture::with_mip_levels`]); the texture alone without them.
+    #[must_use]
+    pub fn mip_chain(&self) -> MipChain<'a> {
+        MipChain::new(Texture { mips: &[], ..*self }, self.mips)
+    }
+
+    /// The number of maps interleaved in the texels, and this map's place among them.
+    fn interleaving(&self) -> (u32, u32) {
+        (self.stride as u32, self.offset as u32)
     }
 
     /// Width in texels.

@@ -187,7 +187,7 @@ impl Filter for Bilinear {
 /// then transparency with green, shifted down first so that the products fit 32 bits. Green alone gives what it
 /// gave before the transparency byte was blended: `((g p + g q + 128) >> 8) << 8` either way.
 #[inline(always)]
-fn blend(p: u32, q: u32, w: u32) -> u32 {
+pub(super) fn blend(p: u32, q: u32, w: u32) -> u32 {
     let v = 256 - w;
     let rb = (((p & 0xFF00FF) * v + (q & 0xFF00FF) * w + 0x80_0080) >> 8) & 0xFF00FF;
     let tg = ((((p >> 8) & 0xFF00FF) * v + ((q >> 8) & 0xFF00FF) * w + 0x80_0080) >> 8) & 0xFF00FF;

@@ -3,7 +3,7 @@
 
 use rastty_core::math::{Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh};
-use rastty_core::pipeline::{DrawState, DrawStats, Fragment, Shader, draw};
+use rastty_core::pipeline::{DrawState, DrawStats, Fragment, Shader, Slopes, draw};
 use rastty_core::target::{ColorBuffer, DEPTH_LANES, DepthBuffer, NoDepth, Rgb565, Rgb888, Target, depth_to_u16};
 
 /// Counts how many times each pixel is written.
@@ -37,7 +37,7 @@ impl Shader for ScreenSpace {
     }
     fn varyings(&self, _: &Mesh<'_>, _: usize) {}
     fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
-    fn fragment(&self, _: &Fragment, _: &(), _: &()) -> Vec3 {
+    fn fragment(&self, _: &Fragment, _: &(), _: &(), _: &Slopes<Self::Varyings>) -> Vec3 {
         Vec3::ONE
     }
 }
@@ -111,7 +111,7 @@ impl Shader for Transformed {
     }
     fn varyings(&self, _: &Mesh<'_>, _: usize) {}
     fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
-    fn fragment(&self, _: &Fragment, _: &(), _: &()) -> Vec3 {
+    fn fragment(&self, _: &Fragment, _: &(), _: &(), _: &Slopes<Self::Varyings>) -> Vec3 {
         Vec3::ONE
     }
 }

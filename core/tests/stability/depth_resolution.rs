@@ -8,7 +8,7 @@
 use rastty_core::camera::perspective;
 use rastty_core::math::{Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh};
-use rastty_core::pipeline::{DrawState, Fragment, Shader, draw};
+use rastty_core::pipeline::{DrawState, Fragment, Shader, Slopes, draw};
 use rastty_core::target::{DepthBuffer, Target};
 
 use super::common::Count;
@@ -28,7 +28,7 @@ impl Shader for Plane {
     }
     fn varyings(&self, _: &Mesh<'_>, _: usize) {}
     fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
-    fn fragment(&self, _: &Fragment, _: &(), _: &()) -> Vec3 {
+    fn fragment(&self, _: &Fragment, _: &(), _: &(), _: &Slopes<Self::Varyings>) -> Vec3 {
         Vec3::ONE
     }
 }

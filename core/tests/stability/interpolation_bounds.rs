@@ -6,7 +6,7 @@ use std::cell::Cell;
 use super::Rng;
 use rastty_core::math::{Mat4, Vec2, Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh};
-use rastty_core::pipeline::{Cull, DrawState, Fragment, Interpolation, Shader, draw};
+use rastty_core::pipeline::{Cull, DrawState, Fragment, Interpolation, Shader, Slopes, draw};
 use rastty_core::target::{NoColor, Target};
 use rastty_core::texture::{Bilinear, Clamp, Nearest, Repeat, Texture};
 
@@ -44,7 +44,7 @@ impl Shader for Checker {
         })
     }
 
-    fn fragment(&self, _: &Fragment, range: &[(f32, f32); 5], v: &(Vec3, Vec2)) -> Vec3 {
+    fn fragment(&self, _: &Fragment, range: &[(f32, f32); 5], v: &(Vec3, Vec2), _: &Slopes<Self::Varyings>) -> Vec3 {
         let got = [v.0.x, v.0.y, v.0.z, v.1.x, v.1.y];
         for (value, (lo, hi)) in got.iter().zip(range) {
             assert!(value.is_finite(), "non-finite varying {value}");

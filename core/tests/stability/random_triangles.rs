@@ -5,7 +5,7 @@
 use proptest::prelude::*;
 use rastty_core::math::{Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh};
-use rastty_core::pipeline::{Cull, DepthTest, DrawState, Fragment, Interpolation, Shader, draw};
+use rastty_core::pipeline::{Cull, DepthTest, DrawState, Fragment, Interpolation, Shader, Slopes, draw};
 use rastty_core::target::{ColorBuffer, Target};
 
 const W: u32 = 16;
@@ -25,7 +25,7 @@ impl Shader for Raw {
         mesh.normal(i)
     }
     fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
-    fn fragment(&self, _: &Fragment, _: &(), v: &Vec3) -> Vec3 {
+    fn fragment(&self, _: &Fragment, _: &(), v: &Vec3, _: &Slopes<Self::Varyings>) -> Vec3 {
         *v
     }
 }

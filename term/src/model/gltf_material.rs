@@ -93,9 +93,7 @@ pub(crate) fn convert(
     let emissive = if emissive.is_finite() { emissive.max(Vec3::ZERO) } else { Vec3::ZERO };
     let glow_map = match emissive_texture.and_then(|info| image(info.texture().source().index())) {
         Some(map) => Some(tinted(map, emissive)),
-        None if emissive != Vec3::ZERO => {
-            Some(tinted(TextureImage { width: 1, height: 1, texels: vec![0xFF_FF_FF] }, emissive))
-        }
+        None if emissive != Vec3::ZERO => Some(tinted(TextureImage::new(1, 1, vec![0xFF_FF_FF]), emissive)),
         None => None,
     };
     let metallic = finite_unit(pbr.metallic_factor(), 1.0);
@@ -218,7 +216,7 @@ mod tests {
 
     #[test]
     fn occlusion_takes_the_red_channel_at_its_strength() {
-        let map = TextureImage { width: 3, height: 1, texels: vec![0xFF00_00FF, 0x0080_FFFF, 0x00FF_0000] };
+        let map = TextureImage::new(3, 1, vec![0xFF00_00FF, 0x0080_FFFF, 0x00FF_0000]);
         assert_eq!(occlusion_grey(map.clone(), 1.0).texels, [0x00_0000, 0x80_8080, 0xFF_FFFF]);
         // Half strength: 1 + 0.5 (r - 1), so black becomes 0.5 (128) and 0x80 (0.502) 0.751 (192).
         assert_eq!(occlusion_grey(map.clone(), 0.5).texels, [0x80_8080, 0xC0_C0C0, 0xFF_FFFF]);
@@ -227,12 +225,12 @@ mod tests {
 
     #[test]
     fn emission_and_normal_scale_change_the_texels() {
-        let white = TextureImage { width: 1, height: 1, texels: vec![0xFF_FF_FF] };
+        let white = TextureImage::new(1, 1, vec![0xFF_FF_FF]);
         assert_eq!(tinted(white, Vec3::new(1.0, 0.5, 2.0)).texels, vec![0xFF_80_FF]);
         // (0, 0, 1) stays; a tilted normal flattens with scale 0.
-        let flat = TextureImage { width: 1, height: 1, texels: vec![0x80_80_FF] };
+        let flat = TextureImage::new(1, 1, vec![0x80_80_FF]);
         assert_eq!(scaled_normals(flat.clone(), 0.0).texels, flat.texels);
-        let tilted = TextureImage { width: 1, height: 1, texels: vec![0xFF_80_80] };
+        let tilted = TextureImage::new(1, 1, vec![0xFF_80_80]);
         assert_eq!(scaled_normals(tilted, 0.0).texels, vec![0x80_80_FF]);
     }
 }

@@ -177,7 +177,7 @@ mod tests {
     #[test]
     fn set_texture_reaches_every_part() {
         let mut m = two_parts();
-        let t = TextureImage { width: 1, height: 1, texels: vec![0x123456] };
+        let t = TextureImage::new(1, 1, vec![0x123456]);
         m.set_texture(t.clone());
         assert_eq!(m.materials.len(), 2);
         assert_eq!(m.parts[0].material, Some(1));

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
 use rastty_core::math::Vec3;
-use rastty_core::texture::{FilterMode, WrapMode};
+use rastty_core::texture::{FilterMode, MipFilter, WrapMode};
 use toml::Spanned;
 
 use super::SceneFile;
@@ -17,7 +17,7 @@ use super::loaded::{
     CameraPlacement, FramedCamera, LightKind, NormalMap, ObjectMaterial, Projection, SceneCamera, SceneData,
     SceneLight, SceneObject,
 };
-use super::schema::{CameraSpec, Filter, LightSpec, LightType, MaterialSpec, ObjectSpec, Triple, Wrap};
+use super::schema::{CameraSpec, Filter, LightSpec, LightType, MaterialSpec, Mipmaps, ObjectSpec, Triple, Wrap};
 use super::transform::object_transform;
 use super::validate::{BUILTIN_PREFIX, Checker, unit};
 use crate::builtin::builtin_model;
@@ -194,6 +194,11 @@ impl Loader<'_> {
             wrap: match m.wrap {
                 Wrap::Repeat => WrapMode::Repeat,
                 Wrap::Clamp => WrapMode::Clamp,
+            },
+            mip_filter: match m.mipmaps {
+                Mipmaps::Off => MipFilter::Off,
+                Mipmaps::Nearest => MipFilter::Nearest,
+                Mipmaps::Linear => MipFilter::Linear,
             },
         })
     }

@@ -5,7 +5,7 @@ use std::sync::Arc;
 
 use rastty_core::camera::{CameraError, look_at};
 use rastty_core::math::{Mat4, Vec3};
-use rastty_core::texture::{FilterMode, WrapMode};
+use rastty_core::texture::{FilterMode, MipFilter, WrapMode};
 
 use super::schema::{LightSpace, NormalSpace};
 use crate::model::{self, Model, TextureImage};
@@ -198,6 +198,8 @@ pub struct ObjectMaterial {
     pub filter: FilterMode,
     /// What coordinates outside `[0, 1]` read.
     pub wrap: WrapMode,
+    /// How the images' levels of detail are read.
+    pub mip_filter: MipFilter,
 }
 
 impl ObjectMaterial {

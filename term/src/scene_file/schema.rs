@@ -200,6 +200,10 @@ pub struct MaterialSpec {
     /// `wrap = "repeat" | "clamp"`: what texture coordinates outside `[0, 1]` read. Default `"repeat"`.
     #[serde(default)]
     pub wrap: Wrap,
+    /// `mipmaps = "off" | "nearest" | "linear"`: how the images' levels of detail are read where a pixel spans
+    /// several texels: not at all, the nearest level, or the two nearest blended. Default `"linear"`.
+    #[serde(default)]
+    pub mipmaps: Mipmaps,
 }
 
 /// How a normal map's texels are to be read (`normal_space = "..."`).
@@ -222,6 +226,19 @@ pub enum Filter {
     /// `"bilinear"`: a blend of the four nearest texels.
     #[default]
     Bilinear,
+}
+
+/// How the images' levels of detail are read (`mipmaps = "..."`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase", expecting = "\"off\", \"nearest\" or \"linear\"")]
+pub enum Mipmaps {
+    /// `"off"`: the image itself at every distance.
+    Off,
+    /// `"nearest"`: the level nearest the pixel's footprint.
+    Nearest,
+    /// `"linear"`: the two nearest levels, blended.
+    #[default]
+    Linear,
 }
 
 /// What texture coordinates outside `[0, 1]` read (`wrap = "..."`).

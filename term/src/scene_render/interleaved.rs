@@ -1,11 +1,11 @@
-//! A part's maps of one size stored texel by texel in one buffer ([`Texture::interleaved`]): a fragment reads
-//! all of its material's maps at the same texel, so one cache line brings in what would otherwise take one line per
-//! map. The samples are the same as the images' own.
+//! A part's maps of one size stored texel by texel in one buffer ([`Texture::interleaved`]), and their levels of
+//! detail likewise: a fragment reads all of its material's maps at the same texel, so one cache line brings in
+//! what would otherwise take one line per map. The samples are the same as the images' own.
 
 use std::collections::HashMap;
 use std::sync::Arc;
 
-use rastty_core::texture::{MAX_INTERLEAVED, Texture, TextureError};
+use rastty_core::texture::{MAX_INTERLEAVED, MipContent, MipFilter, Texture, TextureError};
 
 use crate::model::TextureImage;
 use crate::scene_file::SceneObject;
@@ -25,16 +25,34 @@ pub enum MapRole {
     Occlusion,
 }
 
-/// Interleaved buffers already made, by the addresses of their images in order: parts (of any object) with the
-/// same maps share one.
-pub type InterleavedBuffers = HashMap<Vec<usize>, Arc<[u32]>>;
+impl MapRole {
+    /// What the texels of a map in this role mean: colour (diffuse, specular, glow) or data (normals, occlusion),
+    /// which decides how its levels of detail are averaged.
+    pub fn content(self) -> MipContent {
+        match self {
+            Self::Diffuse | Self::Specular | Self::Glow => MipContent::Color,
+            Self::Normal | Self::Occlusion => MipContent::Data,
+        }
+    }
+}
+
+/// Interleaved buffers already made, texels and levels of detail, by the addresses of their images in order:
+/// parts (of any object) with the same maps share them.
+pub type InterleavedBuffers = HashMap<Vec<usize>, Interleaved>;
+
+/// The texels of maps of one size, interleaved, and their levels of detail, interleaved likewise.
+#[derive(Clone, Debug)]
+pub struct Interleaved {
+    texels: Arc<[u32]>,
+    levels: Arc<[u32]>,
+}
 
 /// Where one map of a part sits in an interleaved buffer.
 #[derive(Clone, Debug)]
 struct Place {
     /// The address of the image it was made from: the place is used only for that image.
     image: usize,
-    texels: Arc<[u32]>,
+    buffers: Interleaved,
     width: u32,
     height: u32,
     maps: u32,
@@ -54,7 +72,8 @@ impl PartMaps {
     pub const NONE: Self = Self { places: [None, None, None, None, None] };
 
     /// Interleaves the maps that part `part_index` of `object` has, whether or not their effects are switched on
-    /// (the switches change per frame), taking and leaving buffers in `made`.
+    /// (the switches change per frame), with their levels of detail when the object's material reads them,
+    /// taking and leaving buffers in `made`.
     pub fn new(object: &SceneObject, part_index: usize, made: &mut InterleavedBuffers) -> Self {
         let m = &object.material;
         let mtl = object.model.part_material(part_index);
@@ -66,38 +85,46 @@ impl PartMaps {
             mtl.and_then(|mtl| mtl.occlusion_map.as_ref()),
         ];
         let mut part = Self::NONE;
-        // Groups of distinct images of one size, in role order; an image in two roles is stored once.
-        let mut groups: Vec<Vec<&TextureImage>> = Vec::new();
-        for image in images.into_iter().flatten() {
+        const ROLES: [MapRole; 5] =
+            [MapRole::Diffuse, MapRole::Normal, MapRole::Specular, MapRole::Glow, MapRole::Occlusion];
+        // Groups of distinct images of one size with their first role, in role order; an image in two roles is
+        // stored once.
+        let mut groups: Vec<Vec<(&TextureImage, MapRole)>> = Vec::new();
+        for (image, role) in images.into_iter().zip(ROLES).filter_map(|(image, role)| Some((image?, role))) {
             let consistent = image.texels.len() == image.width as usize * image.height as usize;
             if !consistent {
                 continue; // read from the image, which reports it
             }
-            match groups.iter_mut().find(|g| (g[0].width, g[0].height) == (image.width, image.height)) {
-                Some(group) if group.iter().any(|g| std::ptr::eq(*g, image)) => {}
-                Some(group) => group.push(image),
-                None => groups.push(vec![image]),
+            match groups.iter_mut().find(|g| (g[0].0.width, g[0].0.height) == (image.width, image.height)) {
+                Some(group) if group.iter().any(|(g, _)| std::ptr::eq(*g, image)) => {}
+                Some(group) => group.push((image, role)),
+                None => groups.push(vec![(image, role)]),
             }
         }
         for group in groups.iter().filter(|g| g.len() >= 2 && g.len() <= MAX_INTERLEAVED as usize) {
-            let key: Vec<usize> = group.iter().map(|image| address(image)).collect();
-            let texels = made.entry(key).or_insert_with(|| interleave(group)).clone();
+            let mipmapped = m.mip_filter != MipFilter::Off;
+            let mut key: Vec<usize> = group.iter().map(|(image, _)| address(image)).collect();
+            key.push(usize::from(mipmapped));
+            let buffers = made.entry(key).or_insert_with(|| interleave(group, mipmapped)).clone();
             for (role, image) in images.iter().enumerate() {
                 let Some(image) = image else { continue };
-                let Some(map) = group.iter().position(|g| std::ptr::eq(*g, *image)) else { continue };
-                let (width, height, maps, map) = (group[0].width, group[0].height, group.len() as u32, map as u32);
-                let texels = texels.clone();
-                part.places[role] = Some(Place { image: address(image), texels, width, height, maps, map });
+                let Some(map) = group.iter().position(|(g, _)| std::ptr::eq(*g, *image)) else { continue };
+                let (width, height, maps, map) = (image.width, image.height, group.len() as u32, map as u32);
+                let buffers = buffers.clone();
+                part.places[role] = Some(Place { image: address(image), buffers, width, height, maps, map });
             }
         }
         part
     }
 
-    /// The map `image` in `role` as the core samples it from the interleaved buffer, or `None` when that role's
-    /// map is not interleaved or was made from another image (these maps belong to another part).
+    /// The map `image` in `role` as the core samples it from the interleaved buffer, with its levels of detail,
+    /// or `None` when that role's map is not interleaved or was made from another image (these maps belong to
+    /// another part).
     pub fn texture(&self, role: MapRole, image: &TextureImage) -> Option<Result<Texture<'_>, TextureError>> {
         let p = self.places[role as usize].as_ref().filter(|p| p.image == address(image))?;
-        Some(Texture::interleaved(&p.texels, p.width, p.height, p.maps, p.map))
+        let texture = Texture::interleaved(&p.buffers.texels, p.width, p.height, p.maps, p.map);
+        let levels = &p.buffers.levels;
+        Some(texture.and_then(|texture| if levels.is_empty() { Ok(texture) } else { texture.with_mip_levels(levels) }))
     }
 }
 
@@ -106,20 +133,30 @@ fn address(image: &TextureImage) -> usize {
     std::ptr::from_ref(image) as usize
 }
 
-/// The texels of `images` (all of one size) texel by texel: texel `i` of image `k` at `i * images.len() + k`.
-fn interleave(images: &[&TextureImage]) -> Arc<[u32]> {
-    let count = images[0].texels.len();
-    (0..count).flat_map(|i| images.iter().map(move |image| image.texels[i])).collect()
+/// The texels of `images` (all of one size, each with its role) texel by texel, texel `i` of image `k` at
+/// `i * images.len() + k`, and when `mipmapped` their levels of detail likewise (each image's own, as its role's
+/// content; none otherwise).
+fn interleave(images: &[(&TextureImage, MapRole)], mipmapped: bool) -> Interleaved {
+    let texels = (0..images[0].0.texels.len()).flat_map(|i| images.iter().map(move |(image, _)| image.texels[i]));
+    if !mipmapped {
+        return Interleaved { texels: texels.collect(), levels: Arc::new([]) };
+    }
+    // The images are consistent (checked when grouped): their levels can be built.
+    let levels: Vec<&[u32]> =
+        images.iter().map(|(image, role)| image.mip_levels(role.content()).unwrap_or(&[])).collect();
+    let interleaved_levels =
+        (0..levels[0].len()).flat_map(|i| levels.iter().map(move |l| l.get(i).copied().unwrap_or(0)));
+    Interleaved { texels: texels.collect(), levels: interleaved_levels.collect() }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use rastty_core::math::Vec2;
-    use rastty_core::texture::{Bilinear, Clamp, Filter, Nearest, Repeat};
+    use rastty_core::texture::{Bilinear, Clamp, Filter, LEVEL, MipFilter, Nearest, Repeat};
 
     /// The ground of `spot_lamp.toml` has four 64x64 maps: one buffer holds them all, a second part with the
-    /// same images shares it, and every map samples exactly as its image does.
+    /// same images shares it, and every map samples exactly as its image does, at every level of detail.
     #[test]
     fn a_parts_maps_share_one_buffer_and_sample_as_their_images() {
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../assets/scenes/spot_lamp.toml");
@@ -134,9 +171,19 @@ mod tests {
         let images = [images[0], images[1], images[2], m.glow_map.as_deref()].map(Option::unwrap);
         let uv: [Vec2; 64] = core::array::from_fn(|i| Vec2::new(i as f32 * 0.0731 - 1.2, 2.1 - i as f32 * 0.0517));
         fn same<F: Filter>(a: &Texture<'_>, b: &Texture<'_>, uv: &[Vec2]) {
+            let (a, b) = (a.mip_chain(), b.mip_chain());
+            assert_eq!(a.levels().len(), 7);
+            assert_eq!(b.levels().len(), 7);
             for &uv in uv {
-                assert_eq!(F::sample_packed::<Repeat>(a, uv), F::sample_packed::<Repeat>(b, uv));
-                assert_eq!(F::sample_packed::<Clamp>(a, uv), F::sample_packed::<Clamp>(b, uv));
+                for lod in (0..7 * LEVEL).step_by(77) {
+                    let mip = MipFilter::Linear;
+                    let (ar, br) =
+                        (a.sample_packed::<F, Repeat>(uv, lod, mip), b.sample_packed::<F, Repeat>(uv, lod, mip));
+                    assert_eq!(ar, br);
+                    let (ac, bc) =
+                        (a.sample_packed::<F, Clamp>(uv, lod, mip), b.sample_packed::<F, Clamp>(uv, lod, mip));
+                    assert_eq!(ac, bc);
+                }
             }
         }
         for (role, image) in
@@ -144,8 +191,11 @@ mod tests {
         {
             let place = maps.places[role as usize].as_ref().unwrap();
             assert_eq!((place.maps, place.map), (4, role as u32));
-            assert!(Arc::ptr_eq(&place.texels, &again.places[role as usize].as_ref().unwrap().texels));
-            let (own, interleaved) = (image.texture().unwrap(), maps.texture(role, image).unwrap().unwrap());
+            let shared = &again.places[role as usize].as_ref().unwrap().buffers;
+            assert!(Arc::ptr_eq(&place.buffers.texels, &shared.texels));
+            assert!(Arc::ptr_eq(&place.buffers.levels, &shared.levels));
+            let own = image.mipmapped(role.content()).unwrap();
+            let interleaved = maps.texture(role, image).unwrap().unwrap();
             // Another image in the same role is read from that image.
             assert!(maps.texture(role, images[(role as usize + 1) % 4]).is_none());
             same::<Nearest>(&own, &interleaved, &uv);
@@ -162,8 +212,7 @@ mod tests {
         let diffuse = ground.material.diffuse.clone().unwrap();
         // The glow map is the diffuse image again, and the specular map another size.
         ground.material.glow_map = Some(diffuse);
-        ground.material.specular_map =
-            Some(Arc::new(TextureImage { width: 2, height: 1, texels: vec![0x102030, 0x405060] }));
+        ground.material.specular_map = Some(Arc::new(TextureImage::new(2, 1, vec![0x102030, 0x405060])));
         let maps = PartMaps::new(ground, 0, &mut InterleavedBuffers::new());
         let place = |role: MapRole| maps.places[role as usize].as_ref().map(|p| (p.maps, p.map));
         assert_eq!(place(MapRole::Diffuse), Some((2, 0)));

@@ -4,7 +4,7 @@
 use rastty_core::math::Vec3;
 use rastty_core::pipeline::{Cull, DrawState};
 use rastty_core::shading::{Material, NormalMap, NormalSpace as CoreNormalSpace};
-use rastty_core::texture::TextureError;
+use rastty_core::texture::{MipFilter, TextureError};
 
 use super::PlanOptions;
 use super::interleaved::{MapRole, PartMaps};
@@ -21,7 +21,7 @@ use crate::scene_file::{NormalSpace, SceneObject};
 ///   and no specular map) when the specular effect is off;
 /// - shininess: the scene's, else the part's own, else [`SHININESS`];
 /// - normal and glow maps: the scene's, else the part's own (glTF), unless their effect is off;
-/// - filter and wrap: the scene's, for every map.
+/// - filter, wrap and filter between levels of detail: the scene's, for every map (each map with its levels).
 ///
 /// Each map is read from `maps` (the part's [`crate::scene_render::PreparedScene::part_maps`]) when interleaved
 /// there from the same image, else from its image: the same samples either way.
@@ -37,7 +37,13 @@ pub fn part_material<'a>(
     let mtl = object.model.part_material(part);
     let m = &object.material;
     let effects = &options.effects;
-    let texture = |role, image: &'a TextureImage| maps.texture(role, image).unwrap_or_else(|| image.texture());
+    // Levels of detail are built (once per image) only for a material that reads them.
+    let texture = |role: MapRole, image: &'a TextureImage| {
+        maps.texture(role, image).unwrap_or_else(|| match m.mip_filter {
+            MipFilter::Off => image.texture(),
+            _ => image.mipmapped(role.content()),
+        })
+    };
     let diffuse = match m.diffuse_over(mtl) {
         Some(image) if options.textures => Some(texture(MapRole::Diffuse, image)?),
         _ => None,
@@ -76,6 +82,7 @@ pub fn part_material<'a>(
         occlusion_map,
         filter: m.filter,
         wrap: m.wrap,
+        mip_filter: m.mip_filter,
         opacity: mtl.map_or(1.0, |mtl| mtl.opacity),
         alpha_cutoff: mtl.and_then(|mtl| mtl.alpha_cutoff),
     })

@@ -54,7 +54,7 @@ fn quad(corners: [[f64; 3]; 4], color: [f64; 3]) -> Object {
 fn checkerboard() -> TextureImage {
     let texels =
         (0..64 * 64).map(|i| if ((i % 64) / 8 + (i / 64) / 8) % 2 == 0 { 0xF2F2F2 } else { 0x1A1A1A }).collect();
-    TextureImage { width: 64, height: 64, texels }
+    TextureImage::new(64, 64, texels)
 }
 
 /// A checkerboard floor receding to the horizon, two triangles 150 units deep: affine interpolation bends its

@@ -15,7 +15,7 @@ use rastty::scene_file::{
 use rastty::scene_render::{EffectToggles, PlanOptions, PreparedScene, ScenePlan, SceneRenderError, SceneRenderer};
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::target::{Rgb888, Target};
-use rastty_core::texture::{FilterMode, WrapMode};
+use rastty_core::texture::{FilterMode, MipFilter, WrapMode};
 
 use super::scenes::{AMBIENT, DIFFUSE, Scene, to_light};
 
@@ -53,7 +53,13 @@ impl ThreadedRenderer {
             mesh_path: PathBuf::from(scene.name),
             model: Arc::new(model),
             transform: Mat4::IDENTITY,
-            material: ObjectMaterial { filter: FilterMode::Nearest, wrap: WrapMode::Repeat, ..Default::default() },
+            // Nearest texels and no mipmaps, as the peers sample.
+            material: ObjectMaterial {
+                filter: FilterMode::Nearest,
+                wrap: WrapMode::Repeat,
+                mip_filter: MipFilter::Off,
+                ..Default::default()
+            },
         };
         let camera = SceneCamera {
             position: Vec3::new(0.0, 0.0, 3.0),
