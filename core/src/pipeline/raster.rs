@@ -397,15 +397,13 @@ impl<E: Edges> Coverage<E> {
         let steps = stages.fraction_steps(&setup, edges);
         let [v0, v1, v2] = oriented(f.swapped, varyings);
         let (var_d1, var_d2) = (v1.sub(v0), v2.sub(v0));
-        // The fragment's varyings and, when the draw reads them, their slopes.
+        // The fragment's varyings and, when the draw reads them, their slopes (zero otherwise, made once).
+        let no_slopes = Slopes::zero(v0);
         let interpolate = |ef: [f32; 3]| {
             let [w1, w2, r] = stages.interpolator.weights(&setup, ef);
             let var = v0.interpolate(&var_d1, w1, &var_d2, w2);
-            let slopes = if stages.slopes {
-                Slopes::of(&var_d1, &var_d2, steps.weight_slopes(w1, w2, r))
-            } else {
-                Slopes::zero(v0)
-            };
+            let slopes =
+                if stages.slopes { Slopes::of(&var_d1, &var_d2, steps.weight_slopes(w1, w2, r)) } else { no_slopes };
             (var, slopes)
         };
         let width = target.width() as usize;

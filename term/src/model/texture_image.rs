@@ -91,8 +91,8 @@ impl TextureImage {
     }
 
     /// The core's view of this texture with its levels of detail, for mipmapped sampling: built on the first call
-    /// (a 1024x1024 colour map takes about 13 ms) from texels that mean `content`, and kept. An image used both
-    /// as colour and as data (rare) keeps the levels of its first use.
+    /// (about 150 million instructions for a 1024x1024 colour map, docs/performance.md) from texels that mean
+    /// `content`, and kept. An image used both as colour and as data (rare) keeps the levels of its first use.
     ///
     /// # Errors
     /// [`TextureError`] when the fields are inconsistent (only possible if they were changed by hand).

@@ -203,6 +203,11 @@ pub struct ObjectMaterial {
 }
 
 impl ObjectMaterial {
+    /// Whether the images are read through their levels of detail (which are then built for them).
+    pub fn reads_mip_levels(&self) -> bool {
+        self.mip_filter != MipFilter::Off
+    }
+
     /// The diffuse colour of a part whose MTL material is `mtl` (`None` for a part without one): the scene's
     /// `color` if given, else the MTL's `Kd`, else [`model::DEFAULT_DIFFUSE`].
     pub fn color_over(&self, mtl: Option<&model::Material>) -> Vec3 {

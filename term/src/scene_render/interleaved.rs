@@ -5,7 +5,7 @@
 use std::collections::HashMap;
 use std::sync::Arc;
 
-use rastty_core::texture::{MAX_INTERLEAVED, MipContent, MipFilter, Texture, TextureError};
+use rastty_core::texture::{MAX_INTERLEAVED, MipContent, Texture, TextureError};
 
 use crate::model::TextureImage;
 use crate::scene_file::SceneObject;
@@ -101,8 +101,8 @@ impl PartMaps {
                 None => groups.push(vec![(image, role)]),
             }
         }
+        let mipmapped = m.reads_mip_levels();
         for group in groups.iter().filter(|g| g.len() >= 2 && g.len() <= MAX_INTERLEAVED as usize) {
-            let mipmapped = m.mip_filter != MipFilter::Off;
             let mut key: Vec<usize> = group.iter().map(|(image, _)| address(image)).collect();
             key.push(usize::from(mipmapped));
             let buffers = made.entry(key).or_insert_with(|| interleave(group, mipmapped)).clone();

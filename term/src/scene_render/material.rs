@@ -4,7 +4,7 @@
 use rastty_core::math::Vec3;
 use rastty_core::pipeline::{Cull, DrawState};
 use rastty_core::shading::{Material, NormalMap, NormalSpace as CoreNormalSpace};
-use rastty_core::texture::{MipFilter, TextureError};
+use rastty_core::texture::TextureError;
 
 use super::PlanOptions;
 use super::interleaved::{MapRole, PartMaps};
@@ -39,10 +39,8 @@ pub fn part_material<'a>(
     let effects = &options.effects;
     // Levels of detail are built (once per image) only for a material that reads them.
     let texture = |role: MapRole, image: &'a TextureImage| {
-        maps.texture(role, image).unwrap_or_else(|| match m.mip_filter {
-            MipFilter::Off => image.texture(),
-            _ => image.mipmapped(role.content()),
-        })
+        maps.texture(role, image)
+            .unwrap_or_else(|| if m.reads_mip_levels() { image.mipmapped(role.content()) } else { image.texture() })
     };
     let diffuse = match m.diffuse_over(mtl) {
         Some(image) if options.textures => Some(texture(MapRole::Diffuse, image)?),
