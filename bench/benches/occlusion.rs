@@ -5,6 +5,7 @@
 
 use divan::{Bencher, black_box};
 use rastty_core::camera::{look_at, perspective};
+use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::occlusion::AmbientOcclusion;
@@ -89,7 +90,7 @@ fn render(geometry: &Geometry, eye: Vec3, target: Vec3) -> Frame {
     // Already unit length: built as is rather than normalised again.
     let to_light = Vec3::new(0.408_248_3, 0.816_496_6, 0.408_248_3);
     let lights = [Light { kind: LightKind::Directional { to_light }, color: Vec3::ONE, shadow: None }];
-    let lighting = Lighting { ambient: Vec3::splat(0.1), lights: &lights };
+    let lighting = Lighting { ambient: Vec3::splat(0.1), lights: &lights, space: ShadingSpace::Linear };
     let mesh = Mesh::new(&geometry.positions, Indices::U32(&geometry.indices))
         .unwrap()
         .with_normals(&geometry.normals)

@@ -5,6 +5,7 @@
 
 use divan::{Bencher, black_box};
 use rastty_core::camera::{look_at, perspective};
+use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Mat4, Vec2, Vec3};
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::DrawState;
@@ -90,7 +91,8 @@ const LIGHTS: [Light<'static>; 1] = [Light {
     shadow: None,
 }];
 
-const LIGHTING: Lighting<'static> = Lighting { ambient: Vec3::splat(0.1), lights: &LIGHTS };
+const LIGHTING: Lighting<'static> =
+    Lighting { ambient: Vec3::splat(0.1), lights: &LIGHTS, space: ShadingSpace::Linear };
 
 /// `mesh` under `shading` in a plain warm grey without highlights, textured by `texture` (bilinear, repeating)
 /// when given.
@@ -293,7 +295,7 @@ fn surface(bencher: Bencher, maps: Maps) {
             light.shadow = Some(ShadowMap::new(view, &shadow_depth, ShadowBias::DEFAULT, 1).unwrap());
         }
         let lights = [light];
-        let scene = Lighting { ambient: Vec3::splat(0.1), lights: &lights };
+        let scene = Lighting { ambient: Vec3::splat(0.1), lights: &lights, space: ShadingSpace::Linear };
         let mut target = Target::new(Rgb888(&mut frame.color), &mut frame.depth[..], 800, 800).unwrap();
         target.clear(Vec3::ZERO);
         black_box(draw_mesh(&mut target, &object, &scene, &DrawState::default()).unwrap());

@@ -38,14 +38,15 @@
 //! let transforms = Transforms::new(Mat4::IDENTITY, view, projection);
 //! let object = Object { mesh, tangents: None, transforms, shading: ShadingModel::Phong, material: Material::default() };
 //! let sun = [Light::directional(Vec3::Z, Vec3::ONE)];
-//! let lights = Lighting { ambient: Vec3::splat(0.1), lights: &sun };
+//! let lights = Lighting { ambient: Vec3::splat(0.1), lights: &sun, space: ShadingSpace::Linear };
 //!
 //! let (mut color, mut depth) = ([0u32; 32 * 32], [0f32; 32 * 32]);
 //! let mut target = Target::new(Rgb888(&mut color), &mut depth[..], 32, 32).unwrap();
 //! target.clear(Vec3::ZERO);
 //! let (_, stats) = draw_mesh(&mut target, &object, &lights, &DrawState::default()).unwrap();
 //! assert_eq!(stats.rasterized, 1);
-//! assert_eq!(color[16 * 32 + 16], 0x00E0E0E0); // (0.1 ambient + 1.0 diffuse) * 0.8 = 0.88 -> 224
+//! // (0.1 ambient + 1.0 diffuse) * 0.8 = 0.88 in linear light, sRGB code 241.
+//! assert_eq!(color[16 * 32 + 16], 0x00F1F1F1);
 //! ```
 
 #![no_std]
@@ -68,6 +69,7 @@ pub mod testing;
 pub mod texture;
 
 pub use camera::{CameraError, look_at, orthographic, perspective};
+pub use color::ShadingSpace;
 pub use math::{Mat3, Mat4, Quat, Vec2, Vec3, Vec4};
 pub use mesh::{Indices, Mesh, MeshError};
 pub use pipeline::{DrawError, DrawState, DrawStats};

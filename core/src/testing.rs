@@ -20,7 +20,7 @@ pub fn draw_mesh_general<C: ColorBuffer, D: DepthBuffer>(
     lights: &Lighting<'_>,
     state: &crate::pipeline::DrawState,
 ) -> Result<(Variant, DrawStats), ShadingError> {
-    let variant = Variant::resolve(object, lights.lights.iter().map(LightUse::from), state)?;
+    let variant = Variant::resolve(object, lights.lights.iter().map(LightUse::from), lights.space, state)?;
     let tangents = object.tangents.unwrap_or(&[]);
     let shader = GeneralShader::new(variant, object.transforms, tangents, object.material, *lights);
     let stats = draw_unspecialised(target, &object.mesh, &shader, &variant.state).map_err(ShadingError::Draw)?;

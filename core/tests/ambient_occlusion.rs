@@ -5,11 +5,16 @@
 //! same; wide frames darken alike across the strips the work is split into.
 
 use rastty_core::camera::{look_at, orthographic, perspective};
+use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Mat4, Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh};
 use rastty_core::occlusion::{AmbientOcclusion, OcclusionError};
 use rastty_core::pipeline::{Cull, DrawState, Fragment, Shader, Slopes, draw};
 use rastty_core::target::{NoColor, Target};
+
+/// The defaults, darkening the stored codes: these tests read each pixel's factor from its code. The darkening of
+/// light is `occlusion::tests::darkening_applies_to_light_or_to_codes`.
+const DEFAULT: AmbientOcclusion = AmbientOcclusion { space: ShadingSpace::Encoded, ..AmbientOcclusion::DEFAULT };
 
 /// The colour of every drawn pixel before occlusion: 200 in each channel, so a factor shows as `channel / 200`.
 const SURFACE: u32 = 0x00C8_C8C8;
@@ -196,7 +201,7 @@ const FILTER_ROWS: u32 = 3;
 /// the darkest row next to the crease, and the mean factor never falling (beyond noise) as the rows move away
 /// from it on either side.
 fn check_corner(scene: &Scene) {
-    let ao = AmbientOcclusion::DEFAULT;
+    let ao = DEFAULT;
     let out = scene.occluded(&ao);
     let (w, h) = (scene.width, scene.height);
     let distances: Vec<f32> = (0..h).map(|y| crease_distance(scene, y)).collect();
@@ -237,7 +242,7 @@ fn a_plane_facing_the_camera_is_unchanged() {
     let color: Vec<u32> = depth.iter().map(|&d| if d < 1.0 { SURFACE } else { BACKGROUND }).collect();
     let projection = perspective(1.0, 1.5, 0.1, 10.0).unwrap();
     let mut out = color.clone();
-    AmbientOcclusion::DEFAULT.apply(&projection, &depth, 0..h, &mut out, 0..h, w, h).unwrap();
+    DEFAULT.apply(&projection, &depth, 0..h, &mut out, 0..h, w, h).unwrap();
     assert_same(&out, &color, w);
 }
 
@@ -248,13 +253,13 @@ fn a_rendered_plane_at_any_angle_is_unchanged() {
     let projection = perspective(1.0, 128.0 / 96.0, 0.1, 20.0).unwrap();
     let floor = Scene::render(128, 96, view, projection, &corner_quads(10.0)[..1]);
     assert!(floor.depth.iter().filter(|&&d| d < 1.0).count() > 128 * 40, "the floor fills much of the frame");
-    assert_same(&floor.occluded(&AmbientOcclusion::DEFAULT), &floor.color(), floor.width);
+    assert_same(&floor.occluded(&DEFAULT), &floor.color(), floor.width);
 
     let tilted =
         [Vec3::new(-1.0, -1.0, -0.8), Vec3::new(1.0, -1.0, 0.3), Vec3::new(1.0, 1.0, 0.9), Vec3::new(-1.0, 1.0, -0.2)];
     let view = look_at(Vec3::new(0.0, 0.0, 3.0), Vec3::ZERO, Vec3::Y).unwrap();
     let plane = Scene::render(128, 96, view, projection, &[tilted]);
-    assert_same(&plane.occluded(&AmbientOcclusion::DEFAULT), &plane.color(), plane.width);
+    assert_same(&plane.occluded(&DEFAULT), &plane.color(), plane.width);
 }
 
 #[test]
@@ -271,7 +276,7 @@ fn orthographic_corners_darken_too() {
     // Orthographic: the radius spans the same pixels at every depth, 0.5 * (2 / 3) * 96 / 2 = 16 rows; the limit
     // is 128 / 8 = 16, so the margin is 16 + 3 (the rows of cells a pixel depends on).
     assert_eq!(AmbientOcclusion::DEFAULT.margin_rows(&projection, 128, 96), 19);
-    let narrow = AmbientOcclusion { radius: 0.3, ..AmbientOcclusion::DEFAULT };
+    let narrow = AmbientOcclusion { radius: 0.3, ..DEFAULT };
     // 0.3 * (2 / 3) * 48 = 9.6 rows, rounded up, plus 3.
     assert_eq!(narrow.margin_rows(&projection, 128, 96), 13);
     assert_same(&scene.occluded_in_bands(&narrow, 10, 13), &scene.occluded(&narrow), 128);
@@ -280,19 +285,19 @@ fn orthographic_corners_darken_too() {
 #[test]
 fn strength_scales_the_darkening_and_zero_changes_nothing() {
     let scene = box_scene();
-    let off = AmbientOcclusion { strength: 0.0, ..AmbientOcclusion::DEFAULT };
+    let off = AmbientOcclusion { strength: 0.0, ..DEFAULT };
     assert_same(&scene.occluded(&off), &scene.color(), 128);
     // As do no directions, no steps and no radius.
     for ao in [
-        AmbientOcclusion { directions: 0, ..AmbientOcclusion::DEFAULT },
-        AmbientOcclusion { steps: 0, ..AmbientOcclusion::DEFAULT },
-        AmbientOcclusion { radius: 0.0, ..AmbientOcclusion::DEFAULT },
+        AmbientOcclusion { directions: 0, ..DEFAULT },
+        AmbientOcclusion { steps: 0, ..DEFAULT },
+        AmbientOcclusion { radius: 0.0, ..DEFAULT },
     ] {
         assert_same(&scene.occluded(&ao), &scene.color(), 128);
     }
 
-    let full = scene.occluded(&AmbientOcclusion::DEFAULT);
-    let half = scene.occluded(&AmbientOcclusion { strength: 0.5, ..AmbientOcclusion::DEFAULT });
+    let full = scene.occluded(&DEFAULT);
+    let half = scene.occluded(&AmbientOcclusion { strength: 0.5, ..DEFAULT });
     let darkened = full.iter().filter(|&&c| c != SURFACE && c != BACKGROUND).count();
     assert!(darkened > 200, "the box scene has occlusion to scale ({darkened} pixels)");
     for ((&f, &hf), &c) in full.iter().zip(&half).zip(&scene.color()) {
@@ -312,7 +317,7 @@ fn background_is_unchanged_and_occludes_nothing() {
     let color = scene.color();
     let background = color.iter().filter(|&&c| c == BACKGROUND).count();
     assert!(background > 128 * 10, "sky above the wall ({background} pixels)");
-    let out = scene.occluded(&AmbientOcclusion::DEFAULT);
+    let out = scene.occluded(&DEFAULT);
     for (i, (&before, &after)) in color.iter().zip(&out).enumerate() {
         if before == BACKGROUND {
             assert_eq!(after, BACKGROUND, "background pixel {i}");
@@ -333,12 +338,12 @@ fn background_at_the_far_plane_right_behind_a_surface_occludes_nothing() {
     let scene = Scene::render(128, 96, view, projection, &[floor]);
     let color = scene.color();
     assert!(color.iter().filter(|&&c| c == SURFACE).count() > 128 * 20, "the floor fills much of the frame");
-    assert_same(&scene.occluded(&AmbientOcclusion::DEFAULT), &color, 128);
+    assert_same(&scene.occluded(&DEFAULT), &color, 128);
     // The same depths with the background moved onto the far plane as if it were surface: the far edge darkens.
     let mut closed = scene.depth.clone();
     closed.iter_mut().filter(|d| **d >= 1.0).for_each(|d| *d = 0.999_999);
     let mut out = vec![SURFACE; closed.len()];
-    AmbientOcclusion::DEFAULT.apply(&projection, &closed, 0..96, &mut out, 0..96, 128, 96).unwrap();
+    DEFAULT.apply(&projection, &closed, 0..96, &mut out, 0..96, 128, 96).unwrap();
     assert!(out.iter().zip(&color).any(|(&o, &c)| c == SURFACE && o < SURFACE), "a far-plane surface occludes");
 }
 
@@ -349,7 +354,7 @@ fn convex_edges_are_not_darkened() {
     let view = look_at(Vec3::new(1.6, 2.2, 2.4), Vec3::new(0.0, 0.5, 0.5), Vec3::Y).unwrap();
     let projection = perspective(1.0, 1.0, 0.1, 20.0).unwrap();
     let scene = Scene::render(96, 96, view, projection, &box_quads());
-    assert_same(&scene.occluded(&AmbientOcclusion::DEFAULT), &scene.color(), 96);
+    assert_same(&scene.occluded(&DEFAULT), &scene.color(), 96);
 }
 
 #[test]
@@ -361,13 +366,13 @@ fn a_surface_far_in_front_casts_no_halo() {
     let wall = [p(-9.0, -9.0, -1.0), p(9.0, -9.0, -1.0), p(9.0, 9.0, -1.0), p(-9.0, 9.0, -1.0)];
     let square = [p(-0.5, -0.5, 2.0), p(0.5, -0.5, 2.0), p(0.5, 0.5, 2.0), p(-0.5, 0.5, 2.0)];
     let scene = Scene::render(96, 96, view, projection, &[wall, square]);
-    assert_same(&scene.occluded(&AmbientOcclusion::DEFAULT), &scene.color(), 96);
+    assert_same(&scene.occluded(&DEFAULT), &scene.color(), 96);
 }
 
 #[test]
 fn bands_with_the_margin_equal_the_whole_frame() {
     let scene = box_scene();
-    let ao = AmbientOcclusion::DEFAULT;
+    let ao = DEFAULT;
     let whole = scene.occluded(&ao);
     let margin = ao.margin_rows(&scene.projection, scene.width, scene.height);
     // Perspective: the radius near the camera spans more than the limit, 128 / 8 = 16 rows, plus 3.
@@ -385,7 +390,10 @@ fn bands_with_the_margin_equal_the_whole_frame() {
 #[test]
 fn the_defaults() {
     let ao = AmbientOcclusion::default();
-    assert_eq!(ao, AmbientOcclusion { radius: 0.5, strength: 1.0, directions: 4, steps: 3 });
+    assert_eq!(
+        ao,
+        AmbientOcclusion { radius: 0.5, strength: 1.0, directions: 4, steps: 3, space: ShadingSpace::Linear }
+    );
 }
 
 #[test]
@@ -394,7 +402,7 @@ fn bad_input_is_refused_with_the_exact_error() {
     let projection = perspective(1.0, 1.0, 0.1, 10.0).unwrap();
     let depth = vec![0.5f32; 48];
     let mut color = vec![SURFACE; 48];
-    let ao = AmbientOcclusion::DEFAULT;
+    let ao = DEFAULT;
     let run = |ao: &AmbientOcclusion, projection: &Mat4, depth: &[f32], depth_rows, color: &mut [u32], rows, w, h| {
         ao.apply(projection, depth, depth_rows, color, rows, w, h)
     };
@@ -465,7 +473,7 @@ fn depth_rounding_on_a_distant_plane_does_not_occlude() {
         let floor = [Vec3::new(-s, 0.0, s), Vec3::new(s, 0.0, s), Vec3::new(s, 0.0, -s), Vec3::new(-s, 0.0, -s)];
         let scene = Scene::render(128, 96, view, projection, &[floor]);
         assert!(scene.depth.iter().filter(|&&d| d < 1.0).count() > 128 * 40, "the floor fills much of the frame");
-        assert_same(&scene.occluded(&AmbientOcclusion { radius, ..AmbientOcclusion::DEFAULT }), &scene.color(), 128);
+        assert_same(&scene.occluded(&AmbientOcclusion { radius, ..DEFAULT }), &scene.color(), 128);
     }
 }
 
@@ -474,12 +482,12 @@ fn the_scale_of_the_scene_does_not_matter() {
     // The corner scaled from a thousandth to ten thousand times its size, camera, clip planes and radius with it:
     // the same NDC depths up to rounding, so the same darkening. (Unscaled products of view-space differences
     // underflow f32 a few hundred units from the camera.)
-    let reference = perspective_corner().occluded(&AmbientOcclusion::DEFAULT);
+    let reference = perspective_corner().occluded(&DEFAULT);
     for s in [0.001f32, 1000.0, 10_000.0] {
         let view = look_at(Vec3::new(0.0, 1.5, 2.5) * s, Vec3::new(0.0, 0.3, -1.0) * s, Vec3::Y).unwrap();
         let projection = perspective(1.0, 128.0 / 96.0, 0.1 * s, 20.0 * s).unwrap();
         let scene = Scene::render(128, 96, view, projection, &corner_quads(10.0).map(|q| q.map(|p| p * s)));
-        let out = scene.occluded(&AmbientOcclusion { radius: 0.5 * s, ..AmbientOcclusion::DEFAULT });
+        let out = scene.occluded(&AmbientOcclusion { radius: 0.5 * s, ..DEFAULT });
         for (i, (&a, &b)) in out.iter().zip(&reference).enumerate() {
             assert!(((a >> 8) & 0xFF).abs_diff((b >> 8) & 0xFF) <= 1, "scale {s}, pixel {i}: {a:06x}, {b:06x}");
         }
@@ -499,7 +507,7 @@ fn columns_far_apart_darken_alike() {
         let middle = row[w as usize / 2];
         row.fill(middle);
     }
-    let out = scene.occluded(&AmbientOcclusion::DEFAULT);
+    let out = scene.occluded(&DEFAULT);
     let darkened = out.iter().filter(|&&c| c != SURFACE && c != BACKGROUND).count();
     assert!(darkened > 400 * 8, "the crease darkens ({darkened} pixels)");
     for y in 0..h {

@@ -7,6 +7,7 @@ use crate::common;
 
 use common::{ExactColor, PlainDepth, Torus, assert_same_depths, checker_texels};
 use rastty_core::camera::{look_at, perspective};
+use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Mat4, Vec3, Vec4};
 use rastty_core::mesh::{Indices, Mesh, compute_tangents};
 use rastty_core::pipeline::{DrawState, DrawStats};
@@ -82,7 +83,7 @@ fn render(f: &Fixture, material: Material<'_>, lights: &[Light<'_>], general: bo
         shading: ShadingModel::Phong,
         material,
     };
-    let lights = Lighting { ambient: Vec3::splat(0.08), lights };
+    let lights = Lighting { ambient: Vec3::splat(0.08), lights, space: ShadingSpace::Linear };
     let background = Vec3::new(0.1, 0.2, 0.3);
     let state = DrawState::default();
     let (variant, stats) = if general {
@@ -260,8 +261,8 @@ fn the_explanation_lists_only_what_is_used() {
     // The torus has vertex colours: every model that colours reads them.
     assert_eq!(
         lean.to_string(),
-        "phong; varyings colour+normal; albedo colour x vertex colours; normals interpolated; no specular; lights 1 \
-         directional; perspective-correct, depth less, cull back"
+        "phong; varyings colour+normal; albedo colour x vertex colours; linear light; normals interpolated; no \
+         specular; lights 1 directional; perspective-correct, depth less, cull back"
     );
     let flat = [0x8080FF];
     let material = Material {
@@ -280,8 +281,8 @@ fn the_explanation_lists_only_what_is_used() {
     let (_, full, _) = render(&f, material, &[shadowed, lamp], false);
     assert_eq!(
         full.to_string(),
-        "phong; varyings colour+normal+world+uv+tangent; albedo colour x vertex colours x texture; normals \
-         tangent-space map; specular map; glow map; maps nearest/repeat; lights 1 directional + 1 point (1 with \
+        "phong; varyings colour+normal+world+uv+tangent; albedo colour x vertex colours x texture; linear light; \
+         normals tangent-space map; specular map; glow map; maps nearest/repeat; lights 1 directional + 1 point (1 with \
          shadows, pcf 3x3); perspective-correct, depth less, cull back"
     );
 }
@@ -297,7 +298,7 @@ fn a_tangent_space_map_without_tangents_is_refused() {
     let mesh: Mesh<'_> = f.torus.mesh();
     for tangents in [None, Some(&f.tangents[1..])] {
         let object = Object { mesh, tangents, transforms: transforms(), shading: ShadingModel::Phong, material };
-        let result = Variant::resolve(&object, [], &DrawState::default());
+        let result = Variant::resolve(&object, [], ShadingSpace::Linear, &DrawState::default());
         let expected = rastty_core::shading::ShadingError::Tangents {
             expected: mesh.vertex_count(),
             actual: tangents.map_or(0, <[Vec4]>::len),
@@ -312,17 +313,24 @@ fn a_surface_shader_refuses_a_variant_it_was_not_compiled_for() {
     let f = Fixture::new();
     let material = Material { specular: Vec3::splat(0.3), ..Material::plain(Vec3::ONE) };
     let sources = [Light::directional(Vec3::Z, Vec3::ONE), Light::point(Vec3::new(0.0, 2.0, 2.0), Vec3::ONE)];
-    let lights = Lighting { ambient: Vec3::ZERO, lights: &sources };
+    let lights = Lighting { ambient: Vec3::ZERO, lights: &sources, space: ShadingSpace::Linear };
     let uncoloured =
         Mesh::new(&f.torus.positions, Indices::U16(&f.torus.indices)).unwrap().with_normals(&f.torus.normals).unwrap();
-    let variant_of = |mesh, shading, lights: &[Light<'_>]| {
+    let resolve = |mesh, shading, lights: &[Light<'_>], space| {
         let object = Object { mesh, tangents: None, transforms: transforms(), shading, material };
-        Variant::resolve(&object, lights.iter().map(LightUse::from), &DrawState::default()).unwrap()
+        Variant::resolve(&object, lights.iter().map(LightUse::from), space, &DrawState::default()).unwrap()
     };
+    let variant_of = |mesh, shading, lights: &[Light<'_>]| resolve(mesh, shading, lights, ShadingSpace::Linear);
     let variant = |shading, lights: &[Light<'_>]| variant_of(uncoloured, shading, lights);
     type PerPixel<'a, const CAPS: u32> = SurfaceShader<'a, Vec3, Vec3, Absent, Absent, Absent, CAPS>;
-    let new = |v| PerPixel::<{ capabilities::PER_PIXEL }>::new(v, transforms(), &[], material, lights).map(|_| ());
+    const LINEAR_PER_PIXEL: u32 = capabilities::PER_PIXEL | capabilities::LINEAR_LIGHT;
+    let new = |v| PerPixel::<LINEAR_PER_PIXEL>::new(v, transforms(), &[], material, lights).map(|_| ());
     assert_eq!(new(variant(ShadingModel::Phong, &sources[..1])), Ok(()));
+    // Linear light is a capability of its own: without it only the stored values can be lit.
+    let stored = |v| PerPixel::<{ capabilities::PER_PIXEL }>::new(v, transforms(), &[], material, lights).map(|_| ());
+    assert_eq!(stored(variant(ShadingModel::Phong, &sources[..1])), Err(ShadingError::Unsupported));
+    let encoded = resolve(uncoloured, ShadingModel::Phong, &sources[..1], ShadingSpace::Encoded);
+    assert_eq!(stored(encoded), Ok(()));
     // Another model, or a point light, is not compiled in.
     assert_eq!(new(variant(ShadingModel::Flat, &sources[..1])), Err(ShadingError::Unsupported));
     assert_eq!(new(variant(ShadingModel::Phong, &sources)), Err(ShadingError::Unsupported));

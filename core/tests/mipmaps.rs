@@ -2,6 +2,7 @@
 //! linear light, and the far rows of a textured floor stop aliasing.
 
 use rastty_core::camera::{look_at, perspective};
+use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Mat4, Vec2, Vec3};
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::{Cull, DrawState};
@@ -37,7 +38,7 @@ fn draw(
     target.clear(Vec3::ZERO);
     let mesh = Mesh::new(positions, Indices::U16(&INDICES)).unwrap().with_uvs(&uvs).unwrap();
     let object = Object { mesh, tangents: None, transforms, shading: ShadingModel::Unlit, material };
-    let lights = Lighting { ambient: Vec3::ZERO, lights: &[] };
+    let lights = Lighting { ambient: Vec3::ZERO, lights: &[], space: ShadingSpace::Linear };
     let state = DrawState { cull: Cull::None, ..DrawState::default() };
     let (variant, _) = draw_mesh(&mut target, &object, &lights, &state).unwrap();
     (color, variant.mip_filter)

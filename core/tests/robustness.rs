@@ -5,6 +5,7 @@ use crate::common;
 
 use common::{Count, ScreenSpace, Torus, coverage};
 use rastty_core::camera::{look_at, perspective};
+use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Mat4, Vec2, Vec3};
 use rastty_core::mesh::{Attributes, Indices, Mesh, MeshError};
 use rastty_core::pipeline::{DrawError, DrawState, DrawStats, Slopes, draw};
@@ -84,7 +85,7 @@ fn non_finite_attributes_skip_triangles_only_where_used() {
             .with_uvs(&uvs)
             .unwrap();
         let lights = [Light::directional(Vec3::new(1.0, 1.0, 1.0), Vec3::splat(0.7))];
-        let lighting = Lighting { ambient: Vec3::splat(0.3), lights: &lights };
+        let lighting = Lighting { ambient: Vec3::splat(0.3), lights: &lights, space: ShadingSpace::Linear };
         let material = material.unwrap_or_default();
         let object = Object { mesh, tangents: None, transforms, shading, material };
         let state = DrawState { cull: rastty_core::pipeline::Cull::None, ..DrawState::default() };
@@ -133,7 +134,7 @@ fn every_triangle_is_counted_exactly_once() {
         shading: ShadingModel::Flat,
         material: Material::default(),
     };
-    let lighting = Lighting { ambient: Vec3::ONE, lights: &[] };
+    let lighting = Lighting { ambient: Vec3::ONE, lights: &[], space: ShadingSpace::Linear };
     let (mut color, mut depth) = (vec![0u32; 24 * 24], vec![0f32; 24 * 24]);
     let mut target = common::frame(Rgb888(&mut color), &mut depth[..], 24, 24);
     let (_, s) = draw_mesh(&mut target, &object, &lighting, &DrawState::default()).unwrap();

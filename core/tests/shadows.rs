@@ -5,6 +5,7 @@
 //! orthographic camera, so that each pixel is a known point of the ground: 32 pixels per world unit.
 
 use rastty_core::camera::{look_at, orthographic};
+use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::DrawState;
@@ -89,7 +90,7 @@ fn render(objects: &[&Quads], to_light: Vec3, shadow: Option<(ShadowBias, u32)>)
         }
     };
     let lights = [light];
-    let scene = Lighting { ambient: Vec3::splat(0.2), lights: &lights };
+    let scene = Lighting { ambient: Vec3::splat(0.2), lights: &lights, space: ShadingSpace::Linear };
     let (view, projection) = camera();
     let mut color = vec![0u32; (SIZE * SIZE) as usize];
     let mut depth = vec![0f32; (SIZE * SIZE) as usize];
@@ -152,8 +153,8 @@ fn cube_scene(shadow: Option<(ShadowBias, u32)>) -> Vec<u32> {
 fn the_shadow_is_where_geometry_puts_it_and_touches_its_caster() {
     let lit_ground = render(&[&ground()], Vec3::new(-1.0, 1.0, 0.0), None)[0];
     let pixels = cube_scene(Some((ShadowBias::DEFAULT, 0)));
-    // Unlit ground: ambient 0.2 on white.
-    let dark = 0x333333;
+    // Unlit ground: ambient 0.2 on white, in linear light: 0.2 encodes to 123.55 / 255, code 124.
+    let dark = 0x7C7C7C;
     assert_ne!(lit_ground, dark);
     // Pixels whose centre is at least 1.5 map texels (6 / 1024 world units each, 0.19 pixel) from the shadow's
     // outline must be exactly lit or exactly dark; the ground right at the cube's foot (x just above 0.5) is

@@ -9,6 +9,7 @@ use crate::common;
 
 use common::{ExactColor, PlainDepth, Torus, assert_same_depths, checker_texels};
 use rastty_core::camera::{look_at, orthographic, perspective};
+use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Mat4, Vec3, Vec4};
 use rastty_core::mesh::{Indices, Mesh, compute_tangents};
 use rastty_core::pipeline::{Cull, DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation, Winding};
@@ -204,7 +205,10 @@ fn every_choice_of_a_variant_equals_the_general_path() {
                         let state = DrawState { interpolation, depth_test, cull, edges, ..DrawState::default() };
                         let object =
                             Object { mesh, tangents: Some(&tangents), transforms, shading, material: *material };
-                        let lights = Lighting { ambient: Vec3::splat(0.08), lights };
+                        // Every other draw lights the stored codes: five light sets, an odd number, so each
+                        // material meets each light set in both spaces.
+                        let space = [ShadingSpace::Linear, ShadingSpace::Encoded][draws % 2];
+                        let lights = Lighting { ambient: Vec3::splat(0.08), lights, space };
                         let (fast, fast_depth, fast_stats, variant) = render(&object, &lights, &state, true);
                         let (general, general_depth, general_stats, general_variant) =
                             render(&object, &lights, &state, false);
@@ -240,6 +244,8 @@ struct Seen {
     occlusion_map: bool,
     filters: Vec<(FilterMode, WrapMode)>,
     mip_filters: Vec<MipFilter>,
+    /// The shading models seen in each space.
+    spaces: Vec<(&'static str, ShadingSpace)>,
     point_lights: bool,
     shadows: Vec<u32>,
     affine: bool,
@@ -275,6 +281,9 @@ impl Seen {
         if v.uvs && !self.filters.contains(&(v.filter, v.wrap)) {
             self.filters.push((v.filter, v.wrap));
         }
+        if !self.spaces.contains(&(v.shading.name(), v.space)) {
+            self.spaces.push((v.shading.name(), v.space));
+        }
         if v.uvs && !self.mip_filters.contains(&v.mip_filter) {
             self.mip_filters.push(v.mip_filter);
         }
@@ -291,6 +300,8 @@ impl Seen {
         assert_eq!(self.specular.len(), 3, "specular sources: {:?}", self.specular);
         assert_eq!(self.filters.len(), 4, "filter and wrap modes: {:?}", self.filters);
         assert_eq!(self.mip_filters.len(), 3, "filters between levels: {:?}", self.mip_filters);
+        // The four models that colour in both spaces, the two views in the stored one only.
+        assert_eq!(self.spaces.len(), 4 * 2 + 2, "spaces: {:?}", self.spaces);
         assert_eq!(self.shadows.len(), 2, "shadow filter radii: {:?}", self.shadows);
         assert_eq!(self.cutouts.len(), 3, "cut-outs: {:?}", self.cutouts);
         assert_eq!(self.two_sided, [true, true], "one- and two-sided lighting");
@@ -312,7 +323,7 @@ fn resolve_keeps_only_what_the_scene_uses() {
     let explain = |shading, specular, mesh: Mesh<'_>, transforms| {
         let material = Material { specular, diffuse: Some(texture), ..Material::default() };
         let object = Object { mesh, tangents: None, transforms, shading, material };
-        Variant::resolve(&object, sun.iter().map(Into::into), &state).map(|v| v.to_string())
+        Variant::resolve(&object, sun.iter().map(Into::into), ShadingSpace::Linear, &state).map(|v| v.to_string())
     };
 
     let full = torus.mesh();
@@ -320,25 +331,26 @@ fn resolve_keeps_only_what_the_scene_uses() {
         Mesh::new(&torus.positions, Indices::U16(&torus.indices)).unwrap().with_normals(&torus.normals).unwrap();
     assert_eq!(
         explain(ShadingModel::Phong, Vec3::ONE, full, persp).unwrap(),
-        "phong; varyings colour+normal+world+uv; albedo colour x vertex colours x texture; normals interpolated; \
-         specular constant; maps bilinear/repeat; lights 1 directional; perspective-correct, depth less, cull back"
+        "phong; varyings colour+normal+world+uv; albedo colour x vertex colours x texture; linear light; normals \
+         interpolated; specular constant; maps bilinear/repeat; lights 1 directional; perspective-correct, depth \
+         less, cull back"
     );
     // No texture coordinates: untextured, whatever was asked.
     assert_eq!(
         explain(ShadingModel::Phong, Vec3::ZERO, no_uv, persp).unwrap(),
-        "phong; varyings normal; albedo colour; normals interpolated; no specular; lights 1 directional; \
-         perspective-correct, depth less, cull back"
+        "phong; varyings normal; albedo colour; linear light; normals interpolated; no specular; lights 1 \
+         directional; perspective-correct, depth less, cull back"
     );
     // Orthographic: affine interpolation, no per-pixel division.
     assert_eq!(
         explain(ShadingModel::Gouraud, Vec3::ZERO, full, ortho).unwrap(),
-        "gouraud; varyings colour+light+uv; albedo colour x vertex colours x texture; normals per vertex; no \
-         specular; maps bilinear/repeat; lights 1 directional; affine, depth less, cull back"
+        "gouraud; varyings colour+light+uv; albedo colour x vertex colours x texture; linear light; normals per \
+         vertex; no specular; maps bilinear/repeat; lights 1 directional; affine, depth less, cull back"
     );
     // Unlit never lights; vertex colours are part of the albedo of every model that colours.
     assert_eq!(
         explain(ShadingModel::Unlit, Vec3::ONE, full, persp).unwrap(),
-        "unlit; varyings colour+uv; albedo colour x vertex colours x texture; maps bilinear/repeat; \
+        "unlit; varyings colour+uv; albedo colour x vertex colours x texture; linear light; maps bilinear/repeat; \
          perspective-correct, depth less, cull back"
     );
     // The views never sample maps.
@@ -354,8 +366,17 @@ fn resolve_keeps_only_what_the_scene_uses() {
         shading: ShadingModel::Flat,
         material: Material::default(),
     };
-    let v = Variant::resolve(&object, [], &state).unwrap();
+    let v = Variant::resolve(&object, [], ShadingSpace::Linear, &state).unwrap();
     assert_eq!(v.state.front_face, Winding::Clockwise);
+    // Lit on the stored values; the views say nothing of it, as they show values, not light.
+    let encoded = Variant::resolve(&object, [], ShadingSpace::Encoded, &state).unwrap();
+    assert_eq!(
+        encoded.to_string(),
+        "flat; varyings colour; albedo colour x vertex colours; light on sRGB codes; normals per face; no specular; \
+         unlit but ambient; perspective-correct, depth less, cull back"
+    );
+    let view = Object { shading: ShadingModel::Depth { near: 0.0, far: 1.0 }, ..object };
+    assert_eq!(Variant::resolve(&view, [], ShadingSpace::Linear, &state).unwrap().space, ShadingSpace::Encoded);
     // Normals are required where they are used.
     let positions_only = Mesh::new(&torus.positions, Indices::U16(&torus.indices)).unwrap();
     assert!(explain(ShadingModel::Gouraud, Vec3::ZERO, positions_only, persp).is_err());

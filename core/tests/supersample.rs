@@ -3,14 +3,15 @@
 use crate::common;
 
 use common::ScreenSpace;
+use rastty_core::color::ShadingSpace;
 use rastty_core::math::Vec3;
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::{Cull, DrawState, draw};
 use rastty_core::target::{NoDepth, Rgb888, Target, TargetError, downsample_rgb888};
 
 /// A white rectangle from x = 0 to x = 1.5 (pixels of the final 2x1 image) on black, rendered at `k` times the
-/// resolution and averaged: pixel 0 is white, pixel 1 is exactly half covered.
-fn half_covered(k: u32) -> [u32; 2] {
+/// resolution and averaged in `space`: pixel 0 is white, pixel 1 is exactly half covered.
+fn half_covered(k: u32, space: ShadingSpace) -> [u32; 2] {
     let (w, h) = (2 * k, k);
     let x = 1.5 * k as f32;
     let positions = [(0.0, 0.0), (0.0, h as f32), (x, h as f32), (0.0, 0.0), (x, h as f32), (x, 0.0)]
@@ -22,34 +23,45 @@ fn half_covered(k: u32) -> [u32; 2] {
     let state = DrawState { cull: Cull::None, ..DrawState::default() };
     draw(&mut target, &mesh, &ScreenSpace { width: w as f32, height: h as f32 }, &state).unwrap();
     let mut pixels = [0u32; 2];
-    downsample_rgb888(&samples, w, k, &mut pixels).unwrap();
+    downsample_rgb888(&samples, w, k, space, &mut pixels).unwrap();
     pixels
 }
 
 #[test]
 fn a_half_covered_pixel_is_half_its_colour() {
-    // 1 sample: the centre decides. 2x2, 4x4: half the samples, 127.5 rounded to 128.
-    assert_eq!(half_covered(1), [0xFFFFFF, 0x000000]);
-    assert_eq!(half_covered(2), [0xFFFFFF, 0x808080]);
-    assert_eq!(half_covered(4), [0xFFFFFF, 0x808080]);
+    // 1 sample: the centre decides. 2x2, 4x4: half the samples. Averaging the codes, 127.5 rounded to 128;
+    // averaging light, half of white's light is 0.5, whose encoding is 187.52 / 255: code 188.
+    for space in [ShadingSpace::Linear, ShadingSpace::Encoded] {
+        assert_eq!(half_covered(1, space), [0xFFFFFF, 0x000000]);
+    }
+    for k in [2, 4] {
+        assert_eq!(half_covered(k, ShadingSpace::Encoded), [0xFFFFFF, 0x808080]);
+        assert_eq!(half_covered(k, ShadingSpace::Linear), [0xFFFFFF, 0xBCBCBC]);
+    }
 }
 
 #[test]
 fn sizes_must_form_whole_blocks() {
     let samples = [0u32; 12];
     // 6 wide, 2 high: three 2x2 blocks.
-    assert!(downsample_rgb888(&samples, 6, 2, &mut [0u32; 3]).is_ok());
+    assert!(downsample_rgb888(&samples, 6, 2, ShadingSpace::Linear, &mut [0u32; 3]).is_ok());
     // The output must hold one pixel per block.
     assert_eq!(
-        downsample_rgb888(&samples, 6, 2, &mut [0u32; 2]).unwrap_err(),
+        downsample_rgb888(&samples, 6, 2, ShadingSpace::Linear, &mut [0u32; 2]).unwrap_err(),
         TargetError::ColorLength { expected: 3, actual: 2 }
     );
     // 4 wide makes 3 rows: not whole 2x2 blocks.
     assert_eq!(
-        downsample_rgb888(&samples, 4, 2, &mut [0u32; 2]).unwrap_err(),
+        downsample_rgb888(&samples, 4, 2, ShadingSpace::Linear, &mut [0u32; 2]).unwrap_err(),
         TargetError::ColorLength { expected: 8, actual: 12 }
     );
     // 5 wide: not whole blocks either.
-    assert!(matches!(downsample_rgb888(&samples, 5, 2, &mut [0u32; 2]), Err(TargetError::ColorLength { .. })));
-    assert_eq!(downsample_rgb888(&samples, 6, 0, &mut [0u32; 3]).unwrap_err(), TargetError::Empty);
+    assert!(matches!(
+        downsample_rgb888(&samples, 5, 2, ShadingSpace::Linear, &mut [0u32; 2]),
+        Err(TargetError::ColorLength { .. })
+    ));
+    assert_eq!(
+        downsample_rgb888(&samples, 6, 0, ShadingSpace::Linear, &mut [0u32; 3]).unwrap_err(),
+        TargetError::Empty
+    );
 }

@@ -1,6 +1,7 @@
 //! Two-sided lighting with known answers: a draw that keeps back faces lights them per pixel with their normal
 //! turned round, so a surface seen from behind is lit by a light on the viewer's side.
 
+use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::{Cull, DrawState};
@@ -25,14 +26,14 @@ fn quad(normal: Vec3, front: bool, shading: ShadingModel, cull: Cull) -> (Vec<u3
     let transforms = Transforms::new(Mat4::IDENTITY, Mat4::IDENTITY, Mat4::IDENTITY);
     let object = Object { mesh, tangents: None, transforms, shading, material: Material::plain(Vec3::ONE) };
     let light = [Light::directional(Vec3::Z, Vec3::splat(0.5))];
-    let lights = Lighting { ambient: Vec3::splat(0.25), lights: &light };
+    let lights = Lighting { ambient: Vec3::splat(0.25), lights: &light, space: ShadingSpace::Linear };
     let (variant, _) = draw_mesh(&mut target, &object, &lights, &DrawState { cull, ..DrawState::default() }).unwrap();
     (color, variant.two_sided)
 }
 
-/// `0.25 + 0.5 = 0.75` of white is 191 (0.75 x 255 = 191.25), `0.25` alone 64 (63.75).
-const LIT: u32 = 0xBF_BFBF;
-const AMBIENT: u32 = 0x40_4040;
+/// In linear light `0.25 + 0.5 = 0.75` of white encodes to 224.61 / 255, code 225; `0.25` alone to 136.96, 137.
+const LIT: u32 = 0xE1_E1E1;
+const AMBIENT: u32 = 0x89_8989;
 
 #[test]
 fn a_back_face_is_lit_with_its_normal_turned_round() {

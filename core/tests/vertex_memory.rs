@@ -7,6 +7,7 @@
 use crate::common;
 
 use common::{AnyColor, AnyDepth, ExactColor, Torus, Transformed, checker_texels};
+use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::{DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation, ScreenVertex, draw};
@@ -86,7 +87,7 @@ fn draw_torus<M: VertexMemory>(
         wrap: WrapMode::Repeat,
         ..Material::default()
     };
-    let lighting = Lighting { ambient: Vec3::splat(0.1), lights: &lights };
+    let lighting = Lighting { ambient: Vec3::splat(0.1), lights: &lights, space: ShadingSpace::Linear };
     let transforms = common::near_cut_torus_transforms(W, H);
     let object = Object { mesh: torus.mesh(), tangents: None, transforms, shading, material };
     draw_mesh(target, &object, &lighting, state).unwrap().1

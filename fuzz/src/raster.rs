@@ -13,7 +13,7 @@
 
 use arbitrary::{Arbitrary, Result, Unstructured};
 use rastty_core::camera::{look_at, orthographic, perspective};
-use rastty_core::color::pack_rgb888;
+use rastty_core::color::{ShadingSpace, pack_rgb888};
 use rastty_core::math::{Mat4, Vec2, Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh, compute_tangents};
 use rastty_core::pipeline::{
@@ -271,6 +271,8 @@ struct ExtrasIn {
     cutout: Option<(u8, u8)>,
     /// The tiny texture is the occlusion map too.
     occlusion_map: bool,
+    /// Light the stored sRGB codes instead of linear light.
+    encoded_light: bool,
 }
 
 /// One fuzz input: a scene to draw.
@@ -755,8 +757,9 @@ pub fn run(input: Input) -> Option<DrawStats> {
     };
     let object = Object { mesh, tangents, transforms, shading, material };
     let ambient = input.ambient.get();
-    let lighting = Lighting { ambient, lights: &lights };
-    let general_lighting = Lighting { ambient, lights: &general_lights };
+    let space = if input.extras.encoded_light { ShadingSpace::Encoded } else { ShadingSpace::Linear };
+    let lighting = Lighting { ambient, lights: &lights, space };
+    let general_lighting = Lighting { ambient, lights: &general_lights, space };
     let state = input.state.get();
     let style = input.wireframe.map(|(c, bias)| LineStyle { color: c.get(), depth_bias: bias.0 });
 

@@ -8,6 +8,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 
 use rastty::model::{LoadError, Model, ModelOptions, load_model};
+use rastty_core::color::{linear_to_srgb, srgb_to_linear};
 use rastty_core::math::{Vec2, Vec3};
 
 use crate::common::gltf_writer::GltfWriter;
@@ -22,8 +23,8 @@ fn flat3(v: &[Vec3]) -> Vec<f32> {
 }
 
 /// Spot as glTF in `dir`: `spot.gltf` (buffer in a data URI, texture a PNG file beside it) and `spot.glb`
-/// (texture inside the binary chunk), both with base colour 0.8 like an OBJ given `--texture`. Returns the OBJ's
-/// model.
+/// (texture inside the binary chunk), both with the base colour of an OBJ given `--texture`: sRGB 0.8, written in
+/// linear light as glTF's factors are. Returns the OBJ's model.
 fn write_spot_gltf(dir: &Path) -> Model {
     let obj = load_model(spot("spot.obj"), &ModelOptions::default()).expect("Spot's OBJ");
     let uvs = obj.uvs.as_ref().expect("Spot has texture coordinates");
@@ -36,12 +37,13 @@ fn write_spot_gltf(dir: &Path) -> Model {
     let uv = w.floats(&uv, "VEC2");
     let indices = w.indices(&obj.indices, 4);
     let image_view = w.view(&png);
+    let base = srgb_to_linear(0.8);
     let rest = |image: &str| {
         format!(
             r#""scene": 0, "scenes": [{{"nodes": [0]}}], "nodes": [{{"mesh": 0, "name": "spot"}}],
             "meshes": [{{"name": "spot", "primitives": [{{"attributes": {{"POSITION": {position}, "NORMAL": {normal},
             "TEXCOORD_0": {uv}}}, "indices": {indices}, "material": 0}}]}}],
-            "materials": [{{"pbrMetallicRoughness": {{"baseColorFactor": [0.8, 0.8, 0.8, 1], "baseColorTexture":
+            "materials": [{{"pbrMetallicRoughness": {{"baseColorFactor": [{base}, {base}, {base}, 1], "baseColorTexture":
             {{"index": 0}}}}}}], "textures": [{{"source": 0}}], "images": [{image}]"#
         )
     };
@@ -87,7 +89,9 @@ fn spot_as_gltf_and_glb_has_the_vertices_and_triangles_of_its_obj() {
         let material = model.part_material(0).expect("a material");
         let texture = material.texture.as_ref().expect("the base colour texture");
         assert_eq!((texture.width, texture.height), (1024, 1024), "{name}");
-        assert_eq!(material.diffuse, Vec3::splat(0.8));
+        // Encoded again for the material: 0.8 to within the rounding of the two conversions.
+        let d = material.diffuse;
+        assert!([d.x, d.y, d.z].iter().all(|c| (c - 0.8).abs() < 1e-6), "{d:?}");
     }
 }
 
@@ -199,13 +203,14 @@ fn nodes_place_their_meshes_and_materials_come_with_them() {
         }
     }
     assert!(model.warnings.iter().any(|w| w.contains("Lines") && w.contains("left out")), "{:?}", model.warnings);
-    // Materials: red, double-sided, a highlight of F0 = 0.04 and exponent 2 / 0.25^2 - 2 = 30; blue glowing green.
+    // Materials: red, double-sided, a highlight of F0 = 0.04 (linear light, stored encoded) and exponent
+    // 2 / 0.25^2 - 2 = 30; blue glowing green (half of the light of full green: code 188).
     let red = model.part_material(0).unwrap();
     assert_eq!((red.name.as_str(), red.diffuse, red.double_sided), ("red", v(1.0, 0.0, 0.0), true));
-    assert_eq!((red.specular, red.shininess), (Some(Vec3::splat(0.04)), Some(30.0)));
+    assert_eq!((red.specular, red.shininess), (Some(Vec3::splat(linear_to_srgb(0.04))), Some(30.0)));
     let glow = model.part_material(1).unwrap();
     assert_eq!((glow.diffuse, glow.double_sided), (v(0.0, 0.0, 1.0), false));
-    assert_eq!(glow.glow_map.as_ref().map(|g| g.texels.clone()), Some(vec![0x00_80_00]));
+    assert_eq!(glow.glow_map.as_ref().map(|g| g.texels.clone()), Some(vec![0x00_BC_00]));
     assert_eq!(model.parts[2].material, model.parts[0].material, "one material per glTF material");
     // The parts without a material share the default one.
     assert_eq!(model.part_material(4), model.part_material(5));
@@ -309,7 +314,8 @@ fn the_occlusion_texture_scales_the_ambient_light_by_its_red_channel() {
     };
     assert!(explain(&[]).contains("; occlusion map"), "{}", explain(&[]));
     assert!(!explain(&["--without", "ambient-occlusion"]).contains("occlusion map"));
-    // Lit by a white ambient light alone (no lights in the scene file), the right half is half as bright.
+    // Lit by a white ambient light alone (no lights in the scene file), the right half gets half the light: in
+    // linear light (occlusion 128 / 255 times white) that encodes to 188.3, code 188.
     let scene = "ambient = [1, 1, 1]\n\n[camera]\nposition = [0.5, 0.5, 2]\ntarget = [0.5, 0.5, 0]\n\n[[objects]]\nmesh = \"occluded.glb\"\n";
     fs::write(dir.path().join("scene.toml"), scene).unwrap();
     let args = ["--background", "000000", "--size", "160x120"];
@@ -322,7 +328,7 @@ fn the_occlusion_texture_scales_the_ambient_light_by_its_red_channel() {
     let brightest = |x| picture.get_pixel(x, 60).0.into_iter().max().unwrap();
     let (left, right) = (brightest(60), brightest(100));
     assert_eq!(left, 255, "the unoccluded half in full ambient light");
-    assert!(right.abs_diff(left / 2) <= 1, "the occluded half is half as bright: {left}, {right}");
+    assert_eq!(right, 188, "the occluded half gets half the light: {left}, {right}");
 }
 
 #[test]
@@ -441,7 +447,8 @@ fn vertex_colours_multiply_the_base_colour_under_every_shading_model() {
         "{explain}"
     );
     // Lit by a white ambient light alone: the base colour (1, 0.5, 0.5) times the vertex colour (0, 0.4, 0.8) is
-    // (0, 0.2, 0.4), bytes (0, 51, 102), whichever model draws it.
+    // (0, 0.2, 0.4) in linear light (both are linear in glTF), encoded 123.55 and 170.28: bytes (0, 124, 170),
+    // whichever model draws it.
     let scene = "ambient = [1, 1, 1]\n\n[camera]\nposition = [0.5, 0.5, 2]\ntarget = [0.5, 0.5, 0]\n\n[[objects]]\nmesh = \"colored.glb\"\n";
     fs::write(dir.path().join("scene.toml"), scene).unwrap();
     for shading in ["phong", "gouraud", "flat", "unlit"] {
@@ -450,7 +457,7 @@ fn vertex_colours_multiply_the_base_colour_under_every_shading_model() {
         assert!(output.status.success(), "{shading}: {}", String::from_utf8_lossy(&output.stderr));
         let picture = image::open(dir.path().join("lit.png")).unwrap().to_rgb8();
         for (x, y) in [(80, 60), (50, 30), (110, 90)] {
-            assert_eq!(picture.get_pixel(x, y).0, [0, 51, 102], "{shading} at ({x}, {y})");
+            assert_eq!(picture.get_pixel(x, y).0, [0, 124, 170], "{shading} at ({x}, {y})");
         }
     }
 }

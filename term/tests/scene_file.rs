@@ -186,7 +186,7 @@ fn unknown_keys_are_named_with_their_table() {
     assert_eq!(
         error(&format!("backgruond = \"000000\"\n{CAMERA}{SPOT}")),
         "scene.toml:1:1: backgruond: unknown key, expected one of `background`, `ambient`, `ambient_occlusion`, \
-         `camera`, `lights`, `viewer_lights`, `objects`"
+         `linear_light`, `camera`, `lights`, `viewer_lights`, `objects`"
     );
     assert_eq!(
         error(&format!("{CAMERA}fvo = 30\n{SPOT}")),

@@ -105,7 +105,8 @@ fn spot_lamp_lists_ambient_occlusion_last() {
     let floor = text.lines().find(|l| l.contains("ground.obj")).unwrap();
     assert!(
         floor.contains(
-            "phong; varyings normal+world+uv+tangent; albedo texture; normals tangent-space map; specular map; glow map"
+            "phong; varyings normal+world+uv+tangent; albedo texture; linear light; normals tangent-space map; \
+             specular map; glow map"
         ),
         "{floor}"
     );
@@ -332,4 +333,32 @@ fn names_from_files_are_escaped_in_the_explanation() {
     let text = plan(&prepared(&scene_path), &PlanOptions::default()).to_string();
     assert!(text.contains("part \"evil\\u{1b}[2Jname\""), "{text}");
     assert!(!text.contains('\u{1b}'));
+}
+
+/// `linear_light` decides how the plan takes the file's colours: decoded from sRGB for linear light (the default;
+/// a light's intensity multiplies after), as written otherwise; `--explain` says which, and every draw's variant
+/// lights in that space.
+#[test]
+fn linear_light_decodes_the_written_colours() {
+    use rastty_core::color::{ShadingSpace, srgb_to_linear};
+    let text = |linear: &str| {
+        format!(
+            "{linear}ambient = [0.5, 0.2, 0]\n\n[[lights]]\ntype = \"directional\"\ndirection = [0, -1, 0]\n\
+             color = [1, 0.5, 0.25]\nintensity = 2\n\n[[objects]]\nmesh = \"builtin:spot\"\n"
+        )
+    };
+    let linear = plan(&from_text(&text("")), &PlanOptions::default());
+    let encoded = plan(&from_text(&text("linear_light = false\n")), &PlanOptions::default());
+    assert_eq!((linear.space, encoded.space), (ShadingSpace::Linear, ShadingSpace::Encoded));
+    assert_eq!(encoded.ambient, Vec3::new(0.5, 0.2, 0.0));
+    assert_eq!(linear.ambient, Vec3::new(srgb_to_linear(0.5), srgb_to_linear(0.2), 0.0));
+    assert_eq!(encoded.lights[0].color, Vec3::new(2.0, 1.0, 0.5));
+    assert_eq!(linear.lights[0].color, Vec3::new(2.0, 2.0 * srgb_to_linear(0.5), 2.0 * srgb_to_linear(0.25)));
+    // 0.5 decodes to 0.214.
+    assert!((linear.ambient.x - 0.214).abs() < 1e-3);
+    for (plan, says) in [(&linear, "; linear light; ambient [0.214, 0.033, 0]"), (&encoded, "; light on sRGB codes;")] {
+        let text = plan.to_string();
+        assert!(text.lines().next().unwrap().contains(says), "{text}");
+        assert!(plan.draws.iter().all(|d| d.variant.space == plan.space), "{text}");
+    }
 }

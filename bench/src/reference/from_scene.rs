@@ -112,10 +112,10 @@ impl Scene {
 
         let mut lights = Vec::with_capacity(plan.lights.len());
         for planned in &plan.lights {
-            let source = &planned.source;
-            let to_light = to_light(source, &view_matrix).ok_or(ReferenceError::Unsupported("point lights"))?;
-            let color = widen(source.color).map(|c| c * f64::from(source.intensity));
-            lights.push(Light { to_light, color });
+            let to_light =
+                to_light(&planned.source, &view_matrix).ok_or(ReferenceError::Unsupported("point lights"))?;
+            // The colour as rastty lights with it: decoded in linear light, times the intensity.
+            lights.push(Light { to_light, color: widen(planned.color) });
         }
 
         let objects_data = &scene.data().objects;
@@ -125,7 +125,8 @@ impl Scene {
         for draw in &plan.draws {
             let object = &objects_data[draw.object];
             let model = &*object.model;
-            let material = part_material(object, scene.part_maps(draw.object, draw.part), draw.part, options)
+            let maps = scene.part_maps(draw.object, draw.part);
+            let material = part_material(object, maps, draw.part, plan.space, options)
                 .map_err(|error| ReferenceError::Plan(SceneRenderError::Texture { draw: draw.label.clone(), error }))?;
             if material.normal_map.is_some() {
                 return Err(ReferenceError::Unsupported("normal maps"));
@@ -186,6 +187,7 @@ impl Scene {
             lighting: Lighting { ambient: widen(plan.ambient), lights },
             background: widen(plan.background),
             objects,
+            space: plan.space,
         })
     }
 }

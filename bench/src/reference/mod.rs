@@ -4,6 +4,8 @@
 //! pixel is sampled on a regular [`SAMPLES_PER_AXIS`]² grid (sample `(k, l)` of pixel `(i, j)` at
 //! `(i + (k + 0.5) / 16, j + (l + 0.5) / 16)` in screen space); every sample is shaded, clamped to `[0, 1]`, and
 //! the samples are averaged with equal weights (a box filter). Samples that hit nothing take the background colour.
+//! In linear light ([`Scene::space`], the default) the samples are light, the texels and the background decoded
+//! from sRGB ([`srgb`]), and each pixel's average is encoded back; on the stored values nothing is converted.
 //!
 //! # How a sample is decided
 //!
@@ -29,8 +31,8 @@
 //!
 //! # Shading
 //!
-//! The albedo is [`Material::color`] times the bilinearly sampled texture ([`sample_bilinear`]) when the object
-//! has one and has texture coordinates. [`Shading::Unlit`] draws the albedo; [`Shading::Lit`] is rastty's
+//! The albedo is [`Material::color`] times the bilinearly sampled texture ([`sample_bilinear`], in the scene's
+//! space) when the object has one and has texture coordinates. [`Shading::Unlit`] draws the albedo; [`Shading::Lit`] is rastty's
 //! per-pixel Blinn-Phong (`ShadingModel::Phong` of [`rastty_core::draw_mesh`]) in `f64`, with the interpolated vertex normal
 //! renormalised:
 //! `albedo * (ambient + sum c max(0, n.l)) + specular * sum over lights with n.l > 0 of c max(0, n.h)^shininess`,
@@ -69,11 +71,13 @@ mod from_scene;
 mod image;
 pub mod math;
 mod render;
+pub mod srgb;
 mod texture;
 
 use std::fmt;
 
 use rastty_core::camera::CameraError;
+use rastty_core::color::ShadingSpace;
 use rastty_core::pipeline::Cull;
 use rastty_core::texture::WrapMode;
 
@@ -96,16 +100,27 @@ pub struct Scene {
     pub camera: Camera,
     /// The lights (used by [`Shading::Lit`] objects).
     pub lighting: Lighting,
-    /// The colour of samples that hit nothing, channels in `[0, 1]`.
+    /// The colour of samples that hit nothing, channels in `[0, 1]`, as stored (sRGB-encoded).
     pub background: [f64; 3],
     /// The objects, in drawing order (which only matters for exact depth ties).
     pub objects: Vec<Object>,
+    /// How the truth is lit, as rastty's [`ShadingSpace`]: in linear light (texels decoded before filtering,
+    /// light added up, the samples' light averaged and encoded) or on the stored values.
+    pub space: ShadingSpace,
 }
 
 impl Scene {
-    /// An empty `width x height` scene seen by `camera`: black background, no lights, no objects.
+    /// An empty `width x height` scene seen by `camera`: black background, no lights, no objects, linear light.
     pub fn new(width: u32, height: u32, camera: Camera) -> Self {
-        Self { width, height, camera, lighting: Lighting::default(), background: [0.0; 3], objects: Vec::new() }
+        Self {
+            width,
+            height,
+            camera,
+            lighting: Lighting::default(),
+            background: [0.0; 3],
+            objects: Vec::new(),
+            space: ShadingSpace::Linear,
+        }
     }
 }
 

@@ -3,10 +3,12 @@
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use rastty_core::camera::CameraError;
+use rastty_core::color::ShadingSpace;
 use rastty_core::pipeline::Cull;
 use rastty_core::target::MAX_DIMENSION;
 
 use super::math::{self, V3};
+use super::srgb;
 use super::texture::sample_bilinear;
 use super::{Camera, Projection, ReferenceError, ReferenceImage, Scene, Shading};
 
@@ -105,7 +107,7 @@ pub struct Probe {
     pub uv: Option<[f64; 2]>,
     /// The unit normal used for lighting ([`Shading::Lit`] only).
     pub normal: Option<[f64; 3]>,
-    /// The shaded colour, clamped to `[0, 1]`.
+    /// The shaded colour, clamped to `[0, 1]`, as stored (encoded from linear light in [`ShadingSpace::Linear`]).
     pub color: [f64; 3],
 }
 
@@ -210,6 +212,16 @@ fn clip_polygon(poly: &[V3], inside: impl Fn(V3) -> f64) -> Vec<V3> {
         }
     }
     out
+}
+
+/// A stored colour (sRGB-encoded) as the light a sample in `space` carries.
+fn light_of(c: V3, space: ShadingSpace) -> V3 {
+    if space == ShadingSpace::Linear { V3::new(srgb::decode(c.x), srgb::decode(c.y), srgb::decode(c.z)) } else { c }
+}
+
+/// A sample's (or an average's) light as the value stored in `space`.
+fn stored(c: V3, space: ShadingSpace) -> V3 {
+    if space == ShadingSpace::Linear { V3::new(srgb::encode(c.x), srgb::encode(c.y), srgb::encode(c.z)) } else { c }
 }
 
 /// Pairwise sum (exact for a power-of-two count of equal values, and more accurate than a running sum).
@@ -512,7 +524,8 @@ impl<'a> Renderer<'a> {
                 }
             }
         }
-        let background = V3::from_array(self.scene.background).clamp01();
+        let space = self.scene.space;
+        let background = light_of(V3::from_array(self.scene.background).clamp01(), space);
         let mut out = TileOut { rgb: Vec::with_capacity(tw * th), centre: Vec::new(), coverage: Vec::new() };
         let mut samples = [V3::ZERO; SAMPLES];
         for j in 0..th {
@@ -531,7 +544,7 @@ impl<'a> Renderer<'a> {
                         };
                     }
                 }
-                out.rgb.push((pairwise(&samples) * (1.0 / SAMPLES as f64)).to_array());
+                out.rgb.push(stored(pairwise(&samples) * (1.0 / SAMPLES as f64), space).to_array());
                 out.coverage.push(hits as f64 / SAMPLES as f64);
                 out.centre.push(centre_id[j * tw + i] != NONE);
             }
@@ -549,7 +562,7 @@ impl<'a> Renderer<'a> {
         });
         let mut albedo = V3::from_array(o.material.color);
         if let (Some(texture), Some(uv)) = (&o.texture, uv) {
-            albedo = albedo.mul_elem(V3::from_array(sample_bilinear(texture, o.wrap, uv)));
+            albedo = albedo.mul_elem(V3::from_array(sample_bilinear(texture, o.wrap, self.scene.space, uv)));
         }
         match o.shading {
             Shading::Unlit => (albedo.clamp01(), None, uv),
@@ -624,7 +637,7 @@ impl<'a> Renderer<'a> {
             world: world.to_array(),
             uv,
             normal: normal.map(V3::to_array),
-            color: color.to_array(),
+            color: stored(color, self.scene.space).to_array(),
         })
     }
 }

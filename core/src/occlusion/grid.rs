@@ -11,6 +11,7 @@
 use super::frame::DepthFrame;
 use super::horizon::Kernel;
 use super::{AmbientOcclusion, darken};
+use crate::color::ShadingSpace;
 use crate::math::float;
 
 /// Cells across one strip of the frame: bounds the rows of cells [`Grid`] holds to a few kilobytes of stack.
@@ -69,6 +70,8 @@ pub(super) struct Grid<'a> {
     tolerance: f32,
     /// How much of the occlusion darkens a pixel ([`AmbientOcclusion::strength`]).
     strength: f32,
+    /// Where it darkens ([`AmbientOcclusion::space`]).
+    space: ShadingSpace,
     /// The strip's first cell column.
     first: i32,
     /// Rows filtered across, by cell row modulo 3.
@@ -90,6 +93,7 @@ impl<'a> Grid<'a> {
             frame,
             tolerance: settings.radius,
             strength: settings.strength,
+            space: settings.space,
             first: 0,
             across: [[Cell::NONE; ROW]; 3],
             across_rows: [None; 3],
@@ -138,7 +142,7 @@ impl<'a> Grid<'a> {
             if occlusion > 0.0 {
                 let factor = float::clamp(1.0 - self.strength * occlusion, 0.0, 1.0);
                 let pixel = &mut line[x as usize];
-                *pixel = darken(*pixel, factor);
+                *pixel = darken(*pixel, factor, self.space);
             }
         }
     }

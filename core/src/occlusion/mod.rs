@@ -33,6 +33,7 @@ use frame::DepthFrame;
 use grid::Grid;
 use horizon::Kernel;
 
+use crate::color::{SRGB_DECODE, ShadingSpace, linear_to_srgb8};
 use crate::math::{Mat4, float};
 use crate::target::MAX_DIMENSION;
 
@@ -48,11 +49,15 @@ pub struct AmbientOcclusion {
     pub directions: u32,
     /// Samples along each direction (0 turns the effect off).
     pub steps: u32,
+    /// Where the darkening applies: to the light the pixel shows ([`ShadingSpace::Linear`], the sRGB code decoded,
+    /// scaled and encoded again) or to its stored code.
+    pub space: ShadingSpace,
 }
 
 impl AmbientOcclusion {
     /// The defaults: a radius of half a unit (a quarter of a model scaled to fit `[-1, 1]`, so the corners and
-    /// contacts of its parts darken but not the whole model), full strength, and 4 directions of 3 steps.
+    /// contacts of its parts darken but not the whole model), full strength, and 4 directions of 3 steps,
+    /// darkening the light a pixel shows.
     ///
     /// That is 12 samples per 2x2 block of pixels (3 a pixel), the directions turned through 4 angles over each
     /// 2x2 block of cells and averaged by the filter, so 16 directions and 16 distances shape every pixel. Creases
@@ -63,7 +68,7 @@ impl AmbientOcclusion {
     /// (fastest 13.0 ms) for a model filling most of it and 19.7 ms (fastest 16.9 ms) with a floor and boxes
     /// around it, where the previous search, 8 directions of 4 steps at every pixel (32 samples a pixel), took
     /// 290 ms and 370 ms (fastest 222 ms and 266 ms) on the same machine.
-    pub const DEFAULT: Self = Self { radius: 0.5, strength: 1.0, directions: 4, steps: 3 };
+    pub const DEFAULT: Self = Self { radius: 0.5, strength: 1.0, directions: 4, steps: 3, space: ShadingSpace::Linear };
 
     /// Rows of depth needed above and below a band, for a `width x height` frame seen through `projection`.
     ///
@@ -101,7 +106,7 @@ impl AmbientOcclusion {
     /// line one or two pixels thin (orientation unknown) takes the occlusion found around it on its surface, or
     /// keeps its colour. A pixel's occlusion comes from searches at most three pixels away across and down, so it
     /// reaches that far beyond `radius`. Each channel of a darkened pixel is multiplied by
-    /// `1 - strength * occlusion` (clamped to `[0, 1]`) and rounded to nearest.
+    /// `1 - strength * occlusion` (clamped to `[0, 1]`) in `space`, and rounded to the nearest code.
     ///
     /// # Errors
     /// [`OcclusionError::Settings`] for a negative or non-finite `radius` or `strength`; [`OcclusionError::Frame`]
@@ -203,9 +208,33 @@ fn max_inv_w(inverse: &Mat4) -> f32 {
     float::abs(w.x) + float::abs(w.y) + float::max(w.z, 0.0) + w.w
 }
 
-/// `color` (`0x00RRGGBB`) with each channel multiplied by `factor` in `[0, 1]`, rounded to nearest.
+/// `color` (`0x00RRGGBB`) with each channel multiplied by `factor` in `[0, 1]` in `space`, rounded to the nearest
+/// code.
 #[inline(always)]
-fn darken(color: u32, factor: f32) -> u32 {
-    let channel = |shift: u32| float::round_small_to_u32(((color >> shift) & 0xFF) as f32 * factor) << shift;
+fn darken(color: u32, factor: f32, space: ShadingSpace) -> u32 {
+    let code = |shift: u32| (color >> shift) & 0xFF;
+    let channel = |shift: u32| match space {
+        ShadingSpace::Linear => linear_to_srgb8(SRGB_DECODE[code(shift) as usize] * factor) << shift,
+        ShadingSpace::Encoded => float::round_small_to_u32(code(shift) as f32 * factor) << shift,
+    };
     channel(16) | channel(8) | channel(0)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Half the light of white is code 188; half of code 255 is 127.5, rounded to even: 128. Black stays black
+    /// and a factor of 1 changes nothing either way.
+    #[test]
+    fn darkening_applies_to_light_or_to_codes() {
+        assert_eq!(darken(0xFF_FF_FF, 0.5, ShadingSpace::Linear), 0xBC_BC_BC);
+        assert_eq!(darken(0xFF_FF_FF, 0.5, ShadingSpace::Encoded), 0x80_80_80);
+        for space in [ShadingSpace::Linear, ShadingSpace::Encoded] {
+            assert_eq!(darken(0x00_00_00, 0.3, space), 0);
+            assert_eq!(darken(0x12_80_FE, 1.0, space), 0x12_80_FE);
+        }
+        // Code 188 at half strength: 0.5 light halved is 0.25, code 137.
+        assert_eq!(darken(0xBC_00_00, 0.5, ShadingSpace::Linear), 0x89_00_00);
+    }
 }

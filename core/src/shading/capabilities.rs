@@ -27,8 +27,12 @@ pub const TWO_SIDED: u32 = 1 << 8;
 /// Mipmapped maps ([`super::Variant::mip_filter`]): the slopes of the texture coordinates and the levels of
 /// detail.
 pub const MIPMAPS: u32 = 1 << 9;
+/// Shading in linear light ([`crate::color::ShadingSpace::Linear`]): the sRGB decoding of colour maps and the
+/// encoding of each pixel, and their tables.
+pub const LINEAR_LIGHT: u32 = 1 << 10;
 /// Everything: what [`super::draw_mesh`] compiles.
-pub const ALL: u32 = UNLIT | FLAT | GOURAUD | PER_PIXEL | VIEWS | POINT_LIGHTS | SHADOWS | CUTOUT | TWO_SIDED | MIPMAPS;
+pub const ALL: u32 =
+    UNLIT | FLAT | GOURAUD | PER_PIXEL | VIEWS | POINT_LIGHTS | SHADOWS | CUTOUT | TWO_SIDED | MIPMAPS | LINEAR_LIGHT;
 
 /// True when `caps` holds `bit`: a constant in a shader compiled for `caps`, so the code it guards is left out
 /// when false.

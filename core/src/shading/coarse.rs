@@ -2,8 +2,9 @@
 //! under light computed once per triangle or per vertex, plus the highlight and the glow map.
 
 use super::columns::Column3;
-use super::maps::{Coordinates, MapReader, modulated};
+use super::maps::{Coordinates, MapReader, Texels, modulated, stored};
 use super::{Material, SpecularSource, Variant};
+use crate::color::ShadingSpace;
 use crate::math::Vec3;
 use crate::pipeline::BATCH_SIZE;
 use crate::texture::{Filter, MipFilter, Wrap};
@@ -17,10 +18,20 @@ pub(crate) enum Light<'a> {
     Lit { diffuse: &'a Column3, specular: &'a Column3 },
 }
 
+/// How a draw reads its maps and stores its colours: the same for every batch.
+#[derive(Clone, Copy)]
+pub(crate) struct Reads {
+    /// Whether maps are read at all (false, a constant, leaves their code out).
+    pub maps: bool,
+    /// How maps choose among their levels of detail.
+    pub mip_filter: MipFilter,
+    /// Colour maps decoded and the result encoded when linear.
+    pub space: ShadingSpace,
+}
+
 /// Colours the batch: `albedo` (per fragment) times the diffuse map when the variant reads it, times the diffuse
 /// light, plus the specular colour (times the specular map) times the specular light, plus the glow map; maps
-/// read with filter `F`, wrap mode `W` and `mip_filter` at `at`, and only when `maps_read` (false, a constant,
-/// leaves their code out).
+/// read with filter `F` and wrap mode `W` at `at`, as `reads` says.
 #[allow(clippy::too_many_arguments, clippy::needless_range_loop)] // lanes: one index into every column
 #[inline(always)]
 pub(crate) fn shade<F: Filter, W: Wrap>(
@@ -31,19 +42,20 @@ pub(crate) fn shade<F: Filter, W: Wrap>(
     light: &Light<'_>,
     len: usize,
     colors: &mut [Vec3; BATCH_SIZE],
-    maps_read: bool,
-    mip_filter: MipFilter,
+    reads: Reads,
 ) {
+    let Reads { maps: maps_read, mip_filter, space } = reads;
     let maps = &mut MapReader::<F, W>::new(mip_filter);
+    let texels = Texels::of_color(space);
     if let (true, true, Some(map)) = (maps_read, v.albedo_map, m.diffuse) {
         let base = albedo;
-        modulated(&mut albedo, at, maps, &map, Some(&base), len);
+        modulated(&mut albedo, at, maps, &map, texels, Some(&base), len);
     }
     let out = &mut colors[..len];
     let (diffuse, specular) = match light {
         Light::None => {
             out.iter_mut().enumerate().for_each(|(i, c)| *c = albedo.get(i));
-            return;
+            return stored(out, space);
         }
         Light::Lit { diffuse, specular } => (**diffuse, **specular),
     };
@@ -53,7 +65,7 @@ pub(crate) fn shade<F: Filter, W: Wrap>(
     if v.specular != SpecularSource::None {
         let mut color = Column3::splat(m.specular);
         if let (true, SpecularSource::Map, Some(map)) = (maps_read, v.specular, m.specular_map) {
-            modulated(&mut color, at, maps, &map, Some(&Column3::splat(m.specular)), len);
+            modulated(&mut color, at, maps, &map, texels, Some(&Column3::splat(m.specular)), len);
         }
         for (i, c) in out.iter_mut().enumerate() {
             *c += color.get(i).mul_elem(specular.get(i));
@@ -61,9 +73,10 @@ pub(crate) fn shade<F: Filter, W: Wrap>(
     }
     if let (true, true, Some(map)) = (maps_read, v.glow_map, m.glow_map) {
         let mut glow = Column3::ZERO;
-        modulated(&mut glow, at, maps, &map, None, len);
+        modulated(&mut glow, at, maps, &map, texels, None, len);
         for (i, c) in out.iter_mut().enumerate() {
             *c += glow.get(i);
         }
     }
+    stored(out, space);
 }

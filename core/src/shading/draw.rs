@@ -40,7 +40,7 @@ pub fn draw_mesh<C: ColorBuffer, D: DepthBuffer, M: VertexMemory>(
     lights: &Lighting<'_>,
     state: &DrawState,
 ) -> Result<(Variant, DrawStats), ShadingError> {
-    let variant = Variant::resolve(object, lights.lights.iter().map(LightUse::from), state)?;
+    let variant = Variant::resolve(object, lights.lights.iter().map(LightUse::from), lights.space, state)?;
     let tangents = object.tangents.unwrap_or(&[]);
     let (mesh, state) = (&object.mesh, &variant.state);
     macro_rules! run {

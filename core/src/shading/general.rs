@@ -14,7 +14,7 @@ use super::{
     Cutout, LightKind, LightTerms, Lighting, Material, NormalSource, ShadingModel, SpecularSource, Transforms, Variant,
     world_normal,
 };
-use crate::color::{texel_alpha, unpack_rgb888};
+use crate::color::{ShadingSpace, decode_srgb888, encode_srgb, texel_alpha, unpack_rgb888};
 use crate::math::{Vec2, Vec3, Vec4, float};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{Fragment, Shader, Slopes};
@@ -90,13 +90,29 @@ impl<'a> GeneralShader<'a> {
         }
     }
 
+    /// The colour of a colour map's `texel`: decoded from sRGB when the draw lights in linear light.
+    fn color(&self, texel: u32) -> Vec3 {
+        match self.variant.space {
+            ShadingSpace::Linear => decode_srgb888(texel),
+            ShadingSpace::Encoded => unpack_rgb888(texel),
+        }
+    }
+
+    /// A shaded colour as the draw stores it: encoded to sRGB from linear light, or as it is.
+    fn stored(&self, color: Vec3) -> Vec3 {
+        match self.variant.space {
+            ShadingSpace::Linear => encode_srgb(color),
+            ShadingSpace::Encoded => color,
+        }
+    }
+
     /// The material colour, times the vertex colour `color` when the variant reads it, times the diffuse map at
     /// `uv` when it reads that.
     fn albedo(&self, color: Vec3, uv: &MapPoint) -> Vec3 {
         let m = &self.material;
         let base = if self.variant.vertex_colors { m.color.mul_elem(color) } else { m.color };
         match m.diffuse {
-            Some(map) if self.variant.albedo_map => base.mul_elem(unpack_rgb888(self.texel(&map, uv))),
+            Some(map) if self.variant.albedo_map => base.mul_elem(self.color(self.texel(&map, uv))),
             _ => base,
         }
     }
@@ -106,7 +122,7 @@ impl<'a> GeneralShader<'a> {
         let m = &self.material;
         match m.specular_map {
             Some(map) if self.variant.specular == SpecularSource::Map => {
-                m.specular.mul_elem(unpack_rgb888(self.texel(&map, uv)))
+                m.specular.mul_elem(self.color(self.texel(&map, uv)))
             }
             _ => m.specular,
         }
@@ -119,7 +135,7 @@ impl<'a> GeneralShader<'a> {
             color += self.specular_color(uv).mul_elem(specular_light);
         }
         match self.material.glow_map {
-            Some(map) if self.variant.glow_map => color + unpack_rgb888(self.texel(&map, uv)),
+            Some(map) if self.variant.glow_map => color + self.color(self.texel(&map, uv)),
             _ => color,
         }
     }
@@ -245,10 +261,14 @@ impl Shader for GeneralShader<'_> {
     fn fragment(&self, f: &Fragment, face: &LightTerms, v: &GeneralVaryings, slopes: &Slopes<GeneralVaryings>) -> Vec3 {
         let uv = &MapPoint::of(v, slopes);
         match self.variant.shading {
-            ShadingModel::Unlit => self.albedo(v.color, uv),
-            ShadingModel::Flat => self.finish(self.albedo(v.color, uv).mul_elem(face.diffuse), face.specular, uv),
-            ShadingModel::Gouraud => self.finish(self.albedo(v.color, uv).mul_elem(v.diffuse), v.specular, uv),
-            ShadingModel::Phong => self.per_pixel(v, uv, f.front_facing),
+            ShadingModel::Unlit => self.stored(self.albedo(v.color, uv)),
+            ShadingModel::Flat => {
+                self.stored(self.finish(self.albedo(v.color, uv).mul_elem(face.diffuse), face.specular, uv))
+            }
+            ShadingModel::Gouraud => {
+                self.stored(self.finish(self.albedo(v.color, uv).mul_elem(v.diffuse), v.specular, uv))
+            }
+            ShadingModel::Phong => self.stored(self.per_pixel(v, uv, f.front_facing)),
             ShadingModel::Depth { near, far } => {
                 let scale = 1.0 / (far - near);
                 let scale = if scale.is_finite() { scale } else { 0.0 };

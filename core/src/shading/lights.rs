@@ -1,5 +1,6 @@
 //! The lights of a draw: directional and point lights, each with an optional shadow map.
 
+use crate::color::ShadingSpace;
 use crate::math::Vec3;
 use crate::shadow::ShadowMap;
 
@@ -43,13 +44,17 @@ impl Light<'_> {
     }
 }
 
-/// The light a scene sheds: an ambient term and any number of lights, borrowed.
+/// The light a scene sheds: an ambient term and any number of lights, borrowed, and the space surfaces are lit
+/// in.
 #[derive(Clone, Copy, Debug)]
 pub struct Lighting<'a> {
     /// Light reaching every surface from every direction.
     pub ambient: Vec3,
     /// The lights.
     pub lights: &'a [Light<'a>],
+    /// Linear light (sRGB-correct) or the stored codes as they are: how every draw under this lighting combines
+    /// colours with light ([`ShadingSpace`]).
+    pub space: ShadingSpace,
 }
 
 /// What choosing a draw's stages needs to know of a light: whether it is a point light, and the filter radius of

@@ -4,7 +4,7 @@ use core::marker::PhantomData;
 
 use super::columns::{Column2, Column3};
 use super::scratch::Scratch;
-use crate::color::unpack_rgb888;
+use crate::color::{ShadingSpace, decode_srgb888, encode_srgb, unpack_rgb888};
 use crate::math::{Vec2, Vec3};
 use crate::pipeline::{BATCH_SIZE, Slopes, lanes};
 use crate::texture::{Filter, MipFilter, Texture, Wrap, level_of_detail};
@@ -107,10 +107,36 @@ impl<F: Filter, W: Wrap> MapReader<F, W> {
     }
 }
 
+/// How a map's texels become values: colour maps are decoded from sRGB in a draw that lights in linear light,
+/// data maps (occlusion) never.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Texels {
+    /// Each code over 255.
+    AsStored,
+    /// Each code decoded to linear light ([`crate::color::SRGB_DECODE`]).
+    Srgb,
+}
+
+impl Texels {
+    /// How a colour map's texels are read in a draw lit in `space`.
+    #[inline(always)]
+    pub fn of_color(space: ShadingSpace) -> Self {
+        match space {
+            ShadingSpace::Linear => Self::Srgb,
+            ShadingSpace::Encoded => Self::AsStored,
+        }
+    }
+}
+
 /// Albedo: its base colour (the material's, times the vertex colours) times the diffuse map.
-pub(crate) fn albedo<F: Filter, W: Wrap>(s: &mut Scratch, maps: &mut MapReader<F, W>, map: &Texture<'_>) {
+pub(crate) fn albedo<F: Filter, W: Wrap>(
+    s: &mut Scratch,
+    maps: &mut MapReader<F, W>,
+    map: &Texture<'_>,
+    texels: Texels,
+) {
     let base = s.albedo;
-    modulated(&mut s.albedo, &s.at, maps, map, Some(&base), s.len);
+    modulated(&mut s.albedo, &s.at, maps, map, texels, Some(&base), s.len);
 }
 
 /// Specular colour: `specular` times the specular map.
@@ -118,9 +144,10 @@ pub(crate) fn specular_color<F: Filter, W: Wrap>(
     s: &mut Scratch,
     maps: &mut MapReader<F, W>,
     map: &Texture<'_>,
+    texels: Texels,
     specular: Vec3,
 ) {
-    modulated(&mut s.specular_color, &s.at, maps, map, Some(&Column3::splat(specular)), s.len);
+    modulated(&mut s.specular_color, &s.at, maps, map, texels, Some(&Column3::splat(specular)), s.len);
 }
 
 /// Ambient light: `ambient` times the occlusion map, into `s.ambient`.
@@ -130,16 +157,16 @@ pub(crate) fn occluded_ambient<F: Filter, W: Wrap>(
     map: &Texture<'_>,
     ambient: Vec3,
 ) {
-    modulated(&mut s.ambient, &s.at, maps, map, Some(&Column3::splat(ambient)), s.len);
+    modulated(&mut s.ambient, &s.at, maps, map, Texels::AsStored, Some(&Column3::splat(ambient)), s.len);
 }
 
 /// Emission: the glow map.
-pub(crate) fn glow<F: Filter, W: Wrap>(s: &mut Scratch, maps: &mut MapReader<F, W>, map: &Texture<'_>) {
-    modulated(&mut s.emission, &s.at, maps, map, None, s.len);
+pub(crate) fn glow<F: Filter, W: Wrap>(s: &mut Scratch, maps: &mut MapReader<F, W>, map: &Texture<'_>, texels: Texels) {
+    modulated(&mut s.emission, &s.at, maps, map, texels, None, s.len);
 }
 
-/// The map at the texture coordinates `at` of each lane of a batch of `len`, times that lane's `color` if given,
-/// into `out`.
+/// The map at the texture coordinates `at` of each lane of a batch of `len`, its texels read as `texels` says,
+/// times that lane's `color` if given, into `out`.
 #[allow(clippy::needless_range_loop)] // lanes: one index into every column
 #[inline(always)]
 pub(crate) fn modulated<F: Filter, W: Wrap>(
@@ -147,26 +174,36 @@ pub(crate) fn modulated<F: Filter, W: Wrap>(
     at: &Coordinates,
     maps: &mut MapReader<F, W>,
     map: &Texture<'_>,
+    texels: Texels,
     color: Option<&Column3>,
     len: usize,
 ) {
-    let mut texels = [0; BATCH_SIZE];
-    maps.read(map, at, &mut texels);
+    let mut packed = [0; BATCH_SIZE];
+    maps.read(map, at, &mut packed);
+    let mut values = Column3::ZERO;
+    match texels {
+        Texels::AsStored => (0..lanes(len)).for_each(|i| values.set(i, unpack_rgb888(packed[i]))),
+        Texels::Srgb => (0..lanes(len)).for_each(|i| values.set(i, decode_srgb888(packed[i]))),
+    }
     match color {
         // `color.mul_elem(texel)`, lane by lane.
         Some(color) => {
             for i in 0..lanes(len) {
-                let c = unpack_rgb888(texels[i]);
-                out.x[i] = color.x[i] * c.x;
-                out.y[i] = color.y[i] * c.y;
-                out.z[i] = color.z[i] * c.z;
+                out.x[i] = color.x[i] * values.x[i];
+                out.y[i] = color.y[i] * values.y[i];
+                out.z[i] = color.z[i] * values.z[i];
             }
         }
-        None => {
-            for i in 0..lanes(len) {
-                out.set(i, unpack_rgb888(texels[i]));
-            }
-        }
+        None => *out = values,
+    }
+}
+
+/// The shaded `colors` as a draw lit in `space` stores them: encoded from linear light to sRGB
+/// ([`encode_srgb`]), or as they are.
+#[inline(always)]
+pub(crate) fn stored(colors: &mut [Vec3], space: ShadingSpace) {
+    if space == ShadingSpace::Linear {
+        colors.iter_mut().for_each(|c| *c = encode_srgb(*c));
     }
 }
 

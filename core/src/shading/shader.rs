@@ -5,13 +5,13 @@ use core::marker::PhantomData;
 use super::capabilities::{self, has};
 use super::columns::{self, Column3};
 use super::light_terms::{face_light, vertex_light};
-use super::maps::{Coordinates, MapReader, albedo, glow, occluded_ambient, specular_color};
+use super::maps::{Coordinates, MapReader, Texels, albedo, glow, occluded_ambient, specular_color, stored};
 use super::normals::{self, object_map, tangent_map};
 use super::scratch::Scratch;
 use super::varyings::{Absent, Slot, SurfaceVaryings};
 use super::{Cutout, ShadingError, coarse, views};
 use super::{Layout, Lighting, Material, NormalSource, SpecularSource, Variant, lighting};
-use crate::color::texel_alpha;
+use crate::color::{ShadingSpace, texel_alpha};
 use crate::math::{Mat4, Vec2, Vec3, Vec4};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{BATCH_SIZE, Fragment, FragmentBatch, Shader, Slopes};
@@ -53,7 +53,7 @@ where
     /// # Errors
     /// [`ShadingError::Unsupported`] when the slot types do not carry the variant's [`Variant::layout`]
     /// (they may carry more), or `CAPS` ([`capabilities`]) leaves out its shading model, point lights, shadow
-    /// maps, two-sided lighting, cut-outs or mipmaps.
+    /// maps, two-sided lighting, cut-outs, mipmaps or linear light.
     pub fn new(
         variant: Variant,
         transforms: Transforms,
@@ -79,7 +79,8 @@ where
             && (variant.shadowed_lights == 0 || has(CAPS, capabilities::SHADOWS))
             && (!variant.two_sided || has(CAPS, capabilities::TWO_SIDED))
             && (variant.cutout == Cutout::None || has(CAPS, capabilities::CUTOUT))
-            && (variant.mip_filter == MipFilter::Off || has(CAPS, capabilities::MIPMAPS));
+            && (variant.mip_filter == MipFilter::Off || has(CAPS, capabilities::MIPMAPS))
+            && (variant.space == ShadingSpace::Encoded || has(CAPS, capabilities::LINEAR_LIGHT));
         if !(carried && compiled) {
             return Err(ShadingError::Unsupported);
         }
@@ -115,6 +116,13 @@ where
         if self.mipmaps() { self.variant.mip_filter } else { MipFilter::Off }
     }
 
+    /// The space the draw lights in: a constant [`ShadingSpace::Encoded`] for a shader compiled without
+    /// [`capabilities::LINEAR_LIGHT`].
+    #[inline(always)]
+    fn space(&self) -> ShadingSpace {
+        if has(CAPS, capabilities::LINEAR_LIGHT) { self.variant.space } else { ShadingSpace::Encoded }
+    }
+
     /// Runs the per-pixel lighting stages of the variant over `s`, whose varyings columns and base albedo are
     /// filled, into `colors`.
     fn shade(&self, s: &mut Scratch, colors: &mut [Vec3; BATCH_SIZE]) {
@@ -138,6 +146,7 @@ where
         let maps = &mut MapReader::<F, Wr>::new(self.mip_filter());
         let v = &self.variant;
         let m = &self.material;
+        let texels = Texels::of_color(self.space());
         // The geometric normal is the shading normal without a normal map, and offsets shadow lookups: with a map
         // and no shadows, nothing reads it.
         let interpolated_shading = v.normals == NormalSource::Interpolated;
@@ -155,7 +164,7 @@ where
             normals::face_the_viewer(s);
         }
         if let (true, true, Some(map)) = (U::PRESENT, v.albedo_map, m.diffuse) {
-            albedo(s, maps, &map);
+            albedo(s, maps, &map, texels);
         }
         let specular = v.specular != SpecularSource::None;
         let occluded = match m.occlusion_map {
@@ -167,11 +176,11 @@ where
         };
         lighting::light::<CAPS>(s, &self.lights, self.transforms.eye, m.shininess, specular, occluded);
         match (v.specular, m.specular_map) {
-            (SpecularSource::Map, Some(map)) if U::PRESENT => specular_color(s, maps, &map, m.specular),
+            (SpecularSource::Map, Some(map)) if U::PRESENT => specular_color(s, maps, &map, texels, m.specular),
             _ => s.specular_color = Column3::splat(m.specular),
         }
         if let (true, true, Some(map)) = (U::PRESENT, v.glow_map, m.glow_map) {
-            glow(s, maps, &map);
+            glow(s, maps, &map, texels);
         }
         let out = &mut colors[..s.len];
         match (specular, v.glow_map) {
@@ -199,6 +208,7 @@ where
                 }
             }
         }
+        stored(out, self.space());
     }
 }
 
@@ -388,22 +398,22 @@ where
                     }
                     _ => coarse::Light::None,
                 };
-                let mip = self.mip_filter();
+                let reads = coarse::Reads { maps: U::PRESENT, mip_filter: self.mip_filter(), space: self.space() };
                 match (v.filter, v.wrap) {
                     (_, _) if !U::PRESENT => {
-                        coarse::shade::<Nearest, Clamp>(v, m, albedo, &at, &light, len, colors, U::PRESENT, mip);
+                        coarse::shade::<Nearest, Clamp>(v, m, albedo, &at, &light, len, colors, reads);
                     }
                     (FilterMode::Nearest, WrapMode::Repeat) => {
-                        coarse::shade::<Nearest, Repeat>(v, m, albedo, &at, &light, len, colors, U::PRESENT, mip);
+                        coarse::shade::<Nearest, Repeat>(v, m, albedo, &at, &light, len, colors, reads);
                     }
                     (FilterMode::Nearest, WrapMode::Clamp) => {
-                        coarse::shade::<Nearest, Clamp>(v, m, albedo, &at, &light, len, colors, U::PRESENT, mip);
+                        coarse::shade::<Nearest, Clamp>(v, m, albedo, &at, &light, len, colors, reads);
                     }
                     (FilterMode::Bilinear, WrapMode::Repeat) => {
-                        coarse::shade::<Bilinear, Repeat>(v, m, albedo, &at, &light, len, colors, U::PRESENT, mip);
+                        coarse::shade::<Bilinear, Repeat>(v, m, albedo, &at, &light, len, colors, reads);
                     }
                     (FilterMode::Bilinear, WrapMode::Clamp) => {
-                        coarse::shade::<Bilinear, Clamp>(v, m, albedo, &at, &light, len, colors, U::PRESENT, mip);
+                        coarse::shade::<Bilinear, Clamp>(v, m, albedo, &at, &light, len, colors, reads);
                     }
                 }
             }

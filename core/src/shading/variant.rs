@@ -3,6 +3,7 @@
 use core::fmt;
 
 use super::{LightUse, Object};
+use crate::color::ShadingSpace;
 use crate::math::{Vec3, Vec4};
 use crate::mesh::Attributes;
 use crate::pipeline::{Cull, DrawError, DrawState, FixedFunction};
@@ -88,8 +89,9 @@ impl core::error::Error for ShadingError {}
 /// The stages and varyings one draw runs: exactly what its mesh, material and lights call for.
 ///
 /// Its [`Display`](fmt::Display) form is the explanation `rastty render --explain` prints, e.g.
-/// `phong; varyings normal+world+uv+tangent; albedo texture; normals tangent-space map; specular map; glow map;
-/// maps bilinear/repeat; lights 1 directional (1 with shadows, pcf 3x3); perspective-correct, depth less, cull back`.
+/// `phong; varyings normal+world+uv+tangent; albedo texture; linear light; normals tangent-space map; specular map;
+/// glow map; maps bilinear/repeat; lights 1 directional (1 with shadows, pcf 3x3); perspective-correct, depth
+/// less, cull back`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Variant {
     /// The shading model.
@@ -118,6 +120,9 @@ pub struct Variant {
     /// Back faces are lit as seen from behind: per-pixel lighting of a draw that does not cull back faces turns
     /// the normal of back-facing fragments round (glTF's double-sided lighting).
     pub two_sided: bool,
+    /// How colours are lit: the lighting's [`ShadingSpace`] for a model that colours, [`ShadingSpace::Encoded`]
+    /// (values shown as computed) for the depth and normals views.
+    pub space: ShadingSpace,
     /// Filter of the maps sampled.
     pub filter: FilterMode,
     /// Wrap mode of the maps sampled.
@@ -157,7 +162,7 @@ pub struct Layout {
 
 impl Variant {
     /// Decides what a draw of `object` under `lights` (one [`LightUse`] per light, as
-    /// `scene_lights.lights.iter().map(LightUse::from)` gives) computes.
+    /// `scene_lights.lights.iter().map(LightUse::from)` gives), lit in `space`, computes.
     ///
     /// - Normals are read by Gouraud and per-pixel lighting and the normals view only; vertex colours by every
     ///   model that colours (unlit, flat, Gouraud, per-pixel), as a factor of its albedo (glTF's `COLOR_0`).
@@ -184,6 +189,7 @@ impl Variant {
     pub fn resolve(
         object: &Object<'_>,
         lights: impl IntoIterator<Item = LightUse>,
+        space: ShadingSpace,
         state: &DrawState,
     ) -> Result<Self, ShadingError> {
         let (mesh, material, shading) = (&object.mesh, &object.material, object.shading);
@@ -266,6 +272,7 @@ impl Variant {
             occlusion_map,
             cutout,
             two_sided: per_pixel && state.cull != Cull::Back,
+            space: if colored { space } else { ShadingSpace::Encoded },
             filter: material.filter,
             wrap: material.wrap,
             mip_filter: if mipmapped { material.mip_filter } else { MipFilter::Off },
@@ -325,6 +332,10 @@ impl fmt::Display for Variant {
                 (true, false) => "; albedo colour x vertex colours",
                 (false, true) => "; albedo texture",
                 (false, false) => "; albedo colour",
+            })?;
+            f.write_str(match self.space {
+                ShadingSpace::Linear => "; linear light",
+                ShadingSpace::Encoded => "; light on sRGB codes",
             })?;
         }
         if lit {

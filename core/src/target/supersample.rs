@@ -2,12 +2,14 @@
 //!
 //! Render into a target `k` times wider and higher (or into the matching band: rows `y0 * k .. y1 * k` of the
 //! large frame for rows `y0 .. y1` of the small one), then [`downsample_rgb888`] averages each `k x k` block: a box
-//! filter over `k^2` ordered samples per pixel.
+//! filter over `k^2` ordered samples per pixel, in linear light or on the stored codes.
 
 use super::TargetError;
+use crate::color::{SRGB_DECODE, ShadingSpace, linear_to_srgb8};
 
 /// Averages `factor x factor` blocks of `0x00RRGGBB` samples (`sample_width` per row) into `out`, one pixel per
-/// block, each channel rounded to nearest.
+/// block: in [`ShadingSpace::Linear`] the light the samples show (each code decoded, the mean encoded to the
+/// nearest code), in [`ShadingSpace::Encoded`] the codes themselves (rounded to nearest).
 ///
 /// # Errors
 /// [`TargetError::ColorLength`] unless the samples form whole blocks and `out` holds exactly one pixel per block;
@@ -15,14 +17,24 @@ use super::TargetError;
 ///
 /// # Examples
 /// ```
+/// use rastty_core::color::ShadingSpace;
 /// use rastty_core::target::downsample_rgb888;
 /// // Two 2x2 blocks: all red, and half red half black.
 /// let samples = [0xFF0000, 0xFF0000, 0xFF0000, 0x000000, 0xFF0000, 0xFF0000, 0xFF0000, 0x000000];
 /// let mut pixels = [0u32; 2];
-/// downsample_rgb888(&samples, 4, 2, &mut pixels).unwrap();
+/// downsample_rgb888(&samples, 4, 2, ShadingSpace::Encoded, &mut pixels).unwrap();
 /// assert_eq!(pixels, [0xFF0000, 0x800000]);
+/// // Half the light of full red is code 188, not 128.
+/// downsample_rgb888(&samples, 4, 2, ShadingSpace::Linear, &mut pixels).unwrap();
+/// assert_eq!(pixels, [0xFF0000, 0xBC0000]);
 /// ```
-pub fn downsample_rgb888(samples: &[u32], sample_width: u32, factor: u32, out: &mut [u32]) -> Result<(), TargetError> {
+pub fn downsample_rgb888(
+    samples: &[u32],
+    sample_width: u32,
+    factor: u32,
+    space: ShadingSpace,
+    out: &mut [u32],
+) -> Result<(), TargetError> {
     if factor == 0 || sample_width == 0 {
         return Err(TargetError::Empty);
     }
@@ -36,18 +48,34 @@ pub fn downsample_rgb888(samples: &[u32], sample_width: u32, factor: u32, out: &
         return Err(TargetError::ColorLength { expected: w * h, actual: out.len() });
     }
     let n = (f * f) as u32;
+    let block = |y: usize, x: usize| {
+        (0..f).flat_map(move |sy| {
+            let start = (y * f + sy) * sw + x * f;
+            samples[start..start + f].iter().map(|&s| [(s >> 16) & 0xFF, (s >> 8) & 0xFF, s & 0xFF])
+        })
+    };
     for (y, row) in out.chunks_exact_mut(w).enumerate() {
         for (x, pixel) in row.iter_mut().enumerate() {
-            let mut sum = [0u32; 3];
-            for sy in 0..f {
-                let start = (y * f + sy) * sw + x * f;
-                for &s in &samples[start..start + f] {
-                    sum[0] += (s >> 16) & 0xFF;
-                    sum[1] += (s >> 8) & 0xFF;
-                    sum[2] += s & 0xFF;
+            let [r, g, b] = match space {
+                ShadingSpace::Linear => {
+                    let mut sum = [0.0f32; 3];
+                    for codes in block(y, x) {
+                        for (total, code) in sum.iter_mut().zip(codes) {
+                            *total += SRGB_DECODE[code as usize];
+                        }
+                    }
+                    sum.map(|light| linear_to_srgb8(light / n as f32))
                 }
-            }
-            let [r, g, b] = sum.map(|c| (c + n / 2) / n);
+                ShadingSpace::Encoded => {
+                    let mut sum = [0u32; 3];
+                    for codes in block(y, x) {
+                        for (total, code) in sum.iter_mut().zip(codes) {
+                            *total += code;
+                        }
+                    }
+                    sum.map(|c| (c + n / 2) / n)
+                }
+            };
             *pixel = (r << 16) | (g << 8) | b;
         }
     }

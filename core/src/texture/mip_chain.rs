@@ -9,7 +9,7 @@
 //! chain.
 
 use super::{MAX_TEXTURE_SIZE, Texture, TextureError};
-use crate::color::{SrgbEncoder, srgb_to_linear};
+use crate::color::{SRGB_DECODE, linear_to_srgb8};
 use crate::math::float;
 
 /// Most levels a chain has, the texture itself included: a side of [`MAX_TEXTURE_SIZE`] (2^14) halves 14 times.
@@ -114,14 +114,10 @@ pub fn build_mip_levels(texture: &Texture<'_>, content: MipContent, out: &mut [u
         return Err(TextureError::Length { expected, actual: out.len() });
     }
     // Each 8-bit code's value in the space it is averaged in: 256 conversions instead of one per texel read.
-    let decode: [f32; 256] = core::array::from_fn(|code| {
-        let c = code as f32 / 255.0;
-        match content {
-            MipContent::Color => srgb_to_linear(c),
-            MipContent::Data => c,
-        }
-    });
-    let encoder = SrgbEncoder::new();
+    let decode: [f32; 256] = match content {
+        MipContent::Color => SRGB_DECODE,
+        MipContent::Data => core::array::from_fn(|code| code as f32 / 255.0),
+    };
     // Level k is built from level k - 1: the texture itself, then the level just built, which starts at `above`.
     let (mut above, mut start) = (None::<(usize, u32, u32)>, 0);
     for (w, h) in level_sizes(width, height).skip(1) {
@@ -129,10 +125,10 @@ pub fn build_mip_levels(texture: &Texture<'_>, content: MipContent, out: &mut [u
         let (built, rest) = out.split_at_mut(start);
         let level = Level { texels: &mut rest[..len], width: w, height: h, maps, map };
         match above {
-            None => downsample(texture, content, &decode, &encoder, level),
+            None => downsample(texture, content, &decode, level),
             Some((from, aw, ah)) => {
                 let source = Texture::interleaved(&built[from..], aw, ah, maps, map)?;
-                downsample(&source, content, &decode, &encoder, level);
+                downsample(&source, content, &decode, level);
             }
         }
         above = Some((start, w, h));
@@ -169,9 +165,8 @@ struct Level<'a> {
 }
 
 /// Fills `out` from `above`, the level above it: each texel the weighted sum of the texels it covers, colour
-/// channels through `decode` and encoded back as `content` says (through `encoder` for colour), the transparency
-/// byte as stored.
-fn downsample(above: &Texture<'_>, content: MipContent, decode: &[f32; 256], encoder: &SrgbEncoder, out: Level<'_>) {
+/// channels through `decode` and encoded back as `content` says, the transparency byte as stored.
+fn downsample(above: &Texture<'_>, content: MipContent, decode: &[f32; 256], out: Level<'_>) {
     let (above_width, above_height) = (above.width(), above.height());
     for y in 0..out.height {
         let rows = taps(above_height, out.height, y);
@@ -191,7 +186,7 @@ fn downsample(above: &Texture<'_>, content: MipContent, decode: &[f32; 256], enc
             }
             let [transparency, r, g, b] = sum;
             let encode = |v: f32| match content {
-                MipContent::Color => encoder.code(v),
+                MipContent::Color => linear_to_srgb8(v),
                 MipContent::Data => float::quantize_unit(v, 255.0),
             };
             let index = (y * out.width + x) as usize * out.maps as usize + out.map as usize;
@@ -238,9 +233,8 @@ mod tests {
     /// it at every level, odd sides included, whatever its content.
     #[test]
     fn one_texel_value_stays_itself_at_every_level() {
-        let encoder = SrgbEncoder::new();
         for code in 0..=255u32 {
-            assert_eq!(encoder.code(srgb_to_linear(code as f32 / 255.0)), code);
+            assert_eq!(linear_to_srgb8(SRGB_DECODE[code as usize]), code);
         }
         for texel in [0x3A_C0_11_7Fu32, 0x00_01_FE_80, 0xFF_FF_FF_FF] {
             let texels = [texel; 7 * 5];

@@ -2,6 +2,7 @@
 //! the metallic-roughness model approximated by a Blinn-Phong highlight.
 
 use gltf::texture::Info;
+use rastty_core::color::{SRGB_DECODE, linear_to_srgb, linear_to_srgb8};
 use rastty_core::math::{Vec2, Vec3};
 
 use super::material::Material;
@@ -119,12 +120,12 @@ pub(crate) fn convert(
     let (specular, shininess) = highlight(base, metallic, roughness);
     let converted = Material {
         name: material.name().unwrap_or_default().to_owned(),
-        diffuse: base,
+        diffuse: encoded(base),
         texture,
         normal_map,
         glow_map,
         occlusion_map,
-        specular: Some(specular),
+        specular: Some(encoded(specular)),
         shininess: Some(shininess),
         double_sided: material.double_sided(),
         opacity: finite_unit(a, 1.0),
@@ -157,16 +158,22 @@ fn occlusion_grey(mut map: TextureImage, strength: f32) -> TextureImage {
     map
 }
 
+/// A colour glTF gives in linear light as the sRGB-encoded value a [`Material`] holds (the renderer decodes it
+/// again when it lights in linear light).
+fn encoded(c: Vec3) -> Vec3 {
+    Vec3::new(linear_to_srgb(c.x), linear_to_srgb(c.y), linear_to_srgb(c.z))
+}
+
 /// `value` clamped to `[0, 1]`, or `default` when it is not finite.
 fn finite_unit(value: f32, default: f32) -> f32 {
     if value.is_finite() { value.clamp(0.0, 1.0) } else { default }
 }
 
-/// `map`'s texels times `factor`, each channel clamped to 255.
+/// `map`'s texels (sRGB) times `factor` (linear), in linear light: each channel decoded, scaled and encoded to the
+/// nearest code (255 at most).
 fn tinted(mut map: TextureImage, factor: Vec3) -> TextureImage {
     let scale = |texel: u32, shift: u32, f: f32| -> u32 {
-        let c = ((texel >> shift) & 0xFF) as f32 * f;
-        (c.round().clamp(0.0, 255.0) as u32) << shift
+        linear_to_srgb8(SRGB_DECODE[((texel >> shift) & 0xFF) as usize] * f) << shift
     };
     for t in &mut map.texels {
         *t = scale(*t, 16, factor.x) | scale(*t, 8, factor.y) | scale(*t, 0, factor.z);
@@ -226,7 +233,8 @@ mod tests {
     #[test]
     fn emission_and_normal_scale_change_the_texels() {
         let white = TextureImage::new(1, 1, vec![0xFF_FF_FF]);
-        assert_eq!(tinted(white, Vec3::new(1.0, 0.5, 2.0)).texels, vec![0xFF_80_FF]);
+        // Half of white's light is code 188.
+        assert_eq!(tinted(white, Vec3::new(1.0, 0.5, 2.0)).texels, vec![0xFF_BC_FF]);
         // (0, 0, 1) stays; a tilted normal flattens with scale 0.
         let flat = TextureImage::new(1, 1, vec![0x80_80_FF]);
         assert_eq!(scaled_normals(flat.clone(), 0.0).texels, flat.texels);

@@ -15,8 +15,8 @@ pub struct Material {
     /// The name given by `newmtl` or the glTF material, raw (it may hold control characters: sanitise before
     /// printing).
     pub name: String,
-    /// Diffuse colour (`Kd`, or glTF's base colour factor), each component clamped to `[0, 1]`;
-    /// [`DEFAULT_DIFFUSE`] when absent or not finite.
+    /// Diffuse colour, sRGB-encoded like every colour a scene writes (`Kd`, or glTF's base colour factor, which
+    /// is linear, encoded), each component clamped to `[0, 1]`; [`DEFAULT_DIFFUSE`] when absent or not finite.
     pub diffuse: Vec3,
     /// The diffuse texture (`map_Kd`, or glTF's base colour texture), when it names an image that could be read and
     /// decoded.
@@ -29,8 +29,8 @@ pub struct Material {
     /// Scales the ambient light per texel (glTF's occlusion texture: its red channel `r` as the grey
     /// `1 + strength (r - 1)`).
     pub occlusion_map: Option<TextureImage>,
-    /// The highlight's colour, when the file gives one (glTF: from metallic and roughness); `None` keeps the
-    /// renderer's default.
+    /// The highlight's colour, sRGB-encoded, when the file gives one (glTF: from metallic and roughness); `None`
+    /// keeps the renderer's default.
     pub specular: Option<Vec3>,
     /// The highlight's Blinn-Phong exponent, when the file gives one (glTF: from roughness).
     pub shininess: Option<f32>,

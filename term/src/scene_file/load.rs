@@ -5,6 +5,7 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
+use rastty_core::color::ShadingSpace;
 use rastty_core::math::Vec3;
 use rastty_core::texture::{FilterMode, MipFilter, WrapMode};
 use toml::Spanned;
@@ -62,6 +63,7 @@ pub(crate) fn load_scene_file(file: &SceneFile) -> Result<SceneData, SceneFileEr
         background,
         ambient: vec3_or(&spec.ambient, defaults::AMBIENT),
         ambient_occlusion: spec.ambient_occlusion,
+        space: if spec.linear_light { ShadingSpace::Linear } else { ShadingSpace::Encoded },
         images,
         warnings,
     })

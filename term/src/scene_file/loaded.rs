@@ -4,6 +4,7 @@ use std::path::PathBuf;
 use std::sync::Arc;
 
 use rastty_core::camera::{CameraError, look_at};
+use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::texture::{FilterMode, MipFilter, WrapMode};
 
@@ -25,6 +26,10 @@ pub struct SceneData {
     pub ambient: Vec3,
     /// Whether ambient occlusion is wanted.
     pub ambient_occlusion: bool,
+    /// How surfaces are lit: in linear light, or on the stored sRGB values (the file's `linear_light`). The
+    /// colours here (background, ambient, lights, materials) are as written, sRGB-encoded; the plan decodes them
+    /// for linear light.
+    pub space: ShadingSpace,
     /// Every image file loaded, each once, in the order first referenced, with its path as resolved at that first
     /// reference. Objects hold the same [`Arc`]s.
     pub images: Vec<(PathBuf, Arc<TextureImage>)>,

@@ -28,6 +28,11 @@ pub struct SceneSpec {
     /// `ambient_occlusion = true|false`: darken creases and contact areas. Default `false`.
     #[serde(default)]
     pub ambient_occlusion: bool,
+    /// `linear_light = true|false`: light in linear light, sRGB-correct (the colours of the file, of MTL
+    /// materials and of images decoded from sRGB, light added up, each pixel encoded back); `false` lights the
+    /// stored sRGB values as they are, as most small renderers do. Default `true`.
+    #[serde(default = "linear_light_default")]
+    pub linear_light: bool,
     /// `[camera]`: where the scene is seen from. Optional; the viewer's framed camera when absent (yaw 30, pitch
     /// 15, distance 2.8, fov 40: see [`CameraSpec`]).
     pub camera: Option<Spanned<CameraSpec>>,
@@ -42,6 +47,11 @@ pub struct SceneSpec {
     pub viewer_lights: bool,
     /// `[[objects]]`: the meshes to draw, at least one, in file order.
     pub objects: Spanned<Vec<Spanned<ObjectSpec>>>,
+}
+
+/// Scenes light in linear light unless they say otherwise.
+fn linear_light_default() -> bool {
+    true
 }
 
 /// `[camera]`: either placed, at `position` looking at `target` (both given, in world units), or framed around

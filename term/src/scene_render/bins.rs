@@ -130,6 +130,7 @@ impl TriangleBins {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use rastty_core::color::ShadingSpace;
     use rastty_core::pipeline::{Cull, DepthTest};
     use rastty_core::target::VertexMemory;
     use rastty_core::{
@@ -190,7 +191,8 @@ mod tests {
         ) -> DrawStats {
             let shading = ShadingModel::Depth { near: 0.0, far: 1.0 };
             let object = Object { mesh, tangents: None, transforms, shading, material: Material::default() };
-            draw_mesh(target, &object, &Lighting { ambient: Vec3::ZERO, lights: &[] }, state).unwrap().1
+            let lights = Lighting { ambient: Vec3::ZERO, lights: &[], space: ShadingSpace::Linear };
+            draw_mesh(target, &object, &lights, state).unwrap().1
         }
         let draw =
             |target: &mut Target<Rgb888<'_>, &mut [f32]>, mesh: Mesh<'_>| depth_view(target, mesh, transforms, &state);

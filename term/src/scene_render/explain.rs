@@ -2,7 +2,7 @@
 
 use std::fmt;
 
-use rastty_core::color::pack_rgb888;
+use rastty_core::color::{ShadingSpace, pack_rgb888};
 
 use super::ScenePlan;
 use super::camera::PlaneSource;
@@ -11,7 +11,8 @@ use crate::escaped::Escaped;
 use crate::scene_file::Projection;
 
 impl fmt::Display for ScenePlan {
-    /// The frame, the lights, then the passes in the order they run, with one line per draw of the forward pass
+    /// The frame (with the space it is lit in, in which the ambient and light colours are given), the lights, then
+    /// the passes in the order they run, with one line per draw of the forward pass
     /// (its object and part, escaped, and its [`rastty_core::shading::Variant`]). Only what the frame uses
     /// appears, and the lights left out are named with the reason.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -27,12 +28,16 @@ impl fmt::Display for ScenePlan {
         };
         writeln!(
             f,
-            "frame {width}x{height}: {lens}; near {} ({}), far {} ({}); background #{:06x}; ambient {}",
+            "frame {width}x{height}: {lens}; near {} ({}), far {} ({}); background #{:06x}; {}; ambient {}",
             Number(c.near),
             source(c.near_source),
             Number(c.far),
             source(c.far_source),
             pack_rgb888(self.background),
+            match self.space {
+                ShadingSpace::Linear => "linear light",
+                ShadingSpace::Encoded => "light on sRGB codes",
+            },
             Triple(self.ambient)
         )?;
         if self.lights.is_empty() && self.dropped_lights.is_empty() {

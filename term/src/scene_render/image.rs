@@ -2,6 +2,7 @@
 
 use std::time::{Duration, Instant};
 
+use rastty_core::color::ShadingSpace;
 use rastty_core::math::Vec3;
 use rastty_core::target::{MAX_DIMENSION, Rgb888, Target, downsample_rgb888};
 
@@ -59,6 +60,7 @@ pub fn render_scene_image_with(
         (width, height),
         supersample,
         scene.data().background,
+        scene.data().space,
         SceneRenderError::Target,
         |target| {
             let plan = ScenePlan::new(scene, camera, (target.width(), target.height()), options)?;
@@ -97,7 +99,7 @@ pub struct SampledFrame<T> {
 
 /// Allocates a `width x height` frame `supersample` times larger on each side, clears it to `background` (before
 /// the clock starts, which also maps the fresh pages, so the time measured is rendering), runs `draw` on it, and
-/// averages it down with [`downsample_rgb888`] when `supersample > 1`.
+/// averages it down in `space` with [`downsample_rgb888`] when `supersample > 1`.
 ///
 /// # Errors
 /// `size_error` with a message naming the sizes when the supersampled frame is outside `1..=MAX_DIMENSION`;
@@ -106,6 +108,7 @@ pub fn render_supersampled<T, E>(
     (width, height): (u32, u32),
     supersample: u32,
     background: Vec3,
+    space: ShadingSpace,
     size_error: impl Fn(String) -> E,
     draw: impl FnOnce(&mut Target<Rgb888<'_>, &mut [f32]>) -> Result<T, E>,
 ) -> Result<SampledFrame<T>, E> {
@@ -127,7 +130,7 @@ pub fn render_supersampled<T, E>(
     let value = draw(&mut target)?;
     let pixels = if k > 1 {
         let mut pixels = vec![0u32; width as usize * height as usize];
-        downsample_rgb888(&samples, sw, k, &mut pixels).map_err(|e| size_error(e.to_string()))?;
+        downsample_rgb888(&samples, sw, k, space, &mut pixels).map_err(|e| size_error(e.to_string()))?;
         pixels
     } else {
         samples

@@ -4,9 +4,11 @@
 
 use std::fmt;
 
+use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::shading::LightKind as CoreLightKind;
 
+use super::lit_color;
 use crate::scene_file::{LightKind, LightSpace, SceneLight};
 
 /// A light the frame uses.
@@ -34,13 +36,14 @@ pub struct DroppedLight {
 }
 
 /// The light as the core takes it, in world space, for a frame whose camera has the view matrix `view` and the
-/// eye `eye`; or `None` when it sheds nothing (intensity 0 or a black colour): such a light would add zero to every
-/// pixel, so it is left out of the frame rather than computed.
+/// eye `eye`, its colour as a draw lit in `space` takes it ([`lit_color`]) times its intensity; or `None` when it
+/// sheds nothing (intensity 0 or a black colour): such a light would add zero to every pixel, so it is left out of
+/// the frame rather than computed.
 ///
 /// A light in camera space is turned into the world by the inverse of the view's rotation (its transpose: the
 /// rows of a `look_at` matrix are orthonormal), and a point light's position moved by the eye.
-pub fn core_light(light: &SceneLight, view: &Mat4, eye: Vec3) -> Option<(CoreLightKind, Vec3)> {
-    let color = light.color * light.intensity;
+pub fn core_light(light: &SceneLight, view: &Mat4, eye: Vec3, space: ShadingSpace) -> Option<(CoreLightKind, Vec3)> {
+    let color = lit_color(light.color, space) * light.intensity;
     if color == Vec3::ZERO {
         return None;
     }
@@ -108,6 +111,7 @@ impl fmt::Display for Triple {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use rastty_core::color::srgb_to_linear;
 
     fn light(kind: LightKind, intensity: f32) -> SceneLight {
         SceneLight { kind, color: Vec3::new(1.0, 0.5, 0.25), intensity, shadows: false, space: LightSpace::World }
@@ -116,9 +120,13 @@ mod tests {
     #[test]
     fn colour_times_intensity_and_the_direction_reversed() {
         let l = light(LightKind::Directional { direction: -Vec3::Y }, 2.0);
-        let (kind, color) = core_light(&l, &Mat4::IDENTITY, Vec3::ZERO).unwrap();
+        let (kind, color) = core_light(&l, &Mat4::IDENTITY, Vec3::ZERO, ShadingSpace::Encoded).unwrap();
         assert_eq!(kind, CoreLightKind::Directional { to_light: Vec3::Y });
         assert_eq!(color, Vec3::new(2.0, 1.0, 0.5));
+        // In linear light the colour is decoded, the intensity not.
+        let (_, color) = core_light(&l, &Mat4::IDENTITY, Vec3::ZERO, ShadingSpace::Linear).unwrap();
+        assert_eq!(color, Vec3::new(2.0, 2.0 * srgb_to_linear(0.5), 2.0 * srgb_to_linear(0.25)));
+        assert!((color.y - 0.428).abs() < 1e-3);
     }
 
     #[test]
@@ -132,12 +140,14 @@ mod tests {
             space: LightSpace::Camera,
             ..light(LightKind::Directional { direction: Vec3::new(0.0, 0.0, -1.0) }, 1.0)
         };
-        let Some((CoreLightKind::Directional { to_light }, _)) = core_light(&toward_viewer, &view, eye) else {
+        let Some((CoreLightKind::Directional { to_light }, _)) =
+            core_light(&toward_viewer, &view, eye, ShadingSpace::Encoded)
+        else {
             panic!("a directional light")
         };
         assert!(close(to_light, Vec3::X), "{to_light:?}");
         let right = SceneLight { space: LightSpace::Camera, ..light(LightKind::Point { position: Vec3::X }, 1.0) };
-        let Some((CoreLightKind::Point { position }, _)) = core_light(&right, &view, eye) else {
+        let Some((CoreLightKind::Point { position }, _)) = core_light(&right, &view, eye, ShadingSpace::Encoded) else {
             panic!("a point light")
         };
         assert!(close(position, Vec3::new(5.0, 0.0, -1.0)), "{position:?}");
@@ -146,9 +156,12 @@ mod tests {
     #[test]
     fn dark_lights_are_left_out() {
         let (view, eye) = (Mat4::IDENTITY, Vec3::ZERO);
-        assert!(core_light(&light(LightKind::Point { position: Vec3::ONE }, 0.0), &view, eye).is_none());
+        assert!(
+            core_light(&light(LightKind::Point { position: Vec3::ONE }, 0.0), &view, eye, ShadingSpace::Encoded)
+                .is_none()
+        );
         let black = SceneLight { color: Vec3::ZERO, ..light(LightKind::Point { position: Vec3::ONE }, 1.0) };
-        assert!(core_light(&black, &view, eye).is_none());
+        assert!(core_light(&black, &view, eye, ShadingSpace::Encoded).is_none());
     }
 
     #[test]

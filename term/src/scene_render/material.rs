@@ -1,13 +1,14 @@
 //! The core material of one part of an object: the scene file's material keys over the part's MTL material, with
 //! the maps of switched-off effects left out.
 
+use rastty_core::color::ShadingSpace;
 use rastty_core::math::Vec3;
 use rastty_core::pipeline::{Cull, DrawState};
 use rastty_core::shading::{Material, NormalMap, NormalSpace as CoreNormalSpace};
 use rastty_core::texture::TextureError;
 
-use super::PlanOptions;
 use super::interleaved::{MapRole, PartMaps};
+use super::{PlanOptions, lit_color};
 use crate::model::TextureImage;
 use crate::scene_file::defaults::{SHININESS, SPECULAR};
 use crate::scene_file::{NormalSpace, SceneObject};
@@ -19,6 +20,7 @@ use crate::scene_file::{NormalSpace, SceneObject};
 ///   `options.textures` is off;
 /// - specular colour: the scene's `specular`, else the part's own (glTF), else [`SPECULAR`]; zero (no highlights,
 ///   and no specular map) when the specular effect is off;
+/// - both colours as lit in `space` ([`lit_color`]: the scene's and the model's colours are sRGB-encoded);
 /// - shininess: the scene's, else the part's own, else [`SHININESS`];
 /// - normal and glow maps: the scene's, else the part's own (glTF), unless their effect is off;
 /// - filter, wrap and filter between levels of detail: the scene's, for every map (each map with its levels).
@@ -32,6 +34,7 @@ pub fn part_material<'a>(
     object: &'a SceneObject,
     maps: &'a PartMaps,
     part: usize,
+    space: ShadingSpace,
     options: &PlanOptions,
 ) -> Result<Material<'a>, TextureError> {
     let mtl = object.model.part_material(part);
@@ -56,7 +59,8 @@ pub fn part_material<'a>(
         }
         _ => None,
     };
-    let specular = if effects.specular { m.specular_over(mtl).unwrap_or(SPECULAR) } else { Vec3::ZERO };
+    let specular =
+        if effects.specular { lit_color(m.specular_over(mtl).unwrap_or(SPECULAR), space) } else { Vec3::ZERO };
     let specular_map = match &m.specular_map {
         Some(image) if effects.specular => Some(texture(MapRole::Specular, image)?),
         _ => None,
@@ -70,7 +74,7 @@ pub fn part_material<'a>(
         _ => None,
     };
     Ok(Material {
-        color: m.color_over(mtl),
+        color: lit_color(m.color_over(mtl), space),
         specular,
         shininess: m.shininess_over(mtl).unwrap_or(SHININESS),
         diffuse,

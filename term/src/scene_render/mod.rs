@@ -87,6 +87,7 @@ mod render;
 mod shading_mode;
 mod toggles;
 mod workers;
+mod written_color;
 
 pub use bounds::scene_bounds;
 pub use camera::{FrameCamera, PlaneSource};
@@ -106,3 +107,4 @@ pub use prepared::PreparedScene;
 pub use render::{BAND_PIXELS, BANDS_PER_THREAD, FrameReport, SceneRenderer, ShadowPassReport, WIREFRAME};
 pub use shading_mode::ShadingMode;
 pub use toggles::{EffectToggles, PlanOptions, SceneEffect};
+pub use written_color::lit_color;

@@ -1,5 +1,6 @@
 //! The plan of one frame: which passes run, with which lights, and what each draw computes.
 
+use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Vec3, float};
 use rastty_core::occlusion::AmbientOcclusion;
 use rastty_core::pipeline::DrawState;
@@ -10,14 +11,14 @@ use rastty_core::shadow::{Bounds, ShadowView};
 use super::camera::FrameCamera;
 use super::lights::{DroppedLight, LightName, PlannedLight, core_light};
 use super::material::{part_material, part_state};
-use super::{PlanOptions, PreparedScene, SceneRenderError};
+use super::{PlanOptions, PreparedScene, SceneRenderError, lit_color};
 use crate::scene_file::SceneCamera;
 
 /// The smallest shadow map side: a frame this small still gets shadow edges finer than its pixels.
 pub const MIN_SHADOW_MAP: u32 = 512;
 /// The largest shadow map side (16 MiB of depth per light).
 pub const MAX_SHADOW_MAP: u32 = 2048;
-/// The ambient occlusion of scenes that ask for it: the core's defaults.
+/// The ambient occlusion of scenes that ask for it: the core's defaults, darkening in the scene's space.
 pub const AMBIENT_OCCLUSION: AmbientOcclusion = AmbientOcclusion::DEFAULT;
 /// Percentage-closer filtering radius of every shadow map: `r = 1` averages 3x3 texels.
 pub const PCF_RADIUS: u32 = 1;
@@ -78,7 +79,9 @@ pub struct ScenePlan {
     pub camera: FrameCamera,
     /// The colour the frame is cleared to.
     pub background: Vec3,
-    /// The ambient light.
+    /// How surfaces are lit (the scene's [`crate::scene_file::SceneData::space`]).
+    pub space: ShadingSpace,
+    /// The ambient light, as lit in `space` ([`super::lit_color`]).
     pub ambient: Vec3,
     /// The lights used, in file order.
     pub lights: Vec<PlannedLight>,
@@ -147,7 +150,7 @@ impl ScenePlan {
         let mut shadow_passes = Vec::new();
         for (i, light) in data.lights.iter().enumerate() {
             let number = i + 1;
-            let Some((kind, color)) = core_light(light, &frame_camera.view, camera.position) else {
+            let Some((kind, color)) = core_light(light, &frame_camera.view, camera.position, data.space) else {
                 dropped_lights.push(DroppedLight { number, source: *light });
                 continue;
             };
@@ -169,7 +172,8 @@ impl ScenePlan {
             size: (width, height),
             camera: frame_camera,
             background: options.background.unwrap_or(data.background),
-            ambient: data.ambient,
+            space: data.space,
+            ambient: lit_color(data.ambient, data.space),
             lights,
             dropped_lights,
             bounds,
@@ -177,7 +181,7 @@ impl ScenePlan {
             draws: Vec::new(),
             wireframe: options.wireframe,
             ambient_occlusion: (data.ambient_occlusion && options.effects.ambient_occlusion)
-                .then_some(AMBIENT_OCCLUSION),
+                .then_some(AmbientOcclusion { space: data.space, ..AMBIENT_OCCLUSION }),
             textures: options.textures,
             options: *options,
         };
@@ -219,12 +223,13 @@ impl ScenePlan {
                 }
                 let label = format!("{}, part \"{}\"", scene.object_label(index), part.name);
                 let Some(mesh) = object.model.part_mesh(part_index) else { continue };
-                let material = part_material(object, scene.part_maps(index, part_index), part_index, &self.options)
+                let maps = scene.part_maps(index, part_index);
+                let material = part_material(object, maps, part_index, self.space, &self.options)
                     .map_err(|error| SceneRenderError::Texture { draw: label.clone(), error })?;
                 let tangents = tangents_for(scene, index, &material);
                 let object = Object { mesh, tangents, transforms, shading, material };
                 let state = part_state(&scene.data().objects[index], part_index);
-                let variant = Variant::resolve(&object, lights.iter().copied(), &state)
+                let variant = Variant::resolve(&object, lights.iter().copied(), self.space, &state)
                     .map_err(|error| SceneRenderError::Draw { draw: label.clone(), error })?;
                 draws.push(PlannedDraw { object: index, part: part_index, label, transforms, state, variant });
             }

@@ -208,7 +208,7 @@ impl SceneRenderer {
 
         let start = Instant::now();
         let sources = Self::light_sources(&self.slots, plan)?;
-        let lights = Lighting { ambient: plan.ambient, lights: &sources };
+        let lights = Lighting { ambient: plan.ambient, lights: &sources, space: plan.space };
         let (color, depth) = target.buffers_mut();
         let (pixels, depth) = (&mut *color.0, &mut **depth);
         let bands = split_rows(pixels, width, rows.clone(), band_count);
@@ -409,7 +409,8 @@ fn forward_band(
     let mut result = BandResult { stats: DrawStats::default(), variants: Vec::with_capacity(plan.draws.len()) };
     for (draw, bins) in plan.draws.iter().zip(bins) {
         let (object, mesh) = planned_mesh(scene, draw)?;
-        let material = part_material(object, scene.part_maps(draw.object, draw.part), draw.part, &plan.options)
+        let maps = scene.part_maps(draw.object, draw.part);
+        let material = part_material(object, maps, draw.part, plan.space, &plan.options)
             .map_err(|error| SceneRenderError::Texture { draw: draw.label.clone(), error })?;
         let tangents = tangents_for(scene, draw.object, &material);
         // The frame's screen vertices of the mesh, computed once for every band.

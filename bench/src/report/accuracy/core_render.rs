@@ -4,6 +4,7 @@
 use std::time::{Duration, Instant};
 
 use rastty_core::camera::{CameraError, look_at, orthographic, perspective};
+use rastty_core::color::{ShadingSpace, linear_to_srgb};
 use rastty_core::math::{Mat4, Vec2, Vec3, Vec4};
 use rastty_core::mesh::{Indices, Mesh, MeshError};
 use rastty_core::pipeline::DrawState;
@@ -11,6 +12,7 @@ use rastty_core::shading::{
     Light, LightKind, Lighting, Material, Object, ShadingError, ShadingModel, Transforms, draw_mesh,
 };
 use rastty_core::target::{ColorBuffer, DepthBuffer, Rgb888, Target, TargetError, downsample_rgb888};
+use rastty_core::texture::{MipContent, MipFilter};
 
 use super::settings::{DepthFormat, LitShading, Setting};
 use crate::reference::{self, Projection, Scene, Shading};
@@ -55,7 +57,19 @@ pub struct CoreScene<'a> {
     objects: Vec<CoreObject<'a>>,
     view: Mat4,
     projection: Mat4,
+    /// The lights in linear light, as the scene gives them.
     lights: Vec<Light<'static>>,
+    /// The lights with their colours encoded ([`in_space`]).
+    encoded_lights: Vec<Light<'static>>,
+}
+
+/// A colour the scene gives in linear light as a draw lit in `space` takes it: as it is, or encoded to sRGB (what a
+/// renderer that lights the stored values is given).
+fn in_space(c: Vec3, space: ShadingSpace) -> Vec3 {
+    match space {
+        ShadingSpace::Linear => c,
+        ShadingSpace::Encoded => Vec3::new(linear_to_srgb(c.x), linear_to_srgb(c.y), linear_to_srgb(c.z)),
+    }
 }
 
 fn narrow(v: [f64; 3]) -> Vec3 {
@@ -94,7 +108,7 @@ impl<'a> CoreScene<'a> {
                 source: o,
             })
             .collect();
-        let lights = scene
+        let lights: Vec<Light<'static>> = scene
             .lighting
             .lights
             .iter()
@@ -105,7 +119,9 @@ impl<'a> CoreScene<'a> {
                 shadow: None,
             })
             .collect();
-        Ok(Self { scene, objects, view, projection, lights })
+        let encoded_lights =
+            lights.iter().map(|l| Light { color: in_space(l.color, ShadingSpace::Encoded), ..*l }).collect();
+        Ok(Self { scene, objects, view, projection, lights, encoded_lights })
     }
 
     /// Clears `target` and draws the scene with `setting` (its supersampling is the caller's business).
@@ -118,7 +134,10 @@ impl<'a> CoreScene<'a> {
         setting: &Setting,
     ) -> Result<(), CoreRenderError> {
         target.clear(narrow(self.scene.background));
-        let lighting = Lighting { ambient: narrow(self.scene.lighting.ambient), lights: &self.lights };
+        let space = setting.space;
+        let ambient = in_space(narrow(self.scene.lighting.ambient), space);
+        let lights = if space == ShadingSpace::Linear { &self.lights } else { &self.encoded_lights };
+        let lighting = Lighting { ambient, lights, space };
         for o in &self.objects {
             let src = o.source;
             let mut mesh = Mesh::new(&o.positions, Indices::U32(&src.indices)).map_err(CoreRenderError::Mesh)?;
@@ -138,11 +157,15 @@ impl<'a> CoreScene<'a> {
             };
             let m = &src.material;
             let material = Material {
-                color: narrow(m.color),
-                specular: narrow(m.specular),
+                color: in_space(narrow(m.color), space),
+                specular: in_space(narrow(m.specular), space),
                 shininess: m.shininess as f32,
-                diffuse: src.texture.as_ref().and_then(|t| t.texture().ok()),
+                diffuse: src.texture.as_ref().and_then(|t| match setting.mip_filter {
+                    MipFilter::Off => t.texture().ok(),
+                    _ => t.mipmapped(MipContent::Color).ok(),
+                }),
                 filter: setting.filter,
+                mip_filter: setting.mip_filter,
                 wrap: src.wrap,
                 ..Material::default()
             };
@@ -239,7 +262,8 @@ impl<'s> Frames<'s> {
         };
         let start = Instant::now();
         if self.k > 1 {
-            downsample_rgb888(&self.samples, sw, self.k, &mut self.pixels).map_err(CoreRenderError::Target)?;
+            let space = self.setting.space;
+            downsample_rgb888(&self.samples, sw, self.k, space, &mut self.pixels).map_err(CoreRenderError::Target)?;
         }
         self.times.push(draw_time + start.elapsed());
         Ok(())

@@ -1,7 +1,8 @@
 //! The quality knobs: each setting changes one of them from the default.
 
+use rastty_core::color::ShadingSpace;
 use rastty_core::pipeline::{DrawState, EdgeArithmetic, Interpolation};
-use rastty_core::texture::FilterMode;
+use rastty_core::texture::{FilterMode, MipFilter};
 
 /// How lit surfaces are shaded (unlit ones ignore it).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -38,6 +39,10 @@ pub struct Setting {
     pub interpolation: Interpolation,
     /// Texture filter.
     pub filter: FilterMode,
+    /// How textures choose among their levels of detail.
+    pub mip_filter: MipFilter,
+    /// Linear light, or light on the stored sRGB codes.
+    pub space: ShadingSpace,
     /// Shading of lit surfaces.
     pub shading: LitShading,
     /// Samples per pixel along each axis.
@@ -46,8 +51,8 @@ pub struct Setting {
     pub depth: DepthFormat,
 }
 
-/// rastty's defaults: 8 sub-pixel bits, fixed-point edges, perspective-correct, bilinear, per-pixel lighting, one
-/// sample per pixel, `f32` depth.
+/// rastty's defaults: 8 sub-pixel bits, fixed-point edges, perspective-correct, bilinear, trilinear mipmaps,
+/// per-pixel lighting, linear light, one sample per pixel, `f32` depth.
 pub const DEFAULT: Setting = Setting {
     name: "default",
     knob: "-",
@@ -55,19 +60,24 @@ pub const DEFAULT: Setting = Setting {
     edges: EdgeArithmetic::FixedPoint,
     interpolation: Interpolation::PerspectiveCorrect,
     filter: FilterMode::Bilinear,
+    mip_filter: MipFilter::Linear,
+    space: ShadingSpace::Linear,
     shading: LitShading::Phong,
     supersample: 1,
     depth: DepthFormat::F32,
 };
 
 /// Every setting measured: the default, then one knob at a time.
-pub const ALL: [Setting; 11] = [
+pub const ALL: [Setting; 14] = [
     DEFAULT,
     Setting { name: "0 sub-pixel bits", knob: "sub-pixel bits", subpixel_bits: 0, ..DEFAULT },
     Setting { name: "4 sub-pixel bits", knob: "sub-pixel bits", subpixel_bits: 4, ..DEFAULT },
     Setting { name: "f32 edges", knob: "edge arithmetic", edges: EdgeArithmetic::Float, ..DEFAULT },
     Setting { name: "affine", knob: "interpolation", interpolation: Interpolation::Affine, ..DEFAULT },
     Setting { name: "nearest", knob: "texture filter", filter: FilterMode::Nearest, ..DEFAULT },
+    Setting { name: "mipmaps off", knob: "mipmaps", mip_filter: MipFilter::Off, ..DEFAULT },
+    Setting { name: "nearest level", knob: "mipmaps", mip_filter: MipFilter::Nearest, ..DEFAULT },
+    Setting { name: "sRGB-coded light", knob: "shading space", space: ShadingSpace::Encoded, ..DEFAULT },
     Setting { name: "flat", knob: "shading", shading: LitShading::Flat, ..DEFAULT },
     Setting { name: "Gouraud", knob: "shading", shading: LitShading::Gouraud, ..DEFAULT },
     Setting { name: "2x2 SSAA", knob: "anti-aliasing", supersample: 2, ..DEFAULT },

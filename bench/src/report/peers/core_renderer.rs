@@ -1,6 +1,7 @@
 //! The core's side of the comparison: `draw_mesh` with per-pixel (Phong) shading, no highlights, one directional
 //! light, into a target with memory for the mesh's screen positions, the way a user of the core draws a mesh.
 
+use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::{DrawState, ScreenVertex};
@@ -52,7 +53,8 @@ impl CoreRenderer {
             material,
         };
         let lights = [Light::directional(to_light(), Vec3::splat(DIFFUSE))];
-        let lighting = Lighting { ambient: Vec3::splat(AMBIENT), lights: &lights };
+        // The peers light the stored sRGB values.
+        let lighting = Lighting { ambient: Vec3::splat(AMBIENT), lights: &lights, space: ShadingSpace::Encoded };
         let mut target = Target::new(Rgb888(&mut self.color), &mut self.depth[..], scene.width, scene.height)
             .expect("buffers of the frame's size")
             .with_vertex_memory(&mut self.vertices);

@@ -13,6 +13,7 @@ use rastty::scene_file::{
     CameraPlacement, LightKind, LightSpace, ObjectMaterial, Projection, SceneCamera, SceneData, SceneLight, SceneObject,
 };
 use rastty::scene_render::{EffectToggles, PlanOptions, PreparedScene, ScenePlan, SceneRenderError, SceneRenderer};
+use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::target::{Rgb888, Target};
 use rastty_core::texture::{FilterMode, MipFilter, WrapMode};
@@ -83,6 +84,8 @@ impl ThreadedRenderer {
             background: Vec3::ZERO,
             ambient: Vec3::splat(AMBIENT),
             ambient_occlusion: false,
+            // The peers light the stored sRGB values.
+            space: ShadingSpace::Encoded,
             images: Vec::new(),
             warnings: Vec::new(),
         };

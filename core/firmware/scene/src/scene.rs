@@ -12,7 +12,7 @@ use rastty_core::shading::{Absent, Layout, LightUse, SurfaceShader, Variant, cap
 use rastty_core::target::{ColorBuffer, DepthBuffer};
 use rastty_core::{
     DrawState, DrawStats, Indices, Light, Lighting, Mat4, Material, Mesh, Object, Quat, ShadingError, ShadingModel,
-    Target, Transforms, Vec3, draw_mesh, look_at, perspective,
+    ShadingSpace, Target, Transforms, Vec3, draw_mesh, look_at, perspective,
 };
 
 use crate::{HEIGHT, SceneError, WIDTH, spot};
@@ -40,6 +40,9 @@ const TO_LIGHT: Vec3 = Vec3::new(0.5, 0.8, 0.6);
 const LIGHT_COLOR: Vec3 = Vec3::new(1.0, 0.97, 0.9);
 /// Light reaching every surface from every direction.
 const AMBIENT: Vec3 = Vec3::new(0.12, 0.12, 0.15);
+/// Light on the stored sRGB codes: the pixels its checksums were first taken of, and without
+/// [`capabilities::LINEAR_LIGHT`] the shader links no sRGB tables.
+const SPACE: ShadingSpace = ShadingSpace::Encoded;
 
 /// Fixed-function state: the core's default (back faces culled, depth test, perspective-correct, fixed-point
 /// edges with full sub-pixel precision).
@@ -85,7 +88,7 @@ impl Scene {
 
     /// The scene's lights.
     fn lights(&self) -> Lighting<'_> {
-        Lighting { ambient: AMBIENT, lights: &self.lights }
+        Lighting { ambient: AMBIENT, lights: &self.lights, space: SPACE }
     }
 
     /// Clears `target` to [`BACKGROUND`] and draws Spot: into a band, or a whole frame (the same pixels).
@@ -97,8 +100,8 @@ impl Scene {
     /// [`SceneError::Draw`] if the draw fails, [`SceneError::Variant`] if the scene resolves to another variant
     /// than [`SpotShader`] draws (neither happens).
     pub fn draw<C: ColorBuffer, D: DepthBuffer>(&self, target: &mut Target<C, D>) -> Result<DrawStats, SceneError> {
-        let variant =
-            Variant::resolve(&self.object, self.lights.iter().map(LightUse::from), &STATE).map_err(draw_error)?;
+        let variant = Variant::resolve(&self.object, self.lights.iter().map(LightUse::from), SPACE, &STATE)
+            .map_err(draw_error)?;
         if variant.layout() != LAYOUT || variant.state != STATE {
             return Err(SceneError::Variant);
         }
