@@ -48,7 +48,8 @@ impl Light<'_> {
 /// in.
 #[derive(Clone, Copy, Debug)]
 pub struct Lighting<'a> {
-    /// Light reaching every surface from every direction.
+    /// Light reaching every surface from every direction (linear light in [`ShadingSpace::Linear`], like the
+    /// lights' colours).
     pub ambient: Vec3,
     /// The lights.
     pub lights: &'a [Light<'a>],

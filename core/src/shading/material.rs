@@ -28,6 +28,10 @@ pub struct NormalMap<'a> {
 
 /// How a surface looks: colours, Blinn-Phong exponent, and optional maps, all sampled with one filter, wrap mode
 /// and filter between levels of detail.
+///
+/// The colours are the values lighting multiplies: linear light when the draw lights in
+/// [`crate::color::ShadingSpace::Linear`] (decode a colour picked on a screen with
+/// [`crate::color::srgb_to_linear`]), the stored values otherwise. The maps' texels are sRGB codes either way.
 #[derive(Clone, Copy, Debug)]
 pub struct Material<'a> {
     /// Diffuse colour; multiplied by `diffuse` when there is one.
