@@ -97,6 +97,12 @@ impl Vec3 {
         Self::new(self.x * o.x, self.y * o.y, self.z * o.z)
     }
 
+    /// `f` of each component (a colour's channels through a transfer function).
+    #[inline(always)]
+    pub fn map(self, f: impl Fn(f32) -> f32) -> Self {
+        Self::new(f(self.x), f(self.y), f(self.z))
+    }
+
     /// Component-wise minimum.
     #[inline(always)]
     pub fn min(self, o: Self) -> Self {

@@ -120,12 +120,13 @@ pub(crate) fn convert(
     let (specular, shininess) = highlight(base, metallic, roughness);
     let converted = Material {
         name: material.name().unwrap_or_default().to_owned(),
-        diffuse: encoded(base),
+        // Linear in glTF; a `Material` holds every colour sRGB-encoded (decoded again for linear light).
+        diffuse: base.map(linear_to_srgb),
         texture,
         normal_map,
         glow_map,
         occlusion_map,
-        specular: Some(encoded(specular)),
+        specular: Some(specular.map(linear_to_srgb)),
         shininess: Some(shininess),
         double_sided: material.double_sided(),
         opacity: finite_unit(a, 1.0),
@@ -156,12 +157,6 @@ fn occlusion_grey(mut map: TextureImage, strength: f32) -> TextureImage {
         *t = grey * 0x01_0101;
     }
     map
-}
-
-/// A colour glTF gives in linear light as the sRGB-encoded value a [`Material`] holds (the renderer decodes it
-/// again when it lights in linear light).
-fn encoded(c: Vec3) -> Vec3 {
-    Vec3::new(linear_to_srgb(c.x), linear_to_srgb(c.y), linear_to_srgb(c.z))
 }
 
 /// `value` clamped to `[0, 1]`, or `default` when it is not finite.

@@ -17,9 +17,7 @@ use rastty_core::math::Vec3;
 /// ```
 pub fn lit_color(written: Vec3, space: ShadingSpace) -> Vec3 {
     match space {
-        ShadingSpace::Linear => {
-            Vec3::new(srgb_to_linear(written.x), srgb_to_linear(written.y), srgb_to_linear(written.z))
-        }
+        ShadingSpace::Linear => written.map(srgb_to_linear),
         ShadingSpace::Encoded => written,
     }
 }

@@ -68,7 +68,7 @@ pub struct CoreScene<'a> {
 fn in_space(c: Vec3, space: ShadingSpace) -> Vec3 {
     match space {
         ShadingSpace::Linear => c,
-        ShadingSpace::Encoded => Vec3::new(linear_to_srgb(c.x), linear_to_srgb(c.y), linear_to_srgb(c.z)),
+        ShadingSpace::Encoded => c.map(linear_to_srgb),
     }
 }
 
