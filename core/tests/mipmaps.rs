@@ -1,5 +1,5 @@
 //! Mipmaps with known answers: the level of detail follows how many texels a pixel spans, levels are averaged in
-//! linear light, and the far rows of a textured floor stop aliasing.
+//! linear light, the far rows of a textured floor stop aliasing, and anisotropic probes keep detail across them.
 
 use rastty_core::camera::{look_at, perspective};
 use rastty_core::color::ShadingSpace;
@@ -8,7 +8,9 @@ use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::{Cull, DrawState};
 use rastty_core::shading::{Lighting, Material, Object, ShadingModel, Transforms, draw_mesh};
 use rastty_core::target::{Rgb888, Target};
-use rastty_core::texture::{FilterMode, MipContent, MipFilter, Texture, build_mip_levels, mip_chain_texels};
+use rastty_core::texture::{
+    Anisotropy, FilterMode, MipContent, MipFilter, Texture, build_mip_levels, mip_chain_texels,
+};
 
 const INDICES: [u16; 6] = [0, 1, 2, 0, 2, 3];
 
@@ -105,4 +107,34 @@ fn the_far_rows_of_a_floor_stop_aliasing() {
     assert_eq!(extremes(&aliased[far]), (true, true), "{:06x?}", aliased[far]);
     // Near the camera a pixel spans less than a texel: the checker's dark and light texels show.
     assert_eq!(extremes(&smooth[height as usize - 1]), (true, true), "{:06x?}", smooth[height as usize - 1]);
+}
+
+/// A floor of stripes 4 texels wide running away from the camera, seen at a grazing angle: far away a pixel's
+/// footprint is a few texels across and tens of texels deep. Trilinear filtering reads the level of the depth,
+/// where a texel averages a black and a white stripe, so the far row is grey (within 0x40 of it); anisotropic
+/// probes along the depth read a level of the width, where the stripes are still black and white.
+#[test]
+fn anisotropic_probes_keep_stripes_seen_edge_on() {
+    let texels: Vec<u32> = (0..64 * 64u32).map(|i| if (i % 64 / 4) % 2 == 0 { 0xFF_FFFF } else { 0 }).collect();
+    let levels = levels_of(&texels, 64);
+    let stripes = Texture::new(&texels, 64, 64).unwrap().with_mip_levels(&levels).unwrap();
+    let floor = [(-4.0, -4.0), (4.0, -4.0), (4.0, 4.0), (-4.0, 4.0)].map(|(x, z)| Vec3::new(x, 0.0, z));
+    let (width, height) = (64, 48);
+    let view = look_at(Vec3::new(0.0, 0.6, 4.5), Vec3::new(0.0, 0.0, -4.0), Vec3::Y).unwrap();
+    let projection = perspective(0.9, width as f32 / height as f32, 0.1, 20.0).unwrap();
+    let transforms = Transforms::new(Mat4::IDENTITY, view, projection);
+    let with = |mip_filter| {
+        let material = Material { diffuse: Some(stripes), mip_filter, ..Material::plain(Vec3::ONE) };
+        draw(&floor, transforms, material, (width, height))
+    };
+    let anisotropic = MipFilter::Anisotropic(Anisotropy::X16);
+    let ((trilinear, _), (probed, drawn)) = (with(MipFilter::Linear), with(anisotropic));
+    assert_eq!(drawn, anisotropic);
+    let row = |picture: &[u32], y: usize| picture[y * width as usize..][..width as usize].to_vec();
+    let far = (0..height as usize).find(|&y| row(&trilinear, y).iter().all(|&c| c != 0)).expect("a far row");
+    let extremes = |row: &[u32]| (row.iter().any(|&c| c < 0x40_4040), row.iter().any(|&c| c > 0xC0_C0C0));
+    assert_eq!(extremes(&row(&trilinear, far)), (false, false), "{:06x?}", row(&trilinear, far));
+    assert_eq!(extremes(&row(&probed, far)), (true, true), "{:06x?}", row(&probed, far));
+    // Near the camera the footprint is round: one probe, the trilinear sample.
+    assert_eq!(row(&probed, height as usize - 1), row(&trilinear, height as usize - 1));
 }

@@ -19,7 +19,9 @@ use rastty_core::shading::{
 };
 use rastty_core::shadow::{Bounds, ShadowBias, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster};
 use rastty_core::testing::draw_mesh_general;
-use rastty_core::texture::{FilterMode, MipContent, MipFilter, Texture, WrapMode, build_mip_levels, mip_chain_texels};
+use rastty_core::texture::{
+    Anisotropy, FilterMode, MipContent, MipFilter, Texture, WrapMode, build_mip_levels, mip_chain_texels,
+};
 
 const W: u32 = 48;
 const H: u32 = 40;
@@ -56,12 +58,12 @@ const STATES: [(Interpolation, DepthTest, Cull, EdgeArithmetic); 5] = [
 ];
 
 /// Every choice of a variant, each against the general path: 6 shading models, 3 meshes (vertex colours and
-/// texture coordinates, both or either alone), 16 materials (highlights or none; a diffuse map under each filter
+/// texture coordinates, both or either alone), 17 materials (highlights or none; a diffuse map under each filter
 /// and wrap mode; a tangent-space normal map; an object-space one with a glow map; a specular map; everything at
 /// once; two alpha cut-outs by map, one by opacity; an occlusion map; mipmapped maps blending levels, with a
-/// cut-out, and at the nearest level, with a normal map), 5 sets of lights (none; two directional; directional
+/// cut-out, at the nearest level, with a normal map, and anisotropic, with an occlusion map), 5 sets of lights (none; two directional; directional
 /// and point; a shadowed sun (filter radius 0) and a fill light; a shadowed sun (radius 2) and a shadowed lamp
-/// (radius 1)) and 2 projections; the fixed-function states of [`STATES`] in turn. 2,880 draws, clipped ones
+/// (radius 1)) and 2 projections; the fixed-function states of [`STATES`] in turn. 3,060 draws, clipped ones
 /// among them.
 #[test]
 fn every_choice_of_a_variant_equals_the_general_path() {
@@ -161,7 +163,8 @@ fn every_choice_of_a_variant_equals_the_general_path() {
     materials.push(Material { opacity: 0.4, alpha_cutoff: Some(0.5), ..base });
     materials.push(Material { occlusion_map: Some(bumps), diffuse: Some(checker), ..base });
     // Mipmapped maps, fine enough that a pixel spans several texels: levels blended (trilinear, with an alpha
-    // cut-out and a specular map) and the nearest level (nearest texels, clamped, with a normal and a glow map).
+    // cut-out and a specular map), the nearest level (nearest texels, clamped, with a normal and a glow map), and
+    // anisotropic probes (up to 16, with an occlusion map; the torus is seen edge-on at its rim).
     materials.push(Material {
         diffuse: Some(noise_holes),
         specular_map: Some(noise),
@@ -176,6 +179,12 @@ fn every_choice_of_a_variant_equals_the_general_path() {
         filter: FilterMode::Nearest,
         wrap: WrapMode::Clamp,
         mip_filter: MipFilter::Nearest,
+        ..base
+    });
+    materials.push(Material {
+        diffuse: Some(noise),
+        occlusion_map: Some(noise_holes),
+        mip_filter: MipFilter::Anisotropic(Anisotropy::X16),
         ..base
     });
 
@@ -227,7 +236,7 @@ fn every_choice_of_a_variant_equals_the_general_path() {
             }
         }
     }
-    assert_eq!(draws, 2 * 6 * 3 * 16 * 5);
+    assert_eq!(draws, 2 * 6 * 3 * 17 * 5);
     assert!(clipped > 0);
     seen.assert_every_choice();
 }
@@ -299,7 +308,7 @@ impl Seen {
         assert_eq!(self.normals.len(), 6, "normal sources: {:?}", self.normals);
         assert_eq!(self.specular.len(), 3, "specular sources: {:?}", self.specular);
         assert_eq!(self.filters.len(), 4, "filter and wrap modes: {:?}", self.filters);
-        assert_eq!(self.mip_filters.len(), 3, "filters between levels: {:?}", self.mip_filters);
+        assert_eq!(self.mip_filters.len(), 4, "filters between levels: {:?}", self.mip_filters);
         // The four models that colour in both spaces, the two views in the stored one only.
         assert_eq!(self.spaces.len(), 4 * 2 + 2, "spaces: {:?}", self.spaces);
         assert_eq!(self.shadows.len(), 2, "shadow filter radii: {:?}", self.shadows);

@@ -29,7 +29,20 @@ use rastty_core::shadow::{
 };
 use rastty_core::target::{ColorBuffer, DepthBuffer, NoColor, Rgb888, Target, depth_to_u16};
 use rastty_core::testing::{draw_mesh_general, draw_unspecialised};
-use rastty_core::texture::{FilterMode, MipContent, MipFilter, Texture, WrapMode, build_mip_levels, mip_chain_texels};
+use rastty_core::texture::{
+    Anisotropy, FilterMode, MipContent, MipFilter, Texture, WrapMode, build_mip_levels, mip_chain_texels,
+};
+
+/// The filters between levels a textured input picks from.
+const MIP_FILTERS: [MipFilter; 7] = [
+    MipFilter::Off,
+    MipFilter::Nearest,
+    MipFilter::Linear,
+    MipFilter::Anisotropic(Anisotropy::X2),
+    MipFilter::Anisotropic(Anisotropy::X4),
+    MipFilter::Anisotropic(Anisotropy::X8),
+    MipFilter::Anisotropic(Anisotropy::X16),
+];
 
 const MAX_VERTICES: usize = 24;
 const MAX_TRIANGLES: usize = 16;
@@ -196,7 +209,8 @@ struct TextureIn {
     texels: Vec<u32>,
     bilinear: bool,
     clamp: bool,
-    /// Its levels of detail are built, and read as `mipmaps % 3` says: off, nearest level, blended.
+    /// Its levels of detail are built, and read as `mipmaps % 7` says: off, nearest level, blended, anisotropic
+    /// up to 2, 4, 8 or 16 probes.
     mipmaps: u8,
 }
 
@@ -694,7 +708,7 @@ pub fn run(input: Input) -> Option<DrawStats> {
                 Some(texture.with_mip_levels(&levels).expect("the levels built for it")),
                 if t.bilinear { FilterMode::Bilinear } else { FilterMode::Nearest },
                 if t.clamp { WrapMode::Clamp } else { WrapMode::Repeat },
-                [MipFilter::Off, MipFilter::Nearest, MipFilter::Linear][usize::from(t.mipmaps % 3)],
+                MIP_FILTERS[usize::from(t.mipmaps) % MIP_FILTERS.len()],
             )
         }
     };

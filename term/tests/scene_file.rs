@@ -15,7 +15,7 @@ use rastty::scene_file::{
     SceneFileError, SceneFileErrorKind, defaults, load, object_transform, parse,
 };
 use rastty_core::math::{Mat4, Vec3};
-use rastty_core::texture::{FilterMode, MipFilter, WrapMode};
+use rastty_core::texture::{Anisotropy, FilterMode, MipFilter, WrapMode};
 
 // ---------------------------------------------------------------------------------------------------------------
 // Helpers
@@ -689,12 +689,17 @@ fn defaults_and_values_arrive_as_written() {
     let m = &scene.objects[0].material;
     assert_eq!((m.specular, m.shininess), (Some(Vec3::splat(0.25)), Some(12.0)));
     assert_eq!((m.filter, m.wrap, m.mip_filter), (FilterMode::Nearest, WrapMode::Clamp, MipFilter::Nearest));
-    let off = text.replace("mipmaps = \"nearest\"", "mipmaps = \"off\"");
-    assert_eq!(parse(off, "scene.toml").unwrap().load().unwrap().objects[0].material.mip_filter, MipFilter::Off);
+    let read = |mipmaps: &str| {
+        let text = text.replace("mipmaps = \"nearest\"", &format!("mipmaps = \"{mipmaps}\""));
+        parse(text, "scene.toml").unwrap().load().unwrap().objects[0].material.mip_filter
+    };
+    assert_eq!(read("off"), MipFilter::Off);
+    assert_eq!(read("anisotropic2"), MipFilter::Anisotropic(Anisotropy::X2));
+    assert_eq!(read("anisotropic16"), MipFilter::Anisotropic(Anisotropy::X16));
     let wrong = text.replace("mipmaps = \"nearest\"", "mipmaps = \"trilinear\"");
     let error = parse(wrong, "scene.toml").unwrap_err().to_string();
     let expected = "scene.toml:15:11: objects[0].material.mipmaps: unknown variant `trilinear`, expected one of \
-                    `off`, `nearest`, `linear`";
+                    `off`, `nearest`, `linear`, `anisotropic2`, `anisotropic4`, `anisotropic8`, `anisotropic16`";
     assert_eq!(error, expected);
 }
 

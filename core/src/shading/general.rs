@@ -18,7 +18,7 @@ use crate::color::{ShadingSpace, decode_srgb888, encode_srgb, texel_alpha, unpac
 use crate::math::{Vec2, Vec3, Vec4, float};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{Fragment, Shader, Slopes};
-use crate::texture::{Bilinear, Clamp, FilterMode, MipFilter, Nearest, Repeat, Texture, WrapMode};
+use crate::texture::{Bilinear, Clamp, FilterMode, MipContent, MipFilter, Nearest, Repeat, Texture, WrapMode};
 
 /// Everything any variant interpolates. Fields a variant does not use stay zero (so that they never make the
 /// pipeline skip a triangle).
@@ -78,23 +78,33 @@ impl<'a> GeneralShader<'a> {
         Self { variant, transforms, tangent_frame: TangentFrame::new(&transforms), tangents, material, lights }
     }
 
-    /// The packed texel of `map` at `at`, with the variant's filter, wrap mode and filter between levels.
-    fn texel(&self, map: &Texture<'_>, at: &MapPoint) -> u32 {
+    /// The packed texel of `map` at `at`, with the variant's filter, wrap mode and filter between levels,
+    /// anisotropic probes averaged as `content` says.
+    fn texel(&self, map: &Texture<'_>, at: &MapPoint, content: MipContent) -> u32 {
         let (chain, mip) = (map.mip_chain(), self.variant.mip_filter);
-        let lod = chain.level_of_detail(&at.slopes);
+        let (uv, footprint) = (at.uv, &chain.footprint(&at.slopes, mip));
         match (self.variant.filter, self.variant.wrap) {
-            (FilterMode::Nearest, WrapMode::Repeat) => chain.sample_packed::<Nearest, Repeat>(at.uv, lod, mip),
-            (FilterMode::Nearest, WrapMode::Clamp) => chain.sample_packed::<Nearest, Clamp>(at.uv, lod, mip),
-            (FilterMode::Bilinear, WrapMode::Repeat) => chain.sample_packed::<Bilinear, Repeat>(at.uv, lod, mip),
-            (FilterMode::Bilinear, WrapMode::Clamp) => chain.sample_packed::<Bilinear, Clamp>(at.uv, lod, mip),
+            (FilterMode::Nearest, WrapMode::Repeat) => {
+                chain.sample_packed::<Nearest, Repeat>(uv, footprint, mip, content)
+            }
+            (FilterMode::Nearest, WrapMode::Clamp) => {
+                chain.sample_packed::<Nearest, Clamp>(uv, footprint, mip, content)
+            }
+            (FilterMode::Bilinear, WrapMode::Repeat) => {
+                chain.sample_packed::<Bilinear, Repeat>(uv, footprint, mip, content)
+            }
+            (FilterMode::Bilinear, WrapMode::Clamp) => {
+                chain.sample_packed::<Bilinear, Clamp>(uv, footprint, mip, content)
+            }
         }
     }
 
-    /// The colour of a colour map's `texel`: decoded from sRGB when the draw lights in linear light.
-    fn color(&self, texel: u32) -> Vec3 {
+    /// The colour of the colour map `map` at `at`: decoded from sRGB (its probes averaged in linear light) when the
+    /// draw lights in linear light, else the codes over 255.
+    fn color(&self, map: &Texture<'_>, at: &MapPoint) -> Vec3 {
         match self.variant.space {
-            ShadingSpace::Linear => decode_srgb888(texel),
-            ShadingSpace::Encoded => unpack_rgb888(texel),
+            ShadingSpace::Linear => decode_srgb888(self.texel(map, at, MipContent::Color)),
+            ShadingSpace::Encoded => unpack_rgb888(self.texel(map, at, MipContent::Data)),
         }
     }
 
@@ -112,7 +122,7 @@ impl<'a> GeneralShader<'a> {
         let m = &self.material;
         let base = if self.variant.vertex_colors { m.color.mul_elem(color) } else { m.color };
         match m.diffuse {
-            Some(map) if self.variant.albedo_map => base.mul_elem(self.color(self.texel(&map, uv))),
+            Some(map) if self.variant.albedo_map => base.mul_elem(self.color(&map, uv)),
             _ => base,
         }
     }
@@ -121,9 +131,7 @@ impl<'a> GeneralShader<'a> {
     fn specular_color(&self, uv: &MapPoint) -> Vec3 {
         let m = &self.material;
         match m.specular_map {
-            Some(map) if self.variant.specular == SpecularSource::Map => {
-                m.specular.mul_elem(self.color(self.texel(&map, uv)))
-            }
+            Some(map) if self.variant.specular == SpecularSource::Map => m.specular.mul_elem(self.color(&map, uv)),
             _ => m.specular,
         }
     }
@@ -135,7 +143,7 @@ impl<'a> GeneralShader<'a> {
             color += self.specular_color(uv).mul_elem(specular_light);
         }
         match self.material.glow_map {
-            Some(map) if self.variant.glow_map => color + self.color(self.texel(&map, uv)),
+            Some(map) if self.variant.glow_map => color + self.color(&map, uv),
             _ => color,
         }
     }
@@ -151,12 +159,12 @@ impl<'a> GeneralShader<'a> {
             (NormalSource::TangentMap, Some(map)) => {
                 let (n, t) = (normal, tangent.truncate());
                 let b = n.cross(t) * tangent.w;
-                let d = decode_normal(self.texel(&map.texture, uv));
+                let d = decode_normal(self.texel(&map.texture, uv, MipContent::Data));
                 (t * d.x + b * d.y + n * d.z).normalize_or_zero()
             }
-            (NormalSource::ObjectMap, Some(map)) => {
-                (self.transforms.normal * decode_normal(self.texel(&map.texture, uv))).normalize_or_zero()
-            }
+            (NormalSource::ObjectMap, Some(map)) => (self.transforms.normal
+                * decode_normal(self.texel(&map.texture, uv, MipContent::Data)))
+            .normalize_or_zero(),
             _ => geometric,
         };
         let (geometric, shading) =
@@ -164,7 +172,9 @@ impl<'a> GeneralShader<'a> {
         let highlights = variant.specular != SpecularSource::None;
         let to_eye = if highlights { (self.transforms.eye - v.world).normalize_or_zero() } else { Vec3::ZERO };
         let mut diffuse = match m.occlusion_map {
-            Some(map) if variant.occlusion_map => self.lights.ambient.mul_elem(unpack_rgb888(self.texel(&map, uv))),
+            Some(map) if variant.occlusion_map => {
+                self.lights.ambient.mul_elem(unpack_rgb888(self.texel(&map, uv, MipContent::Data)))
+            }
             _ => self.lights.ambient,
         };
         let mut specular = Vec3::ZERO;
@@ -205,7 +215,7 @@ impl Shader for GeneralShader<'_> {
     fn kept(&self, _: &Fragment, _: &LightTerms, v: &GeneralVaryings, slopes: &Slopes<GeneralVaryings>) -> bool {
         match (self.variant.cutout, self.material.diffuse) {
             (Cutout::Map(cutoff), Some(map)) => {
-                self.material.keeps(texel_alpha(self.texel(&map, &MapPoint::of(v, slopes))), cutoff)
+                self.material.keeps(texel_alpha(self.texel(&map, &MapPoint::of(v, slopes), MipContent::Data)), cutoff)
             }
             (Cutout::Everything, _) => false,
             _ => true,

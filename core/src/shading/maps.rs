@@ -7,7 +7,7 @@ use super::scratch::Scratch;
 use crate::color::{ShadingSpace, decode_srgb888, encode_srgb, unpack_rgb888};
 use crate::math::{Vec2, Vec3};
 use crate::pipeline::{BATCH_SIZE, Slopes, lanes};
-use crate::texture::{Filter, MipFilter, Texture, Wrap, level_of_detail};
+use crate::texture::{Filter, Footprint, MipContent, MipFilter, Texture, Wrap, footprint};
 
 /// A batch's texture coordinates and, in a draw that mipmaps, their screen-space slopes.
 #[derive(Clone, Copy)]
@@ -54,8 +54,8 @@ pub(crate) struct MapReader<F: Filter, W: Wrap> {
     mip_filter: MipFilter,
     /// The texel addresses, for maps of the size they were made for.
     addresses: Option<((u32, u32), F::Addresses<BATCH_SIZE>)>,
-    /// Each lane's level of detail, for maps of the size and number of levels they were worked out for.
-    levels_of_detail: Option<(MapShape, [u32; BATCH_SIZE])>,
+    /// Where each lane reads a map's levels, for maps of the size and number of levels they were worked out for.
+    footprints: Option<(MapShape, [Footprint; BATCH_SIZE])>,
     _wrap: PhantomData<W>,
 }
 
@@ -63,15 +63,16 @@ impl<F: Filter, W: Wrap> MapReader<F, W> {
     /// A reader with no addresses yet, choosing levels of detail as `mip_filter` says.
     #[inline(always)]
     pub fn new(mip_filter: MipFilter) -> Self {
-        Self { mip_filter, addresses: None, levels_of_detail: None, _wrap: PhantomData }
+        Self { mip_filter, addresses: None, footprints: None, _wrap: PhantomData }
     }
 
     /// The texels of `map` at the lanes' coordinates `at` (the same at every call), packed: from its levels of
-    /// detail when the draw mipmaps and the map has them, else from the map alone.
+    /// detail when the draw mipmaps and the map has them (anisotropic probes averaged as `content` says), else from
+    /// the map alone.
     #[inline(always)]
-    pub fn read(&mut self, map: &Texture<'_>, at: &Coordinates, out: &mut [u32; BATCH_SIZE]) {
+    pub fn read(&mut self, map: &Texture<'_>, at: &Coordinates, content: MipContent, out: &mut [u32; BATCH_SIZE]) {
         if self.mip_filter != MipFilter::Off && map.has_mip_levels() {
-            return self.read_levels(map, at, out);
+            return self.read_levels(map, at, content, out);
         }
         let size = (map.width(), map.height());
         let addresses = match &mut self.addresses {
@@ -81,28 +82,28 @@ impl<F: Filter, W: Wrap> MapReader<F, W> {
         F::read::<W, BATCH_SIZE>(map, addresses, out);
     }
 
-    /// [`Self::read`] from the map's levels of detail, each lane at its own. Not inlined: one copy per filter and
-    /// wrap mode serves every draw's stages, which call it once per map and batch.
+    /// [`Self::read`] from the map's levels of detail, each lane where its footprint says. Not inlined: one copy
+    /// per filter and wrap mode serves every draw's stages, which call it once per map and batch.
     #[inline(never)]
-    fn read_levels(&mut self, map: &Texture<'_>, at: &Coordinates, out: &mut [u32; BATCH_SIZE]) {
-        let chain = map.mip_chain();
+    fn read_levels(&mut self, map: &Texture<'_>, at: &Coordinates, content: MipContent, out: &mut [u32; BATCH_SIZE]) {
+        let (chain, mip) = (map.mip_chain(), self.mip_filter);
         let shape = (map.width(), map.height(), chain.levels().len());
-        let lod = match &mut self.levels_of_detail {
-            Some((made_for, lod)) if *made_for == shape => lod,
+        let footprints = match &mut self.footprints {
+            Some((made_for, footprints)) if *made_for == shape => footprints,
             slot => {
                 // Without slopes (coordinates gathered for a draw that does not mipmap), the texture itself.
-                let (w, h) = (shape.0 as f32, shape.1 as f32);
-                let lod = match &at.slopes {
+                let (w, h, most) = (shape.0 as f32, shape.1 as f32, mip.max_probes_log2());
+                let footprints = match &at.slopes {
                     Some(Slopes { dx, dy }) => {
-                        core::array::from_fn(|i| level_of_detail(w, h, [dx.x[i], dx.y[i], dy.x[i], dy.y[i]], shape.2))
+                        core::array::from_fn(|i| footprint(w, h, [dx.x[i], dx.y[i], dy.x[i], dy.y[i]], shape.2, most))
                     }
-                    None => [0; BATCH_SIZE],
+                    None => [Footprint::at_level(0); BATCH_SIZE],
                 };
-                &mut slot.insert((shape, lod)).1
+                &mut slot.insert((shape, footprints)).1
             }
         };
         for (i, o) in out.iter_mut().enumerate() {
-            *o = chain.sample_packed::<F, W>(Vec2::new(at.uv.x[i], at.uv.y[i]), lod[i], self.mip_filter);
+            *o = chain.sample_packed::<F, W>(Vec2::new(at.uv.x[i], at.uv.y[i]), &footprints[i], mip, content);
         }
     }
 }
@@ -118,6 +119,15 @@ pub(crate) enum Texels {
 }
 
 impl Texels {
+    /// How anisotropic probes of such texels are averaged: in linear light when they are decoded to it.
+    #[inline(always)]
+    pub fn content(self) -> MipContent {
+        match self {
+            Self::AsStored => MipContent::Data,
+            Self::Srgb => MipContent::Color,
+        }
+    }
+
     /// How a colour map's texels are read in a draw lit in `space`.
     #[inline(always)]
     pub fn of_color(space: ShadingSpace) -> Self {
@@ -179,7 +189,7 @@ pub(crate) fn modulated<F: Filter, W: Wrap>(
     len: usize,
 ) {
     let mut packed = [0; BATCH_SIZE];
-    maps.read(map, at, &mut packed);
+    maps.read(map, at, texels.content(), &mut packed);
     let mut values = Column3::ZERO;
     match texels {
         Texels::AsStored => (0..lanes(len)).for_each(|i| values.set(i, unpack_rgb888(packed[i]))),
@@ -210,7 +220,7 @@ pub(crate) fn stored(colors: &mut [Vec3], space: ShadingSpace) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::texture::{Bilinear, Clamp, MipContent, Nearest, Repeat, build_mip_levels};
+    use crate::texture::{Anisotropy, Bilinear, Clamp, MipContent, Nearest, Repeat, build_mip_levels};
 
     /// A reader gives each map's own samples when maps of different sizes take turns (its addresses are made
     /// again whenever the size changes), for both filters.
@@ -231,7 +241,7 @@ mod tests {
             let at = Coordinates { uv: *uv, ..Coordinates::ZERO };
             for map in maps {
                 let (mut read, mut expected) = ([0; BATCH_SIZE], [0; BATCH_SIZE]);
-                reader.read(map, &at, &mut read);
+                reader.read(map, &at, MipContent::Data, &mut read);
                 F::sample_packed_lanes::<W, BATCH_SIZE>(map, &uv.x, &uv.y, &mut expected);
                 assert_eq!(read, expected, "{}x{}", map.width(), map.height());
             }
@@ -257,10 +267,14 @@ mod tests {
         build_mip_levels(&small, MipContent::Data, &mut small_levels).unwrap();
         let (big, alone) = (big.with_mip_levels(&big_levels).unwrap(), big);
         let small = small.with_mip_levels(&small_levels).unwrap();
-        // Slopes from magnified to beyond the last level.
+        // Slopes from magnified to beyond the last level: long and narrow footprints, and square ones (every third
+        // lane).
         let slopes = Slopes {
             dx: Column2 { x: core::array::from_fn(|i| i as f32 * 0.04), y: [0.002; BATCH_SIZE] },
-            dy: Column2 { x: [0.0; BATCH_SIZE], y: core::array::from_fn(|i| (i % 5) as f32 * 0.07) },
+            dy: Column2 {
+                x: [0.0; BATCH_SIZE],
+                y: core::array::from_fn(|i| if i % 3 == 0 { i as f32 * 0.04 } else { (i % 5) as f32 * 0.07 }),
+            },
         };
         let at = Coordinates {
             uv: Column2 {
@@ -273,21 +287,32 @@ mod tests {
             dx: Vec2::new(slopes.dx.x[i], slopes.dx.y[i]),
             dy: Vec2::new(slopes.dy.x[i], slopes.dy.y[i]),
         };
-        for mip in [MipFilter::Nearest, MipFilter::Linear] {
+        for mip in [MipFilter::Nearest, MipFilter::Linear, MipFilter::Anisotropic(Anisotropy::X4)] {
             let mut reader = MapReader::<Bilinear, Repeat>::new(mip);
-            let mut levels_seen = [false; 4];
-            for map in [&big, &small, &alone, &big] {
+            let (mut levels_seen, mut probes_seen) = ([false; 4], [false; 3]);
+            // Each map's probes averaged as its levels were built.
+            let maps = [
+                (&big, MipContent::Color),
+                (&small, MipContent::Data),
+                (&alone, MipContent::Color),
+                (&big, MipContent::Color),
+            ];
+            for (map, content) in maps {
                 let mut read = [0; BATCH_SIZE];
-                reader.read(map, &at, &mut read);
+                reader.read(map, &at, content, &mut read);
                 let chain = map.mip_chain();
                 for (i, &texel) in read.iter().enumerate() {
-                    let lod = chain.level_of_detail(&lane(i));
-                    levels_seen[(lod / crate::texture::LEVEL) as usize] = true;
+                    let footprint = chain.footprint(&lane(i), mip);
+                    levels_seen[(footprint.lod / crate::texture::LEVEL) as usize] = true;
+                    probes_seen[footprint.probes_log2 as usize] = true;
                     let uv = Vec2::new(at.uv.x[i], at.uv.y[i]);
-                    assert_eq!(texel, chain.sample_packed::<Bilinear, Repeat>(uv, lod, mip), "{mip:?} lane {i}");
+                    let expected = chain.sample_packed::<Bilinear, Repeat>(uv, &footprint, mip, content);
+                    assert_eq!(texel, expected, "{mip:?} lane {i}");
                 }
             }
-            assert_eq!(levels_seen, [true; 4]);
+            let anisotropic = matches!(mip, MipFilter::Anisotropic(_));
+            assert_eq!(levels_seen, [true; 4], "{mip:?}");
+            assert_eq!(probes_seen, [true, anisotropic, anisotropic], "{mip:?}");
         }
     }
 }

@@ -372,14 +372,17 @@ impl fmt::Display for Variant {
                 (FilterMode::Bilinear, MipFilter::Off) => "bilinear",
                 (FilterMode::Nearest, MipFilter::Nearest) => "nearest of the nearest level",
                 (FilterMode::Bilinear, MipFilter::Nearest) => "bilinear of the nearest level",
-                (FilterMode::Nearest, MipFilter::Linear) => "nearest of two levels",
-                (FilterMode::Bilinear, MipFilter::Linear) => "trilinear",
+                (FilterMode::Nearest, MipFilter::Linear | MipFilter::Anisotropic(_)) => "nearest of two levels",
+                (FilterMode::Bilinear, MipFilter::Linear | MipFilter::Anisotropic(_)) => "trilinear",
             };
             let wrap = match self.wrap {
                 WrapMode::Repeat => "repeat",
                 WrapMode::Clamp => "clamp",
             };
             write!(f, "; maps {filter}/{wrap}")?;
+            if let MipFilter::Anisotropic(most) = self.mip_filter {
+                write!(f, ", anisotropic up to {} probes", most.probes())?;
+            }
         }
         if lit {
             match (self.directional_lights, self.point_lights) {

@@ -2,7 +2,8 @@
 //! and the filter between levels.
 
 use super::sampler::blend;
-use super::{Filter, MipChain, Texture, Wrap};
+use super::{Filter, MipChain, MipContent, Texture, Wrap};
+use crate::color::{SRGB_DECODE, linear_to_srgb8};
 use crate::math::{Vec2, float};
 use crate::pipeline::Slopes;
 
@@ -18,51 +19,182 @@ pub enum MipFilter {
     /// filtering with [`super::FilterMode::Bilinear`]).
     #[default]
     Linear,
+    /// Up to the given number of [`MipFilter::Linear`] probes, spread along the longer side of the pixel's
+    /// footprint and averaged, each at the level of detail of the footprint's length over the number of probes:
+    /// a footprint 8 texels long and 1 wide reads 8 probes at level 0 where `Linear` reads one at level 3, so a
+    /// surface seen at a grazing angle keeps its detail across the view (`EXT_texture_filter_anisotropic`).
+    Anisotropic(Anisotropy),
 }
 
-/// One level of detail, in the units [`MipChain::level_of_detail`] counts them.
+impl MipFilter {
+    /// The most probes a sample averages, as a power of two: 0 unless [`MipFilter::Anisotropic`].
+    #[must_use]
+    pub const fn max_probes_log2(self) -> u32 {
+        match self {
+            Self::Anisotropic(most) => most.probes_log2(),
+            Self::Off | Self::Nearest | Self::Linear => 0,
+        }
+    }
+}
+
+/// The most probes one anisotropic sample averages ([`MipFilter::Anisotropic`]): a power of two, so that the
+/// average is a shift.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Anisotropy {
+    /// 2 probes.
+    X2,
+    /// 4 probes.
+    X4,
+    /// 8 probes.
+    X8,
+    /// 16 probes.
+    X16,
+}
+
+impl Anisotropy {
+    /// `log2` of the number of probes.
+    #[must_use]
+    pub const fn probes_log2(self) -> u32 {
+        match self {
+            Self::X2 => 1,
+            Self::X4 => 2,
+            Self::X8 => 3,
+            Self::X16 => 4,
+        }
+    }
+
+    /// The number of probes: 2, 4, 8 or 16.
+    #[must_use]
+    pub const fn probes(self) -> u32 {
+        1 << self.probes_log2()
+    }
+}
+
+/// One level of detail, in the units [`Footprint::lod`] counts them.
 pub const LEVEL: u32 = 256;
 
+/// Where a sample reads a chain ([`MipChain::footprint`]): the level of detail and, for an anisotropic sample,
+/// the probes along the pixel's footprint.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Footprint {
+    /// The level of detail each probe is read at, in 1/[`LEVEL`] of a level.
+    pub lod: u32,
+    /// `log2` of the number of probes: 0 for one (at the sample's coordinates).
+    pub probes_log2: u32,
+    /// The longer side of the footprint in texture coordinates: the probes lie evenly along it, centred on the
+    /// sample's coordinates.
+    pub axis: Vec2,
+}
+
+impl Footprint {
+    /// One probe at level of detail `lod`.
+    #[must_use]
+    pub const fn at_level(lod: u32) -> Self {
+        Self { lod, probes_log2: 0, axis: Vec2::ZERO }
+    }
+}
+
 impl MipChain<'_> {
-    /// The level of detail of a sample whose texture coordinates change by `slopes` per pixel, in 1/[`LEVEL`]
-    /// of a level: `log2` of the longer side of the pixel's footprint, in texels of the texture (OpenGL 4.6 core
-    /// profile, section 8.14.1, with `rho` the larger of the two lengths), 0 where a pixel covers at most a texel
-    /// (magnification) and at most the last level's. Non-finite slopes give the last level.
+    /// Where a sample whose texture coordinates change by `slopes` per pixel reads the chain under `mip`.
+    ///
+    /// The level of detail is `log2` of the longer side of the pixel's footprint in texels, `rho` (OpenGL 4.6
+    /// core profile, section 8.14.1, with `rho` the larger of the two lengths), 0 where a pixel covers at most a
+    /// texel (magnification) and at most the last level's. An anisotropic sample takes `2^k` probes, `k` the
+    /// least with `2^k` at least the ratio of the longer side to the shorter, up to the filter's most, and reads
+    /// each at `log2(rho / 2^k)` (`EXT_texture_filter_anisotropic`, with the probe count rounded up to a power of
+    /// two); one probe where the footprint is at most a texel long or the texture has no levels. Non-finite slopes
+    /// give one probe at the last level.
     ///
     /// `log2` is read from the float's bits, exponent plus mantissa: a piecewise-linear `log2`, exact at powers
     /// of two and at most 0.086 below between them (Blinn, "Floating-point tricks", IEEE CG&A 17(4), 1997), the
     /// same on every target.
     #[must_use]
     #[inline(always)]
-    pub fn level_of_detail(&self, slopes: &Slopes<Vec2>) -> u32 {
+    pub fn footprint(&self, slopes: &Slopes<Vec2>, mip: MipFilter) -> Footprint {
         let top = &self.levels()[0];
-        level_of_detail(
+        footprint(
             top.width() as f32,
             top.height() as f32,
             [slopes.dx.x, slopes.dx.y, slopes.dy.x, slopes.dy.y],
             self.levels().len(),
+            mip.max_probes_log2(),
         )
     }
 
-    /// The chain's texel at `uv` (wrap mode `W`) and level of detail `lod` ([`Self::level_of_detail`]), packed:
-    /// filtered within a level by `F` and between levels as `mip` says.
+    /// The chain's texel at `uv` (wrap mode `W`) read where `at` says ([`Self::footprint`]), packed: filtered
+    /// within a level by `F` and between levels as `mip` says. Anisotropic probes are averaged as `content` says,
+    /// as the levels were built: colour in linear light, data as stored (a draw that lights sRGB codes reads its
+    /// colour maps as data).
     #[must_use]
     #[inline(always)]
-    pub fn sample_packed<F: Filter, W: Wrap>(&self, uv: Vec2, lod: u32, mip: MipFilter) -> u32 {
+    pub fn sample_packed<F: Filter, W: Wrap>(
+        &self,
+        uv: Vec2,
+        at: &Footprint,
+        mip: MipFilter,
+        content: MipContent,
+    ) -> u32 {
         match mip {
             MipFilter::Off => F::sample_packed::<W>(self.level(0), uv),
             // Level 0 up to a level of detail of one half, then the nearest (OpenGL 4.6, equation 8.7).
-            MipFilter::Nearest => F::sample_packed::<W>(self.level(((lod + LEVEL / 2 - 1) / LEVEL) as usize), uv),
-            MipFilter::Linear => {
-                let (level, fraction) = ((lod / LEVEL) as usize, lod % LEVEL);
-                let near = F::sample_packed::<W>(self.level(level), uv);
-                if fraction == 0 {
-                    near
-                } else {
-                    blend(near, F::sample_packed::<W>(self.level(level + 1), uv), fraction)
-                }
-            }
+            MipFilter::Nearest => F::sample_packed::<W>(self.level(((at.lod + LEVEL / 2 - 1) / LEVEL) as usize), uv),
+            MipFilter::Linear => self.between_levels::<F, W>(uv, at.lod),
+            MipFilter::Anisotropic(_) if at.probes_log2 == 0 => self.between_levels::<F, W>(uv, at.lod),
+            MipFilter::Anisotropic(_) => match content {
+                MipContent::Color => self.probes_in_light::<F, W>(uv, at),
+                MipContent::Data => self.probes_as_stored::<F, W>(uv, at),
+            },
         }
+    }
+
+    /// The two levels around `lod` at `uv`, blended by where it lies between them.
+    #[inline(always)]
+    fn between_levels<F: Filter, W: Wrap>(&self, uv: Vec2, lod: u32) -> u32 {
+        let (level, fraction) = ((lod / LEVEL) as usize, lod % LEVEL);
+        let near = F::sample_packed::<W>(self.level(level), uv);
+        if fraction == 0 { near } else { blend(near, F::sample_packed::<W>(self.level(level + 1), uv), fraction) }
+    }
+
+    /// `at`'s probes, each read between levels: probe `j` of `n` lies at `uv + axis (2j + 1 - n) / 2n`.
+    #[inline(always)]
+    fn each_probe<F: Filter, W: Wrap>(&self, uv: Vec2, at: &Footprint, mut probe: impl FnMut(u32)) {
+        let n = 1i32 << at.probes_log2;
+        for j in 0..n {
+            // An odd integer over a power of two: exact.
+            let t = (2 * j + 1 - n) as f32 / (2 * n) as f32;
+            probe(self.between_levels::<F, W>(uv + at.axis * t, at.lod));
+        }
+    }
+
+    /// The mean of `at`'s probes as stored, rounded to nearest: every channel is summed in its own 16 bits of a
+    /// word (16 probes of 255 fit).
+    #[inline(always)]
+    fn probes_as_stored<F: Filter, W: Wrap>(&self, uv: Vec2, at: &Footprint) -> u32 {
+        let (mut rb, mut tg) = (0u32, 0u32);
+        self.each_probe::<F, W>(uv, at, |probe| {
+            rb += probe & 0xFF_00FF;
+            tg += (probe >> 8) & 0xFF_00FF;
+        });
+        let half = (1u32 << at.probes_log2) / 2 * 0x1_0001;
+        let mean = |sum: u32| ((sum + half) >> at.probes_log2) & 0xFF_00FF;
+        mean(rb) | mean(tg) << 8
+    }
+
+    /// The mean of `at`'s probes in linear light: each colour channel decoded ([`SRGB_DECODE`]), summed in probe
+    /// order, scaled by the exact `1 / n` and encoded to the nearest code; the transparency byte as stored.
+    #[inline(always)]
+    fn probes_in_light<F: Filter, W: Wrap>(&self, uv: Vec2, at: &Footprint) -> u32 {
+        let (mut light, mut transparency) = ([0.0f32; 3], 0u32);
+        self.each_probe::<F, W>(uv, at, |probe| {
+            for (c, sum) in light.iter_mut().enumerate() {
+                *sum += SRGB_DECODE[((probe >> (16 - 8 * c)) & 0xFF) as usize];
+            }
+            transparency += probe >> 24;
+        });
+        let scale = 1.0 / (1u32 << at.probes_log2) as f32;
+        let [r, g, b] = light.map(|sum| linear_to_srgb8(sum * scale));
+        let t = (transparency + (1 << at.probes_log2) / 2) >> at.probes_log2;
+        t << 24 | r << 16 | g << 8 | b
     }
 
     /// Level `k`, or the last.
@@ -73,19 +205,46 @@ impl MipChain<'_> {
     }
 }
 
-/// [`MipChain::level_of_detail`] for a `width x height` texture of `levels` levels, from the coordinate slopes
-/// `[du/dx, dv/dx, du/dy, dv/dy]`: a function of plain values, so that lane loops can run it.
+/// [`MipChain::footprint`] for a `width x height` texture of `levels` levels, from the coordinate slopes
+/// `[du/dx, dv/dx, du/dy, dv/dy]` and at most `2^max_probes_log2` probes: a function of plain values, so that lane
+/// loops can run it.
 #[inline(always)]
-pub(crate) fn level_of_detail(width: f32, height: f32, [ux, vx, uy, vy]: [f32; 4], levels: usize) -> u32 {
+pub(crate) fn footprint(
+    width: f32,
+    height: f32,
+    [ux, vx, uy, vy]: [f32; 4],
+    levels: usize,
+    max_probes_log2: u32,
+) -> Footprint {
     let (x, y) = (ux * width, vx * height);
     let (p, q) = (uy * width, vy * height);
     let (along_x, along_y) = (x * x + y * y, p * p + q * q);
-    let rho_squared = if along_x.is_nan() | along_y.is_nan() { f32::INFINITY } else { float::max(along_x, along_y) };
-    // (exponent - 127) * 2^23 + mantissa, over 2^23: log2(rho^2) in the piecewise-linear approximation; over 2^16,
-    // log2(rho) in 1/256 levels. The sign bit is dropped (a NaN may carry it): NaN and infinity give the top.
-    let bits = (rho_squared.to_bits() & 0x7FFF_FFFF) as i32;
     let last = (levels.saturating_sub(1) as i32) * LEVEL as i32;
-    ((bits - (127 << 23)) >> 16).clamp(0, last) as u32
+    // NaN (either way round) and infinity: one probe at the last level.
+    if !(along_x <= f32::MAX && along_y <= f32::MAX) {
+        return Footprint::at_level(last as u32);
+    }
+    let rho = log2_of_root(float::max(along_x, along_y));
+    // A texture without levels is read alone, as without anisotropy.
+    let most = if levels > 1 { max_probes_log2 } else { 0 };
+    if most == 0 {
+        return Footprint::at_level(rho.clamp(0, last) as u32);
+    }
+    let (shorter, axis) = if along_x >= along_y { (along_y, Vec2::new(ux, vx)) } else { (along_x, Vec2::new(uy, vy)) };
+    // The least k with 2^k at least the longer side over the shorter (the difference of their logarithms, rounded
+    // up to whole levels): 0 when the footprint is round, and when it is at most a texel long (magnified, the
+    // probes would read one texel).
+    let spread = if rho > 0 { (rho - log2_of_root(shorter)).max(0) as u32 } else { 0 };
+    let k = spread.div_ceil(LEVEL).min(most);
+    Footprint { lod: (rho - (k * LEVEL) as i32).clamp(0, last) as u32, probes_log2: k, axis }
+}
+
+/// `log2(sqrt(squared))` in 1/[`LEVEL`] levels, for a finite `squared >= 0`: (exponent - 127) * 2^23 + mantissa,
+/// over 2^23, is `log2` in the piecewise-linear approximation; over 2^16 it is the root's in 1/256 levels. Zero
+/// gives -16,256.
+#[inline(always)]
+fn log2_of_root(squared: f32) -> i32 {
+    ((squared.to_bits() & 0x7FFF_FFFF) as i32 - (127 << 23)) >> 16
 }
 
 #[cfg(test)]
@@ -109,7 +268,11 @@ mod tests {
         // 64x16, 32x8, 16x4, 8x2, 4x1, 2x1, 1x1: seven levels.
         let chain = texture.with_mip_levels(&levels).unwrap().mip_chain();
         assert_eq!(chain.levels().len(), 7);
-        let at = |dx, dy| chain.level_of_detail(&slopes(dx, dy));
+        let at = |dx, dy| {
+            let footprint = chain.footprint(&slopes(dx, dy), MipFilter::Linear);
+            assert_eq!(footprint.probes_log2, 0);
+            footprint.lod
+        };
         // One texel per pixel across u (1/64) or down v (1/16): level 0.
         assert_eq!(at((1.0 / 64.0, 0.0), (0.0, 1.0 / 16.0)), 0);
         // Four texels per pixel along the longer axis, whichever it is: level 2.
@@ -139,7 +302,9 @@ mod tests {
         let levels = [[grey(100); 4].as_slice(), &[grey(0)]].concat();
         let chain = Texture::new(&texels, 4, 4).unwrap().with_mip_levels(&levels).unwrap().mip_chain();
         let uv = Vec2::new(0.3, 0.6);
-        let sample = |lod, mip| chain.sample_packed::<Bilinear, Repeat>(uv, lod, mip) & 0xFF;
+        let sample = |lod, mip| {
+            chain.sample_packed::<Bilinear, Repeat>(uv, &Footprint::at_level(lod), mip, MipContent::Color) & 0xFF
+        };
         assert_eq!(sample(0, MipFilter::Linear), 200);
         // A quarter of the way from level 0 to level 1: 200 + (100 - 200) 64 / 256.
         assert_eq!(sample(64, MipFilter::Linear), 175);
@@ -152,6 +317,85 @@ mod tests {
         assert_eq!(sample(2 * LEVEL, MipFilter::Off), 200);
         // A texture without levels is itself at every level of detail.
         let alone = Texture::new(&texels, 4, 4).unwrap().mip_chain();
-        assert_eq!(alone.sample_packed::<Nearest, Repeat>(uv, 2 * LEVEL, MipFilter::Linear) & 0xFF, 200);
+        let far = Footprint::at_level(2 * LEVEL);
+        assert_eq!(alone.sample_packed::<Nearest, Repeat>(uv, &far, MipFilter::Linear, MipContent::Data) & 0xFF, 200);
+    }
+
+    /// An anisotropic footprint takes the least power of two of probes that covers its longer side with squares
+    /// of its shorter, up to the filter's most, and reads them at the longer side's level less that power.
+    #[test]
+    fn anisotropic_footprints_count_probes_along_the_longer_side() {
+        let texels = [0; 64 * 64];
+        let mut levels = [0; 1365];
+        assert_eq!(levels.len(), mip_chain_texels(64, 64));
+        let texture = Texture::new(&texels, 64, 64).unwrap();
+        build_mip_levels(&texture, MipContent::Data, &mut levels).unwrap();
+        let chain = texture.with_mip_levels(&levels).unwrap().mip_chain();
+        let texel = 1.0 / 64.0;
+        let at = |dx: (f32, f32), dy: (f32, f32), most| chain.footprint(&slopes(dx, dy), MipFilter::Anisotropic(most));
+        let footprint =
+            |lod, probes_log2, axis: (f32, f32)| Footprint { lod, probes_log2, axis: Vec2::new(axis.0, axis.1) };
+        // 8 texels along x, 1 down y: 8 probes at level 0 along x's slope, or 4 at level 1 when 4 is the most.
+        assert_eq!(at((8.0 * texel, 0.0), (0.0, texel), Anisotropy::X16), footprint(0, 3, (8.0 * texel, 0.0)));
+        assert_eq!(at((8.0 * texel, 0.0), (0.0, texel), Anisotropy::X4), footprint(LEVEL, 2, (8.0 * texel, 0.0)));
+        // The longer side down the screen, 16 by 2 texels: 8 probes at level 1.
+        assert_eq!(
+            at((2.0 * texel, 0.0), (0.0, 16.0 * texel), Anisotropy::X16),
+            footprint(LEVEL, 3, (0.0, 16.0 * texel))
+        );
+        // Slanted in the texture, 20 (12 across, 16 down) by 2 texels: log2 400 read as 8 + 0.5625, halved, is 1,096
+        // 256ths (log2 20 = 4.32 levels); 16 probes (log2 10 = 3.3, rounded up to 4 levels) at 1,096 - 1,024.
+        let (du, dv) = (12.0 * texel, 16.0 * texel);
+        assert_eq!(at((2.0 * texel, 0.0), (du, dv), Anisotropy::X16), footprint(72, 4, (du, dv)));
+        // 3 by 1: 4 probes (the least power of two at least 3, log2 3 read as 1.5625 levels), at log2 3 - 2 < 0,
+        // so level 0.
+        assert_eq!(at((3.0 * texel, 0.0), (0.0, texel), Anisotropy::X16), footprint(0, 2, (3.0 * texel, 0.0)));
+        // A round footprint, 4 by 4 texels: one probe, as trilinear reads it.
+        assert_eq!(
+            at((4.0 * texel, 0.0), (0.0, 4.0 * texel), Anisotropy::X16),
+            footprint(2 * LEVEL, 0, (4.0 * texel, 0.0))
+        );
+        // A line (no width): the most probes; magnified: one at level 0.
+        assert_eq!(at((32.0 * texel, 0.0), (0.0, 0.0), Anisotropy::X8), footprint(2 * LEVEL, 3, (32.0 * texel, 0.0)));
+        assert_eq!(at((0.5 * texel, 0.0), (0.0, 0.25 * texel), Anisotropy::X16), footprint(0, 0, (0.5 * texel, 0.0)));
+        // Not finite: one probe at the last level (six levels below the top).
+        for bad in [f32::NAN, -f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {
+            assert_eq!(at((bad, 0.0), (0.0, texel), Anisotropy::X16), Footprint::at_level(6 * LEVEL), "{bad}");
+        }
+    }
+
+    /// An anisotropic sample is the mean of its probes, each read between levels at its place along the axis, as
+    /// the levels are built: colour in linear light, data as stored; with one probe it is the trilinear sample.
+    #[test]
+    fn an_anisotropic_sample_is_the_mean_of_its_probes() {
+        // 4x1 texels 0, 10, 20, 250 (grey), no levels: probes of a 4-texel footprint along u read one texel each.
+        let grey = |v: u32| v << 16 | v << 8 | v;
+        let texels = [grey(0), grey(10), grey(20), grey(250)];
+        let chain = Texture::new(&texels, 4, 1).unwrap().mip_chain();
+        let mip = MipFilter::Anisotropic(Anisotropy::X4);
+        let sample = |probes_log2, content| {
+            let at = Footprint { lod: 0, probes_log2, axis: Vec2::new(1.0, 0.0) };
+            chain.sample_packed::<Nearest, Repeat>(Vec2::new(0.5, 0.5), &at, mip, content)
+        };
+        // Probes at u = 0.5 + (-3, -1, 1, 3)/8: 0.125, 0.375, 0.625, 0.875, texels 0..4: (0 + 10 + 20 + 250) / 4 as
+        // stored; in light, the codes' mean light 0.2415 is code 134.80.
+        assert_eq!(sample(2, MipContent::Data), grey(70));
+        assert_eq!(sample(2, MipContent::Color), grey(135));
+        // Two probes at 0.25 and 0.75: (10 + 250) / 2; in light, 184.03.
+        assert_eq!(sample(1, MipContent::Data), grey(130));
+        assert_eq!(sample(1, MipContent::Color), grey(184));
+        // Every channel apart, transparency too: 255 in one of four probes is 63.75, 64; in light a quarter of
+        // white, 136.96, with the transparency as stored.
+        let texels = [0xFF00_0000, 0x00FF_0000, 0x0000_FF00, 0x0000_00FF];
+        let chain = Texture::new(&texels, 4, 1).unwrap().mip_chain();
+        let at = Footprint { lod: 0, probes_log2: 2, axis: Vec2::new(1.0, 0.0) };
+        let sample = |content| chain.sample_packed::<Nearest, Repeat>(Vec2::new(0.5, 0.5), &at, mip, content);
+        assert_eq!(sample(MipContent::Data), 0x4040_4040);
+        assert_eq!(sample(MipContent::Color), 0x4089_8989);
+        // One probe: the trilinear sample.
+        let at = Footprint { lod: 0, probes_log2: 0, axis: Vec2::new(1.0, 0.0) };
+        let uv = Vec2::new(0.3, 0.5);
+        let one = chain.sample_packed::<Bilinear, Repeat>(uv, &at, mip, MipContent::Color);
+        assert_eq!(one, chain.sample_packed::<Bilinear, Repeat>(uv, &at, MipFilter::Linear, MipContent::Color));
     }
 }

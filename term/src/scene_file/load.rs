@@ -7,7 +7,7 @@ use std::sync::Arc;
 
 use rastty_core::color::ShadingSpace;
 use rastty_core::math::Vec3;
-use rastty_core::texture::{FilterMode, MipFilter, WrapMode};
+use rastty_core::texture::{Anisotropy, FilterMode, MipFilter, WrapMode};
 use toml::Spanned;
 
 use super::SceneFile;
@@ -201,6 +201,10 @@ impl Loader<'_> {
                 Mipmaps::Off => MipFilter::Off,
                 Mipmaps::Nearest => MipFilter::Nearest,
                 Mipmaps::Linear => MipFilter::Linear,
+                Mipmaps::Anisotropic2 => MipFilter::Anisotropic(Anisotropy::X2),
+                Mipmaps::Anisotropic4 => MipFilter::Anisotropic(Anisotropy::X4),
+                Mipmaps::Anisotropic8 => MipFilter::Anisotropic(Anisotropy::X8),
+                Mipmaps::Anisotropic16 => MipFilter::Anisotropic(Anisotropy::X16),
             },
         })
     }

@@ -210,8 +210,9 @@ pub struct MaterialSpec {
     /// `wrap = "repeat" | "clamp"`: what texture coordinates outside `[0, 1]` read. Default `"repeat"`.
     #[serde(default)]
     pub wrap: Wrap,
-    /// `mipmaps = "off" | "nearest" | "linear"`: how the images' levels of detail are read where a pixel spans
-    /// several texels: not at all, the nearest level, or the two nearest blended. Default `"linear"`.
+    /// `mipmaps = "off" | "nearest" | "linear" | "anisotropicN"` (N 2, 4, 8, 16): how the images' levels of
+    /// detail are read where a pixel spans several texels: not at all, the nearest level, the two nearest blended,
+    /// or that at up to N places along the pixel's footprint. Default `"linear"`.
     #[serde(default)]
     pub mipmaps: Mipmaps,
 }
@@ -240,7 +241,10 @@ pub enum Filter {
 
 /// How the images' levels of detail are read (`mipmaps = "..."`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize)]
-#[serde(rename_all = "lowercase", expecting = "\"off\", \"nearest\" or \"linear\"")]
+#[serde(
+    rename_all = "lowercase",
+    expecting = "\"off\", \"nearest\", \"linear\", \"anisotropic2\", \"anisotropic4\", \"anisotropic8\" or \"anisotropic16\""
+)]
 pub enum Mipmaps {
     /// `"off"`: the image itself at every distance.
     Off,
@@ -249,6 +253,14 @@ pub enum Mipmaps {
     /// `"linear"`: the two nearest levels, blended.
     #[default]
     Linear,
+    /// `"anisotropic2"`: up to 2 `"linear"` probes along the footprint's longer side, averaged.
+    Anisotropic2,
+    /// `"anisotropic4"`: up to 4 probes.
+    Anisotropic4,
+    /// `"anisotropic8"`: up to 8 probes.
+    Anisotropic8,
+    /// `"anisotropic16"`: up to 16 probes.
+    Anisotropic16,
 }
 
 /// What texture coordinates outside `[0, 1]` read (`wrap = "..."`).

@@ -2,7 +2,7 @@
 
 use rastty_core::color::ShadingSpace;
 use rastty_core::pipeline::{DrawState, EdgeArithmetic, Interpolation};
-use rastty_core::texture::{FilterMode, MipFilter};
+use rastty_core::texture::{Anisotropy, FilterMode, MipFilter};
 
 /// How lit surfaces are shaded (unlit ones ignore it).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -68,7 +68,7 @@ pub const DEFAULT: Setting = Setting {
 };
 
 /// Every setting measured: the default, then one knob at a time.
-pub const ALL: [Setting; 14] = [
+pub const ALL: [Setting; 17] = [
     DEFAULT,
     Setting { name: "0 sub-pixel bits", knob: "sub-pixel bits", subpixel_bits: 0, ..DEFAULT },
     Setting { name: "4 sub-pixel bits", knob: "sub-pixel bits", subpixel_bits: 4, ..DEFAULT },
@@ -77,6 +77,9 @@ pub const ALL: [Setting; 14] = [
     Setting { name: "nearest", knob: "texture filter", filter: FilterMode::Nearest, ..DEFAULT },
     Setting { name: "mipmaps off", knob: "mipmaps", mip_filter: MipFilter::Off, ..DEFAULT },
     Setting { name: "nearest level", knob: "mipmaps", mip_filter: MipFilter::Nearest, ..DEFAULT },
+    Setting { name: "anisotropic 4", knob: "mipmaps", mip_filter: MipFilter::Anisotropic(Anisotropy::X4), ..DEFAULT },
+    Setting { name: "anisotropic 8", knob: "mipmaps", mip_filter: MipFilter::Anisotropic(Anisotropy::X8), ..DEFAULT },
+    Setting { name: "anisotropic 16", knob: "mipmaps", mip_filter: MipFilter::Anisotropic(Anisotropy::X16), ..DEFAULT },
     Setting { name: "sRGB-coded light", knob: "shading space", space: ShadingSpace::Encoded, ..DEFAULT },
     Setting { name: "flat", knob: "shading", shading: LitShading::Flat, ..DEFAULT },
     Setting { name: "Gouraud", knob: "shading", shading: LitShading::Gouraud, ..DEFAULT },
