@@ -235,7 +235,8 @@ enum LightIn {
 /// A shadow map of a light (see [`ExtrasIn::shadowed`]).
 #[derive(Arbitrary, Debug)]
 struct ShadowIn {
-    /// Side `1 + size % 16` texels.
+    /// Side `1 + size % 16` texels (of each face of a point light's cube map, when the light is inside the
+    /// bounds; a cube of 8 or fewer is refused).
     size: u8,
     /// Percentage-closer radius `pcf % 4` (3 takes the general loop over taps).
     pcf: u8,
@@ -579,10 +580,11 @@ fn shadow_buffers(
         }
     };
     let view = ShadowView::fit(light.kind, bounds, size).ok()?;
-    let mut depth = vec![0f32; (size * size) as usize];
+    let rows = view.rows();
+    let mut depth = vec![0f32; (size * rows) as usize];
     clear_shadow_depth(&mut depth);
     let stats = draw_shadow_caster(&view, &mut depth, mesh, model).expect("a buffer of the map's size");
-    check_stats("shadow caster", &stats, triangles);
+    check_stats("shadow caster", &stats, triangles * u64::from(view.faces()));
     check_fill_fragments("shadow caster", &stats, u64::from(size * size));
     assert!(depth.iter().all(|d| (0.0..=1.0).contains(d)), "shadow caster: a depth outside [0, 1]");
     let bias = input.bias.map_or(ShadowBias::DEFAULT, |(n, s, d)| ShadowBias {
@@ -593,7 +595,7 @@ fn shadow_buffers(
     let windows = input.windows.then(|| {
         let n = depth.len();
         let (mut near, mut far) = (vec![0f32; n], vec![0f32; n]);
-        window_ranges_band(&depth, size, pcf, 0..size, &mut near, &mut far).expect("buffers of the map's size");
+        window_ranges_band(&depth, size, pcf, 0..rows, &mut near, &mut far).expect("buffers of the map's size");
         (near, far)
     });
     Some(ShadowBuffers { view, depth, bias, pcf, windows })

@@ -48,8 +48,12 @@ impl fmt::Display for PassCounts<'_> {
             let s = &done.stats;
             writeln!(
                 f,
-                "shadow map of light {}: {}x{} texels, {} triangles in, {} drawn, {} fragments{bands}",
-                done.light, pass.map_size, pass.map_size, s.triangles_in, s.rasterized, s.fragments
+                "shadow map of light {}: {}, {} triangles in, {} drawn, {} fragments{bands}",
+                done.light,
+                pass.texels(),
+                s.triangles_in,
+                s.rasterized,
+                s.fragments
             )?;
         }
         let s = &r.forward;

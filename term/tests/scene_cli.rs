@@ -78,21 +78,21 @@ fn scene_file_errors_name_the_file_and_line_and_exit_non_zero() {
 }
 
 #[test]
-fn a_point_light_inside_the_scene_is_an_error_naming_the_light() {
+fn a_point_light_inside_the_scene_casts_through_a_cube_map() {
     let dir = tempfile::tempdir().unwrap();
     fs::write(
         dir.path().join("lamp.toml"),
         "[camera]\nposition = [0, 1, 4]\ntarget = [0, 0, 0]\nfov = 40\n\
-         [[lights]]\ntype = \"point\"\nposition = [0, 0.5, 0]\nshadows = true\n\
+         [[lights]]\ntype = \"point\"\nposition = [0, 0.5, 0.6]\nshadows = true\n\
          [[objects]]\nmesh = \"builtin:spot\"\n",
     )
     .unwrap();
-    let (code, _, stderr) = rastty(dir.path(), &["render", "lamp.toml", "--explain"]);
-    assert_eq!(code, Some(1));
-    assert!(
-        stderr.starts_with("rastty: error: lamp.toml: light 1 (point at [0, 0.5, 0]): cannot cast shadows"),
-        "{stderr}"
-    );
+    let (code, stdout, stderr) = rastty(dir.path(), &["render", "lamp.toml", "--explain"]);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(stdout.contains("shadow map of light 1 (point at [0, 0.5, 0.6]): 6 faces of 1024x1024 texels"), "{stdout}");
+    let (code, _, stderr) = rastty(dir.path(), &["render", "lamp.toml", "-o", "lamp.png", "--size", "64x48"]);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(dir.path().join("lamp.png").exists());
 }
 
 #[test]

@@ -9,8 +9,8 @@ use std::path::Path;
 
 use rastty::scene_file::{load, parse};
 use rastty::scene_render::{
-    AMBIENT_OCCLUSION, EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError,
-    SceneRenderer, render_scene_image,
+    AMBIENT_OCCLUSION, EffectToggles, MAX_CUBE_FACE, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderer,
+    render_scene_image,
 };
 use rastty_core::math::Vec3;
 use rastty_core::target::{Rgb888, Target};
@@ -290,20 +290,43 @@ fn dark_lights_are_dropped_and_said_to_be() {
     assert!(text.contains("unlit but ambient"), "{text}");
 }
 
+/// A lamp among the objects (inside the sphere around them) casts shadows through a cube map: six faces of the
+/// frame's map size, at most `MAX_CUBE_FACE`; the shadows only take light away, Spot's lands on the floor, and
+/// bands of any height (faces split across threads) draw the same frame.
 #[test]
-fn a_shadow_casting_point_light_inside_the_scene_is_an_error_naming_it() {
-    let scene = from_text(
-        "[camera]\nposition = [0, 1, 4]\ntarget = [0, 0, 0]\nfov = 40\n\
-         [[lights]]\ntype = \"directional\"\ndirection = [0, -1, 0]\n\
-         [[lights]]\ntype = \"point\"\nposition = [0.1, 0.2, 0]\nshadows = true\n\
-         [[objects]]\nmesh = \"builtin:spot\"\n",
-    );
-    let error = ScenePlan::new(&scene, &scene.camera(), (64, 64), &PlanOptions::default()).unwrap_err();
-    assert!(matches!(error, SceneRenderError::Shadow { .. }));
-    let text = error.to_string();
-    assert!(text.starts_with("light 2 (point at [0.1, 0.2, 0]): cannot cast shadows from inside"), "{text}");
-    // Without shadows, the same light is fine.
-    assert!(ScenePlan::new(&scene, &scene.camera(), (64, 64), &without(SceneEffect::Shadows)).is_ok());
+fn a_shadow_casting_point_light_among_the_objects_gets_a_cube_map() {
+    let ground = root().join("assets/scenes/ground.obj");
+    let scene = from_text(&format!(
+        "ambient = [0.05, 0.05, 0.05]\n\
+         [camera]\nposition = [-2.2, 1.4, 3.0]\ntarget = [0, 0.5, 0]\nfov = 45\n\
+         [[lights]]\ntype = \"point\"\nposition = [0.9, 1.6, 0.8]\nshadows = true\n\
+         [[objects]]\nmesh = \"builtin:spot\"\ntranslate = [0, 0.737, 0]\n\
+         [[objects]]\nmesh = {:?}\n",
+        ground.to_str().unwrap()
+    ));
+    let bounds = scene.bounds();
+    assert!((Vec3::new(0.9, 1.6, 0.8) - bounds.centre).length() < bounds.radius, "the lamp is among the objects");
+    let shadowed = plan(&scene, &PlanOptions::default());
+    let pass = &shadowed.shadow_passes[0];
+    assert_eq!((pass.view.faces(), pass.map_size), (6, 512));
+    let text = shadowed.to_string();
+    assert!(text.contains("shadow map of light 1 (point at [0.9, 1.6, 0.8]): 6 faces of 512x512 texels"), "{text}");
+    let big = ScenePlan::new(&scene, &scene.camera(), (3000, 2000), &PlanOptions::default()).unwrap();
+    assert_eq!(big.shadow_passes[0].map_size, MAX_CUBE_FACE);
+
+    let lit = render_on_threads(&scene, (160, 120), &without(SceneEffect::Shadows), 1);
+    let one = render_on_threads(&scene, (160, 120), &PlanOptions::default(), 1);
+    let channels = |p: u32| [p >> 16 & 0xFF, p >> 8 & 0xFF, p & 0xFF];
+    let mut darker = 0;
+    for (s, l) in one.pixels.iter().zip(&lit.pixels) {
+        assert!(channels(*s).iter().zip(channels(*l)).all(|(s, l)| *s <= l), "a shadow added light");
+        darker += usize::from(s != l);
+    }
+    assert!(darker > 1000, "only {darker} pixels in shadow");
+    for threads in [2, 3] {
+        let many = render_on_threads(&scene, (160, 120), &PlanOptions::default(), threads);
+        assert!(many.pixels == one.pixels && many.depth_bits == one.depth_bits, "{threads} threads");
+    }
 }
 
 #[test]

@@ -6,6 +6,10 @@
 //! and then compares depths with a small constant bias. The offset removes shadow acne (a surface shadowing
 //! itself because one texel spans a range of depths) without the large depth bias that detaches shadows from
 //! their casters (peter-panning). `core/tests/shadows.rs` holds both limits.
+//!
+//! A directional light, and a point light outside the scene's bounds, see everything through one square map; a
+//! point light among the objects sees every direction through the six faces of a cube (`cube.rs`), stored one
+//! below the other as one map six sides high.
 
 use core::ops::Range;
 
@@ -17,21 +21,22 @@ use crate::shading::LightKind;
 use crate::shading::columns::{self, Column, Column3};
 use crate::target::{MAX_DIMENSION, NoColor, Target};
 
+mod cube;
 mod windows;
 
+use cube::CubeFaces;
+pub use cube::{CUBE_BORDER, CUBE_NEAR};
 pub use windows::{WindowRanges, window_ranges_band};
 
 /// Why a shadow map could not be set up.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ShadowError {
-    /// A point light inside (or on) the bounding sphere of what it lights: one map cannot see every direction
-    /// (that needs a cube of six).
-    LightInsideBounds,
     /// The bounds are empty (radius not positive) or not finite.
     Bounds,
     /// The light's camera could not be built.
     Camera(CameraError),
-    /// The map's side is 0 or above [`crate::target::MAX_DIMENSION`].
+    /// The map's side is 0 or above [`crate::target::MAX_DIMENSION`], or for a cube map not above
+    /// `2 * `[`CUBE_BORDER`].
     Size(u32),
     /// A band's rows are empty or leave the map.
     Rows {
@@ -39,9 +44,12 @@ pub enum ShadowError {
         start: u32,
         /// The row after its last.
         end: u32,
-        /// The map's side.
-        size: u32,
+        /// The map's rows: its side, or six sides for a cube map ([`ShadowView::rows`]).
+        height: u32,
     },
+    /// A cube map's filter windows of this radius would reach past the border of a face (at most
+    /// `CUBE_BORDER - 1`).
+    CubeFilter(u32),
     /// Window ranges ([`WindowRanges`]) made for another map size or filter radius than the map's.
     Windows {
         /// The map's side.
@@ -61,15 +69,17 @@ pub enum ShadowError {
 impl core::fmt::Display for ShadowError {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match self {
-            Self::LightInsideBounds => {
-                f.write_str("a point light inside the scene's bounds cannot cast shadows (that needs a cube map)")
-            }
             Self::Bounds => f.write_str("the shadow bounds are empty or not finite"),
             Self::Camera(e) => write!(f, "the light's camera: {e}"),
             Self::Size(s) => write!(f, "a shadow map of {s}x{s} texels is not supported"),
-            Self::Rows { start, end, size } => {
-                write!(f, "rows {start}..{end} are not a band of a map {size} texels high")
+            Self::Rows { start, end, height } => {
+                write!(f, "rows {start}..{end} are not a band of a map {height} texels high")
             }
+            Self::CubeFilter(radius) => write!(
+                f,
+                "a filter of radius {radius} reaches past the faces of a cube shadow map (at most {})",
+                CUBE_BORDER - 1
+            ),
             Self::Windows { size, radius } => {
                 write!(f, "the window ranges are not those of a {size}x{size} map filtered with radius {radius}")
             }
@@ -124,22 +134,36 @@ enum TexelSize {
     Perspective { eye: Vec3, per_distance: f32 },
 }
 
+/// How a shadow map projects the world: through one square, or through the six faces of a cube.
+// The cube's six matrices make it 400 bytes to the square's 64: without `alloc` there is nothing to box them in,
+// and a view is built once per map and then borrowed by its lookups.
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Projection {
+    /// World space to the light's clip space.
+    Square(Mat4),
+    /// Six views around a point light.
+    Cube(CubeFaces),
+}
+
 /// A light's camera for its shadow map: what it projects, and how large a texel is in the world.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ShadowView {
-    /// World space to the light's clip space.
-    pub clip_from_world: Mat4,
+    projection: Projection,
     texel: TexelSize,
     size: u32,
 }
 
 impl ShadowView {
-    /// The view of a `size x size` map fitted to `bounds` as seen from a light: an orthographic box around the
-    /// sphere for a directional light, and for a point light the narrowest perspective cone that holds it.
+    /// The view of a map fitted to `bounds` as seen from a light: for a directional light an orthographic box
+    /// around the sphere, `size x size` texels; for a point light outside the sphere the narrowest perspective
+    /// cone that holds it, `size x size` texels; for a point light inside (or on) it a cube of six `size x size`
+    /// faces around the light, each seeing as far as the sphere's farthest point.
     ///
     /// # Errors
-    /// [`ShadowError::Bounds`] for empty or non-finite bounds, [`ShadowError::LightInsideBounds`] for a point light
-    /// not outside the sphere, [`ShadowError::Camera`] if the light's direction or position is not usable.
+    /// [`ShadowError::Bounds`] for empty or non-finite bounds, [`ShadowError::Size`] for a side of 0 or above
+    /// [`MAX_DIMENSION`] (and for a cube not above `2 *` [`CUBE_BORDER`]), [`ShadowError::Camera`] if the light's
+    /// direction or position is not usable.
     pub fn fit(kind: LightKind, bounds: Bounds, size: u32) -> Result<Self, ShadowError> {
         let Bounds { centre, radius: r } = bounds;
         if !(r > 0.0 && r.is_finite() && centre.is_finite()) {
@@ -155,13 +179,22 @@ impl ShadowView {
                 let view = look_at(eye, centre, Vec3::Y).map_err(ShadowError::Camera)?;
                 let projection = orthographic(-r, r, -r, r, r, 3.0 * r).map_err(ShadowError::Camera)?;
                 let texel = TexelSize::Constant(2.0 * r / size_f);
-                Ok(Self { clip_from_world: projection * view, texel, size })
+                Ok(Self { projection: Projection::Square(projection * view), texel, size })
             }
             LightKind::Point { position } => {
                 let d = (centre - position).length();
-                let outside = d > r * 1.001; // false for NaN too
+                if !d.is_finite() {
+                    return Err(ShadowError::Camera(CameraError::NotFinite));
+                }
+                let outside = d > r * 1.001;
                 if !outside {
-                    return Err(ShadowError::LightInsideBounds);
+                    if size <= 2 * CUBE_BORDER {
+                        return Err(ShadowError::Size(size));
+                    }
+                    let cube = CubeFaces::new(position, d + r, size).map_err(ShadowError::Camera)?;
+                    let per_distance = 2.0 * cube.tan_half / size_f;
+                    let texel = TexelSize::Perspective { eye: position, per_distance };
+                    return Ok(Self { projection: Projection::Cube(cube), texel, size });
                 }
                 let half = float::asin(r / d);
                 let view = look_at(position, centre, Vec3::Y).map_err(ShadowError::Camera)?;
@@ -169,14 +202,45 @@ impl ShadowView {
                 let projection = perspective(2.0 * half, 1.0, near, d + r).map_err(ShadowError::Camera)?;
                 let per_distance = 2.0 * float::tan(half) / size_f;
                 let texel = TexelSize::Perspective { eye: position, per_distance };
-                Ok(Self { clip_from_world: projection * view, texel, size })
+                Ok(Self { projection: Projection::Square(projection * view), texel, size })
             }
         }
     }
 
-    /// Side of the map in texels.
+    /// Side of the map (of each face of a cube map) in texels.
     pub fn size(&self) -> u32 {
         self.size
+    }
+
+    /// The number of square faces: 1, or 6 for a cube map.
+    pub fn faces(&self) -> u32 {
+        match self.projection {
+            Projection::Square(_) => 1,
+            Projection::Cube(_) => 6,
+        }
+    }
+
+    /// The map's rows: its faces stored one below the other, `size` rows each (face `f` in rows
+    /// `f * size..(f + 1) * size`). Its depth buffer holds `size * rows` values.
+    pub fn rows(&self) -> u32 {
+        self.faces() * self.size
+    }
+
+    /// World space to the clip space of face `face`, or `None` past the last face.
+    pub fn clip_from_world(&self, face: u32) -> Option<Mat4> {
+        match &self.projection {
+            Projection::Square(m) => (face == 0).then_some(*m),
+            Projection::Cube(cube) => cube.clip_from_world.get(face as usize).copied(),
+        }
+    }
+
+    /// The face that world point `p` is looked up in.
+    #[cfg(test)]
+    fn face_of(&self, p: Vec3) -> usize {
+        match &self.projection {
+            Projection::Square(_) => 0,
+            Projection::Cube(cube) => cube.face(p).0,
+        }
     }
 
     /// World size of a map texel at `p`.
@@ -215,23 +279,28 @@ impl Shader for CasterShader {
     }
 }
 
-/// The depth pass of a shadow map: draws `mesh` (placed by `model`) into `depth`, the map's `size x size`
-/// buffer, as the light sees it. Both faces cast shadows. Clear the buffer to 1.0 first
-/// ([`clear_shadow_depth`]).
+/// The depth pass of a shadow map: draws `mesh` (placed by `model`) into `depth`, the map's `size * rows`
+/// buffer ([`ShadowView::rows`]), as the light sees it, into every face. Both sides of a triangle cast shadows.
+/// Clear the buffer to 1.0 first ([`clear_shadow_depth`]).
 ///
 /// # Errors
-/// [`ShadowError::Buffer`] when `depth` does not hold `size * size` values.
+/// [`ShadowError::Buffer`] when `depth` does not hold `size * rows` values.
 pub fn draw_shadow_caster(
     view: &ShadowView,
     depth: &mut [f32],
     mesh: &Mesh<'_>,
     model: &Mat4,
 ) -> Result<DrawStats, ShadowError> {
-    draw_shadow_caster_band(view, depth, 0..view.size, mesh, model)
+    draw_shadow_caster_band(view, depth, 0..view.rows(), mesh, model)
 }
 
 /// [`draw_shadow_caster`] into rows `rows` of the map only: `depth` holds `size * rows.len()` values, row
-/// `rows.start` first. Bands drawn separately (on separate threads, say) make exactly the map drawn whole.
+/// `rows.start` first. Bands drawn separately (on separate threads, say) make exactly the map drawn whole. A band
+/// may span several faces of a cube map.
+///
+/// A cube face draws the mesh only if its box (the corners of its positions' bounding box, placed by `model`)
+/// may reach the face's view: a face that sees none of it counts its triangles as outside and transforms no
+/// vertex. The statistics add up every face drawn in the band.
 ///
 /// # Errors
 /// [`ShadowError::Rows`] when `rows` is empty or leaves the map; [`ShadowError::Buffer`] when `depth` does not
@@ -243,19 +312,75 @@ pub fn draw_shadow_caster_band(
     mesh: &Mesh<'_>,
     model: &Mat4,
 ) -> Result<DrawStats, ShadowError> {
-    let size = view.size;
-    if rows.is_empty() || rows.end > size {
-        return Err(ShadowError::Rows { start: rows.start, end: rows.end, size });
+    let (size, height) = (view.size, view.rows());
+    if rows.is_empty() || rows.end > height {
+        return Err(ShadowError::Rows { start: rows.start, end: rows.end, height });
     }
     let expected = size as usize * rows.len();
-    let actual = depth.len();
-    let Ok(mut target) = Target::band(NoColor, depth, size, size, rows) else {
-        return Err(ShadowError::Buffer { expected, actual });
+    if depth.len() != expected {
+        return Err(ShadowError::Buffer { expected, actual: depth.len() });
+    }
+    let corners = match view.projection {
+        Projection::Square(_) => None,
+        Projection::Cube(_) => box_corners(mesh.positions()),
     };
-    let shader = CasterShader { clip_from_object: view.clip_from_world * *model };
     let state = DrawState { cull: Cull::None, ..DrawState::DEFAULT };
-    // The caster reads positions only and the state is valid, so the pipeline has nothing to refuse.
-    Ok(draw(&mut target, mesh, &shader, &state).unwrap_or_default())
+    let mut stats = DrawStats::default();
+    let mut rest = depth;
+    let mut row = rows.start;
+    while row < rows.end {
+        let face = row / size;
+        let face_rows = row - face * size..(rows.end - face * size).min(size);
+        let length = size as usize * face_rows.len();
+        let (band, after) = core::mem::take(&mut rest).split_at_mut(length);
+        (rest, row) = (after, face * size + face_rows.end);
+        let Some(clip_from_world) = view.clip_from_world(face) else { break };
+        let clip_from_object = clip_from_world * *model;
+        if corners.is_some_and(|corners| !may_reach_view(&corners, &clip_from_object)) {
+            let triangles = mesh.triangle_count() as u64;
+            stats += DrawStats { triangles_in: triangles, outside: triangles, ..DrawStats::default() };
+            continue;
+        }
+        // The buffer's length was checked, so each face's band is valid.
+        let Ok(mut target) = Target::band(NoColor, band, size, size, face_rows) else {
+            return Err(ShadowError::Buffer { expected: length, actual: length });
+        };
+        // The caster reads positions only and the state is valid, so the pipeline has nothing to refuse.
+        stats += draw(&mut target, mesh, &CasterShader { clip_from_object }, &state).unwrap_or_default();
+    }
+    Ok(stats)
+}
+
+/// The eight corners of the bounding box of `positions`, or `None` when there are none or one is not finite.
+fn box_corners(positions: &[Vec3]) -> Option<[Vec3; 8]> {
+    let first = *positions.first()?;
+    let (mut lo, mut hi, mut finite) = (first, first, true);
+    for &p in positions {
+        lo = Vec3::new(float::min(lo.x, p.x), float::min(lo.y, p.y), float::min(lo.z, p.z));
+        hi = Vec3::new(float::max(hi.x, p.x), float::max(hi.y, p.y), float::max(hi.z, p.z));
+        finite &= p.is_finite();
+    }
+    if !finite {
+        return None;
+    }
+    Some(core::array::from_fn(|i| {
+        let pick = |bit: usize, lo: f32, hi: f32| if i & bit == 0 { lo } else { hi };
+        Vec3::new(pick(1, lo.x, hi.x), pick(2, lo.y, hi.y), pick(4, lo.z, hi.z))
+    }))
+}
+
+/// False when all eight `corners`, placed by `clip_from_object`, lie beyond one plane of the view volume
+/// (`-w <= x, y <= w`, `0 <= z <= w`): the box, and so every triangle inside it, is out of view. True otherwise,
+/// and for any NaN.
+fn may_reach_view(corners: &[Vec3; 8], clip_from_object: &Mat4) -> bool {
+    let clip = corners.map(|c| clip_from_object.project_point(c));
+    let all = |outside: fn(&Vec4) -> bool| clip.iter().all(outside);
+    !(all(|c| c.x < -c.w)
+        || all(|c| c.x > c.w)
+        || all(|c| c.y < -c.w)
+        || all(|c| c.y > c.w)
+        || all(|c| c.z < 0.0)
+        || all(|c| c.z > c.w))
 }
 
 /// Sets every depth of a shadow map to the far plane (1.0): nothing casts a shadow yet.
@@ -279,11 +404,15 @@ impl<'a> ShadowMap<'a> {
     /// Salesin and Cook, "Rendering Antialiased Shadows with Depth Maps", SIGGRAPH 1987).
     ///
     /// # Errors
-    /// [`ShadowError::Buffer`] when `depth` does not hold `size * size` values.
+    /// [`ShadowError::Buffer`] when `depth` does not hold `size * rows` values ([`ShadowView::rows`]);
+    /// [`ShadowError::CubeFilter`] for a cube map whose filter would reach past a face's border.
     pub fn new(view: ShadowView, depth: &'a [f32], bias: ShadowBias, pcf_radius: u32) -> Result<Self, ShadowError> {
-        let expected = view.size as usize * view.size as usize;
+        let expected = view.size as usize * view.rows() as usize;
         if depth.len() != expected {
             return Err(ShadowError::Buffer { expected, actual: depth.len() });
+        }
+        if view.faces() > 1 && pcf_radius >= CUBE_BORDER {
+            return Err(ShadowError::CubeFilter(pcf_radius));
         }
         Ok(Self { view, depth, bias, pcf_radius, windows: None })
     }
@@ -293,9 +422,10 @@ impl<'a> ShadowMap<'a> {
     /// any point is the same, bit for bit.
     ///
     /// # Errors
-    /// [`ShadowError::Windows`] when the ranges are for another map size or filter radius.
+    /// [`ShadowError::Windows`] when the ranges are for another map size, number of faces or filter radius.
     pub fn with_windows(self, windows: WindowRanges<'a>) -> Result<Self, ShadowError> {
-        if windows.size() != self.view.size || windows.radius() != self.pcf_radius {
+        let faces = windows.faces() == self.view.faces();
+        if windows.size() != self.view.size || windows.radius() != self.pcf_radius || !faces {
             return Err(ShadowError::Windows { size: self.view.size, radius: self.pcf_radius });
         }
         Ok(Self { windows: Some(windows), ..self })
@@ -306,7 +436,7 @@ impl<'a> ShadowMap<'a> {
         self.pcf_radius
     }
 
-    /// Side of the map in texels.
+    /// Side of the map (of each face of a cube map) in texels.
     pub fn size(&self) -> u32 {
         self.view.size
     }
@@ -316,19 +446,15 @@ impl<'a> ShadowMap<'a> {
     #[inline(always)]
     pub fn light_reaching(&self, p: Vec3, n: Vec3, n_dot_l: f32) -> f32 {
         let texel = self.view.texel_at(p);
-        let (in_front, tx, ty, z) = if self.affine() {
-            self.lookup::<true>(p, n, n_dot_l, texel)
-        } else {
-            self.lookup::<false>(p, n, n_dot_l, texel)
-        };
+        let (in_front, at) = self.lookup(p, n, n_dot_l, texel);
         if !in_front {
             return 1.0;
         }
         let lit = match self.pcf_radius {
-            0 => self.lit_taps::<0>(tx, ty, z),
-            1 => self.lit_taps::<1>(tx, ty, z),
-            2 => self.lit_taps::<2>(tx, ty, z),
-            r => self.lit_taps_any(r as i32, tx, ty, z),
+            0 => self.lit_taps::<0>(at),
+            1 => self.lit_taps::<1>(at),
+            2 => self.lit_taps::<2>(at),
+            r => self.lit_taps_any(r as i32, at),
         };
         self.share(lit)
     }
@@ -356,56 +482,84 @@ impl<'a> ShadowMap<'a> {
             }
         };
         let (mut tx, mut ty, mut z) = ([0i32; BATCH_SIZE], [0i32; BATCH_SIZE], [0.0; BATCH_SIZE]);
+        let mut face = [0usize; BATCH_SIZE];
         let mut in_front = [false; BATCH_SIZE];
-        // One decision per batch: an orthographic map (a directional light's) needs no division. The two loops
-        // are written out: a helper returning the four columns made the batch 7% slower (copies of the columns).
-        if self.affine() {
-            for i in 0..lanes(len) {
-                (in_front[i], tx[i], ty[i], z[i]) = self.lookup::<true>(p.get(i), n.get(i), n_dot_l[i], texel[i]);
+        // One decision per batch: an orthographic map (a directional light's) needs no division, a square one no
+        // choice of face. The loops are written out: a helper returning the columns made the batch 7% slower
+        // (copies of the columns).
+        match &self.view.projection {
+            Projection::Square(m) if m.is_affine() => {
+                for i in 0..lanes(len) {
+                    (in_front[i], face[i], tx[i], ty[i], z[i]) =
+                        self.project::<true>(p.get(i), n.get(i), n_dot_l[i], texel[i], |_| (0, m));
+                }
             }
-        } else {
-            for i in 0..lanes(len) {
-                (in_front[i], tx[i], ty[i], z[i]) = self.lookup::<false>(p.get(i), n.get(i), n_dot_l[i], texel[i]);
+            Projection::Square(m) => {
+                for i in 0..lanes(len) {
+                    (in_front[i], face[i], tx[i], ty[i], z[i]) =
+                        self.project::<false>(p.get(i), n.get(i), n_dot_l[i], texel[i], |_| (0, m));
+                }
+            }
+            Projection::Cube(cube) => {
+                for i in 0..lanes(len) {
+                    (in_front[i], face[i], tx[i], ty[i], z[i]) =
+                        self.project::<false>(p.get(i), n.get(i), n_dot_l[i], texel[i], |q| cube.face(q));
+                }
             }
         }
         // The radius is chosen once for the batch, not per lane.
         macro_rules! count {
             ($lit:expr) => {
                 for i in 0..len {
-                    share[i] = if in_front[i] { self.share($lit(tx[i], ty[i], z[i])) } else { 1.0 };
+                    let at = Tap { face: face[i], tx: tx[i], ty: ty[i], z: z[i] };
+                    share[i] = if in_front[i] { self.share($lit(at)) } else { 1.0 };
                 }
             };
         }
         match self.pcf_radius {
-            0 => count!(|x, y, z| self.lit_taps::<0>(x, y, z)),
-            1 => count!(|x, y, z| self.lit_taps::<1>(x, y, z)),
-            2 => count!(|x, y, z| self.lit_taps::<2>(x, y, z)),
-            r => count!(|x, y, z| self.lit_taps_any(r as i32, x, y, z)),
+            0 => count!(|at| self.lit_taps::<0>(at)),
+            1 => count!(|at| self.lit_taps::<1>(at)),
+            2 => count!(|at| self.lit_taps::<2>(at)),
+            r => count!(|at| self.lit_taps_any(r as i32, at)),
         }
     }
 
-    /// True when the light's projection is orthographic (a directional light's): every finite point has `w = 1`.
+    /// Where the lookup of `p` (unit geometric normal `n`, `n . l` = `n_dot_l`, a map texel `texel` world units
+    /// wide there) reads the map: whether it is in front of the light, and the face, texel and depth to compare.
     #[inline(always)]
-    fn affine(&self) -> bool {
-        self.view.clip_from_world.is_affine()
+    fn lookup(&self, p: Vec3, n: Vec3, n_dot_l: f32, texel: f32) -> (bool, Tap) {
+        let (in_front, face, tx, ty, z) = match &self.view.projection {
+            Projection::Square(m) if m.is_affine() => self.project::<true>(p, n, n_dot_l, texel, |_| (0, m)),
+            Projection::Square(m) => self.project::<false>(p, n, n_dot_l, texel, |_| (0, m)),
+            Projection::Cube(cube) => self.project::<false>(p, n, n_dot_l, texel, |q| cube.face(q)),
+        };
+        (in_front, Tap { face, tx, ty, z })
     }
 
-    /// Where the lookup of `p` (unit geometric normal `n`, `n . l` = `n_dot_l`, a map texel `texel` world units
-    /// wide there) reads the map: whether it is in front of the light, the texel `(tx, ty)` and the depth `z` to
-    /// compare.
+    /// [`Self::lookup`] with the face and its projection that `pick` gives for the moved point: whether it is in
+    /// front of the light, the face, the texel `(tx, ty)` and the depth `z` to compare.
     ///
-    /// `AFFINE` (only for a map whose [`Self::affine`] holds) skips the perspective division: `w` is then exactly 1
-    /// for a finite point (`0 * x + 0 * y + 0 * z + 1`), so dividing by it changes nothing, and a point with a
-    /// non-finite coordinate has `w` NaN and is not in front either way.
+    /// `AFFINE` (only for an orthographic projection, a directional light's) skips the perspective division: `w`
+    /// is then exactly 1 for a finite point (`0 * x + 0 * y + 0 * z + 1`), so dividing by it changes nothing, and a
+    /// point with a non-finite coordinate has `w` NaN and is not in front either way.
     #[inline(always)]
-    fn lookup<const AFFINE: bool>(&self, p: Vec3, n: Vec3, n_dot_l: f32, texel: f32) -> (bool, i32, i32, f32) {
+    fn project<'m, const AFFINE: bool>(
+        &self,
+        p: Vec3,
+        n: Vec3,
+        n_dot_l: f32,
+        texel: f32,
+        pick: impl Fn(Vec3) -> (usize, &'m Mat4),
+    ) -> (bool, usize, i32, i32, f32) {
         let b = &self.bias;
         // A PCF tap r texels away meets the receiver's own depth up to r texels' slope nearer the light: the
         // offset grows with the filter's reach.
         let reach = (1 + self.pcf_radius) as f32;
         let slope = 1.0 - float::clamp(n_dot_l, 0.0, 1.0);
         let offset = texel * (b.normal_offset + b.slope_offset * slope) * reach;
-        let clip = self.view.clip_from_world.project_point(p + n * offset);
+        let moved = p + n * offset;
+        let (face, clip_from_world) = pick(moved);
+        let clip = clip_from_world.project_point(moved);
         let in_front = clip.w > 0.0; // false for NaN too
         let inv_w = if AFFINE { 1.0 } else { 1.0 / clip.w };
         let half = self.view.size as f32 * 0.5;
@@ -415,7 +569,7 @@ impl<'a> ShadowMap<'a> {
         let ty = float::floor_to_i32_clamped((1.0 - clip.y * inv_w) * half);
         // A point beyond the map's far plane compares as on it: lit wherever nothing was drawn.
         let z = float::min(clip.z * inv_w, 1.0) - b.depth;
-        (in_front, tx, ty, z)
+        (in_front, face, tx, ty, z)
     }
 
     /// The share of the light that `lit` of the filter's taps let through.
@@ -426,27 +580,29 @@ impl<'a> ShadowMap<'a> {
         if lit == taps { 1.0 } else { lit as f32 / taps as f32 }
     }
 
-    /// How many of the `(2R + 1)^2` texels around `(tx, ty)` are at or beyond depth `z` (texels outside the map
-    /// count as lit). A window wholly inside the map, nearly every lookup, reads its rows as slices with no test
+    /// How many of the `(2R + 1)^2` texels around the tap's are at or beyond its depth (texels outside its face
+    /// count as lit). A window wholly inside the face, nearly every lookup, reads its rows as slices with no test
     /// per texel; the loops have constant bounds and unroll.
     #[inline(always)]
-    fn lit_taps<const R: i32>(&self, tx: i32, ty: i32, z: f32) -> u32 {
-        if let Some(lit) = self.decided(tx, ty, z) {
+    fn lit_taps<const R: i32>(&self, at: Tap) -> u32 {
+        if let Some(lit) = self.decided(at) {
             return lit;
         }
+        let Tap { tx, ty, z, .. } = at;
         let size = self.view.size as i32;
         let inside = tx >= R && ty >= R && tx < size - R && ty < size - R;
         if !inside {
-            return self.count_taps(R, tx, ty, z);
+            return self.count_taps(R, at);
         }
+        let depth = self.face_depth(at.face);
         let side = (2 * R + 1) as usize;
         let first = ((ty - R) * size + tx - R) as usize;
         let mut lit = 0u32;
         // Rows counted with a constant bound (not an inclusive range of rows), so the loop unrolls.
         for row in 0..side {
             let start = first + row * size as usize;
-            // In the map (checked above); `get` keeps the lookup panic-free regardless.
-            if let Some(row) = self.depth.get(start..start + side) {
+            // In the face (checked above); `get` keeps the lookup panic-free regardless.
+            if let Some(row) = depth.get(start..start + side) {
                 for &stored in row {
                     lit += u32::from(z <= stored);
                 }
@@ -456,33 +612,55 @@ impl<'a> ShadowMap<'a> {
     }
 
     /// [`Self::lit_taps`] for any radius and any window, texel by texel.
-    fn lit_taps_any(&self, r: i32, tx: i32, ty: i32, z: f32) -> u32 {
-        if let Some(lit) = self.decided(tx, ty, z) {
+    fn lit_taps_any(&self, r: i32, at: Tap) -> u32 {
+        if let Some(lit) = self.decided(at) {
             return lit;
         }
-        self.count_taps(r, tx, ty, z)
+        self.count_taps(r, at)
     }
 
     /// What the window's depth range alone tells of [`Self::lit_taps`], if the map has ranges.
     #[inline(always)]
-    fn decided(&self, tx: i32, ty: i32, z: f32) -> Option<u32> {
+    fn decided(&self, at: Tap) -> Option<u32> {
         let side = 2 * self.pcf_radius + 1;
-        self.windows?.decided(tx, ty, z, side * side)
+        self.windows?.decided(at.face, at.tx, at.ty, at.z, side * side)
     }
 
     /// [`Self::lit_taps_any`] without the ranges: every texel of the window read.
-    fn count_taps(&self, r: i32, tx: i32, ty: i32, z: f32) -> u32 {
+    fn count_taps(&self, r: i32, at: Tap) -> u32 {
+        let Tap { tx, ty, z, .. } = at;
+        let depth = self.face_depth(at.face);
         let size = self.view.size as i32;
         let mut lit = 0u32;
         for y in ty - r..=ty + r {
             for x in tx - r..=tx + r {
                 let inside = x >= 0 && y >= 0 && x < size && y < size;
-                let stored = if inside { self.depth[(y * size + x) as usize] } else { 1.0 };
+                let stored = if inside { depth.get((y * size + x) as usize).copied().unwrap_or(1.0) } else { 1.0 };
                 lit += u32::from(!inside || z <= stored);
             }
         }
         lit
     }
+
+    /// The depths of face `face` (all of a square map's).
+    #[inline(always)]
+    fn face_depth(&self, face: usize) -> &'a [f32] {
+        let texels = self.view.size as usize * self.view.size as usize;
+        self.depth.get(face * texels..(face + 1) * texels).unwrap_or(&[])
+    }
+}
+
+/// Where one lookup reads a shadow map.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+struct Tap {
+    /// The face (0 for a square map).
+    face: usize,
+    /// The texel's column in its face.
+    tx: i32,
+    /// The texel's row in its face.
+    ty: i32,
+    /// The depth the texels are compared with.
+    z: f32,
 }
 
 #[cfg(test)]
@@ -508,11 +686,12 @@ mod tests {
             for ty in -3..SIZE as i32 + 3 {
                 for tx in -3..SIZE as i32 + 3 {
                     for z in [0.0, 0.3, 0.5, 0.99] {
-                        let expected = map.lit_taps_any(radius as i32, tx, ty, z);
+                        let at = Tap { face: 0, tx, ty, z };
+                        let expected = map.lit_taps_any(radius as i32, at);
                         let unrolled = match radius {
-                            0 => map.lit_taps::<0>(tx, ty, z),
-                            1 => map.lit_taps::<1>(tx, ty, z),
-                            2 => map.lit_taps::<2>(tx, ty, z),
+                            0 => map.lit_taps::<0>(at),
+                            1 => map.lit_taps::<1>(at),
+                            2 => map.lit_taps::<2>(at),
                             _ => expected,
                         };
                         assert_eq!(unrolled, expected, "radius {radius} at ({tx}, {ty}), z {z}");
@@ -546,15 +725,16 @@ mod tests {
             for ty in -4..SIZE as i32 + 4 {
                 for tx in -4..SIZE as i32 + 4 {
                     for z in zs {
-                        let expected = plain.count_taps(radius as i32, tx, ty, z);
+                        let at = Tap { face: 0, tx, ty, z };
+                        let expected = plain.count_taps(radius as i32, at);
                         let counted = match radius {
-                            0 => ranged.lit_taps::<0>(tx, ty, z),
-                            1 => ranged.lit_taps::<1>(tx, ty, z),
-                            2 => ranged.lit_taps::<2>(tx, ty, z),
-                            r => ranged.lit_taps_any(r as i32, tx, ty, z),
+                            0 => ranged.lit_taps::<0>(at),
+                            1 => ranged.lit_taps::<1>(at),
+                            2 => ranged.lit_taps::<2>(at),
+                            r => ranged.lit_taps_any(r as i32, at),
                         };
                         assert_eq!(counted, expected, "radius {radius} at ({tx}, {ty}), z {z}");
-                        match ranged.decided(tx, ty, z) {
+                        match ranged.decided(at) {
                             Some(0) => none += 1,
                             Some(_) => all += 1,
                             None => {}
@@ -580,41 +760,44 @@ mod tests {
         let to_light = Vec3::new(-0.4, 0.8, 0.45).normalize_or_zero();
         let view = ShadowView::fit(LightKind::Directional { to_light }, bounds, 64).unwrap();
         let map = ShadowMap::new(view, &depth, ShadowBias::DEFAULT, 1).unwrap();
-        assert!(map.affine());
+        let Projection::Square(m) = &view.projection else { panic!("a directional light's map is square") };
+        assert!(m.is_affine());
         let point = ShadowView::fit(LightKind::Point { position: Vec3::new(0.0, 5.0, 0.0) }, bounds, 64).unwrap();
-        assert!(!ShadowMap::new(point, &depth, ShadowBias::DEFAULT, 1).unwrap().affine());
+        assert!(matches!(point.projection, Projection::Square(m) if !m.is_affine()));
         let values = [0.0, -0.0, 0.37, -1.9, 2.5, 1e-30, -3e7, 1e30, f32::INFINITY, f32::NEG_INFINITY, f32::NAN];
-        let bits = |(f, x, y, z): (bool, i32, i32, f32)| (f, x, y, z.to_bits());
+        let bits = |(f, face, x, y, z): (bool, usize, i32, i32, f32)| (f, face, x, y, z.to_bits());
         for (i, &a) in values.iter().enumerate() {
             for &b in &values {
                 let p = Vec3::new(a, b, values[(i * 7 + 3) % values.len()]);
                 let n = Vec3::new(0.0, 1.0, 0.0);
                 for n_dot_l in [-1.0, 0.0, 0.3, 1.0] {
                     let texel = view.texel_at(p);
-                    let divided = map.lookup::<false>(p, n, n_dot_l, texel);
+                    let divided = map.project::<false>(p, n, n_dot_l, texel, |_| (0, m));
                     let (in_front, ..) = divided;
                     if in_front {
-                        assert_eq!(bits(map.lookup::<true>(p, n, n_dot_l, texel)), bits(divided), "{p:?}");
+                        assert_eq!(bits(map.project::<true>(p, n, n_dot_l, texel, |_| (0, m))), bits(divided), "{p:?}");
                     } else {
-                        assert!(!map.lookup::<true>(p, n, n_dot_l, texel).0, "{p:?}");
+                        assert!(!map.project::<true>(p, n, n_dot_l, texel, |_| (0, m)).0, "{p:?}");
                     }
                 }
             }
         }
     }
 
-    /// The lane-wise lookup gives bit for bit the scalar lookup's share, for directional and point lights, every
-    /// filter radius, maps with and without window ranges, points in front of and behind the light, and lanes
-    /// past the batch's length left alone.
+    /// The lane-wise lookup gives bit for bit the scalar lookup's share, for directional and point lights (outside
+    /// the bounds, and inside them with a cube map), every filter radius, maps with and without window ranges,
+    /// points in front of and behind the light, and lanes past the batch's length left alone.
     #[test]
     #[allow(clippy::needless_range_loop)] // lanes: one index into every column
     fn lanes_look_up_what_the_scalar_lookup_does() {
         const SIZE: u32 = 16;
+        const CUBE: usize = (6 * SIZE * SIZE) as usize;
         let bounds = Bounds { centre: Vec3::ZERO, radius: 1.0 };
-        let depth: [f32; (SIZE * SIZE) as usize] = core::array::from_fn(|i| 0.3 + ((i * 37) % 97) as f32 / 200.0);
+        let all: [f32; CUBE] = core::array::from_fn(|i| 0.3 + ((i * 37) % 97) as f32 / 200.0);
         let kinds = [
             LightKind::Directional { to_light: Vec3::new(0.3, 0.9, 0.2).normalize_or_zero() },
             LightKind::Point { position: Vec3::new(0.5, 4.0, 1.0) },
+            LightKind::Point { position: Vec3::new(0.1, -0.2, 0.15) },
         ];
         let (mut p, mut n, mut n_dot_l) = (Column3::ZERO, Column3::ZERO, [0.0; BATCH_SIZE]);
         for i in 0..BATCH_SIZE {
@@ -627,13 +810,17 @@ mod tests {
         }
         // Shadowed, lit and partly lit lanes all occur.
         let (mut dark, mut lit, mut partly) = (false, false, false);
+        let mut faces = [false; 6];
         for kind in kinds {
             let view = ShadowView::fit(kind, bounds, SIZE).unwrap();
+            let texels = (view.rows() * SIZE) as usize;
+            let depth = &all[..texels];
             for radius in 0..=3 {
-                let plain = ShadowMap::new(view, &depth, ShadowBias::DEFAULT, radius).unwrap();
-                let (mut near, mut far) = ([0.0; (SIZE * SIZE) as usize], [0.0; (SIZE * SIZE) as usize]);
-                super::window_ranges_band(&depth, SIZE, radius, 0..SIZE, &mut near, &mut far).unwrap();
-                let ranged = plain.with_windows(WindowRanges::new(&near, &far, SIZE, radius).unwrap()).unwrap();
+                let plain = ShadowMap::new(view, depth, ShadowBias::DEFAULT, radius).unwrap();
+                let (mut near, mut far) = ([0.0; CUBE], [0.0; CUBE]);
+                let (near, far) = (&mut near[..texels], &mut far[..texels]);
+                super::window_ranges_band(depth, SIZE, radius, 0..view.rows(), near, far).unwrap();
+                let ranged = plain.with_windows(WindowRanges::new(near, far, SIZE, radius).unwrap()).unwrap();
                 for (map, ranges) in [(plain, "without"), (ranged, "with")] {
                     let len = BATCH_SIZE - 3;
                     let mut share = [-1.0; BATCH_SIZE];
@@ -654,11 +841,37 @@ mod tests {
                         dark |= share[i] == 0.0;
                         lit |= share[i] == 1.0;
                         partly |= share[i] > 0.0 && share[i] < 1.0;
+                        faces[view.face_of(p.get(i))] |= view.faces() == 6;
                     }
                     assert!(share[len..].iter().all(|&s| s == -1.0), "lanes past the length are left alone");
                 }
             }
         }
         assert!(dark && lit && partly, "dark {dark}, lit {lit}, partly lit {partly}");
+        assert!(faces.iter().filter(|&&f| f).count() >= 3, "the cube's lookups reach faces {faces:?}");
+    }
+
+    /// A cube map's view: six faces, `6 * size` rows, each face's projection a perspective one; too small a face
+    /// and too wide a filter are refused.
+    #[test]
+    fn point_lights_inside_the_bounds_get_a_cube() {
+        let bounds = Bounds { centre: Vec3::ZERO, radius: 2.0 };
+        let inside = LightKind::Point { position: Vec3::new(0.5, 1.0, -0.5) };
+        let view = ShadowView::fit(inside, bounds, 32).unwrap();
+        assert_eq!((view.faces(), view.rows(), view.size()), (6, 192, 32));
+        assert!((0..6).all(|f| view.clip_from_world(f).is_some_and(|m| !m.is_affine())));
+        assert_eq!(view.clip_from_world(6), None);
+        let outside = ShadowView::fit(LightKind::Point { position: Vec3::new(0.0, 5.0, 0.0) }, bounds, 32).unwrap();
+        assert_eq!((outside.faces(), outside.rows()), (1, 32));
+        assert_eq!(ShadowView::fit(inside, bounds, 2 * CUBE_BORDER), Err(ShadowError::Size(2 * CUBE_BORDER)));
+        assert!(ShadowView::fit(inside, bounds, 2 * CUBE_BORDER + 1).is_ok());
+        let depth = [1.0; 6 * 32 * 32];
+        assert!(ShadowMap::new(view, &depth, ShadowBias::DEFAULT, CUBE_BORDER - 1).is_ok());
+        let wide = ShadowMap::new(view, &depth, ShadowBias::DEFAULT, CUBE_BORDER).err();
+        assert_eq!(wide, Some(ShadowError::CubeFilter(CUBE_BORDER)));
+        let short = ShadowMap::new(view, &depth[..32 * 32], ShadowBias::DEFAULT, 1).err();
+        assert_eq!(short, Some(ShadowError::Buffer { expected: 6 * 32 * 32, actual: 32 * 32 }));
+        let nan = LightKind::Point { position: Vec3::new(f32::NAN, 0.0, 0.0) };
+        assert_eq!(ShadowView::fit(nan, bounds, 32), Err(ShadowError::Camera(CameraError::NotFinite)));
     }
 }

@@ -9,43 +9,48 @@
 //!
 //! The ranges are computed once per map, after its depth pass, into two buffers the caller owns, band by band like
 //! the depth pass; they hold for any lookup, so a map with them gives the same light as one without, bit for bit.
+//! Each face of a cube map has its own windows, cut at its edges as a square map's are.
 
 use core::ops::Range;
 
 use super::ShadowError;
 use crate::math::float;
 
-/// The depth ranges of a map's windows: for texel `(x, y)`, the nearest and the farthest of the depths in the
-/// `(2r + 1)^2` texels around it that lie in the map. A window with a NaN depth has NaN for both (decides nothing),
-/// except that a window reaching past the map's edge has `+inf` for its farthest (some of its texels are lit,
-/// always).
+/// The depth ranges of a map's windows: for texel `(x, y)` of a face, the nearest and the farthest of the depths
+/// in the `(2r + 1)^2` texels around it that lie in the face. A window with a NaN depth has NaN for both (decides
+/// nothing), except that a window reaching past the face's edge has `+inf` for its farthest (some of its texels are
+/// lit, always).
 #[derive(Clone, Copy, Debug)]
 pub struct WindowRanges<'a> {
     near: &'a [f32],
     far: &'a [f32],
     size: u32,
+    faces: u32,
     radius: u32,
 }
 
 impl<'a> WindowRanges<'a> {
-    /// The ranges [`window_ranges_band`] wrote for every row of a `size x size` map with windows of radius
-    /// `radius`.
+    /// The ranges [`window_ranges_band`] wrote for every row of a map of `size x size` faces (one, or a cube's
+    /// six: `near` and `far` hold `size * size` values per face) with windows of radius `radius`.
     ///
     /// # Errors
-    /// [`ShadowError::Buffer`] when `near` or `far` does not hold `size * size` values.
+    /// [`ShadowError::Buffer`] when `near` and `far` do not hold the same whole number (at least one) of faces.
     pub fn new(near: &'a [f32], far: &'a [f32], size: u32, radius: u32) -> Result<Self, ShadowError> {
-        let expected = size as usize * size as usize;
-        for buffer in [near, far] {
-            if buffer.len() != expected {
-                return Err(ShadowError::Buffer { expected, actual: buffer.len() });
-            }
+        let faces = whole_faces(near.len(), size)?;
+        if far.len() != near.len() {
+            return Err(ShadowError::Buffer { expected: near.len(), actual: far.len() });
         }
-        Ok(Self { near, far, size, radius })
+        Ok(Self { near, far, size, faces, radius })
     }
 
-    /// Side of the map in texels.
+    /// Side of the map (of each of its faces) in texels.
     pub fn size(&self) -> u32 {
         self.size
+    }
+
+    /// The number of faces: 1, or 6 for a cube map.
+    pub fn faces(&self) -> u32 {
+        self.faces
     }
 
     /// The `r` of the `(2r + 1)^2` windows.
@@ -53,15 +58,17 @@ impl<'a> WindowRanges<'a> {
         self.radius
     }
 
-    /// How many of the window's `taps` texels around `(tx, ty)` are at or beyond depth `z`, when the range alone
-    /// tells: `taps` or 0. `None` when the texels must be read, and for a window centred outside the map.
+    /// How many of the window's `taps` texels around `(tx, ty)` of face `face` are at or beyond depth `z`, when
+    /// the range alone tells: `taps` or 0. `None` when the texels must be read, and for a window centred outside
+    /// the face.
     #[inline(always)]
-    pub(crate) fn decided(&self, tx: i32, ty: i32, z: f32, taps: u32) -> Option<u32> {
+    pub(crate) fn decided(&self, face: usize, tx: i32, ty: i32, z: f32, taps: u32) -> Option<u32> {
         let size = self.size as i32;
         if tx < 0 || ty < 0 || tx >= size || ty >= size {
             return None;
         }
-        let i = ty as usize * self.size as usize + tx as usize;
+        let side = self.size as usize;
+        let i = (face * side + ty as usize) * side + tx as usize;
         // `z <= near` holds for every texel at once (and fails for a NaN `z` or `near`), `z > far` for none.
         if z <= *self.near.get(i)? {
             Some(taps)
@@ -73,14 +80,25 @@ impl<'a> WindowRanges<'a> {
     }
 }
 
-/// Writes the depth ranges of the windows of radius `radius` centred in rows `rows` of the finished `size x size`
-/// map `depth` into `near` and `far`, which hold `size * rows.len()` values each, row `rows.start` first. Bands
-/// written separately (on separate threads, say) make exactly the ranges written whole; every band reads the whole
-/// map, so all of its depth pass must be done.
+/// The number of `size x size` faces in `values` values: an error unless it is a whole number, at least one.
+fn whole_faces(values: usize, size: u32) -> Result<u32, ShadowError> {
+    let face = size as usize * size as usize;
+    let faces = values.checked_div(face).unwrap_or(0);
+    if faces == 0 || faces * face != values {
+        return Err(ShadowError::Buffer { expected: face.max(1) * faces.max(1), actual: values });
+    }
+    u32::try_from(faces).map_err(|_| ShadowError::Buffer { expected: face, actual: values })
+}
+
+/// Writes the depth ranges of the windows of radius `radius` centred in rows `rows` of the finished map `depth`,
+/// of `size x size` faces stored one below the other (one, or a cube's six; [`super::ShadowView::rows`]), into
+/// `near` and `far`, which hold `size * rows.len()` values each, row `rows.start` first. Bands written separately
+/// (on separate threads, say) make exactly the ranges written whole; every band reads the whole of its faces, so
+/// all of the depth pass must be done. A band may span several faces.
 ///
 /// # Errors
 /// [`ShadowError::Rows`] when `rows` is empty or leaves the map; [`ShadowError::Buffer`] when `depth` does not hold
-/// `size * size` values or `near` or `far` not `size * rows.len()`.
+/// a whole number of faces or `near` or `far` not `size * rows.len()` values.
 pub fn window_ranges_band(
     depth: &[f32],
     size: u32,
@@ -89,22 +107,39 @@ pub fn window_ranges_band(
     near: &mut [f32],
     far: &mut [f32],
 ) -> Result<(), ShadowError> {
-    if rows.is_empty() || rows.end > size {
-        return Err(ShadowError::Rows { start: rows.start, end: rows.end, size });
+    let faces = whole_faces(depth.len(), size)?;
+    let height = faces * size;
+    if rows.is_empty() || rows.end > height {
+        return Err(ShadowError::Rows { start: rows.start, end: rows.end, height });
     }
     let side = size as usize;
-    let whole = side * side;
-    if depth.len() != whole {
-        return Err(ShadowError::Buffer { expected: whole, actual: depth.len() });
-    }
     let band = side * rows.len();
     for buffer in [&*near, &*far] {
         if buffer.len() != band {
             return Err(ShadowError::Buffer { expected: band, actual: buffer.len() });
         }
     }
+    let (mut near, mut far) = (near, far);
+    let mut row = rows.start;
+    while row < rows.end {
+        let face = row / size;
+        let face_rows = row - face * size..(rows.end - face * size).min(size);
+        let length = side * face_rows.len();
+        let (face_near, rest_near) = core::mem::take(&mut near).split_at_mut(length);
+        let (face_far, rest_far) = core::mem::take(&mut far).split_at_mut(length);
+        (near, far, row) = (rest_near, rest_far, face * size + face_rows.end);
+        let texels = side * side;
+        let face_depth = &depth[face as usize * texels..(face as usize + 1) * texels];
+        face_ranges(face_depth, side, radius, face_rows, face_near, face_far);
+    }
+    Ok(())
+}
+
+/// [`window_ranges_band`] for rows `rows` of one face, whose depths are `depth` (`side * side` values; `near` and
+/// `far` hold `side * rows.len()`, as checked by the caller).
+fn face_ranges(depth: &[f32], side: usize, radius: u32, rows: Range<u32>, near: &mut [f32], far: &mut [f32]) {
     // A radius beyond the map reaches every texel; clamping it keeps the index arithmetic in range.
-    let r = radius.min(size) as usize;
+    let r = (radius as usize).min(side);
     // A depth pass never leaves a NaN (its depth test fails for one), so the rows this band reads are checked once
     // and, without a NaN, widened with minNum and maxNum, which make plain SIMD stores; with one, with
     // comparisons that keep it.
@@ -134,7 +169,6 @@ pub fn window_ranges_band(
             far[side - r..].fill(f32::INFINITY);
         }
     }
-    Ok(())
 }
 
 /// Widens each texel's range in `near` and `far` by the texels of `row` within `r` columns of it, with `lower` and
@@ -254,7 +288,7 @@ mod tests {
         let (mut n, mut f) = ([0.0; 8], [0.0; 8]);
         assert_eq!(
             window_ranges_band(&depth, 4, 1, 3..5, &mut n, &mut f),
-            Err(ShadowError::Rows { start: 3, end: 5, size: 4 })
+            Err(ShadowError::Rows { start: 3, end: 5, height: 4 })
         );
         assert_eq!(
             window_ranges_band(&depth[..15], 4, 1, 0..2, &mut n, &mut f),
@@ -265,5 +299,6 @@ mod tests {
             Err(ShadowError::Buffer { expected: 4, actual: 8 })
         );
         assert_eq!(WindowRanges::new(&n, &f, 4, 1).err(), Some(ShadowError::Buffer { expected: 16, actual: 8 }));
+        assert_eq!(WindowRanges::new(&depth, &n, 4, 1).err(), Some(ShadowError::Buffer { expected: 16, actual: 8 }));
     }
 }

@@ -6,11 +6,10 @@ use rastty_core::camera::CameraError;
 use rastty_core::mesh::TangentError;
 use rastty_core::occlusion::OcclusionError;
 use rastty_core::shading::ShadingError;
-use rastty_core::shadow::{Bounds, ShadowError};
+use rastty_core::shadow::ShadowError;
 use rastty_core::target::TargetError;
 use rastty_core::texture::TextureError;
 
-use super::lights::{Number, Triple};
 use crate::escaped::Escaped;
 
 /// A scene that could not be planned or drawn. Its [`Display`](fmt::Display) is one line, with the text that
@@ -21,12 +20,10 @@ pub enum SceneRenderError {
     Empty,
     /// The camera settings do not make a camera.
     Camera(CameraError),
-    /// A light's shadow map could not be set up (a point light inside the scene's bounds).
+    /// A light's shadow map could not be set up (a light the core cannot place a camera at).
     Shadow {
         /// The light, as [`super::LightName`] gives it.
         light: String,
-        /// The scene's bounding sphere.
-        bounds: Bounds,
         /// What the core said.
         error: ShadowError,
     },
@@ -62,15 +59,7 @@ impl fmt::Display for SceneRenderError {
         match self {
             Self::Empty => f.write_str("the scene has no finite vertex to draw"),
             Self::Camera(e) => write!(f, "bad camera: {e}"),
-            Self::Shadow { light, bounds, error: ShadowError::LightInsideBounds } => write!(
-                f,
-                "{}: cannot cast shadows from inside the scene's bounds (a sphere of radius {} about {}): one shadow \
-                 map cannot see every direction; move the light outside that sphere or set `shadows = false`",
-                Escaped(light),
-                Number(bounds.radius),
-                Triple(bounds.centre)
-            ),
-            Self::Shadow { light, error, .. } => write!(f, "{}: cannot cast shadows: {error}", Escaped(light)),
+            Self::Shadow { light, error } => write!(f, "{}: cannot cast shadows: {error}", Escaped(light)),
             Self::Tangents { object, error } => {
                 write!(f, "{}: no tangents for its normal map: {error}", Escaped(object))
             }

@@ -66,11 +66,10 @@ impl fmt::Display for ScenePlan {
             let plural = if pass.casters == 1 { "" } else { "s" };
             writeln!(
                 f,
-                "  {}. shadow map of {}: {}x{} texels, {} caster{plural}, pcf {side}x{side}",
+                "  {}. shadow map of {}: {}, {} caster{plural}, pcf {side}x{side}",
                 next(),
                 self.light_name(light),
-                pass.map_size,
-                pass.map_size,
+                pass.texels(),
                 pass.casters
             )?;
         }

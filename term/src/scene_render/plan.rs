@@ -18,6 +18,9 @@ use crate::scene_file::SceneCamera;
 pub const MIN_SHADOW_MAP: u32 = 512;
 /// The largest shadow map side (16 MiB of depth per light).
 pub const MAX_SHADOW_MAP: u32 = 2048;
+/// The largest face of a cube shadow map, a point light's among the objects: six faces of 1024x1024 texels hold
+/// 24 MiB of depth, and their filter windows' depth ranges twice that again.
+pub const MAX_CUBE_FACE: u32 = 1024;
 /// The ambient occlusion of scenes that ask for it: the core's defaults, darkening in the scene's space.
 pub const AMBIENT_OCCLUSION: AmbientOcclusion = AmbientOcclusion::DEFAULT;
 /// Percentage-closer filtering radius of every shadow map: `r = 1` averages 3x3 texels.
@@ -39,14 +42,27 @@ pub fn shadow_map_size(width: u32, height: u32) -> u32 {
 pub struct ShadowPass {
     /// The light, an index into [`ScenePlan::lights`].
     pub light: usize,
-    /// The light's view of the scene's bounds.
+    /// The light's view of the scene's bounds: one square, or a cube's six faces for a point light among the
+    /// objects ([`ShadowView::faces`]).
     pub view: ShadowView,
-    /// The map's side in texels.
+    /// The side of the map (of each face of a cube map) in texels.
     pub map_size: u32,
     /// Objects drawn into the map (every object of the scene casts).
     pub casters: usize,
     /// Percentage-closer filtering radius of the lookups.
     pub pcf_radius: u32,
+}
+
+impl ShadowPass {
+    /// The map's texels as `rastty render --explain` and `--stats` print them: `1024x1024 texels`, or for a cube
+    /// map `6 faces of 1024x1024 texels`.
+    pub fn texels(&self) -> String {
+        let side = self.map_size;
+        match self.view.faces() {
+            1 => format!("{side}x{side} texels"),
+            faces => format!("{faces} faces of {side}x{side} texels"),
+        }
+    }
 }
 
 /// One draw of the forward pass: a part of an object's model.
@@ -109,7 +125,8 @@ impl ScenePlan {
     ///
     /// - Lights shedding nothing (intensity 0, black) are dropped (listed in [`Self::dropped_lights`]).
     /// - A light with `shadows = true` gets a shadow pass when shadows are on: a [`shadow_map_size`] map fitted to
-    ///   the scene's bounds, [`PCF_RADIUS`] filtering.
+    ///   the scene's bounds, [`PCF_RADIUS`] filtering; for a point light inside the bounds a cube of six faces of
+    ///   that size, at most [`MAX_CUBE_FACE`].
     /// - Each part with triangles of each object is one draw, whose [`Variant`] is resolved here. The
     ///   variant depends only on each light's kind and shadow filtering ([`LightUse`]), not on what a map holds,
     ///   so planning allocates no shadow map and draws nothing. [`super::SceneRenderer::render`] resolves the same variants when it draws.
@@ -117,7 +134,8 @@ impl ScenePlan {
     ///
     /// # Errors
     /// [`SceneRenderError::Camera`] for a camera the core refuses; [`SceneRenderError::Shadow`] for a shadow light
-    /// whose map cannot be fitted (a point light inside the bounds); [`SceneRenderError::Texture`] and
+    /// whose map cannot be fitted (a light at a position or in a direction the core refuses);
+    /// [`SceneRenderError::Texture`] and
     /// [`SceneRenderError::Draw`] for a draw the core refuses.
     pub fn new(
         scene: &PreparedScene,
@@ -155,12 +173,17 @@ impl ScenePlan {
                 continue;
             };
             let shadow_pass = if light.shadows && options.effects.shadows {
-                let view = ShadowView::fit(kind, bounds, map_size).map_err(|error| SceneRenderError::Shadow {
-                    light: LightName { number, light }.to_string(),
-                    bounds,
-                    error,
-                })?;
-                let casters = data.objects.len();
+                let fit = |size| {
+                    ShadowView::fit(kind, bounds, size).map_err(|error| SceneRenderError::Shadow {
+                        light: LightName { number, light }.to_string(),
+                        error,
+                    })
+                };
+                let mut view = fit(map_size)?;
+                if view.faces() > 1 && map_size > MAX_CUBE_FACE {
+                    view = fit(MAX_CUBE_FACE)?;
+                }
+                let (casters, map_size) = (data.objects.len(), view.size());
                 shadow_passes.push(ShadowPass { light: lights.len(), view, map_size, casters, pcf_radius: PCF_RADIUS });
                 Some(shadow_passes.len() - 1)
             } else {

@@ -276,11 +276,7 @@ impl SceneRenderer {
                         }
                         map.with_windows(WindowRanges::new(&slot.near, &slot.far, pass.map_size, pass.pcf_radius)?)
                     });
-                    Some(map.map_err(|error| SceneRenderError::Shadow {
-                        light: plan.light_name(light),
-                        bounds: plan.bounds,
-                        error,
-                    })?)
+                    Some(map.map_err(|error| SceneRenderError::Shadow { light: plan.light_name(light), error })?)
                 }
                 None => None,
             };
@@ -302,8 +298,7 @@ impl SceneRenderer {
         for (pass, slot) in plan.shadow_passes.iter().zip(&mut self.slots) {
             let light = &plan.lights[pass.light];
             let key = ShadowKey { scene: scene.id(), light: light.number, view: pass.view };
-            let shadow_error =
-                |error| SceneRenderError::Shadow { light: plan.light_name(light), bounds: plan.bounds, error };
+            let shadow_error = |error| SceneRenderError::Shadow { light: plan.light_name(light), error };
             if slot.key == Some(key) {
                 if pass.pcf_radius > 0 && !slot.ranges_ready {
                     slot.window_ranges(pass, workers).map_err(shadow_error)?;
@@ -317,14 +312,15 @@ impl SceneRenderer {
                 continue;
             }
             (slot.key, slot.ranges_ready) = (None, false);
-            let side = pass.map_size as usize;
-            if slot.depth.len() != side * side {
+            let texels = pass.map_size as usize * pass.view.rows() as usize;
+            if slot.depth.len() != texels {
                 // Zeroed memory comes from the allocator untouched; the bands' clears below fill it (page faults
                 // and all) on their own threads, once.
-                slot.depth = vec![0.0; side * side];
+                slot.depth = vec![0.0; texels];
             }
-            // One band per thread: casters are few fragments for their vertex work, which every band repeats.
-            let bands = split_rows(&mut slot.depth, pass.map_size, 0..pass.map_size, workers.threads());
+            // One band per thread: casters are few fragments for their vertex work, which every band repeats. A
+            // cube map's six faces are one tall map of rows to the bands.
+            let bands = split_rows(&mut slot.depth, pass.map_size, 0..pass.view.rows(), workers.threads());
             let results = workers.run(bands, |(rows, depth)| {
                 clear_shadow_depth(depth);
                 let mut stats = DrawStats::default();
@@ -350,16 +346,16 @@ impl ShadowSlot {
     /// (every band reads the whole map, so the depth pass must be done).
     fn window_ranges(&mut self, pass: &ShadowPass, workers: &Workers) -> Result<(), ShadowError> {
         let threads = workers.threads();
-        let side = pass.map_size as usize;
+        let texels = self.depth.len();
         for buffer in [&mut self.near, &mut self.far] {
-            if buffer.len() != side * side {
+            if buffer.len() != texels {
                 // Every value is written below, on the bands' threads.
-                *buffer = vec![0.0; side * side];
+                *buffer = vec![0.0; texels];
             }
         }
         let depth = &self.depth;
-        let near = split_rows(&mut self.near, pass.map_size, 0..pass.map_size, threads);
-        let far = split_rows(&mut self.far, pass.map_size, 0..pass.map_size, threads);
+        let near = split_rows(&mut self.near, pass.map_size, 0..pass.view.rows(), threads);
+        let far = split_rows(&mut self.far, pass.map_size, 0..pass.view.rows(), threads);
         let bands: Vec<_> = near.into_iter().zip(far).collect();
         let results = workers.run(bands, |((rows, near), (_, far))| {
             window_ranges_band(depth, pass.map_size, pass.pcf_radius, rows, near, far)
