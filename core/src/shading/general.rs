@@ -185,7 +185,8 @@ impl<'a> GeneralShader<'a> {
             };
             let n_dot_l = shading.dot(to_light);
             // The share of the light its shadow map lets through, from the geometric normal's offset.
-            let share = light.shadow.map(|map| map.light_reaching(v.world, geometric, geometric.dot(to_light)));
+            let share =
+                light.shadow.as_ref().map(|map| map.light_reaching(v.world, geometric, geometric.dot(to_light)));
             let arriving = float::max(n_dot_l, 0.0);
             diffuse += light.color * share.map_or(arriving, |s| arriving * s);
             if highlights && n_dot_l > 0.0 {

@@ -50,7 +50,7 @@ pub(crate) fn light<const CAPS: u32>(
         let mut n_dot_l = [0.0; BATCH_SIZE];
         s.shading.dot(&to_light, &mut n_dot_l, len);
         // The share of the light its shadow map lets through, if it has one.
-        let shares = light.shadow.filter(|_| has(CAPS, capabilities::SHADOWS)).map(|map| {
+        let shares = light.shadow.as_ref().filter(|_| has(CAPS, capabilities::SHADOWS)).map(|map| {
             s.geometric.dot(&to_light, &mut s.lane, len);
             let mut shares = [0.0; BATCH_SIZE];
             map.light_reaching_lanes(&s.world, &s.geometric, &s.lane, len, &mut shares);

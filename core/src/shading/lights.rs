@@ -71,6 +71,9 @@ pub struct LightUse {
 
 impl From<&Light<'_>> for LightUse {
     fn from(light: &Light<'_>) -> Self {
-        Self { point: matches!(light.kind, LightKind::Point { .. }), shadow_pcf: light.shadow.map(|s| s.pcf_radius()) }
+        Self {
+            point: matches!(light.kind, LightKind::Point { .. }),
+            shadow_pcf: light.shadow.as_ref().map(|s| s.pcf_radius()),
+        }
     }
 }
