@@ -50,16 +50,16 @@ pub enum ShadowError {
     /// A cube map's filter windows of this radius would reach past the border of a face (at most
     /// `CUBE_BORDER - 1`).
     CubeFilter(u32),
-    /// Window ranges ([`WindowRanges`]) made for another map size or filter radius than the map's.
+    /// Window ranges ([`WindowRanges`]) made for another map size, number of faces or filter radius than the map's.
     Windows {
         /// The map's side.
         size: u32,
         /// The map's filter radius.
         radius: u32,
     },
-    /// The depth buffer does not hold `size * size` values (`size * rows.len()` for a band).
+    /// A buffer does not hold the map's `size * rows` values ([`ShadowView::rows`]; `size * rows.len()` for a band).
     Buffer {
-        /// `size * size`, or `size * rows.len()`.
+        /// `size * rows`, or `size * rows.len()` for a band.
         expected: usize,
         /// Values given.
         actual: usize,
