@@ -7,15 +7,17 @@
 
 use rastty_core::camera::{look_at, orthographic};
 use rastty_core::color::ShadingSpace;
-use rastty_core::math::{Mat4, Vec3, Vec4};
-use rastty_core::mesh::{Attributes, Indices, Mesh};
-use rastty_core::pipeline::{Cull, DrawState, Fragment, Shader, Slopes, draw};
+use rastty_core::math::{Mat4, Vec3};
+use rastty_core::mesh::{Indices, Mesh};
+use rastty_core::pipeline::{Cull, DrawState, draw};
 use rastty_core::shading::{Light, Lighting, Material, Object, ShadingModel, Transforms, draw_mesh};
 use rastty_core::shadow::{
     Bounds, ShadowBias, ShadowError, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster,
     draw_shadow_caster_band,
 };
 use rastty_core::target::{NoColor, Rgb888, Target};
+
+use crate::common::{Transformed, bits};
 
 const SIZE: u32 = 128;
 /// Pixels per world unit: the view spans `[-2, 2]` in x and z.
@@ -249,7 +251,6 @@ fn a_map_drawn_in_bands_is_the_map_drawn_whole() {
     }
     assert!(whole.iter().any(|&d| d < 1.0), "the casters are in the map");
     assert!(clipped > 0, "the large cube is cut");
-    let bits = |map: &[f32]| map.iter().map(|d| d.to_bits()).collect::<Vec<_>>();
     for height in 1..=64 {
         let mut banded = vec![0.0; 64 * 64];
         clear_shadow_depth(&mut banded);
@@ -300,18 +301,6 @@ fn blocked(q: Vec3, light: Vec3) -> bool {
     enter <= leave
 }
 
-/// The face of a cube map that a direction is looked up in (the largest component; as `ShadowView` picks).
-fn face(d: Vec3) -> usize {
-    let (x, y, z) = (d.x.abs(), d.y.abs(), d.z.abs());
-    if x >= y && x >= z {
-        usize::from(d.x < 0.0)
-    } else if y >= z {
-        2 + usize::from(d.y < 0.0)
-    } else {
-        4 + usize::from(d.z < 0.0)
-    }
-}
-
 #[test]
 fn a_point_light_among_the_objects_casts_through_a_cube_map() {
     let view = ShadowView::fit(lamp(LAMP).kind, BOUNDS, MAP).unwrap();
@@ -345,7 +334,7 @@ fn a_point_light_among_the_objects_casts_through_a_cube_map() {
                 if verdicts[0] {
                     assert_eq!(pixels[i], dark, "pcf {pcf}: shadowed ground lit at x = {x}, z = {z}");
                     shadowed += 1;
-                    faces[face(q - LAMP)] += 1;
+                    faces[view.face_of(q) as usize] += 1;
                 } else {
                     assert_eq!(pixels[i], lit[i], "pcf {pcf}: lit ground shadowed at x = {x}, z = {z}");
                 }
@@ -392,25 +381,6 @@ fn a_large_bias_detaches_the_shadow_of_a_point_light() {
     assert!(lit_at_foot > 20, "{lit_at_foot}");
 }
 
-/// The depth-only draw of a face, through the pipeline as any caller would: what the cube map's face must hold.
-struct FaceDepth {
-    clip_from_object: Mat4,
-}
-
-impl Shader for FaceDepth {
-    type Varyings = ();
-    type Face = ();
-    const ATTRIBUTES: Attributes = Attributes::NONE;
-    fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
-        self.clip_from_object.project_point(mesh.position(i))
-    }
-    fn varyings(&self, _: &Mesh<'_>, _: usize) {}
-    fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
-    fn fragment(&self, _: &Fragment, _: &(), _: &(), _: &Slopes<Self::Varyings>) -> Vec3 {
-        Vec3::ZERO
-    }
-}
-
 #[test]
 fn a_cube_map_holds_each_face_drawn_alone_in_bands_across_its_seams() {
     const FACE: u32 = 48;
@@ -430,21 +400,20 @@ fn a_cube_map_holds_each_face_drawn_alone_in_bands_across_its_seams() {
     let small = draw_shadow_caster(&view, &mut vec![1.0; 6 * texels], &cube.mesh(), &above).unwrap();
     assert_eq!(small.outside, 5 * 12, "five faces skip the small cube: {small:?}");
     assert!(small.fragments > 0);
-    // Each face holds what the pipeline draws through that face's projection.
+    // Each face holds what the pipeline draws through that face's projection, as any caller would draw it.
     let state = DrawState { cull: Cull::None, ..DrawState::DEFAULT };
     for face in 0..6 {
         let mut alone = vec![1.0; texels];
         let mut target = Target::new(NoColor, &mut alone[..], FACE, FACE).unwrap();
         for (o, model) in &casters {
             let clip_from_object = view.clip_from_world(face).unwrap() * *model;
-            draw(&mut target, &o.mesh(), &FaceDepth { clip_from_object }, &state).unwrap();
+            draw(&mut target, &o.mesh(), &Transformed { clip_from_object }, &state).unwrap();
         }
         let held = &whole[face as usize * texels..(face as usize + 1) * texels];
-        assert!(held.iter().zip(&alone).all(|(a, b)| a.to_bits() == b.to_bits()), "face {face}");
+        assert!(bits(held) == bits(&alone), "face {face}");
         assert!(held.iter().any(|&d| d < 1.0), "face {face} sees something");
     }
     // Bands of any height, across the seams, make the map drawn whole.
-    let bits = |map: &[f32]| map.iter().map(|d| d.to_bits()).collect::<Vec<_>>();
     for height in [1, 7, 48, 50, 100, 288] {
         let mut banded = vec![0.0; 6 * texels];
         clear_shadow_depth(&mut banded);
@@ -477,7 +446,7 @@ fn a_cube_map_holds_each_face_drawn_alone_in_bands_across_its_seams() {
         let n_dot_l = (LAMP - p).normalize_or_zero().y;
         let (a, b) = (plain.light_reaching(p, n, n_dot_l), ranged.light_reaching(p, n, n_dot_l));
         assert_eq!(a.to_bits(), b.to_bits(), "at {p:?}");
-        seen[face(p - LAMP)] = true;
+        seen[view.face_of(p) as usize] = true;
     }
     assert!(seen.iter().all(|&s| s), "lookups in every face: {seen:?}");
 }

@@ -308,11 +308,11 @@ fn a_shadow_casting_point_light_among_the_objects_gets_a_cube_map() {
     assert!((Vec3::new(0.9, 1.6, 0.8) - bounds.centre).length() < bounds.radius, "the lamp is among the objects");
     let shadowed = plan(&scene, &PlanOptions::default());
     let pass = &shadowed.shadow_passes[0];
-    assert_eq!((pass.view.faces(), pass.map_size), (6, 512));
+    assert_eq!((pass.view.faces(), pass.view.size()), (6, 512));
     let text = shadowed.to_string();
     assert!(text.contains("shadow map of light 1 (point at [0.9, 1.6, 0.8]): 6 faces of 512x512 texels"), "{text}");
     let big = ScenePlan::new(&scene, &scene.camera(), (3000, 2000), &PlanOptions::default()).unwrap();
-    assert_eq!(big.shadow_passes[0].map_size, MAX_CUBE_FACE);
+    assert_eq!(big.shadow_passes[0].view.size(), MAX_CUBE_FACE);
 
     let lit = render_on_threads(&scene, (160, 120), &without(SceneEffect::Shadows), 1);
     let one = render_on_threads(&scene, (160, 120), &PlanOptions::default(), 1);
@@ -333,7 +333,7 @@ fn a_shadow_casting_point_light_among_the_objects_gets_a_cube_map() {
 fn shadow_maps_follow_the_frame_size() {
     let scene = example("spot_sun.toml");
     let size = |w, h| {
-        ScenePlan::new(&scene, &scene.camera(), (w, h), &PlanOptions::default()).unwrap().shadow_passes[0].map_size
+        ScenePlan::new(&scene, &scene.camera(), (w, h), &PlanOptions::default()).unwrap().shadow_passes[0].view.size()
     };
     assert_eq!(size(200, 120), 512, "the smallest map");
     assert_eq!(size(512, 300), 512);

@@ -368,9 +368,9 @@ pub fn header(report: &EffectsReport, plans: &[ScenePlan], threads: usize, machi
         .iter()
         .map(|plan| {
             let (w, h) = plan.size;
-            match plan.shadow_passes.iter().map(|p| format!("{0}x{0}", p.map_size)).collect::<Vec<_>>() {
-                sides if sides.is_empty() => format!("no shadow map at {w}x{h}"),
-                sides => format!("shadow maps of {} texels at {w}x{h}", sides.join(", ")),
+            match plan.shadow_passes.iter().map(|p| p.texels()).collect::<Vec<_>>() {
+                maps if maps.is_empty() => format!("no shadow map at {w}x{h}"),
+                maps => format!("shadow maps of {} at {w}x{h}", maps.join(", ")),
             }
         })
         .collect();

@@ -158,7 +158,7 @@ pub fn measure(scene: &PreparedScene, report: &FramesReport) -> Result<FramesRes
 pub fn header(report: &FramesReport, plan: &ScenePlan, threads: usize, machine: &str) -> String {
     let (w, h) = report.size;
     let plural = |n: usize, word: &str| if n == 1 { format!("1 {word}") } else { format!("{n} {word}s") };
-    let maps: Vec<String> = plan.shadow_passes.iter().map(|p| format!("{0}x{0}", p.map_size)).collect();
+    let maps: Vec<String> = plan.shadow_passes.iter().map(|p| p.texels()).collect();
     let maps = if maps.is_empty() { "no shadow map".to_owned() } else { format!("shadow maps {}", maps.join(", ")) };
     let occlusion = if plan.ambient_occlusion.is_some() { "ambient occlusion" } else { "no ambient occlusion" };
     [

@@ -44,6 +44,7 @@ mod varyings;
 mod vertex_cache;
 
 pub use batch::{BATCH_SIZE, FragmentBatch, Lanes, lanes};
+pub(crate) use clip::ClipVolume;
 pub use clip::GUARD_BAND;
 pub use draw::{DrawError, draw};
 pub use line::{LineStyle, draw_wireframe};

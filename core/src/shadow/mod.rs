@@ -16,7 +16,7 @@ use core::ops::Range;
 use crate::camera::{CameraError, look_at, orthographic, perspective};
 use crate::math::{Mat4, Vec3, Vec4, float};
 use crate::mesh::{Attributes, Mesh};
-use crate::pipeline::{BATCH_SIZE, Cull, DrawState, DrawStats, Fragment, Shader, Slopes, draw, lanes};
+use crate::pipeline::{BATCH_SIZE, ClipVolume, Cull, DrawState, DrawStats, Fragment, Shader, Slopes, draw, lanes};
 use crate::shading::LightKind;
 use crate::shading::columns::{self, Column, Column3};
 use crate::target::{MAX_DIMENSION, NoColor, Target};
@@ -234,12 +234,13 @@ impl ShadowView {
         }
     }
 
-    /// The face that world point `p` is looked up in.
-    #[cfg(test)]
-    fn face_of(&self, p: Vec3) -> usize {
+    /// The face whose texels a world point `p` is compared with: 0 for a square map; for a cube map that of the
+    /// largest component of `p`'s direction from the light (+x, -x, +y, -y, +z, -z; ties to x, then y). A lookup
+    /// picks it for the point after the normal offset.
+    pub fn face_of(&self, p: Vec3) -> u32 {
         match &self.projection {
             Projection::Square(_) => 0,
-            Projection::Cube(cube) => cube.face(p).0,
+            Projection::Cube(cube) => cube.face_of(p) as u32,
         }
     }
 
@@ -324,6 +325,7 @@ pub fn draw_shadow_caster_band(
         Projection::Square(_) => None,
         Projection::Cube(_) => box_corners(mesh.positions()),
     };
+    let volume = ClipVolume::new(size, size, 0, size);
     let state = DrawState { cull: Cull::None, ..DrawState::DEFAULT };
     let mut stats = DrawStats::default();
     let mut rest = depth;
@@ -336,7 +338,12 @@ pub fn draw_shadow_caster_band(
         (rest, row) = (after, face * size + face_rows.end);
         let Some(clip_from_world) = view.clip_from_world(face) else { break };
         let clip_from_object = clip_from_world * *model;
-        if corners.is_some_and(|corners| !may_reach_view(&corners, &clip_from_object)) {
+        // The box is out of the face when its corners share a plane they are all beyond (their outcodes, as the
+        // pipeline rejects a triangle), and so is every triangle in it.
+        let out = |corners: [Vec3; 8]| {
+            corners.iter().fold(!0, |all, &c| all & volume.outcode(clip_from_object.project_point(c)))
+        };
+        if corners.is_some_and(|corners| out(corners) != 0) {
             let triangles = mesh.triangle_count() as u64;
             stats += DrawStats { triangles_in: triangles, outside: triangles, ..DrawStats::default() };
             continue;
@@ -367,20 +374,6 @@ fn box_corners(positions: &[Vec3]) -> Option<[Vec3; 8]> {
         let pick = |bit: usize, lo: f32, hi: f32| if i & bit == 0 { lo } else { hi };
         Vec3::new(pick(1, lo.x, hi.x), pick(2, lo.y, hi.y), pick(4, lo.z, hi.z))
     }))
-}
-
-/// False when all eight `corners`, placed by `clip_from_object`, lie beyond one plane of the view volume
-/// (`-w <= x, y <= w`, `0 <= z <= w`): the box, and so every triangle inside it, is out of view. True otherwise,
-/// and for any NaN.
-fn may_reach_view(corners: &[Vec3; 8], clip_from_object: &Mat4) -> bool {
-    let clip = corners.map(|c| clip_from_object.project_point(c));
-    let all = |outside: fn(&Vec4) -> bool| clip.iter().all(outside);
-    !(all(|c| c.x < -c.w)
-        || all(|c| c.x > c.w)
-        || all(|c| c.y < -c.w)
-        || all(|c| c.y > c.w)
-        || all(|c| c.z < 0.0)
-        || all(|c| c.z > c.w))
 }
 
 /// Sets every depth of a shadow map to the far plane (1.0): nothing casts a shadow yet.
@@ -851,7 +844,7 @@ mod tests {
                         dark |= share[i] == 0.0;
                         lit |= share[i] == 1.0;
                         partly |= share[i] > 0.0 && share[i] < 1.0;
-                        faces[view.face_of(p.get(i))] |= view.faces() == 6;
+                        faces[view.face_of(p.get(i)) as usize] |= view.faces() == 6;
                     }
                     assert!(share[len..].iter().all(|&s| s == -1.0), "lanes past the length are left alone");
                 }

@@ -43,10 +43,8 @@ pub struct ShadowPass {
     /// The light, an index into [`ScenePlan::lights`].
     pub light: usize,
     /// The light's view of the scene's bounds: one square, or a cube's six faces for a point light among the
-    /// objects ([`ShadowView::faces`]).
+    /// objects ([`ShadowView::faces`]), and the side of the map or of each face ([`ShadowView::size`]).
     pub view: ShadowView,
-    /// The side of the map (of each face of a cube map) in texels.
-    pub map_size: u32,
     /// Objects drawn into the map (every object of the scene casts).
     pub casters: usize,
     /// Percentage-closer filtering radius of the lookups.
@@ -57,7 +55,7 @@ impl ShadowPass {
     /// The map's texels as `rastty render --explain` and `--stats` print them: `1024x1024 texels`, or for a cube
     /// map `6 faces of 1024x1024 texels`.
     pub fn texels(&self) -> String {
-        let side = self.map_size;
+        let side = self.view.size();
         match self.view.faces() {
             1 => format!("{side}x{side} texels"),
             faces => format!("{faces} faces of {side}x{side} texels"),
@@ -183,8 +181,8 @@ impl ScenePlan {
                 if view.faces() > 1 && map_size > MAX_CUBE_FACE {
                     view = fit(MAX_CUBE_FACE)?;
                 }
-                let (casters, map_size) = (data.objects.len(), view.size());
-                shadow_passes.push(ShadowPass { light: lights.len(), view, map_size, casters, pcf_radius: PCF_RADIUS });
+                let casters = data.objects.len();
+                shadow_passes.push(ShadowPass { light: lights.len(), view, casters, pcf_radius: PCF_RADIUS });
                 Some(shadow_passes.len() - 1)
             } else {
                 None

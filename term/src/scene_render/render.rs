@@ -274,7 +274,7 @@ impl SceneRenderer {
                         if !slot.ranges_ready {
                             return Ok(map);
                         }
-                        map.with_windows(WindowRanges::new(&slot.near, &slot.far, pass.map_size, pass.pcf_radius)?)
+                        map.with_windows(WindowRanges::new(&slot.near, &slot.far, pass.view.size(), pass.pcf_radius)?)
                     });
                     Some(map.map_err(|error| SceneRenderError::Shadow { light: plan.light_name(light), error })?)
                 }
@@ -312,7 +312,7 @@ impl SceneRenderer {
                 continue;
             }
             (slot.key, slot.ranges_ready) = (None, false);
-            let texels = pass.map_size as usize * pass.view.rows() as usize;
+            let texels = pass.view.size() as usize * pass.view.rows() as usize;
             if slot.depth.len() != texels {
                 // Zeroed memory comes from the allocator untouched; the bands' clears below fill it (page faults
                 // and all) on their own threads, once.
@@ -320,7 +320,7 @@ impl SceneRenderer {
             }
             // One band per thread: casters are few fragments for their vertex work, which every band repeats. A
             // cube map's six faces are one tall map of rows to the bands.
-            let bands = split_rows(&mut slot.depth, pass.map_size, 0..pass.view.rows(), workers.threads());
+            let bands = split_rows(&mut slot.depth, pass.view.size(), 0..pass.view.rows(), workers.threads());
             let results = workers.run(bands, |(rows, depth)| {
                 clear_shadow_depth(depth);
                 let mut stats = DrawStats::default();
@@ -354,11 +354,11 @@ impl ShadowSlot {
             }
         }
         let depth = &self.depth;
-        let near = split_rows(&mut self.near, pass.map_size, 0..pass.view.rows(), threads);
-        let far = split_rows(&mut self.far, pass.map_size, 0..pass.view.rows(), threads);
+        let near = split_rows(&mut self.near, pass.view.size(), 0..pass.view.rows(), threads);
+        let far = split_rows(&mut self.far, pass.view.size(), 0..pass.view.rows(), threads);
         let bands: Vec<_> = near.into_iter().zip(far).collect();
         let results = workers.run(bands, |((rows, near), (_, far))| {
-            window_ranges_band(depth, pass.map_size, pass.pcf_radius, rows, near, far)
+            window_ranges_band(depth, pass.view.size(), pass.pcf_radius, rows, near, far)
         });
         results.into_iter().collect()
     }
