@@ -15,7 +15,7 @@
 //! | raster | [`pipeline`] (`raster.rs`) | fixed-point snapping, exact edge functions, top-left rule |
 //! | vertex stage | [`pipeline::Shader::varyings`] | per-vertex values, only for triangles that reach the pixel loop or need clipping |
 //! | fragment | [`pipeline::FragmentBatch`], [`shading`], [`texture`] | depth test, then the fragments in batches across triangles: interpolation, shading, texturing |
-//! | target | [`target`] | RGB888 or RGB565 colour, `f32` or `u16` depth, whole frames or bands; optional memory for screen positions |
+//! | target | [`target`] | RGB888 or RGB565 colour, `f32` or `u16` depth, whole frames or bands, one or four samples per pixel (multisample anti-aliasing); optional memory for screen positions |
 //!
 //! [`draw_mesh`] draws an [`Object`] under [`Lighting`]: it resolves the [`shading::Variant`] the object and the
 //! lights call for, once per draw, and runs the pipeline compiled for exactly that (see [`shading`]). Shadow maps

@@ -13,6 +13,7 @@ mod fill_rule;
 mod inverse_sqrt;
 mod math;
 mod mipmaps;
+mod multisample;
 mod robustness;
 mod shadows;
 mod specialisation;

@@ -2,8 +2,9 @@
 //! specialised path (`draw_mesh`: the pixel loop compiled for the state and the varyings carried, the fragment
 //! stages run over batches) and through the general one (`testing::draw_mesh_general`: one scalar shader deciding
 //! everything per fragment, through the pixel loop that decides interpolation and depth test per pixel), gives
-//! identical colours (exact `f32` bits), depths and statistics. The general path draws into a caller's own depth
-//! buffer (`PlainDepth`), the specialised one into the library's `&mut [f32]`.
+//! identical colours (exact `f32` bits), depths and statistics, with one sample per pixel and (every fourth draw)
+//! with four. The general path draws into a caller's own depth buffer (`PlainDepth`), the specialised one into the
+//! library's `&mut [f32]`.
 
 use crate::common;
 
@@ -18,6 +19,7 @@ use rastty_core::shading::{
     Transforms, Variant, draw_mesh,
 };
 use rastty_core::shadow::{Bounds, ShadowBias, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster};
+use rastty_core::target::Samples;
 use rastty_core::testing::draw_mesh_general;
 use rastty_core::texture::{
     Anisotropy, FilterMode, MipContent, MipFilter, Texture, WrapMode, build_mip_levels, mip_chain_texels,
@@ -29,17 +31,23 @@ const H: u32 = 40;
 /// The exact colours, the depths and the statistics of one draw, with its variant.
 type Rendered = (Vec<[u32; 3]>, Vec<f32>, DrawStats, Variant);
 
-fn render(object: &Object<'_>, lights: &Lighting<'_>, state: &DrawState, specialised: bool) -> Rendered {
+fn render(
+    object: &Object<'_>,
+    lights: &Lighting<'_>,
+    state: &DrawState,
+    samples: Samples,
+    specialised: bool,
+) -> Rendered {
     // Exact f32 colours: a difference in the last bit counts.
-    let mut color = vec![[0u32; 3]; (W * H) as usize];
-    let mut depth = vec![0f32; (W * H) as usize];
+    let mut color = vec![[0u32; 3]; (W * H) as usize * samples.count()];
+    let mut depth = vec![0f32; color.len()];
     let background = Vec3::new(0.1, 0.2, 0.3);
     let (variant, stats) = if specialised {
-        let mut target = common::frame(ExactColor(&mut color), &mut depth[..], W, H);
+        let mut target = common::multisampled(ExactColor(&mut color), &mut depth[..], W, H, 0..H, samples);
         target.clear(background);
         draw_mesh(&mut target, object, lights, state)
     } else {
-        let mut target = common::frame(ExactColor(&mut color), PlainDepth(&mut depth), W, H);
+        let mut target = common::multisampled(ExactColor(&mut color), PlainDepth(&mut depth), W, H, 0..H, samples);
         target.clear(background);
         draw_mesh_general(&mut target, object, lights, state)
     }
@@ -64,7 +72,7 @@ const STATES: [(Interpolation, DepthTest, Cull, EdgeArithmetic); 5] = [
 /// cut-out, at the nearest level, with a normal map, and anisotropic, with an occlusion map), 5 sets of lights (none; two directional; directional
 /// and point; a shadowed sun (filter radius 0) and a fill light; a shadowed sun (radius 2) and a shadowed lamp
 /// (radius 1)) and 2 projections; the fixed-function states of [`STATES`] in turn. 3,060 draws, clipped ones
-/// among them.
+/// among them; every fourth (765) again into four samples per pixel.
 #[test]
 fn every_choice_of_a_variant_equals_the_general_path() {
     let torus = Torus::new(1.0, 0.4, 24, 12);
@@ -202,7 +210,7 @@ fn every_choice_of_a_variant_equals_the_general_path() {
         ShadingModel::Depth { near: 0.2, far: 0.9 },
         ShadingModel::Normals,
     ];
-    let (mut draws, mut clipped) = (0, 0);
+    let (mut draws, mut clipped, mut multisampled) = (0, 0, 0);
     let mut seen = Seen::default();
     for projection in projections {
         let transforms = Transforms::new(model, view, projection);
@@ -218,25 +226,33 @@ fn every_choice_of_a_variant_equals_the_general_path() {
                         // material meets each light set in both spaces.
                         let space = [ShadingSpace::Linear, ShadingSpace::Encoded][draws % 2];
                         let lights = Lighting { ambient: Vec3::splat(0.08), lights, space };
-                        let (fast, fast_depth, fast_stats, variant) = render(&object, &lights, &state, true);
-                        let (general, general_depth, general_stats, general_variant) =
-                            render(&object, &lights, &state, false);
-                        assert_eq!(variant, general_variant);
-                        assert_eq!(fast_stats, general_stats, "{variant}");
-                        let differing = fast.iter().zip(&general).filter(|(a, b)| a != b).count();
-                        assert_eq!(differing, 0, "{variant}: {differing} pixels differ");
-                        assert_same_depths(&variant.to_string(), &general_depth, &fast_depth, W as usize, 0);
-                        let drawn = variant.cutout != Cutout::Everything;
-                        assert_eq!(drawn, fast_stats.fragments > 100, "{variant}: the scene must cover pixels");
-                        seen.note(&variant);
+                        let samples = if draws % 4 == 0 { &[Samples::One, Samples::Four][..] } else { &[Samples::One] };
+                        for &samples in samples {
+                            let (fast, fast_depth, fast_stats, fast_variant) =
+                                render(&object, &lights, &state, samples, true);
+                            let (general, general_depth, general_stats, general_variant) =
+                                render(&object, &lights, &state, samples, false);
+                            assert_eq!(fast_variant, general_variant);
+                            let what = format!("{fast_variant}, {samples:?}");
+                            assert_eq!(fast_stats, general_stats, "{what}");
+                            let differing = fast.iter().zip(&general).filter(|(a, b)| a != b).count();
+                            assert_eq!(differing, 0, "{what}: {differing} samples differ");
+                            let width = W as usize * samples.count();
+                            assert_same_depths(&what, &general_depth, &fast_depth, width, 0);
+                            let drawn = fast_variant.cutout != Cutout::Everything;
+                            assert_eq!(drawn, fast_stats.fragments > 100, "{what}: the scene must cover pixels");
+                            seen.note(&fast_variant);
+                            clipped += u64::from(fast_stats.clipped > 0);
+                            multisampled += u64::from(samples == Samples::Four);
+                        }
                         draws += 1;
-                        clipped += u64::from(fast_stats.clipped > 0);
                     }
                 }
             }
         }
     }
     assert_eq!(draws, 2 * 6 * 3 * 17 * 5);
+    assert_eq!(multisampled, 765);
     assert!(clipped > 0);
     seen.assert_every_choice();
 }

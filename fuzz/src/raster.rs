@@ -1,7 +1,7 @@
 //! The `raster` target: a small arbitrary scene through `rastty_core::shading::draw_mesh`, its general path
 //! `rastty_core::testing::draw_mesh_general`, `pipeline::draw_wireframe`, shadow-map depth passes
 //! (`shadow::draw_shadow_caster`) and depth-only `pipeline::draw` / `testing::draw_unspecialised` passes, with `f32`
-//! and `u16` depth, whole and in bands, checking the core's documented invariants.
+//! and `u16` depth, one or four samples per pixel, whole and in bands, checking the core's documented invariants.
 //!
 //! [`Input`] decodes (with `arbitrary`) into a camera, a model matrix, a frame of 1..=64 x 1..=64 pixels with an
 //! optional band of rows, a `DrawState` (sub-pixel bits mostly 0..=8, sometimes above; fixed-point or `f32` edge
@@ -27,7 +27,7 @@ use rastty_core::shading::{
 use rastty_core::shadow::{
     Bounds, ShadowBias, ShadowMap, ShadowView, WindowRanges, clear_shadow_depth, draw_shadow_caster, window_ranges_band,
 };
-use rastty_core::target::{ColorBuffer, DepthBuffer, NoColor, Rgb888, Target, depth_to_u16};
+use rastty_core::target::{ColorBuffer, DepthBuffer, NoColor, Rgb888, Samples, Target, depth_to_u16};
 use rastty_core::testing::{draw_mesh_general, draw_unspecialised};
 use rastty_core::texture::{
     Anisotropy, FilterMode, MipContent, MipFilter, Texture, WrapMode, build_mip_levels, mip_chain_texels,
@@ -288,6 +288,8 @@ struct ExtrasIn {
     occlusion_map: bool,
     /// Light the stored sRGB codes instead of linear light.
     encoded_light: bool,
+    /// Draw the frame again into four samples per pixel ([`run`]'s step 7).
+    multisample: bool,
 }
 
 /// One fuzz input: a scene to draw.
@@ -505,38 +507,43 @@ fn bits(depth: &[f32]) -> Vec<u32> {
 // The target
 // ---------------------------------------------------------------------------------------------------------------
 
-/// The frame drawn by `testing::draw_mesh_general` (into checked buffers, under `lights`: the shadow maps without
-/// window ranges) must equal `draw_mesh`'s: variant, pixels, depth bits and statistics.
+/// The frame drawn by `testing::draw_mesh_general` (into checked buffers with `samples` per pixel, under `lights`:
+/// the shadow maps without window ranges) must equal `draw_mesh`'s: variant, samples, depth bits and statistics.
 fn compare_general(
     object: &Object<'_>,
     lights: &Lighting<'_>,
     state: &DrawState,
-    (width, height): (u32, u32),
+    (width, height, samples): (u32, u32, Samples),
     (color, depth): (&[u32], &[f32]),
     (full_variant, full_stats): (&Variant, &DrawStats),
 ) {
-    let (w, h) = (width as usize, height as usize);
+    // Each pixel's samples side by side: `w` counts samples.
+    let (w, h) = (width as usize * samples.count(), height as usize);
     let mut color_g = vec![0u32; w * h];
     let mut depth_g = vec![0f32; w * h];
     {
-        let mut target =
-            Target::new(CheckedColor(&mut color_g), CheckedDepth(&mut depth_g), width, height).expect("a valid frame");
+        let (c, d) = (CheckedColor(&mut color_g), CheckedDepth(&mut depth_g));
+        let mut target = Target::multisampled(c, d, width, height, 0..height, samples).expect("a valid frame");
         target.clear(CLEAR);
         let (variant, stats) = draw_mesh_general(&mut target, object, lights, state)
             .expect("draw_mesh accepted the draw, draw_mesh_general must too");
         assert_same_variant("draw_mesh_general", &variant, full_variant);
-        assert_eq!(&stats, full_stats, "draw_mesh_general stats differ from draw_mesh ({full_variant})");
+        assert_eq!(&stats, full_stats, "draw_mesh_general stats differ from draw_mesh ({full_variant}, {samples:?})");
     }
     if let Some(i) = (0..w * h).find(|&i| color[i] != color_g[i]) {
         panic!(
-            "draw_mesh_general pixel ({}, {}) = {:#08x}, draw_mesh gave {:#08x} ({full_variant})",
+            "draw_mesh_general sample ({}, {}) = {:#08x}, draw_mesh gave {:#08x} ({full_variant}, {samples:?})",
             i % w,
             i / w,
             color_g[i],
             color[i]
         );
     }
-    assert_eq!(bits(depth), bits(&depth_g), "draw_mesh_general depth differs from draw_mesh ({full_variant})");
+    assert_eq!(
+        bits(depth),
+        bits(&depth_g),
+        "draw_mesh_general depth differs from draw_mesh ({full_variant}, {samples:?})"
+    );
 }
 
 /// What a draw of the scene must answer when it is refused, in the order the core checks.
@@ -849,7 +856,7 @@ pub fn run(input: Input) -> Option<DrawStats> {
     // 2. The same frame through the general path (GeneralShader through the general pixel loop, shadow maps without
     //    window ranges): the same variant, identical pixels, depth and stats.
     let full = (&full_variant, &full_stats);
-    compare_general(&object, &general_lighting, &state, (width, height), (&color, &depth), full);
+    compare_general(&object, &general_lighting, &state, (width, height, Samples::One), (&color, &depth), full);
 
     // 3. The wireframe over it.
     let mut line_stats = DrawStats::default();
@@ -917,7 +924,66 @@ pub fn run(input: Input) -> Option<DrawStats> {
     // 6. Depth-only passes of the same positions and state: the lane-wise pass, the general pixel loop's and every
     //    band's store the depths of a shaded pass bit for bit, and count its fragments.
     check_depth_only(&object.mesh, &transforms.clip_from_object, &state, (width, height), &bands);
+
+    // 7. Four samples per pixel (when the input asks): the frame, the general path's equal to it, and its bands
+    //    equal to its rows.
+    if input.extras.multisample {
+        let draws = (&object, &lighting, &general_lighting);
+        check_multisampled(draws, &state, (width, height), &bands, (&full_variant, triangles), style.as_ref());
+    }
     Some(full_stats)
+}
+
+/// Step 7 of [`run`]: the frame drawn into four samples per pixel by `draw_mesh` (statistics and depths checked),
+/// by the general path under `general_lights` (equal samples, depths and statistics), the wireframe over it, and
+/// each band into checked buffers: the frame's samples and depths bit for bit, the fragments adding up.
+fn check_multisampled(
+    (object, lights, general_lights): (&Object<'_>, &Lighting<'_>, &Lighting<'_>),
+    state: &DrawState,
+    (width, height): (u32, u32),
+    bands: &[(u32, u32)],
+    (frame_variant, triangles): (&Variant, u64),
+    style: Option<&LineStyle>,
+) {
+    let n = Samples::Four.count();
+    let row = width as usize * n;
+    let (mut color, mut depth) = (vec![0u32; row * height as usize], vec![0f32; row * height as usize]);
+    let stats = {
+        let mut target =
+            Target::multisampled(Rgb888(&mut color), &mut depth[..], width, height, 0..height, Samples::Four)
+                .expect("a valid frame");
+        target.clear(CLEAR);
+        let (variant, stats) = draw_mesh(&mut target, object, lights, state).expect("the frame's draw was accepted");
+        assert_same_variant("four samples", &variant, frame_variant);
+        stats
+    };
+    check_stats("four samples", &stats, triangles);
+    check_fill_fragments("four samples", &stats, u64::from(width * height));
+    check_depth_range("four samples", &depth, state.depth_test);
+    let full = (frame_variant, &stats);
+    compare_general(object, general_lights, state, (width, height, Samples::Four), (&color, &depth), full);
+    let lines = style.map_or(0, |style| {
+        let mut target =
+            Target::multisampled(Rgb888(&mut color), &mut depth[..], width, height, 0..height, Samples::Four)
+                .expect("a valid frame");
+        let lines = draw_wireframe(&mut target, &object.mesh, &object.transforms.clip_from_object, style, state);
+        check_stats("four samples, wireframe", &lines, triangles);
+        check_line_fragments("four samples, wireframe", &lines, width.into(), height.into());
+        lines.fragments
+    });
+    let mut fragments = (0, 0);
+    for &(y0, y1) in bands.iter().filter(|(y0, y1)| y0 < y1) {
+        let samples = y0 as usize * row..y1 as usize * row;
+        let (mut band_color, mut band_depth) = (vec![0u32; samples.len()], vec![0f32; samples.len()]);
+        let (c, d) = (CheckedColor(&mut band_color), CheckedDepth(&mut band_depth));
+        let mut target = Target::multisampled(c, d, width, height, y0..y1, Samples::Four).expect("a valid band");
+        let what = format!("four samples, band {y0}..{y1} (x counts samples)");
+        let (f, l) = draw_band(&mut target, (frame_variant, triangles), (object, lights, state), style, &what);
+        fragments = (fragments.0 + f, fragments.1 + l);
+        compare_pixels(&what, &band_color, &color[samples.clone()], row, y0);
+        compare_depths(&what, &bits(&band_depth), &bits(&depth[samples]), row, y0);
+    }
+    assert_eq!(fragments, (stats.fragments, lines), "four samples: the bands' fragments add up to the frame's");
 }
 
 /// `draw_mesh` then, if there is a `style`, `draw_wireframe` into `target` (cleared first), with their statistics

@@ -17,9 +17,13 @@
 //! in the order the fragments were pushed, so a later fragment over the same pixel still wins. In a draw that
 //! discards fragments (an alpha cut-out) depth is only compared when a fragment is pushed, and tested and written
 //! with its colour, in the same order, if it is kept.
+//!
+//! On a multisampled target a fragment is a pixel with the samples it covers: it carries their mask and depths, and
+//! its colour is written to the samples whose depth test passed.
 
 use super::slopes::{FractionSteps, Slopes};
 use super::{Fragment, Varyings};
+use crate::target::SAMPLE_COUNT;
 
 /// True where the target has SIMD registers (x86-64, AArch64, WebAssembly with `simd128`): lane loops then run
 /// over every lane, a constant count the compiler widens to SIMD instructions.
@@ -82,6 +86,9 @@ pub struct FragmentBatch<V, F> {
     y: [u32; BATCH_SIZE],
     depth: Lanes,
     indices: [usize; BATCH_SIZE],
+    /// On a multisampled target: each fragment's samples (bit `s` for sample `s`) and their depths.
+    samples: [u8; BATCH_SIZE],
+    sample_depths: [[f32; SAMPLE_COUNT]; BATCH_SIZE],
     /// The interpolated varyings, once resolved.
     varyings: [V; BATCH_SIZE],
 }
@@ -110,6 +117,8 @@ impl<V: Varyings, F: Copy> FragmentBatch<V, F> {
             y: [0; BATCH_SIZE],
             depth: [0.0; BATCH_SIZE],
             indices: [0; BATCH_SIZE],
+            samples: [0; BATCH_SIZE],
+            sample_depths: [[0.0; SAMPLE_COUNT]; BATCH_SIZE],
             varyings: [v; BATCH_SIZE],
         }
     }
@@ -158,6 +167,24 @@ impl<V: Varyings, F: Copy> FragmentBatch<V, F> {
         self.current_used = true;
         self.len = i + 1;
         self.len == BATCH_SIZE
+    }
+
+    /// [`Self::push`] for a pixel of a multisampled target, `index` its first sample: its colour goes to the
+    /// samples in `mask`, whose depths are `depths`.
+    #[inline(always)]
+    pub(crate) fn push_samples(
+        &mut self,
+        x: u32,
+        y: u32,
+        depth: f32,
+        fractions: [f32; 3],
+        index: usize,
+        (mask, depths): (u8, [f32; SAMPLE_COUNT]),
+    ) -> bool {
+        let i = self.len.min(BATCH_SIZE - 1);
+        self.samples[i] = mask;
+        self.sample_depths[i] = depths;
+        self.push(x, y, depth, fractions, index)
     }
 
     /// Turns the pushed fractions into weights, `n * (1 / d)` in every lane at once (as
@@ -241,10 +268,16 @@ impl<V: Varyings, F: Copy> FragmentBatch<V, F> {
         &self.depth
     }
 
-    /// Where each fragment goes in the target's buffers.
+    /// Where each fragment goes in the target's buffers (on a multisampled target, its first sample).
     #[inline(always)]
     pub(crate) fn indices(&self) -> &[usize] {
         &self.indices[..self.len]
+    }
+
+    /// Each fragment's samples and their depths, as [`Self::push_samples`] gave them.
+    #[inline(always)]
+    pub(crate) fn samples(&self) -> impl Iterator<Item = (u8, &[f32; SAMPLE_COUNT])> {
+        self.samples[..self.len].iter().copied().zip(&self.sample_depths[..self.len])
     }
 }
 

@@ -10,6 +10,7 @@
 use super::EdgeArithmetic;
 use super::raster::{Rasterizer, Setup, Snapped};
 use crate::math::float;
+use crate::target::{SAMPLE_COUNT, SAMPLE_POSITIONS};
 
 /// Edge functions of an oriented triangle (positive inside), walked over pixel centres.
 pub(crate) trait Edges: Copy {
@@ -26,6 +27,14 @@ pub(crate) trait Edges: Copy {
     /// How [`Self::weights`] change one pixel to the right and one pixel down (inside the triangle, where no
     /// weight is clamped).
     fn steps(&self) -> [[f32; 3]; 2];
+    /// What takes the values at a pixel centre to those at each of its [`SAMPLE_POSITIONS`], with
+    /// [`Self::at_sample`].
+    fn sample_offsets(&self) -> [Self::At; SAMPLE_COUNT];
+    /// The values at a sample, from those at its pixel's centre and its one of [`Self::sample_offsets`]: covered as
+    /// [`Self::covered`] says, weighted as [`Self::sample_weights`] says.
+    fn at_sample(&self, centre: &Self::At, offset: &Self::At) -> Self::At;
+    /// [`Self::weights`] of values at a sample.
+    fn sample_weights(&self, at: &Self::At) -> [f32; 3];
     /// The functions as [`EdgeLanes`] over the pixel centres `x0..=x1` by `y0..=y1`, when that computes exactly
     /// what [`Self::at`], [`Self::step`], [`Self::covered`] and [`Self::weights`] do there; `None` otherwise.
     #[inline(always)]
@@ -106,6 +115,30 @@ impl Edges for FixedEdges {
         [self.step_x.map(|s| s as f32), self.step_y.map(|s| s as f32)]
     }
 
+    /// A sample `(ox, oy)` eighths of a pixel from the centre changes an edge function `E` by `(step_x ox + step_y
+    /// oy) / 8`, which need not be whole. Eight times it is: a sample's values are `8 E + bias`, an integer that is
+    /// non-negative exactly when the sample is covered (the bias of -1 turns `8 E > 0` into `8 E + bias >= 0`, as
+    /// it does for `E`). From the biased centre value `e = E + bias` that is `8 e + step_x ox + step_y oy - 7 bias`.
+    #[inline(always)]
+    fn sample_offsets(&self) -> [[i64; 3]; SAMPLE_COUNT] {
+        SAMPLE_POSITIONS.map(|(ox, oy)| {
+            let (ox, oy) = (i64::from(ox), i64::from(oy));
+            [0, 1, 2].map(|k| self.step_x[k] * ox + self.step_y[k] * oy - 7 * self.bias[k])
+        })
+    }
+
+    #[inline(always)]
+    fn at_sample(&self, centre: &[i64; 3], offset: &[i64; 3]) -> [i64; 3] {
+        [8 * centre[0] + offset[0], 8 * centre[1] + offset[1], 8 * centre[2] + offset[2]]
+    }
+
+    /// The values are eight times the edge functions: an eighth of the unbiased value, exactly (`f32` rounding
+    /// commutes with a power of two), so a sample at a pixel centre would weigh what the centre weighs.
+    #[inline(always)]
+    fn sample_weights(&self, e: &[i64; 3]) -> [f32; 3] {
+        self.weights(e).map(|w| w * 0.125)
+    }
+
     /// A linear function is largest and smallest over a box at its corners: when those values fit `i32` (below its
     /// maximum, so the unbiased value `v + 1` fits too), all do, and `i32` comparisons and conversions to `f32` give
     /// what the `i64` ones give.
@@ -171,6 +204,24 @@ impl Edges for FloatEdges {
     fn steps(&self) -> [[f32; 3]; 2] {
         [self.a, self.b]
     }
+
+    #[inline(always)]
+    fn sample_offsets(&self) -> [[f32; 3]; SAMPLE_COUNT] {
+        SAMPLE_POSITIONS.map(|(ox, oy)| {
+            let (ox, oy) = (ox as f32 / 8.0, oy as f32 / 8.0);
+            [0, 1, 2].map(|k| self.a[k] * ox + self.b[k] * oy)
+        })
+    }
+
+    #[inline(always)]
+    fn at_sample(&self, centre: &[f32; 3], offset: &[f32; 3]) -> [f32; 3] {
+        [centre[0] + offset[0], centre[1] + offset[1], centre[2] + offset[2]]
+    }
+
+    #[inline(always)]
+    fn sample_weights(&self, e: &[f32; 3]) -> [f32; 3] {
+        self.weights(e)
+    }
 }
 
 /// Either kind, chosen per pixel: the general path.
@@ -230,6 +281,32 @@ impl Edges for DynamicEdges {
         match self {
             Self::Fixed(e) => e.steps(),
             Self::Float(e) => e.steps(),
+        }
+    }
+
+    #[inline(always)]
+    fn sample_offsets(&self) -> [DynamicAt; SAMPLE_COUNT] {
+        match self {
+            Self::Fixed(e) => e.sample_offsets().map(DynamicAt::Fixed),
+            Self::Float(e) => e.sample_offsets().map(DynamicAt::Float),
+        }
+    }
+
+    #[inline(always)]
+    fn at_sample(&self, centre: &DynamicAt, offset: &DynamicAt) -> DynamicAt {
+        match (self, centre, offset) {
+            (Self::Fixed(e), DynamicAt::Fixed(v), DynamicAt::Fixed(o)) => DynamicAt::Fixed(e.at_sample(v, o)),
+            (Self::Float(e), DynamicAt::Float(v), DynamicAt::Float(o)) => DynamicAt::Float(e.at_sample(v, o)),
+            (_, centre, _) => *centre,
+        }
+    }
+
+    #[inline(always)]
+    fn sample_weights(&self, at: &DynamicAt) -> [f32; 3] {
+        match (self, at) {
+            (Self::Fixed(e), DynamicAt::Fixed(v)) => e.sample_weights(v),
+            (Self::Float(e), DynamicAt::Float(v)) => e.sample_weights(v),
+            _ => [0.0; 3],
         }
     }
 

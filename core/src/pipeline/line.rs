@@ -32,6 +32,7 @@ impl Default for LineStyle {
 /// where that lies beyond the line, never extrapolated past the ends. Each pixel is computed from frame
 /// coordinates alone, so bands give the same pixels as a whole frame. An edge shared by two triangles is drawn
 /// from its lower-numbered vertex, so both draws light the same pixels.
+/// On a multisampled target each sample of a lit pixel is tested and written: lines are not anti-aliased.
 ///
 /// `state` supplies the depth test (with [`LineStyle::depth_bias`]) and face culling: the edges of a culled
 /// triangle (judged when all its vertices are in front of the camera) are not drawn. In the returned statistics a
@@ -180,6 +181,7 @@ impl Pen {
         let (length, dz) = (b.x - a.x, b.z - a.z);
         let depth_test = DynamicDepth(self.depth_test);
         let width = target.width() as usize;
+        let samples = target.samples().count();
         let mut written = 0;
         for major in lo..hi {
             let along = major as f32 + 0.5 - a.x;
@@ -191,11 +193,16 @@ impl Pen {
             // The end pixels' centres can lie up to half a pixel beyond the ends: their depth is the end's.
             let t = float::clamp(along / length, 0.0, 1.0);
             let z = clamp_depth(a.z + t * dz - self.style.depth_bias);
-            let index = (y - self.row0) as usize * width + x as usize;
-            if depth_test.test(&mut target.depth, index, z) {
-                target.color.write(index, self.style.color);
-                written += 1;
+            // A line covers its pixels whole: every sample of a multisampled target's pixel.
+            let first = ((y - self.row0) as usize * width + x as usize) * samples;
+            let mut any = false;
+            for index in first..first + samples {
+                if depth_test.test(&mut target.depth, index, z) {
+                    target.color.write(index, self.style.color);
+                    any = true;
+                }
             }
+            written += u64::from(any);
         }
         written
     }

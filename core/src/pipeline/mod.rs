@@ -25,7 +25,9 @@
 //! # Rasterization
 //! Vertices snap to `2^-subpixel_bits` of a pixel; coverage is exact in `i64`; pixel centres at
 //! `(x + 0.5, y + 0.5)`; top-left fill rule (Direct3D 11.3 functional specification, 3.4.2.1). Depth is linear in
-//! screen space; varyings are perspective-correct or affine.
+//! screen space; varyings are perspective-correct or affine. On a multisampled target
+//! ([`crate::target::Target::multisampled`]) coverage and depth are tested at four samples per pixel, exactly and
+//! under the same rule, and each pixel is shaded once.
 
 mod batch;
 mod clip;

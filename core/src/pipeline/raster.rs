@@ -9,6 +9,12 @@
 //! Fill rule: a pixel centre exactly on an edge belongs to the triangle only if that edge is a top or a left edge
 //! (Direct3D 11.3 functional specification, 3.4.2.1; Pineda, "A Parallel Algorithm for Polygon Rasterization",
 //! SIGGRAPH 1988). Two triangles sharing an edge therefore cover each pixel on it exactly once.
+//!
+//! A multisampled target's pixels are covered sample by sample (`multisample.rs`): the same edge functions, times
+//! eight at the samples (which lie on eighths of a pixel), so that they stay exact integers and the same rule covers
+//! each sample on a shared edge exactly once.
+
+mod multisample;
 
 use super::batch::{BATCH_SIZE, FragmentBatch};
 use super::depth_stage::DepthStage;
@@ -18,7 +24,7 @@ use super::slopes::FractionSteps;
 use super::{Cull, Fragment, Shader, Slopes, Varyings, Winding};
 use crate::camera::Viewport;
 use crate::math::{Vec3, Vec4, float};
-use crate::target::{ColorBuffer, DEPTH_LANES, DepthBuffer, Target, VertexMemory, clamp_depth};
+use crate::target::{ColorBuffer, DEPTH_LANES, DepthBuffer, SAMPLE_REACH, Samples, Target, VertexMemory, clamp_depth};
 
 /// A vertex position in screen space, snapped to the sub-pixel grid (and kept unsnapped for `f32` edges).
 #[derive(Clone, Copy, Debug)]
@@ -94,6 +100,11 @@ pub(crate) struct Rasterizer {
     scale: f32,
     /// `S + 1`: pixels to fixed-point units.
     shift: u32,
+    /// The samples per pixel of the target.
+    samples: Samples,
+    /// How far the samples lie from the pixel centre, at most, in fixed-point units (rounded up) and in pixels: 0
+    /// with one sample per pixel.
+    reach: (i64, f32),
     width: i32,
     row0: i32,
     row1: i32,
@@ -108,22 +119,32 @@ impl Rasterizer {
         cull: Cull,
         front_face: Winding,
     ) -> Self {
-        Self::for_frame(target.width(), target.height(), target.rows(), subpixel_bits, cull, front_face)
+        let (width, height, rows, samples) = (target.width(), target.height(), target.rows(), target.samples());
+        Self::for_frame(width, height, rows, samples, subpixel_bits, cull, front_face)
     }
 
-    /// The rasterizer of a `width x height` frame drawn in rows `rows`.
+    /// The rasterizer of a `width x height` frame drawn in rows `rows` with `samples` per pixel.
     pub fn for_frame(
         width: u32,
         height: u32,
         rows: core::ops::Range<u32>,
+        samples: Samples,
         subpixel_bits: u8,
         cull: Cull,
         front_face: Winding,
     ) -> Self {
+        let shift = u32::from(subpixel_bits) + 1;
+        // Eighths of a pixel, 2^shift units each.
+        let reach = match samples {
+            Samples::One => (0, 0.0),
+            Samples::Four => (((i64::from(SAMPLE_REACH) << shift) + 7) >> 3, SAMPLE_REACH as f32 / 8.0),
+        };
         Self {
             viewport: Viewport::full(width, height),
             scale: (1u32 << subpixel_bits) as f32,
-            shift: u32::from(subpixel_bits) + 1,
+            shift,
+            samples,
+            reach,
             width: width as i32,
             row0: rows.start as i32,
             row1: rows.end as i32,
@@ -176,7 +197,8 @@ impl Rasterizer {
         if rows { (first.max(self.row0), last.min(self.row1 - 1)) } else { (first.max(0), last.min(self.width - 1)) }
     }
 
-    /// Exact fixed-point set-up: area, facing, bounding box and `i64` edge functions of the snapped triangle.
+    /// Exact fixed-point set-up: area, facing, bounding box and `i64` edge functions of the snapped triangle. On a
+    /// multisampled target the box takes in every pixel with a sample inside the triangle's bounds.
     #[inline(always)]
     pub fn setup_fixed(&self, v: [Snapped; 3]) -> Setup<FixedEdges> {
         // Element by element, not with array maps: `perf` put 8 to 15 % of sphere1m's samples in `try_map`.
@@ -191,9 +213,12 @@ impl Rasterizer {
 
         let shift = self.shift;
         let half = 1i64 << (shift - 1);
-        // Pixel centres inside the bounding box: i with (i << shift) + half in [min, max].
-        let (min_x, max_x) = (a.0.min(b.0).min(c.0), a.0.max(b.0).max(c.0));
-        let (min_y, max_y) = (a.1.min(b.1).min(c.1), a.1.max(b.1).max(c.1));
+        // Pixel centres inside the bounding box widened by the samples' reach (none with one sample): i with
+        // (i << shift) + half in [min - reach, max + reach]. (Rounded up, the reach may take in a pixel none of whose
+        // samples is inside: the pixel loop tests each.)
+        let reach = self.reach.0;
+        let (min_x, max_x) = (a.0.min(b.0).min(c.0) - reach, a.0.max(b.0).max(c.0) + reach);
+        let (min_y, max_y) = (a.1.min(b.1).min(c.1) - reach, a.1.max(b.1).max(c.1) + reach);
         let first_centre = |lo: i64| ((lo - half + (1 << shift) - 1) >> shift) as i32;
         let last_centre = |hi: i64| ((hi - half) >> shift) as i32;
         let (x0, x1) = self.centres(first_centre(min_x), last_centre(max_x), false);
@@ -219,7 +244,7 @@ impl Rasterizer {
             edges.step_x[k] = -dy << shift;
             edges.step_y[k] = dx << shift;
         }
-        let frame = Frame::new([x0, x1, y0, y1], front_facing, swapped, v, area.unsigned_abs() as f32);
+        let frame = Frame::new([x0, x1, y0, y1], front_facing, swapped, v, area.unsigned_abs() as f32, self.samples);
         Setup::Ready(Coverage { edges, frame })
     }
 
@@ -233,8 +258,11 @@ impl Rasterizer {
             return Setup::Degenerate;
         }
         let Some(front_facing) = self.facing(area > 0.0) else { return Setup::Culled };
+        // Widened by the samples' reach, as in `setup_fixed` (an exact multiple of 2^-3).
+        let reach = self.reach.1;
         let (min_x, max_x) = (float::min(a.0, float::min(b.0, c.0)), float::max(a.0, float::max(b.0, c.0)));
         let (min_y, max_y) = (float::min(a.1, float::min(b.1, c.1)), float::max(a.1, float::max(b.1, c.1)));
+        let (min_x, max_x, min_y, max_y) = (min_x - reach, max_x + reach, min_y - reach, max_y + reach);
         // Centres i + 0.5 in [lo, hi]: i from ceil(lo - 0.5) to floor(hi - 0.5).
         let first_centre = |lo: f32| -(float::floor(0.5 - lo) as i32);
         let last_centre = |hi: f32| float::floor(hi - 0.5) as i32;
@@ -256,7 +284,7 @@ impl Rasterizer {
             edges.b[k] = dx;
             edges.c[k] = dy * p.0 - dx * p.1;
         }
-        let frame = Frame::new([x0, x1, y0, y1], front_facing, swapped, v, float::abs(area));
+        let frame = Frame::new([x0, x1, y0, y1], front_facing, swapped, v, float::abs(area), self.samples);
         Setup::Ready(Coverage { edges, frame })
     }
 }
@@ -276,11 +304,20 @@ pub(crate) struct Frame {
     dz2: f32,
     inv_w: [f32; 3],
     inv_area: f32,
+    /// The target's samples per pixel: which pixel loop covers it.
+    samples: Samples,
 }
 
 impl Frame {
     #[inline(always)]
-    fn new([x0, x1, y0, y1]: [i32; 4], front_facing: bool, swapped: bool, v: [Snapped; 3], area: f32) -> Self {
+    fn new(
+        [x0, x1, y0, y1]: [i32; 4],
+        front_facing: bool,
+        swapped: bool,
+        v: [Snapped; 3],
+        area: f32,
+        samples: Samples,
+    ) -> Self {
         let inv_area = 1.0 / area;
         let [a, b, c] = oriented(swapped, v);
         let (za, zb, zc) = (a.z, b.z, c.z);
@@ -296,6 +333,7 @@ impl Frame {
             dz2: (zc - za) * inv_area,
             inv_w: [a.inv_w, b.inv_w, c.inv_w],
             inv_area,
+            samples,
         }
     }
 
@@ -336,14 +374,18 @@ impl<S, I: Interpolator, Z> Stages<'_, S, I, Z> {
 const SMALL_BOX: i64 = 4;
 
 impl<E: Edges> Coverage<E> {
-    /// False when the triangle covers none of the pixel centres of its bounding box in the target, which is tested
-    /// centre by centre for a box of at most [`SMALL_BOX`] centres; true otherwise. A dense mesh's triangles are
-    /// mostly smaller than a pixel and many cover no centre: this lets them skip their varyings and set-up.
+    /// False when the triangle covers none of the pixel centres (the samples, on a multisampled target) of its
+    /// bounding box in the target, which is tested centre by centre for a box of at most [`SMALL_BOX`] pixels; true
+    /// otherwise. A dense mesh's triangles are mostly smaller than a pixel and many cover no centre: this lets them
+    /// skip their varyings and set-up.
     #[inline(always)]
     pub fn covers_a_centre(&self) -> bool {
         let f = &self.frame;
         if i64::from(f.x1 - f.x0 + 1) * i64::from(f.y1 - f.y0 + 1) > SMALL_BOX {
             return true;
+        }
+        if f.samples != Samples::One {
+            return self.covers_a_sample();
         }
         for y in f.y0..=f.y1 {
             let mut e = self.edges.at(f.x0, y);
@@ -380,6 +422,9 @@ impl<E: Edges> Coverage<E> {
         M: VertexMemory,
     {
         let f = &self.frame;
+        if f.samples != Samples::One {
+            return self.fill_multisample(stages, face, varyings, batch, target);
+        }
         if !S::FRAGMENT_STAGE {
             // Depth only: nothing to shade. Several pixels at a time where the edge values fit `i32`.
             if let Some(lanes) = self.edges.lanes(f.x0, f.x1, f.y0, f.y1) {
@@ -572,7 +617,8 @@ impl<E: Edges> Coverage<E> {
 /// empties it. In a cut-out draw the fragments kept are found first (a batch with none is not shaded), and only
 /// those that still pass the depth test (against the depths written by those before them) are written, depth and
 /// colour; their number is returned (the fragments a cut-out draw counts); 0 otherwise (the others are counted
-/// when pushed).
+/// when pushed). On a multisampled target a fragment's colour goes to its samples (in a cut-out draw, to those
+/// that pass).
 ///
 /// Not inlined: it runs once per batch, and the draw loop calls it from three places (on the firmware its code
 /// is 4.2 KB).
@@ -598,6 +644,11 @@ where
         if keep[..batch.len()].contains(&true) {
             stages.shader.shade_batch(batch, &mut colors);
         }
+        if target.samples() != Samples::One {
+            let written = multisample::write_batch(&stages.depth, batch, Some(&keep), &colors, target);
+            batch.clear();
+            return written;
+        }
         let depths = batch.depths();
         let mut written = 0;
         for (i, &index) in batch.indices().iter().enumerate() {
@@ -609,8 +660,12 @@ where
         written
     } else {
         stages.shader.shade_batch(batch, &mut colors);
-        for (&index, &color) in batch.indices().iter().zip(&colors) {
-            target.color.write(index, color);
+        if target.samples() == Samples::One {
+            for (&index, &color) in batch.indices().iter().zip(&colors) {
+                target.color.write(index, color);
+            }
+        } else {
+            multisample::write_batch(&stages.depth, batch, None, &colors, target);
         }
         0
     };

@@ -5,6 +5,7 @@ use super::clip::{CLIP_MASK, ClipVolume};
 use super::raster::{Rasterizer, Snapped};
 use super::{Cull, Winding};
 use crate::math::Vec4;
+use crate::target::Samples;
 
 /// Outcode bit of a position that is not finite (NaN or infinite): its triangles are skipped.
 pub(crate) const NOT_FINITE: u16 = 1 << 15;
@@ -104,7 +105,8 @@ pub(crate) fn frame_screen_vertices(
     out: &mut [ScreenVertex],
 ) {
     let volume = ClipVolume::new(width, height, 0, height);
-    // Culling and winding do not enter the position stage.
-    let raster = Rasterizer::for_frame(width, height, 0..height, subpixel_bits, Cull::None, Winding::default());
+    // Culling, winding and the samples per pixel do not enter the position stage.
+    let raster =
+        Rasterizer::for_frame(width, height, 0..height, Samples::One, subpixel_bits, Cull::None, Winding::default());
     screen_vertices(position, first, &volume, &raster, out);
 }

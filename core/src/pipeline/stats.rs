@@ -23,7 +23,8 @@ pub struct DrawStats {
     /// Reached the pixel loop (they may still cover no pixel centre).
     pub rasterized: u64,
     /// Fragments that passed the depth test and were shaded. In a draw that discards fragments
-    /// ([`super::Shader::cutout`]): the fragments kept that passed it, as written.
+    /// ([`super::Shader::cutout`]): the fragments kept that passed it, as written. On a multisampled target a
+    /// fragment is a pixel of a triangle with a sample that passed (shaded once whatever the number).
     pub fragments: u64,
 }
 

@@ -4,8 +4,9 @@
 //! Rendering a frame as several bands, each into the same small buffers, gives exactly the pixels of rendering it
 //! whole: every pixel is computed from frame coordinates only, never from where its band starts.
 //!
-//!
-//! For anti-aliasing, render `k` times larger and average with [`downsample_rgb888`].
+//! For anti-aliasing, either store four samples per pixel ([`Target::multisampled`], [`Samples::Four`]: coverage
+//! and depth per sample, one shading per pixel) and average them with [`resolve_rgb888`], or render `k` times
+//! larger and average with [`downsample_rgb888`].
 //!
 //! ```
 //! use rastty_core::target::{Rgb565, Target};
@@ -21,6 +22,7 @@
 
 mod color_buffer;
 mod depth_buffer;
+mod samples;
 mod supersample;
 mod vertex_memory;
 
@@ -28,7 +30,9 @@ use core::ops::Range;
 
 pub use color_buffer::{ColorBuffer, NoColor, Rgb565, Rgb888};
 pub use depth_buffer::{DEPTH_LANES, DepthBuffer, NoDepth, clamp_depth, depth_to_u16};
-pub use supersample::downsample_rgb888;
+pub(crate) use samples::{SAMPLE_COUNT, SAMPLE_REACH};
+pub use samples::{SAMPLE_POSITIONS, Samples};
+pub use supersample::{downsample_rgb888, resolve_rgb888};
 pub use vertex_memory::{NoVertexMemory, SharedScreenVertices, VertexMemory};
 
 use crate::math::Vec3;
@@ -57,16 +61,16 @@ pub enum TargetError {
         /// The frame's height.
         height: u32,
     },
-    /// The colour buffer does not hold exactly one value per pixel of the band.
+    /// The colour buffer does not hold exactly one value per sample of the band.
     ColorLength {
-        /// Pixels in the band.
+        /// Samples in the band (its pixels times the samples per pixel).
         expected: usize,
         /// Values in the buffer.
         actual: usize,
     },
-    /// The depth buffer does not hold exactly one value per pixel of the band.
+    /// The depth buffer does not hold exactly one value per sample of the band.
     DepthLength {
-        /// Pixels in the band.
+        /// Samples in the band (its pixels times the samples per pixel).
         expected: usize,
         /// Values in the buffer.
         actual: usize,
@@ -84,10 +88,10 @@ impl core::fmt::Display for TargetError {
                 write!(f, "rows {}..{} are not a non-empty band of a {height}-row frame", rows.start, rows.end)
             }
             Self::ColorLength { expected, actual } => {
-                write!(f, "the colour buffer holds {actual} pixels, the band has {expected}")
+                write!(f, "the colour buffer holds {actual} values, the band has {expected} samples")
             }
             Self::DepthLength { expected, actual } => {
-                write!(f, "the depth buffer holds {actual} pixels, the band has {expected}")
+                write!(f, "the depth buffer holds {actual} values, the band has {expected} samples")
             }
         }
     }
@@ -95,7 +99,8 @@ impl core::fmt::Display for TargetError {
 
 impl core::error::Error for TargetError {}
 
-/// A colour buffer and a depth buffer holding rows `[y0, y1)` of a `width x height` frame.
+/// A colour buffer and a depth buffer holding rows `[y0, y1)` of a `width x height` frame, one value per sample:
+/// one sample per pixel, or four ([`Target::multisampled`]).
 #[derive(Debug)]
 pub struct Target<C: ColorBuffer, D: DepthBuffer, V: VertexMemory = NoVertexMemory> {
     pub(crate) color: C,
@@ -105,6 +110,7 @@ pub struct Target<C: ColorBuffer, D: DepthBuffer, V: VertexMemory = NoVertexMemo
     width: u32,
     height: u32,
     rows: Range<u32>,
+    samples: Samples,
 }
 
 impl<C: ColorBuffer, D: DepthBuffer> Target<C, D> {
@@ -124,6 +130,24 @@ impl<C: ColorBuffer, D: DepthBuffer> Target<C, D> {
     /// pixels a side, [`TargetError::Rows`] for an empty band or one outside the frame, and
     /// [`TargetError::ColorLength`] / [`TargetError::DepthLength`] when a buffer has the wrong length.
     pub fn band(color: C, depth: D, width: u32, height: u32, rows: Range<u32>) -> Result<Self, TargetError> {
+        Self::multisampled(color, depth, width, height, rows, Samples::One)
+    }
+
+    /// A target for rows `rows` of a `width x height` frame with `samples` per pixel: the buffers hold
+    /// `width * rows.len() * samples.count()` values, each pixel's samples one after the other (pixel `i`'s sample
+    /// `s` at `i * samples.count() + s`), in the order of [`SAMPLE_POSITIONS`]. Draws into it test coverage and
+    /// depth per sample and shade once per pixel; [`resolve_rgb888`] averages the samples into pixels.
+    ///
+    /// # Errors
+    /// As [`Target::band`], the lengths counted in samples.
+    pub fn multisampled(
+        color: C,
+        depth: D,
+        width: u32,
+        height: u32,
+        rows: Range<u32>,
+        samples: Samples,
+    ) -> Result<Self, TargetError> {
         if width == 0 || height == 0 {
             return Err(TargetError::Empty);
         }
@@ -133,7 +157,7 @@ impl<C: ColorBuffer, D: DepthBuffer> Target<C, D> {
         if rows.start >= rows.end || rows.end > height {
             return Err(TargetError::Rows { rows, height });
         }
-        let expected = width as usize * (rows.end - rows.start) as usize;
+        let expected = width as usize * (rows.end - rows.start) as usize * samples.count();
         match color.pixel_count() {
             Some(actual) if actual != expected => {
                 return Err(TargetError::ColorLength { expected, actual });
@@ -146,7 +170,7 @@ impl<C: ColorBuffer, D: DepthBuffer> Target<C, D> {
             }
             _ => {}
         }
-        Ok(Self { color, depth, vertices: NoVertexMemory, width, height, rows })
+        Ok(Self { color, depth, vertices: NoVertexMemory, width, height, rows, samples })
     }
 
     /// The same target with `memory` for the screen positions of its draws' vertices: a draw of a mesh of at most
@@ -156,8 +180,8 @@ impl<C: ColorBuffer, D: DepthBuffer> Target<C, D> {
         self,
         memory: &mut [crate::pipeline::ScreenVertex],
     ) -> Target<C, D, &mut [crate::pipeline::ScreenVertex]> {
-        let Self { color, depth, vertices: NoVertexMemory, width, height, rows } = self;
-        Target { color, depth, vertices: memory, width, height, rows }
+        let Self { color, depth, vertices: NoVertexMemory, width, height, rows, samples } = self;
+        Target { color, depth, vertices: memory, width, height, rows, samples }
     }
 
     /// The same target with the frame's screen vertices computed beforehand ([`SharedScreenVertices`]): a draw of
@@ -167,8 +191,8 @@ impl<C: ColorBuffer, D: DepthBuffer> Target<C, D> {
         self,
         shared: SharedScreenVertices<'v>,
     ) -> Target<C, D, Option<SharedScreenVertices<'v>>> {
-        let Self { color, depth, vertices: NoVertexMemory, width, height, rows } = self;
-        Target { color, depth, vertices: Some(shared), width, height, rows }
+        let Self { color, depth, vertices: NoVertexMemory, width, height, rows, samples } = self;
+        Target { color, depth, vertices: Some(shared), width, height, rows, samples }
     }
 }
 
@@ -192,6 +216,11 @@ impl<C: ColorBuffer, D: DepthBuffer, V: VertexMemory> Target<C, D, V> {
     /// The frame rows this target holds.
     pub fn rows(&self) -> Range<u32> {
         self.rows.clone()
+    }
+
+    /// The samples stored per pixel.
+    pub fn samples(&self) -> Samples {
+        self.samples
     }
 
     /// The colour buffer.

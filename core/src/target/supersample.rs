@@ -1,10 +1,12 @@
-//! Supersampling: a frame rendered at `k` times the resolution, averaged down to pixels.
+//! Anti-aliasing by averaging samples into pixels: the four samples of a multisampled pixel, or the `k x k` pixels
+//! of a frame rendered `k` times larger.
 //!
-//! Render into a target `k` times wider and higher (or into the matching band: rows `y0 * k .. y1 * k` of the
-//! large frame for rows `y0 .. y1` of the small one), then [`downsample_rgb888`] averages each `k x k` block: a box
-//! filter over `k^2` ordered samples per pixel, in linear light or on the stored codes.
+//! A multisampled target ([`super::Target::multisampled`]) stores each pixel's samples one after the other;
+//! [`resolve_rgb888`] averages them. For supersampling, render into a target `k` times wider and higher (or into
+//! the matching band: rows `y0 * k .. y1 * k` of the large frame for rows `y0 .. y1` of the small one), then
+//! [`downsample_rgb888`] averages each `k x k` block. Both are box filters, in linear light or on the stored codes.
 
-use super::TargetError;
+use super::{Samples, TargetError};
 use crate::color::{SRGB_DECODE, ShadingSpace, linear_to_srgb8};
 
 /// Averages `factor x factor` blocks of `0x00RRGGBB` samples (`sample_width` per row) into `out`, one pixel per
@@ -47,37 +49,77 @@ pub fn downsample_rgb888(
     if out.len() != w * h {
         return Err(TargetError::ColorLength { expected: w * h, actual: out.len() });
     }
-    let n = (f * f) as u32;
     let block = |y: usize, x: usize| {
         (0..f).flat_map(move |sy| {
             let start = (y * f + sy) * sw + x * f;
-            samples[start..start + f].iter().map(|&s| [(s >> 16) & 0xFF, (s >> 8) & 0xFF, s & 0xFF])
+            samples[start..start + f].iter().copied()
         })
     };
     for (y, row) in out.chunks_exact_mut(w).enumerate() {
         for (x, pixel) in row.iter_mut().enumerate() {
-            let [r, g, b] = match space {
-                ShadingSpace::Linear => {
-                    let mut sum = [0.0f32; 3];
-                    for codes in block(y, x) {
-                        for (total, code) in sum.iter_mut().zip(codes) {
-                            *total += SRGB_DECODE[code as usize];
-                        }
-                    }
-                    sum.map(|light| linear_to_srgb8(light / n as f32))
-                }
-                ShadingSpace::Encoded => {
-                    let mut sum = [0u32; 3];
-                    for codes in block(y, x) {
-                        for (total, code) in sum.iter_mut().zip(codes) {
-                            *total += code;
-                        }
-                    }
-                    sum.map(|c| (c + n / 2) / n)
-                }
-            };
-            *pixel = (r << 16) | (g << 8) | b;
+            *pixel = average(block(y, x), (f * f) as u32, space);
         }
     }
     Ok(())
+}
+
+/// Averages the samples of a multisampled colour buffer, `per_pixel` consecutive `0x00RRGGBB` values per pixel (the
+/// layout of [`super::Target::multisampled`]), into `out`, one value per pixel, as [`downsample_rgb888`] averages a
+/// block: in light or on the codes, as `space` says. A band's samples resolve to that band's pixels.
+///
+/// # Errors
+/// [`TargetError::ColorLength`] unless `samples` holds exactly `per_pixel` values for each pixel of `out`.
+///
+/// # Examples
+/// ```
+/// use rastty_core::color::ShadingSpace;
+/// use rastty_core::target::{Samples, resolve_rgb888};
+/// // A pixel with two of its four samples red: half the light of red.
+/// let samples = [0xFF0000, 0x000000, 0xFF0000, 0x000000];
+/// let mut pixel = [0u32; 1];
+/// resolve_rgb888(&samples, Samples::Four, ShadingSpace::Linear, &mut pixel).unwrap();
+/// assert_eq!(pixel, [0xBC0000]);
+/// ```
+pub fn resolve_rgb888(
+    samples: &[u32],
+    per_pixel: Samples,
+    space: ShadingSpace,
+    out: &mut [u32],
+) -> Result<(), TargetError> {
+    let n = per_pixel.count();
+    if samples.len() != out.len() * n {
+        return Err(TargetError::ColorLength { expected: out.len() * n, actual: samples.len() });
+    }
+    for (pixel, values) in out.iter_mut().zip(samples.chunks_exact(n)) {
+        *pixel = average(values.iter().copied(), n as u32, space);
+    }
+    Ok(())
+}
+
+/// The mean of `n` `0x00RRGGBB` values: in [`ShadingSpace::Linear`] of the light they show (each code decoded, the
+/// mean encoded to the nearest code), in [`ShadingSpace::Encoded`] of the codes (rounded to nearest).
+#[inline(always)]
+fn average(values: impl Iterator<Item = u32>, n: u32, space: ShadingSpace) -> u32 {
+    let channels = |v: u32| [(v >> 16) & 0xFF, (v >> 8) & 0xFF, v & 0xFF];
+    let [r, g, b] = match space {
+        ShadingSpace::Linear => {
+            let mut sum = [0.0f32; 3];
+            for value in values {
+                for (total, code) in sum.iter_mut().zip(channels(value)) {
+                    *total += SRGB_DECODE[code as usize];
+                }
+            }
+            sum.map(|light| linear_to_srgb8(light / n as f32))
+        }
+        ShadingSpace::Encoded => {
+            let mut sum = [0u32; 3];
+            for value in values {
+                for (total, code) in sum.iter_mut().zip(channels(value)) {
+                    *total += code;
+                }
+            }
+            sum.map(|c| (c + n / 2) / n)
+        }
+    };
+    (r << 16) | (g << 8) | b
 }

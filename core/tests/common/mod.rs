@@ -4,7 +4,9 @@
 use rastty_core::math::{Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh};
 use rastty_core::pipeline::{DrawState, DrawStats, Fragment, Shader, Slopes, draw};
-use rastty_core::target::{ColorBuffer, DEPTH_LANES, DepthBuffer, NoDepth, Rgb565, Rgb888, Target, depth_to_u16};
+use rastty_core::target::{
+    ColorBuffer, DEPTH_LANES, DepthBuffer, NoDepth, Rgb565, Rgb888, Samples, Target, depth_to_u16,
+};
 
 /// Counts how many times each pixel is written.
 pub struct Count<'a>(pub &'a mut [u32]);
@@ -53,10 +55,22 @@ pub fn coverage_rows(
     tris: &[Tri],
     state: &DrawState,
 ) -> (Vec<u32>, DrawStats) {
+    sample_coverage(width, height, rows, Samples::One, tris, state)
+}
+
+/// [`coverage_rows`] with `samples` per pixel: a count per sample (each pixel's samples one after the other).
+pub fn sample_coverage(
+    width: u32,
+    height: u32,
+    rows: core::ops::Range<u32>,
+    samples: Samples,
+    tris: &[Tri],
+    state: &DrawState,
+) -> (Vec<u32>, DrawStats) {
     let positions: Vec<Vec3> = tris.iter().flatten().map(|&(x, y)| Vec3::new(x, y, 0.5)).collect();
     let mesh = Mesh::new(&positions, Indices::Sequential).unwrap();
-    let mut counts = vec![0u32; (width * (rows.end - rows.start)) as usize];
-    let mut target = Target::band(Count(&mut counts), NoDepth, width, height, rows).unwrap();
+    let mut counts = vec![0u32; width as usize * (rows.end - rows.start) as usize * samples.count()];
+    let mut target = Target::multisampled(Count(&mut counts), NoDepth, width, height, rows, samples).unwrap();
     let shader = ScreenSpace { width: width as f32, height: height as f32 };
     let stats = draw(&mut target, &mesh, &shader, state).unwrap();
     (counts, stats)
@@ -451,6 +465,19 @@ pub fn frame<'c, 'd>(
     height: u32,
 ) -> Frame<'c, 'd> {
     Target::new(color.into(), depth.into(), width, height).unwrap()
+}
+
+/// The band `rows` of a `width x height` frame with `samples` per pixel, drawn into `color` and `depth` (as
+/// [`frame`]).
+pub fn multisampled<'c, 'd>(
+    color: impl Into<AnyColor<'c>>,
+    depth: impl Into<AnyDepth<'d>>,
+    width: u32,
+    height: u32,
+    rows: core::ops::Range<u32>,
+    samples: Samples,
+) -> Frame<'c, 'd> {
+    Target::multisampled(color.into(), depth.into(), width, height, rows, samples).unwrap()
 }
 
 /// The band `rows` of a `width x height` frame, drawn into `color` and `depth` (as [`frame`]).

@@ -11,7 +11,9 @@ use rastty_core::pipeline::DrawState;
 use rastty_core::shading::{
     Light, LightKind, Lighting, Material, Object, ShadingError, ShadingModel, Transforms, draw_mesh,
 };
-use rastty_core::target::{ColorBuffer, DepthBuffer, Rgb888, Target, TargetError, downsample_rgb888};
+use rastty_core::target::{
+    ColorBuffer, DepthBuffer, Rgb888, Samples, Target, TargetError, downsample_rgb888, resolve_rgb888,
+};
 use rastty_core::texture::{MipContent, MipFilter};
 
 use super::settings::{DepthFormat, LitShading, Setting};
@@ -184,7 +186,7 @@ pub struct Rendered {
     pub pixels: Vec<u32>,
     /// Fraction of each pixel's samples that some triangle covered.
     pub coverage: Vec<f64>,
-    /// Median time of a frame (clear, draw, and the resolve of supersampling).
+    /// Median time of a frame (clear, draw, and the resolve of supersampling or multisampling).
     pub median: Duration,
 }
 
@@ -215,7 +217,8 @@ pub struct Frames<'s> {
     k: u32,
     /// The size rendered: the frame's times `k`.
     size: (u32, u32),
-    /// The supersampled colour (empty without supersampling: the draw then writes `pixels` directly).
+    /// The supersampled or multisampled colour (empty with one sample per pixel: the draw then writes `pixels`
+    /// directly).
     samples: Vec<u32>,
     pixels: Vec<u32>,
     depth: DepthBuffers,
@@ -229,11 +232,11 @@ enum DepthBuffers {
 }
 
 impl<'s> Frames<'s> {
-    /// Buffers for `setting` on `scene`'s frame (supersampled when the setting says so).
+    /// Buffers for `setting` on `scene`'s frame (supersampled or multisampled when the setting says so).
     pub fn new(scene: &CoreScene<'_>, setting: &'s Setting) -> Self {
         let (w, h) = (scene.scene.width, scene.scene.height);
         let k = setting.supersample.max(1);
-        let n = (w * k) as usize * (h * k) as usize;
+        let n = (w * k) as usize * (h * k) as usize * setting.multisample.count();
         let depth = match setting.depth {
             DepthFormat::F32 => DepthBuffers::F32(vec![0.0; n]),
             DepthFormat::U16 => DepthBuffers::U16(vec![0; n]),
@@ -242,29 +245,38 @@ impl<'s> Frames<'s> {
             setting,
             k,
             size: (w * k, h * k),
-            samples: if k > 1 { vec![0; n] } else { Vec::new() },
+            samples: if n > (w * h) as usize { vec![0; n] } else { Vec::new() },
             pixels: vec![0; (w * h) as usize],
             depth,
             times: Vec::new(),
         }
     }
 
-    /// Renders one frame (clear, draw, and the resolve of supersampling) and records its time.
+    /// Renders one frame (clear, draw, and the resolve of supersampling or multisampling) and records its time.
     ///
     /// # Errors
     /// As [`CoreScene::draw`].
     pub fn time_one(&mut self, scene: &CoreScene<'_>) -> Result<(), CoreRenderError> {
-        let (sw, sh) = self.size;
-        let color = Rgb888(if self.k > 1 { &mut self.samples } else { &mut self.pixels });
+        let ((sw, sh), samples) = (self.size, self.setting.multisample);
+        let color = Rgb888(if self.samples.is_empty() { &mut self.pixels } else { &mut self.samples });
         let draw_time = match &mut self.depth {
-            DepthBuffers::F32(d) => timed_draw(scene, self.setting, Target::new(color, &mut d[..], sw, sh))?,
-            DepthBuffers::U16(d) => timed_draw(scene, self.setting, Target::new(color, &mut d[..], sw, sh))?,
+            DepthBuffers::F32(d) => {
+                timed_draw(scene, self.setting, Target::multisampled(color, &mut d[..], sw, sh, 0..sh, samples))?
+            }
+            DepthBuffers::U16(d) => {
+                timed_draw(scene, self.setting, Target::multisampled(color, &mut d[..], sw, sh, 0..sh, samples))?
+            }
         };
         let start = Instant::now();
-        if self.k > 1 {
-            let space = self.setting.space;
-            downsample_rgb888(&self.samples, sw, self.k, space, &mut self.pixels).map_err(CoreRenderError::Target)?;
-        }
+        let space = self.setting.space;
+        let resolved = if self.k > 1 {
+            downsample_rgb888(&self.samples, sw, self.k, space, &mut self.pixels)
+        } else if samples != Samples::One {
+            resolve_rgb888(&self.samples, samples, space, &mut self.pixels)
+        } else {
+            Ok(())
+        };
+        resolved.map_err(CoreRenderError::Target)?;
         self.times.push(draw_time + start.elapsed());
         Ok(())
     }
@@ -280,24 +292,30 @@ impl<'s> Frames<'s> {
         }
         let median = super::super::median(&self.times);
         let (w, h) = (scene.scene.width, scene.scene.height);
-        let (k, (sw, sh)) = (self.k, self.size);
-        let mut written = vec![0u8; sw as usize * sh as usize];
+        let (k, (sw, sh), samples) = (self.k, self.size, self.setting.multisample);
+        // A pixel's samples: its k x k block, each block holding `samples` side by side.
+        let (m, per_row) = (samples.count(), sw as usize * samples.count());
+        let mut written = vec![0u8; per_row * sh as usize];
         let color = Written(&mut written);
         match &mut self.depth {
-            DepthBuffers::F32(d) => timed_draw(scene, self.setting, Target::new(color, &mut d[..], sw, sh))?,
-            DepthBuffers::U16(d) => timed_draw(scene, self.setting, Target::new(color, &mut d[..], sw, sh))?,
+            DepthBuffers::F32(d) => {
+                timed_draw(scene, self.setting, Target::multisampled(color, &mut d[..], sw, sh, 0..sh, samples))?
+            }
+            DepthBuffers::U16(d) => {
+                timed_draw(scene, self.setting, Target::multisampled(color, &mut d[..], sw, sh, 0..sh, samples))?
+            }
         };
         let pixels = self.pixels;
-        let (kk, swu) = ((k * k) as f64, sw as usize);
+        let all = (k * k) as f64 * m as f64;
         let coverage = (0..(w * h) as usize)
             .map(|i| {
                 let (x, y) = (i % w as usize, i / w as usize);
                 let mut hits = 0u32;
                 for sy in 0..k as usize {
-                    let row = (y * k as usize + sy) * swu + x * k as usize;
-                    hits += written[row..row + k as usize].iter().map(|&b| u32::from(b)).sum::<u32>();
+                    let row = (y * k as usize + sy) * per_row + x * k as usize * m;
+                    hits += written[row..row + k as usize * m].iter().map(|&b| u32::from(b)).sum::<u32>();
                 }
-                f64::from(hits) / kk
+                f64::from(hits) / all
             })
             .collect();
         Ok(Rendered { pixels, coverage, median })

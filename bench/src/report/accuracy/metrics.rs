@@ -13,12 +13,12 @@ pub struct Score {
     pub max_error: u32,
     /// Pixels covered in one picture and not in the other: the pixel centre against the exact centre test for
     /// one sample per pixel; the majority of samples against the reference's coverage of at least one half with
-    /// supersampling.
+    /// supersampling or multisampling.
     pub coverage_errors: usize,
 }
 
-/// Scores `rendered` (drawn with `supersample` samples per axis) against `reference`.
-pub fn score(reference: &ReferenceImage, rendered: &Rendered, supersample: u32) -> Score {
+/// Scores `rendered` (drawn with one sample per pixel unless `sampled`) against `reference`.
+pub fn score(reference: &ReferenceImage, rendered: &Rendered, sampled: bool) -> Score {
     let psnr = reference.psnr_rgb888(&rendered.pixels).unwrap_or(f64::INFINITY);
     let truth = reference.to_rgb888();
     let channel = |p: u32, shift: u32| ((p >> shift) & 0xFF) as i32;
@@ -31,7 +31,7 @@ pub fn score(reference: &ReferenceImage, rendered: &Rendered, supersample: u32) 
     let coverage_errors = (0..truth.len())
         .filter(|&i| {
             let ours = rendered.coverage[i];
-            if supersample > 1 {
+            if sampled {
                 (ours >= 0.5) != (reference.coverage[i] >= 0.5)
             } else {
                 (ours > 0.0) != reference.centre_covered[i]

@@ -23,6 +23,7 @@ pub use metrics::{Score, score};
 use crate::reference;
 use rastty::escaped::path_text;
 use rastty::png_file::{write_atomically, write_png};
+use rastty_core::target::Samples;
 
 /// What to measure and where to write.
 #[derive(Clone, Debug)]
@@ -129,7 +130,8 @@ pub fn measure(options: &AccuracyOptions) -> Result<AccuracyReport, String> {
         let mut default_pixels = Vec::new();
         for (setting, f) in settings::ALL.into_iter().zip(frames) {
             let rendered = f.finish(&core).map_err(failed)?;
-            let score = score(&truth, &rendered, setting.supersample);
+            let sampled = setting.supersample > 1 || setting.multisample != Samples::One;
+            let score = score(&truth, &rendered, sampled);
             let same_as_default = if setting.is_default() {
                 default_pixels.clone_from(&rendered.pixels);
                 false

@@ -2,6 +2,7 @@
 
 use rastty_core::color::ShadingSpace;
 use rastty_core::pipeline::{DrawState, EdgeArithmetic, Interpolation};
+use rastty_core::target::Samples;
 use rastty_core::texture::{Anisotropy, FilterMode, MipFilter};
 
 /// How lit surfaces are shaded (unlit ones ignore it).
@@ -45,14 +46,16 @@ pub struct Setting {
     pub space: ShadingSpace,
     /// Shading of lit surfaces.
     pub shading: LitShading,
-    /// Samples per pixel along each axis.
+    /// Samples per pixel along each axis, each shaded (supersampling).
     pub supersample: u32,
+    /// Coverage and depth samples per pixel, shaded once (multisampling).
+    pub multisample: Samples,
     /// Depth format.
     pub depth: DepthFormat,
 }
 
 /// rastty's defaults: 8 sub-pixel bits, fixed-point edges, perspective-correct, bilinear, trilinear mipmaps,
-/// per-pixel lighting, linear light, one sample per pixel, `f32` depth.
+/// per-pixel lighting, linear light, one sample per pixel (neither supersampled nor multisampled), `f32` depth.
 pub const DEFAULT: Setting = Setting {
     name: "default",
     knob: "-",
@@ -64,11 +67,12 @@ pub const DEFAULT: Setting = Setting {
     space: ShadingSpace::Linear,
     shading: LitShading::Phong,
     supersample: 1,
+    multisample: Samples::One,
     depth: DepthFormat::F32,
 };
 
 /// Every setting measured: the default, then one knob at a time.
-pub const ALL: [Setting; 17] = [
+pub const ALL: [Setting; 18] = [
     DEFAULT,
     Setting { name: "0 sub-pixel bits", knob: "sub-pixel bits", subpixel_bits: 0, ..DEFAULT },
     Setting { name: "4 sub-pixel bits", knob: "sub-pixel bits", subpixel_bits: 4, ..DEFAULT },
@@ -83,6 +87,7 @@ pub const ALL: [Setting; 17] = [
     Setting { name: "sRGB-coded light", knob: "shading space", space: ShadingSpace::Encoded, ..DEFAULT },
     Setting { name: "flat", knob: "shading", shading: LitShading::Flat, ..DEFAULT },
     Setting { name: "Gouraud", knob: "shading", shading: LitShading::Gouraud, ..DEFAULT },
+    Setting { name: "4x MSAA", knob: "anti-aliasing", multisample: Samples::Four, ..DEFAULT },
     Setting { name: "2x2 SSAA", knob: "anti-aliasing", supersample: 2, ..DEFAULT },
     Setting { name: "4x4 SSAA", knob: "anti-aliasing", supersample: 4, ..DEFAULT },
     Setting { name: "u16 depth", knob: "depth buffer", depth: DepthFormat::U16, ..DEFAULT },
