@@ -27,7 +27,7 @@ use rastty_core::shading::{
 use rastty_core::shadow::{
     Bounds, ShadowBias, ShadowMap, ShadowView, WindowRanges, clear_shadow_depth, draw_shadow_caster, window_ranges_band,
 };
-use rastty_core::target::{ColorBuffer, DepthBuffer, NoColor, Rgb888, Samples, Target, depth_to_u16};
+use rastty_core::target::{ColorBuffer, DEPTH_LANES, DepthBuffer, NoColor, Rgb888, Samples, Target};
 use rastty_core::testing::{draw_mesh_general, draw_unspecialised};
 use rastty_core::texture::{
     Anisotropy, FilterMode, MipContent, MipFilter, Texture, WrapMode, build_mip_levels, mip_chain_texels,
@@ -362,8 +362,8 @@ impl Input {
 // Buffers that check the core's index contract
 // ---------------------------------------------------------------------------------------------------------------
 
-/// RGB888 like `Rgb888`, but a write at an index outside the buffer is a panic instead of being ignored: the core
-/// promises to write only below the length the target was checked against.
+/// RGB888 written through the core's `Rgb888`, but a write at an index outside the buffer is a panic instead of
+/// being ignored: the core promises to write only below the length the target was checked against.
 struct CheckedColor<'a>(&'a mut [u32]);
 
 impl ColorBuffer for CheckedColor<'_> {
@@ -373,65 +373,94 @@ impl ColorBuffer for CheckedColor<'_> {
     fn write(&mut self, index: usize, color: Vec3) {
         let len = self.0.len();
         assert!(index < len, "colour write at index {index} outside a buffer of {len} pixels");
-        self.0[index] = pack_rgb888(color);
+        Rgb888(&mut *self.0).write(index, color);
     }
     fn fill(&mut self, color: Vec3) {
-        self.0.fill(pack_rgb888(color));
+        Rgb888(&mut *self.0).fill(color);
     }
 }
 
-/// The depth buffers' contract: the pipeline hands a buffer only depths in `[0, 1]`, never NaN or `-0`
-/// (`rastty_core::target::clamp_depth`), whatever the draw.
-fn check_given_depth(z: f32) {
-    assert!(z.to_bits() <= 1f32.to_bits(), "a depth buffer was given {z:e} ({:#010x}), not in [0, 1]", z.to_bits());
+/// The values a [`CheckedDepth`] stores, in either of the core's depth formats.
+enum Depths<'a> {
+    F32(&'a mut [f32]),
+    /// Quantized by the core's `&mut [u16]` (`depth_to_u16`).
+    U16(&'a mut [u16]),
 }
 
-/// `f32` depth as a caller would write it (it stores what it is given), panicking on an index outside the buffer
-/// and on a depth outside the contract.
-struct CheckedDepth<'a>(&'a mut [f32]);
+/// A depth buffer as a caller holds it, `f32` or `u16`, stored through the core's own slice buffers, that panics on
+/// an index outside the buffer and on a depth outside the contract (in `[0, 1]`, never NaN or `-0`:
+/// `rastty_core::target::clamp_depth`).
+///
+/// With `shortcuts`, the early test of cut-out draws (`nearer`) and the lane-wise test go through the core's slices
+/// too; without, through the trait's defaults (shade every fragment, test pixel by pixel), so that a frame drawn
+/// one way and its bands the other prove the shortcuts change nothing. Every draw here uses this one depth type
+/// (and [`CheckedColor`]): each pair of buffer types instantiates the whole specialised pipeline again, most of
+/// this crate's instrumented build time.
+struct CheckedDepth<'a> {
+    depths: Depths<'a>,
+    shortcuts: bool,
+}
+
+impl<'a> CheckedDepth<'a> {
+    fn f32(depths: &'a mut [f32], shortcuts: bool) -> Self {
+        CheckedDepth { depths: Depths::F32(depths), shortcuts }
+    }
+
+    fn u16(depths: &'a mut [u16], shortcuts: bool) -> Self {
+        CheckedDepth { depths: Depths::U16(depths), shortcuts }
+    }
+
+    fn len(&self) -> usize {
+        match &self.depths {
+            Depths::F32(d) => d.len(),
+            Depths::U16(d) => d.len(),
+        }
+    }
+
+    /// Panics unless `index` is inside the buffer and `z` inside the contract.
+    fn check(&self, index: usize, z: f32) {
+        let len = self.len();
+        assert!(index < len, "depth test at index {index} outside a buffer of {len} pixels");
+        assert!(z.to_bits() <= 1f32.to_bits(), "a depth buffer was given {z:e} ({:#010x}), not in [0, 1]", z.to_bits());
+    }
+}
 
 impl DepthBuffer for CheckedDepth<'_> {
     fn pixel_count(&self) -> Option<usize> {
-        Some(self.0.len())
+        Some(self.len())
     }
     fn test_and_set(&mut self, index: usize, z: f32) -> bool {
-        let len = self.0.len();
-        assert!(index < len, "depth test at index {index} outside a buffer of {len} pixels");
-        check_given_depth(z);
-        let d = &mut self.0[index];
-        if z < *d {
-            *d = z;
-            true
-        } else {
-            false
+        self.check(index, z);
+        match &mut self.depths {
+            Depths::F32(d) => d.test_and_set(index, z),
+            Depths::U16(d) => d.test_and_set(index, z),
         }
     }
-    fn clear(&mut self) {
-        self.0.fill(1.0);
-    }
-}
-
-/// [`CheckedDepth`] in 16 bits, quantized as `&mut [u16]` quantizes.
-struct CheckedDepth16<'a>(&'a mut [u16]);
-
-impl DepthBuffer for CheckedDepth16<'_> {
-    fn pixel_count(&self) -> Option<usize> {
-        Some(self.0.len())
-    }
-    fn test_and_set(&mut self, index: usize, z: f32) -> bool {
-        let len = self.0.len();
-        assert!(index < len, "depth test at index {index} outside a buffer of {len} pixels");
-        check_given_depth(z);
-        let (q, d) = (depth_to_u16(z), &mut self.0[index]);
-        if q < *d {
-            *d = q;
-            true
-        } else {
-            false
+    fn nearer(&self, index: usize, z: f32) -> bool {
+        if !self.shortcuts {
+            return true;
+        }
+        self.check(index, z);
+        match &self.depths {
+            Depths::F32(d) => d.nearer(index, z),
+            Depths::U16(d) => d.nearer(index, z),
         }
     }
+    fn test_and_set_lanes(&mut self, start: usize, z: &[f32; DEPTH_LANES], covered: &[bool; DEPTH_LANES]) -> u32 {
+        for lane in (0..DEPTH_LANES).filter(|&lane| covered[lane]) {
+            self.check(start + lane, z[lane]);
+        }
+        if let (Depths::F32(d), true) = (&mut self.depths, self.shortcuts) {
+            return d.test_and_set_lanes(start, z, covered);
+        }
+        let passed = (0..DEPTH_LANES).filter(|&lane| covered[lane] && self.test_and_set(start + lane, z[lane]));
+        passed.count() as u32
+    }
     fn clear(&mut self) {
-        self.0.fill(u16::MAX);
+        match &mut self.depths {
+            Depths::F32(d) => d.clear(),
+            Depths::U16(d) => d.clear(),
+        }
     }
 }
 
@@ -522,7 +551,7 @@ fn compare_general(
     let mut color_g = vec![0u32; w * h];
     let mut depth_g = vec![0f32; w * h];
     {
-        let (c, d) = (CheckedColor(&mut color_g), CheckedDepth(&mut depth_g));
+        let (c, d) = (CheckedColor(&mut color_g), CheckedDepth::f32(&mut depth_g, false));
         let mut target = Target::multisampled(c, d, width, height, 0..height, samples).expect("a valid frame");
         target.clear(CLEAR);
         let (variant, stats) = draw_mesh_general(&mut target, object, lights, state)
@@ -815,12 +844,13 @@ pub fn run(input: Input) -> Option<DrawStats> {
     };
     let clear_color = pack_rgb888(CLEAR);
 
-    // 1. The whole frame through the specialised pipeline, into Rgb888 + f32.
+    // 1. The whole frame through the specialised pipeline, into RGB888 + f32 (the core's shortcuts on).
     let mut color = vec![0u32; w * h];
     let mut depth = vec![0f32; w * h];
     let (full_variant, full_stats);
     {
-        let mut target = Target::new(Rgb888(&mut color), &mut depth[..], width, height).expect("a valid frame");
+        let mut target = Target::new(CheckedColor(&mut color), CheckedDepth::f32(&mut depth, true), width, height)
+            .expect("a valid frame");
         target.clear(CLEAR);
         match draw_mesh(&mut target, &object, &lighting, &state) {
             Ok((variant, stats)) => {
@@ -838,7 +868,8 @@ pub fn run(input: Input) -> Option<DrawStats> {
                 assert!(depth.iter().all(|&d| d == 1.0), "a refused draw wrote depth");
                 // Same refusal through the general path; nothing else to check.
                 let (mut c2, mut d2) = (vec![0u32; w * h], vec![0f32; w * h]);
-                let mut t2 = Target::new(Rgb888(&mut c2), &mut d2[..], width, height).expect("a valid frame");
+                let mut t2 = Target::new(CheckedColor(&mut c2), CheckedDepth::f32(&mut d2, true), width, height)
+                    .expect("a valid frame");
                 t2.clear(CLEAR);
                 match draw_mesh_general(&mut t2, &object, &general_lighting, &state) {
                     Ok(s) => panic!("draw_mesh refused with {e:?} but draw_mesh_general drew {s:?}"),
@@ -861,7 +892,8 @@ pub fn run(input: Input) -> Option<DrawStats> {
     // 3. The wireframe over it.
     let mut line_stats = DrawStats::default();
     if let Some(style) = &style {
-        let mut target = Target::new(Rgb888(&mut color), &mut depth[..], width, height).expect("a valid frame");
+        let mut target = Target::new(CheckedColor(&mut color), CheckedDepth::f32(&mut depth, true), width, height)
+            .expect("a valid frame");
         let stats = draw_wireframe(&mut target, &object.mesh, &transforms.clip_from_object, style, &state);
         check_stats("draw_wireframe", &stats, triangles);
         check_line_fragments("draw_wireframe", &stats, width.into(), height.into());
@@ -873,7 +905,8 @@ pub fn run(input: Input) -> Option<DrawStats> {
     //    (Its depth tests differ from the f32 frame's where two depths quantize alike: nothing to compare there.)
     let (mut color16, mut depth16) = (vec![0u32; w * h], vec![0u16; w * h]);
     let frame16 = {
-        let mut target = Target::new(Rgb888(&mut color16), &mut depth16[..], width, height).expect("a valid frame");
+        let mut target = Target::new(CheckedColor(&mut color16), CheckedDepth::u16(&mut depth16, true), width, height)
+            .expect("a valid frame");
         let draws = (&object, &lighting, &state);
         draw_band(&mut target, (&full_variant, triangles), draws, style.as_ref(), "the frame, u16 depth")
     };
@@ -898,9 +931,14 @@ pub fn run(input: Input) -> Option<DrawStats> {
         let frame_rows = y0 as usize * w..y1 as usize * w;
         let draws = (&object, &lighting, &state);
         let (mut band_color, mut band_depth) = (vec![0u32; w * rows], vec![0f32; w * rows]);
-        let mut target =
-            Target::band(CheckedColor(&mut band_color), CheckedDepth(&mut band_depth), width, height, y0..y1)
-                .expect("a valid band");
+        let mut target = Target::band(
+            CheckedColor(&mut band_color),
+            CheckedDepth::f32(&mut band_depth, false),
+            width,
+            height,
+            y0..y1,
+        )
+        .expect("a valid band");
         let what = format!("band {y0}..{y1}");
         let (f, l) = draw_band(&mut target, (&full_variant, triangles), draws, style.as_ref(), &what);
         fragments = (fragments.0 + f, fragments.1 + l);
@@ -908,9 +946,14 @@ pub fn run(input: Input) -> Option<DrawStats> {
         compare_depths(&what, &bits(&band_depth), &bits(&depth[frame_rows.clone()]), w, y0);
 
         let (mut band_color, mut band_depth) = (vec![0u32; w * rows], vec![0u16; w * rows]);
-        let mut target =
-            Target::band(CheckedColor(&mut band_color), CheckedDepth16(&mut band_depth), width, height, y0..y1)
-                .expect("a valid band");
+        let mut target = Target::band(
+            CheckedColor(&mut band_color),
+            CheckedDepth::u16(&mut band_depth, false),
+            width,
+            height,
+            y0..y1,
+        )
+        .expect("a valid band");
         let what = format!("band {y0}..{y1}, u16 depth");
         let (f, l) = draw_band(&mut target, (&full_variant, triangles), draws, style.as_ref(), &what);
         fragments16 = (fragments16.0 + f, fragments16.1 + l);
@@ -949,9 +992,15 @@ fn check_multisampled(
     let row = width as usize * n;
     let (mut color, mut depth) = (vec![0u32; row * height as usize], vec![0f32; row * height as usize]);
     let stats = {
-        let mut target =
-            Target::multisampled(Rgb888(&mut color), &mut depth[..], width, height, 0..height, Samples::Four)
-                .expect("a valid frame");
+        let mut target = Target::multisampled(
+            CheckedColor(&mut color),
+            CheckedDepth::f32(&mut depth, true),
+            width,
+            height,
+            0..height,
+            Samples::Four,
+        )
+        .expect("a valid frame");
         target.clear(CLEAR);
         let (variant, stats) = draw_mesh(&mut target, object, lights, state).expect("the frame's draw was accepted");
         assert_same_variant("four samples", &variant, frame_variant);
@@ -963,9 +1012,15 @@ fn check_multisampled(
     let full = (frame_variant, &stats);
     compare_general(object, general_lights, state, (width, height, Samples::Four), (&color, &depth), full);
     let lines = style.map_or(0, |style| {
-        let mut target =
-            Target::multisampled(Rgb888(&mut color), &mut depth[..], width, height, 0..height, Samples::Four)
-                .expect("a valid frame");
+        let mut target = Target::multisampled(
+            CheckedColor(&mut color),
+            CheckedDepth::f32(&mut depth, true),
+            width,
+            height,
+            0..height,
+            Samples::Four,
+        )
+        .expect("a valid frame");
         let lines = draw_wireframe(&mut target, &object.mesh, &object.transforms.clip_from_object, style, state);
         check_stats("four samples, wireframe", &lines, triangles);
         check_line_fragments("four samples, wireframe", &lines, width.into(), height.into());
@@ -975,7 +1030,7 @@ fn check_multisampled(
     for &(y0, y1) in bands.iter().filter(|(y0, y1)| y0 < y1) {
         let samples = y0 as usize * row..y1 as usize * row;
         let (mut band_color, mut band_depth) = (vec![0u32; samples.len()], vec![0f32; samples.len()]);
-        let (c, d) = (CheckedColor(&mut band_color), CheckedDepth(&mut band_depth));
+        let (c, d) = (CheckedColor(&mut band_color), CheckedDepth::f32(&mut band_depth, false));
         let mut target = Target::multisampled(c, d, width, height, y0..y1, Samples::Four).expect("a valid band");
         let what = format!("four samples, band {y0}..{y1} (x counts samples)");
         let (f, l) = draw_band(&mut target, (frame_variant, triangles), (object, lights, state), style, &what);
@@ -1036,26 +1091,28 @@ fn check_depth_only(
     let n = (width * height) as usize;
     let depth_only = Positions::<false>(*clip_from_object);
     let (mut colors, mut shaded) = (vec![0u32; n], vec![0f32; n]);
-    let mut target = Target::new(CheckedColor(&mut colors), &mut shaded[..], width, height).expect("a valid frame");
+    let mut target = Target::new(CheckedColor(&mut colors), CheckedDepth::f32(&mut shaded, true), width, height)
+        .expect("a valid frame");
     target.clear(CLEAR);
     let expected = match draw(&mut target, mesh, &Positions::<true>(*clip_from_object), state) {
         Ok(stats) => stats,
         Err(e) => {
             assert!(matches!(e, DrawError::SubpixelBits(_)), "a shader that reads no attribute was refused: {e:?}");
             let mut depth = vec![1f32; n];
-            let mut target = Target::new(NoColor, &mut depth[..], width, height).expect("a valid frame");
+            let mut target =
+                Target::new(NoColor, CheckedDepth::f32(&mut depth, true), width, height).expect("a valid frame");
             assert_eq!(draw(&mut target, mesh, &depth_only, state), Err(e), "the depth-only pass refuses alike");
             return;
         }
     };
     let mut depth = vec![0f32; n];
-    let mut target = Target::new(NoColor, &mut depth[..], width, height).expect("a valid frame");
+    let mut target = Target::new(NoColor, CheckedDepth::f32(&mut depth, true), width, height).expect("a valid frame");
     target.clear(CLEAR);
     let stats = draw(&mut target, mesh, &depth_only, state).expect("the shaded pass was accepted");
     assert_eq!(stats, expected, "depth-only pass: statistics");
     compare_depths("depth-only pass", &bits(&depth), &bits(&shaded), width as usize, 0);
 
-    let mut target = Target::new(NoColor, CheckedDepth(&mut depth), width, height).expect("a valid frame");
+    let mut target = Target::new(NoColor, CheckedDepth::f32(&mut depth, false), width, height).expect("a valid frame");
     target.clear(CLEAR);
     let stats = draw_unspecialised(&mut target, mesh, &depth_only, state).expect("the shaded pass was accepted");
     assert_eq!(stats, expected, "depth-only pass, general pixel loop: statistics");
@@ -1065,7 +1122,8 @@ fn check_depth_only(
     for &(y0, y1) in bands.iter().filter(|(y0, y1)| y0 < y1) {
         let rows = y0 as usize * width as usize..y1 as usize * width as usize;
         let mut band = vec![0f32; rows.len()];
-        let mut target = Target::band(NoColor, CheckedDepth(&mut band), width, height, y0..y1).expect("a valid band");
+        let mut target =
+            Target::band(NoColor, CheckedDepth::f32(&mut band, false), width, height, y0..y1).expect("a valid band");
         target.clear(CLEAR);
         fragments += draw(&mut target, mesh, &depth_only, state).expect("the shaded pass was accepted").fragments;
         let what = format!("depth-only pass, band {y0}..{y1}");
