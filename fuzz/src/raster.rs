@@ -378,6 +378,13 @@ impl ColorBuffer for CheckedColor<'_> {
     fn fill(&mut self, color: Vec3) {
         Rgb888(&mut *self.0).fill(color);
     }
+    fn write_samples(&mut self, first: usize, mask: u8, color: Vec3) {
+        if mask != 0 {
+            let (len, last) = (self.0.len(), first + 7 - mask.leading_zeros() as usize);
+            assert!(last < len, "sample write at index {last} outside a buffer of {len} values");
+        }
+        Rgb888(&mut *self.0).write_samples(first, mask, color);
+    }
 }
 
 /// The values a [`CheckedDepth`] stores, in either of the core's depth formats.

@@ -361,12 +361,55 @@ pub(crate) struct Stages<'s, S, I, Z> {
     pub slopes: bool,
 }
 
-impl<S, I: Interpolator, Z> Stages<'_, S, I, Z> {
+/// A triangle's varyings as the pixel loops interpolate them, made once per triangle by
+/// [`Stages::triangle_varyings`].
+struct TriangleVaryings<V, T> {
+    /// The first (oriented) vertex's varyings and the differences to the second's and the third's.
+    v0: V,
+    d1: V,
+    d2: V,
+    /// The interpolator's set-up.
+    setup: T,
+    /// The fraction steps when the draw reads slopes, zero otherwise.
+    steps: FractionSteps,
+    /// Zero slopes, for draws that do not read them.
+    no_slopes: Slopes<V>,
+}
+
+impl<S: Shader, I: Interpolator, Z> Stages<'_, S, I, Z> {
     /// The fraction steps of a triangle with interpolator set-up `setup` and edge functions `edges`, when the draw
     /// reads slopes; zero otherwise.
     #[inline(always)]
     fn fraction_steps<E: Edges>(&self, setup: &I::Setup, edges: &E) -> FractionSteps {
         if self.slopes { self.interpolator.fraction_steps(setup, edges.steps()) } else { FractionSteps::default() }
+    }
+
+    /// The varyings of the triangle covering `frame` with edge functions `edges`, given for its input vertices in
+    /// input order, ready for [`Self::interpolate`] (or a batch).
+    #[inline(always)]
+    fn triangle_varyings<E: Edges>(
+        &self,
+        frame: &Frame,
+        edges: &E,
+        varyings: [&S::Varyings; 3],
+    ) -> TriangleVaryings<S::Varyings, I::Setup> {
+        let setup = self.interpolator.setup(frame.inv_w, frame.inv_area);
+        let steps = self.fraction_steps(&setup, edges);
+        let [v0, v1, v2] = oriented(frame.swapped, varyings);
+        TriangleVaryings { v0: *v0, d1: v1.sub(v0), d2: v2.sub(v0), setup, steps, no_slopes: Slopes::zero(v0) }
+    }
+
+    /// A fragment's varyings at edge weights `ef` and, when the draw reads them, their slopes (zero otherwise).
+    #[inline(always)]
+    fn interpolate(
+        &self,
+        t: &TriangleVaryings<S::Varyings, I::Setup>,
+        ef: [f32; 3],
+    ) -> (S::Varyings, Slopes<S::Varyings>) {
+        let [w1, w2, r] = self.interpolator.weights(&t.setup, ef);
+        let var = t.v0.interpolate(&t.d1, w1, &t.d2, w2);
+        let slopes = if self.slopes { Slopes::of(&t.d1, &t.d2, t.steps.weight_slopes(w1, w2, r)) } else { t.no_slopes };
+        (var, slopes)
     }
 }
 
@@ -438,19 +481,7 @@ impl<E: Edges> Coverage<E> {
             };
         }
         let edges = &self.edges;
-        let setup = stages.interpolator.setup(f.inv_w, f.inv_area);
-        let steps = stages.fraction_steps(&setup, edges);
-        let [v0, v1, v2] = oriented(f.swapped, varyings);
-        let (var_d1, var_d2) = (v1.sub(v0), v2.sub(v0));
-        // The fragment's varyings and, when the draw reads them, their slopes (zero otherwise, made once).
-        let no_slopes = Slopes::zero(v0);
-        let interpolate = |ef: [f32; 3]| {
-            let [w1, w2, r] = stages.interpolator.weights(&setup, ef);
-            let var = v0.interpolate(&var_d1, w1, &var_d2, w2);
-            let slopes =
-                if stages.slopes { Slopes::of(&var_d1, &var_d2, steps.weight_slopes(w1, w2, r)) } else { no_slopes };
-            (var, slopes)
-        };
+        let triangle = stages.triangle_varyings(f, edges, varyings);
         let width = target.width() as usize;
         let row0 = target.rows().start as i32;
         let mut shaded = 0u64;
@@ -470,7 +501,7 @@ impl<E: Edges> Coverage<E> {
                 if S::CUTOUT && stages.cutout {
                     // Shaded when nearer, written (and counted) when kept and still nearer.
                     if stages.depth.nearer(&target.depth, index, z) {
-                        let (var, slopes) = interpolate(ef);
+                        let (var, slopes) = stages.interpolate(&triangle, ef);
                         let fragment = Fragment { x: x as u32, y: y as u32, depth: z, front_facing: f.front_facing };
                         if stages.shader.kept(&fragment, face, &var, &slopes)
                             && stages.depth.test(&mut target.depth, index, z)
@@ -482,7 +513,7 @@ impl<E: Edges> Coverage<E> {
                 } else if stages.depth.test(&mut target.depth, index, z) {
                     // A constant: a depth-only shader compiles without the fragment stage.
                     if S::FRAGMENT_STAGE {
-                        let (var, slopes) = interpolate(ef);
+                        let (var, slopes) = stages.interpolate(&triangle, ef);
                         let fragment = Fragment { x: x as u32, y: y as u32, depth: z, front_facing: f.front_facing };
                         let color = stages.shader.fragment(&fragment, face, &var, &slopes);
                         target.color.write(index, color);

@@ -14,6 +14,33 @@ pub trait ColorBuffer {
     fn write(&mut self, index: usize, color: Vec3);
     /// Sets every pixel to `color`.
     fn fill(&mut self, color: Vec3);
+    /// Stores `color` at index `first + s` for every bit `s` set in `mask`: the samples of one pixel of a
+    /// multisampled target that a triangle reached (see [`super::Samples`]). By default one [`Self::write`] each;
+    /// a format that converts the colour can convert it once.
+    #[inline(always)]
+    fn write_samples(&mut self, first: usize, mask: u8, color: Vec3) {
+        for_each_sample(mask, |s| self.write(first + s, color));
+    }
+}
+
+/// Calls `f` with the index of every bit set in `mask`, lowest first.
+#[inline(always)]
+fn for_each_sample(mask: u8, mut f: impl FnMut(usize)) {
+    let mut rest = mask;
+    while rest != 0 {
+        f(rest.trailing_zeros() as usize);
+        rest &= rest - 1;
+    }
+}
+
+/// Stores the packed value `packed` at index `first + s` of `buffer` for every bit `s` set in `mask`.
+#[inline(always)]
+fn store_samples<T: Copy>(buffer: &mut [T], first: usize, mask: u8, packed: T) {
+    for_each_sample(mask, |s| {
+        if let Some(p) = buffer.get_mut(first + s) {
+            *p = packed;
+        }
+    });
 }
 
 /// `0x00RRGGBB` pixels in `u32`s (see [`crate::color`]).
@@ -32,6 +59,10 @@ impl ColorBuffer for Rgb888<'_> {
     }
     fn fill(&mut self, color: Vec3) {
         self.0.fill(pack_rgb888(color));
+    }
+    #[inline(always)]
+    fn write_samples(&mut self, first: usize, mask: u8, color: Vec3) {
+        store_samples(self.0, first, mask, pack_rgb888(color));
     }
 }
 
@@ -52,6 +83,10 @@ impl ColorBuffer for Rgb565<'_> {
     fn fill(&mut self, color: Vec3) {
         self.0.fill(pack_rgb565(color));
     }
+    #[inline(always)]
+    fn write_samples(&mut self, first: usize, mask: u8, color: Vec3) {
+        store_samples(self.0, first, mask, pack_rgb565(color));
+    }
 }
 
 /// No colour at all: for depth-only passes.
@@ -65,4 +100,39 @@ impl ColorBuffer for NoColor {
     #[inline(always)]
     fn write(&mut self, _: usize, _: Vec3) {}
     fn fill(&mut self, _: Vec3) {}
+    #[inline(always)]
+    fn write_samples(&mut self, _: usize, _: u8, _: Vec3) {}
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The packed formats' one conversion stores what a [`ColorBuffer::write`] per sample stores, for every mask,
+    /// including samples past the buffer's end (ignored, as `write` ignores them).
+    #[test]
+    fn write_samples_equals_a_write_per_sample() {
+        let color = Vec3::new(0.8, 0.25, 0.6);
+        for first in [0, 3, 6] {
+            for mask in 0..=u8::MAX {
+                let (mut one, mut each) = ([7u32; 10], [7u32; 10]);
+                Rgb888(&mut one).write_samples(first, mask, color);
+                for s in (0..8).filter(|s| mask >> s & 1 == 1) {
+                    Rgb888(&mut each).write(first + s, color);
+                }
+                assert_eq!(one, each, "Rgb888, first {first}, mask {mask:#010b}");
+                let (mut one, mut each) = ([7u16; 10], [7u16; 10]);
+                Rgb565(&mut one).write_samples(first, mask, color);
+                for s in (0..8).filter(|s| mask >> s & 1 == 1) {
+                    Rgb565(&mut each).write(first + s, color);
+                }
+                assert_eq!(one, each, "Rgb565, first {first}, mask {mask:#010b}");
+            }
+        }
+        // A mask that sets every second sample writes exactly those.
+        let mut buffer = [0u32; 8];
+        Rgb888(&mut buffer).write_samples(0, 0b0101_0101, color);
+        let packed = pack_rgb888(color);
+        assert_eq!(buffer, [packed, 0, packed, 0, packed, 0, packed, 0]);
+    }
 }

@@ -407,6 +407,13 @@ impl ColorBuffer for AnyColor<'_> {
             Self::Rgb565(c) => c.fill(color),
         }
     }
+    fn write_samples(&mut self, first: usize, mask: u8, color: Vec3) {
+        match self {
+            Self::Exact(c) => c.write_samples(first, mask, color),
+            Self::Rgb888(c) => c.write_samples(first, mask, color),
+            Self::Rgb565(c) => c.write_samples(first, mask, color),
+        }
+    }
 }
 
 /// The depth buffer of a frame or band: the library's (lane-wise where it can be) or a caller's own (pixel by
@@ -488,7 +495,7 @@ pub fn band<'c, 'd>(
     height: u32,
     rows: core::ops::Range<u32>,
 ) -> Frame<'c, 'd> {
-    Target::band(color.into(), depth.into(), width, height, rows).unwrap()
+    multisampled(color, depth, width, height, rows, Samples::One)
 }
 
 impl<'a> From<ExactColor<'a>> for AnyColor<'a> {

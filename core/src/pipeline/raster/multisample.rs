@@ -1,6 +1,8 @@
 //! The pixel loop of a multisampled target: coverage and depth at four samples per pixel, one shading per pixel.
 //!
-//! Each pixel of the triangle's box (widened by the samples' reach) has its edge functions evaluated at the four
+//! Each row of the triangle's box (widened by the samples' reach) skips to its first pixel with a covered sample,
+//! testing each edge's largest sample value (`Edges::sample_reach`), and is left at the first pixel past the
+//! covered ones (`Edges::closed`); each pixel between has its edge functions evaluated at the four
 //! [`SAMPLE_POSITIONS`](crate::target::SAMPLE_POSITIONS) from their values at its centre: fixed-point edges as
 //! eight times their value (the positions are eighths of a pixel), whole numbers, so coverage is exact and the
 //! top-left rule gives each sample on a shared edge to exactly one triangle. Each covered sample is tested at its
@@ -11,13 +13,13 @@
 //! A band of rows gets the frame's samples, as a band gets the frame's pixels: every value is computed from frame
 //! coordinates.
 
-use super::{Coverage, Stages, oriented, shade_batch};
+use super::{Coverage, Stages, shade_batch};
 use crate::math::Vec3;
 use crate::pipeline::batch::{BATCH_SIZE, FragmentBatch};
 use crate::pipeline::depth_stage::DepthStage;
 use crate::pipeline::edges::Edges;
 use crate::pipeline::interpolator::Interpolator;
-use crate::pipeline::{Fragment, Shader, Slopes, Varyings};
+use crate::pipeline::{Fragment, Shader, Varyings};
 use crate::target::{ColorBuffer, DepthBuffer, SAMPLE_COUNT, Target, VertexMemory};
 
 impl<E: Edges> Coverage<E> {
@@ -29,8 +31,12 @@ impl<E: Edges> Coverage<E> {
         for y in f.y0..=f.y1 {
             let mut centre = edges.at(f.x0, y);
             for _ in f.x0..=f.x1 {
-                if offsets.iter().any(|o| edges.covered(&edges.at_sample(&centre, o))) {
+                let at = offsets.map(|o| edges.at_sample(&centre, &o));
+                if at.iter().any(|a| edges.covered(a)) {
                     return true;
+                }
+                if at.iter().all(|a| edges.closed(a)) {
+                    break;
                 }
                 centre = edges.step(centre);
             }
@@ -58,14 +64,11 @@ impl<E: Edges> Coverage<E> {
         M: VertexMemory,
     {
         let (f, edges) = (&self.frame, &self.edges);
-        let offsets = edges.sample_offsets();
-        let setup = stages.interpolator.setup(f.inv_w, f.inv_area);
-        let steps = stages.fraction_steps(&setup, edges);
-        let [v0, v1, v2] = oriented(f.swapped, varyings);
-        let (d1, d2) = (v1.sub(v0), v2.sub(v0));
+        let (offsets, reach) = (edges.sample_offsets(), edges.sample_reach());
+        let triangle = stages.triangle_varyings(f, edges, varyings);
         let batched = S::FRAGMENT_STAGE && S::BATCHED;
         if batched {
-            batch.start_triangle([*v0, d1, d2], *face, f.front_facing, steps);
+            batch.start_triangle([triangle.v0, triangle.d1, triangle.d2], *face, f.front_facing, triangle.steps);
         }
         // A draw that may discard fragments compares depths first and tests them once a fragment is kept.
         let cutout = S::CUTOUT && stages.cutout;
@@ -73,13 +76,32 @@ impl<E: Edges> Coverage<E> {
         let row0 = target.rows().start as i32;
         let mut shaded = 0u64;
         for y in f.y0..=f.y1 {
-            let mut next = edges.at(f.x0, y);
-            for x in f.x0..=f.x1 {
+            // Skip the pixels left of the covered ones with one test per pixel, at each edge's largest sample
+            // value, as the single-sample loop skips with its centre's; and leave the row if that fails an edge
+            // that only falls to the right.
+            let (mut next, mut x0) = (edges.at(f.x0, y), f.x0);
+            while x0 <= f.x1 {
+                let largest = edges.at_sample(&next, &reach);
+                if edges.covered(&largest) {
+                    break;
+                }
+                if edges.closed(&largest) {
+                    x0 = f.x1 + 1;
+                    break;
+                }
+                next = edges.step(next);
+                x0 += 1;
+            }
+            for x in x0..=f.x1 {
                 let centre = next;
                 next = edges.step(next);
                 let at: [E::At; SAMPLE_COUNT] = core::array::from_fn(|s| edges.at_sample(&centre, &offsets[s]));
                 let covered = (0..SAMPLE_COUNT).fold(0u8, |m, s| m | (u8::from(edges.covered(&at[s])) << s));
                 if covered == 0 {
+                    // Past the covered pixels once every sample has failed an edge that only falls to the right.
+                    if at.iter().all(|a| edges.closed(a)) {
+                        break;
+                    }
                     continue;
                 }
                 let first = ((y - row0) as usize * width + x as usize) * SAMPLE_COUNT;
@@ -108,25 +130,15 @@ impl<E: Edges> Coverage<E> {
                     if !cutout {
                         shaded += 1;
                     }
-                    let fractions = stages.interpolator.fractions(&setup, ef);
+                    let fractions = stages.interpolator.fractions(&triangle.setup, ef);
                     if batch.push_samples(x as u32, y as u32, z, fractions, first, (passed, depths)) {
                         shaded += shade_batch(stages, batch, target);
                     }
                     continue;
                 }
                 let fragment = Fragment { x: x as u32, y: y as u32, depth: z, front_facing: f.front_facing };
-                let interpolate = || {
-                    let [w1, w2, r] = stages.interpolator.weights(&setup, ef);
-                    let var = v0.interpolate(&d1, w1, &d2, w2);
-                    let slopes = if stages.slopes {
-                        Slopes::of(&d1, &d2, steps.weight_slopes(w1, w2, r))
-                    } else {
-                        Slopes::zero(v0)
-                    };
-                    (var, slopes)
-                };
                 if cutout {
-                    let (var, slopes) = interpolate();
+                    let (var, slopes) = stages.interpolate(&triangle, ef);
                     if stages.shader.kept(&fragment, face, &var, &slopes) {
                         let color = stages.shader.fragment(&fragment, face, &var, &slopes);
                         let written = write_tested(&stages.depth, target, first, (passed, &depths), color);
@@ -135,7 +147,7 @@ impl<E: Edges> Coverage<E> {
                 } else {
                     // A constant: a depth-only shader compiles without the fragment stage.
                     if S::FRAGMENT_STAGE {
-                        let (var, slopes) = interpolate();
+                        let (var, slopes) = stages.interpolate(&triangle, ef);
                         write(target, first, passed, stages.shader.fragment(&fragment, face, &var, &slopes));
                     }
                     shaded += 1;
@@ -154,9 +166,7 @@ fn write<C: ColorBuffer, D: DepthBuffer, M: VertexMemory>(
     mask: u8,
     color: Vec3,
 ) {
-    for s in (0..SAMPLE_COUNT).filter(|s| mask >> s & 1 == 1) {
-        target.color.write(first + s, color);
-    }
+    target.color.write_samples(first, mask, color);
 }
 
 /// Tests the samples in `mask` from sample index `first` at their `depths` and writes `color` to those that pass:
@@ -169,14 +179,12 @@ fn write_tested<Z: DepthStage, C: ColorBuffer, D: DepthBuffer, M: VertexMemory>(
     (mask, depths): (u8, &[f32; SAMPLE_COUNT]),
     color: Vec3,
 ) -> bool {
-    let mut any = false;
+    let mut passed = 0u8;
     for s in (0..SAMPLE_COUNT).filter(|s| mask >> s & 1 == 1) {
-        if depth.test(&mut target.depth, first + s, depths[s]) {
-            target.color.write(first + s, color);
-            any = true;
-        }
+        passed |= u8::from(depth.test(&mut target.depth, first + s, depths[s])) << s;
     }
-    any
+    target.color.write_samples(first, passed, color);
+    passed != 0
 }
 
 /// [`shade_batch`]'s writes on a multisampled target: each fragment's colour to its samples; in a cut-out draw
