@@ -29,16 +29,25 @@ fn rows_are_the_scene_with_its_shadow_maps_kept_drawn_and_left_out() {
     let labels: Vec<&str> = with.iter().map(|r| r.label).collect();
     assert_eq!(
         labels,
-        ["every effect, shadow maps kept", "every effect, shadow maps drawn every frame", "every effect but shadows"]
+        [
+            "every effect, shadow maps kept",
+            "every effect, shadow maps drawn every frame",
+            "every effect but shadows",
+            "every effect, 4x MSAA, shadow maps kept"
+        ]
     );
-    assert_eq!((with[0].effects, with[0].maps), (EffectToggles::ALL_ON, ShadowMaps::Kept));
-    assert_eq!((with[1].effects, with[1].maps), (EffectToggles::ALL_ON, ShadowMaps::Drawn));
-    let mut no_shadows = EffectToggles::ALL_ON;
+    let all = EffectToggles::ALL_ON;
+    assert_eq!((with[0].effects, with[0].maps, with[0].multisample), (all, ShadowMaps::Kept, false));
+    assert_eq!((with[1].effects, with[1].maps, with[1].multisample), (all, ShadowMaps::Drawn, false));
+    let mut no_shadows = all;
     no_shadows.set(SceneEffect::Shadows, false);
-    assert_eq!(with[2].effects, no_shadows);
+    assert_eq!((with[2].effects, with[2].multisample), (no_shadows, false));
+    assert_eq!((with[3].effects, with[3].maps, with[3].multisample), (all, ShadowMaps::Kept, true));
     let without = rows(false);
-    assert_eq!(without.len(), 1);
-    assert_eq!((without[0].label, without[0].effects), ("every effect", EffectToggles::ALL_ON));
+    let labels: Vec<&str> = without.iter().map(|r| r.label).collect();
+    assert_eq!(labels, ["every effect", "every effect, 4x MSAA"]);
+    assert_eq!((without[0].effects, without[0].multisample), (all, false));
+    assert_eq!((without[1].effects, without[1].multisample), (all, true));
 }
 
 #[test]
@@ -57,7 +66,7 @@ fn the_report_has_every_row_and_every_number() {
         assert!(results.samples.iter().all(|s| s.frame.len() == 3), "three measured frames a row");
 
         let cells = table(&text);
-        assert_eq!(cells.len(), 2 + 3, "{text}");
+        assert_eq!(cells.len(), 2 + 4, "{text}");
         assert_eq!(cells[0], ["configuration", "ms", "min ms", "shadow", "forward", "occlusion", "fragments"]);
         for (row, label) in cells[2..].iter().zip(rows(true).iter().map(|r| r.label)) {
             assert_eq!(row[0], label);
@@ -72,13 +81,16 @@ fn the_report_has_every_row_and_every_number() {
             let fragments: u64 = row[6].parse().unwrap_or_else(|_| panic!("{label}: {:?}", row[6]));
             assert!(fragments > 0, "{label}: the lamp and the ground cover pixels");
         }
-        // The same frame in every row: the same fragments.
-        assert!(cells[2..].iter().all(|row| row[6] == cells[2][6]), "{text}");
+        // The same frame in every row: the same fragments; with four samples a pixel, more (pixels whose centre
+        // a triangle misses but a sample does not).
+        let fragments = |row: &Vec<String>| row[6].parse::<u64>().unwrap();
+        assert!(cells[2..5].iter().all(|row| row[6] == cells[2][6]), "{text}");
+        assert!(fragments(&cells[5]) > fragments(&cells[2]), "{text}");
     }
 }
 
 #[test]
-fn a_scene_without_shadows_has_one_row() {
+fn a_scene_without_shadows_has_one_row_and_its_msaa_row() {
     let path = common::root().join("assets/scenes/spot_sun.toml");
     let text = std::fs::read_to_string(&path).unwrap();
     assert!(text.contains("shadows = true"));
@@ -87,10 +99,11 @@ fn a_scene_without_shadows_has_one_row() {
     let mut out = Vec::new();
     let results = frames::run(&report, &scene, &mut out).unwrap();
     let text = String::from_utf8(out).unwrap();
-    assert_eq!(results.rows.len(), 1);
+    assert_eq!(results.rows.len(), 2);
     let cells = table(&text);
-    assert_eq!(cells.len(), 3, "{text}");
+    assert_eq!(cells.len(), 4, "{text}");
     assert_eq!((cells[2][0].as_str(), cells[2][3].as_str()), ("every effect", "–"), "{text}");
+    assert_eq!((cells[3][0].as_str(), cells[3][3].as_str()), ("every effect, 4x MSAA", "–"), "{text}");
     assert!(text.contains("no shadow map"), "{text}");
 }
 

@@ -166,6 +166,10 @@ struct SceneArgs {
     /// Draw triangle edges over the surfaces.
     #[arg(long)]
     wireframe: bool,
+    /// Anti-alias edges with four samples per pixel (multisampling): each pixel is still shaded once per
+    /// triangle, and an edge pixel gets the mean of its samples.
+    #[arg(long)]
+    msaa: bool,
     /// Background colour, RRGGBB (default: the scene's).
     #[arg(long, value_name = "RRGGBB", value_parser = parse_hex_color)]
     background: Option<Vec3>,
@@ -203,6 +207,7 @@ impl SceneArgs {
             textures: textures && !self.no_texture,
             wireframe: self.wireframe,
             background: self.background,
+            multisample: self.msaa,
         }
     }
 

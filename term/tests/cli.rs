@@ -501,6 +501,24 @@ fn render_without_a_model_writes_an_800x600_png_of_the_built_in_model() {
     assert_holds_only(dir.path(), &["out.png"]);
 }
 
+/// `--msaa` draws the outline with four samples per pixel: pixels whose centre the model misses but a sample
+/// reaches take part of its colour.
+#[test]
+fn msaa_blends_the_outline_into_the_background() {
+    let dir = dir_with(&[]);
+    let size = ["--size", "160x120"];
+    rastty(dir.path(), ["render", "-o", "plain.png"].iter().chain(&size)).expect_success();
+    rastty(dir.path(), ["render", "-o", "msaa.png", "--msaa"].iter().chain(&size)).expect_success();
+    let plain = png_pixels(&dir.path().join("plain.png"), 160, 120);
+    let msaa = png_pixels(&dir.path().join("msaa.png"), 160, 120);
+    let background = &plain[..3];
+    let (plain, msaa): (Vec<&[u8]>, Vec<&[u8]>) = (plain.chunks(3).collect(), msaa.chunks(3).collect());
+    let drawn = plain.iter().filter(|&&p| p != background).count();
+    let reached = plain.iter().zip(&msaa).filter(|&(&a, &b)| a == background && b != background).count();
+    assert!(drawn > 2000, "the model covers {drawn} pixels");
+    assert!(reached > 20, "{reached} background pixels took part of the model's colour");
+}
+
 #[test]
 fn stats_prints_scene_forward_pipeline_and_render_lines() {
     let dir = dir_with(&[("tri.obj", TRIANGLE.as_bytes())]);

@@ -113,6 +113,10 @@ fn options_that_do_not_fit_are_errors() {
         rastty(dir.path(), &["render", scene, "--explain", "--wireframe", "--no-texture", "--background", "000000"]);
     assert_eq!(code, Some(0), "{stderr}");
     assert!(stdout.contains("background #000000") && stdout.contains("with wireframe lines, diffuse textures off"));
+    assert!(!stdout.contains("samples per pixel"), "{stdout}");
+    let (code, stdout, stderr) = rastty(dir.path(), &["render", scene, "--explain", "--msaa"]);
+    assert_eq!(code, Some(0), "{stderr}");
+    assert!(stdout.contains("forward: 2 draws, 4 samples per pixel (shaded once, averaged)"), "{stdout}");
 }
 
 /// A model and a scene file take the same options: the camera's, the shading mode and `--without`; `--explain`

@@ -10,7 +10,7 @@ use std::path::Path;
 use rastty::scene_file::{load, parse};
 use rastty::scene_render::{
     AMBIENT_OCCLUSION, EffectToggles, MAX_CUBE_FACE, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderer,
-    render_scene_image,
+    ShadingMode, render_scene_image,
 };
 use rastty_core::math::Vec3;
 use rastty_core::target::{Rgb888, Target};
@@ -226,6 +226,98 @@ fn any_number_of_threads_draws_the_same_pixels() {
     let one = render_on_threads(&scene, (512, 400), &options, 1);
     assert!(one == render_on_threads(&scene, (512, 400), &options, 2), "3 bands on 2 threads");
     assert!(one == render_on_threads(&scene, (512, 400), &options, 3), "3 bands on 3 threads");
+}
+
+/// Four samples per pixel: bands of any height give the same pixels and depths (ambient occlusion included, which
+/// reads each pixel's nearest sample depth), ambient occlusion still only darkens, and the samples reach pixels
+/// whose centres no triangle covers (the outline blends into the background).
+#[test]
+fn multisampled_frames_are_the_same_in_any_bands_and_blend_the_outline() {
+    let scene = example("spot_lamp.toml");
+    let msaa = PlanOptions { multisample: true, ..PlanOptions::default() };
+    let one = render_on_threads(&scene, (96, 71), &msaa, 1);
+    for threads in [2, 3, 7, 71] {
+        assert!(one == render_on_threads(&scene, (96, 71), &msaa, threads), "{threads} threads");
+    }
+    let no_occlusion =
+        |options: PlanOptions| PlanOptions { effects: without(SceneEffect::AmbientOcclusion).effects, ..options };
+    let flat = render_on_threads(&scene, (96, 71), &no_occlusion(msaa), 3).pixels;
+    let channels = |p: u32| [(p >> 16) & 0xFF, (p >> 8) & 0xFF, p & 0xFF];
+    let darkened = one.pixels.iter().zip(&flat).filter(|(a, b)| a != b).count();
+    for (a, b) in one.pixels.iter().zip(&flat) {
+        let (a, b) = (channels(*a), channels(*b));
+        assert!(a.iter().zip(&b).all(|(x, y)| x <= y), "ambient occlusion brightened {b:?} to {a:?}");
+    }
+    assert!(darkened > 100, "ambient occlusion darkened {darkened} pixels");
+
+    // Against one sample per pixel, on a background (the scene's floor left out: Spot alone): pixels whose centre
+    // Spot misses but a sample reaches take part of its colour, and their depth is their nearest sample's.
+    let spot = from_text(
+        "[camera]\nposition = [0, 1, 3]\ntarget = [0, 0.4, 0]\nfov = 40\n\
+         [[lights]]\ntype = \"directional\"\ndirection = [-1, -1, -1]\n\
+         [[objects]]\nmesh = \"builtin:spot\"\n",
+    );
+    let background = rastty_core::color::pack_rgb888(spot.data().background);
+    let plain = render_on_threads(&spot, (96, 71), &PlanOptions::default(), 2);
+    let smooth = render_on_threads(&spot, (96, 71), &msaa, 2);
+    let pairs = || plain.pixels.iter().zip(&smooth.pixels).map(|(&a, &b)| (a, b));
+    let drawn = plain.pixels.iter().filter(|&&p| p != background).count();
+    let reached = pairs().filter(|&(a, b)| a == background && b != background).count();
+    assert!(drawn > 1000 && reached > 10, "{reached} background pixels took part of Spot's {drawn}");
+    let far = 1f32.to_bits();
+    let deeper = pairs().zip(&smooth.depth_bits).filter(|&((a, b), &d)| a == background && b != background && d == far);
+    assert_eq!(deeper.count(), 0, "a pixel with a covered sample kept the far depth");
+}
+
+/// A square of one colour (unlit, untextured) seen at a slant, with four samples per pixel: every pixel is the mean
+/// of four samples each either the square's colour or the background's, so the frame holds exactly those two
+/// colours and the blends of one, two and three samples of the square, each channel between the two; and a pixel
+/// whose centre and eight neighbours' centres the square covers keeps the single-sample colour bit for bit.
+#[test]
+fn a_multisampled_edge_pixel_is_the_mean_of_its_samples() {
+    let ground = root().join("assets/scenes/ground.obj");
+    let scene = from_text(&format!(
+        "[camera]\nposition = [1.3, 2.2, 3.1]\ntarget = [0.2, 0, 0]\nfov = 50\n[[objects]]\nmesh = {:?}\n",
+        ground.to_str().unwrap()
+    ));
+    let flat = PlanOptions { shading: ShadingMode::Unlit, textures: false, ..PlanOptions::default() };
+    let (w, h) = (120, 90);
+    let plain = render_on_threads(&scene, (w, h), &flat, 2).pixels;
+    let smooth = render_on_threads(&scene, (w, h), &PlanOptions { multisample: true, ..flat }, 3).pixels;
+    let background = rastty_core::color::pack_rgb888(scene.data().background);
+    let square = *plain.iter().find(|&&p| p != background).expect("the square is drawn");
+    assert!(plain.iter().all(|&p| p == background || p == square), "one colour and the background");
+    // The blends as the resolve computes them: in linear light, each channel's mean encoded to the nearest code.
+    assert_eq!(scene.data().space, rastty_core::color::ShadingSpace::Linear);
+    let decode = |code: u32| rastty_core::color::SRGB_DECODE[code as usize];
+    let blend = |k: u32| {
+        let channel = |shift: u32| {
+            let (a, b) = (decode((background >> shift) & 0xFF), decode((square >> shift) & 0xFF));
+            rastty_core::color::linear_to_srgb8((a * (4 - k) as f32 + b * k as f32) / 4.0) << shift
+        };
+        channel(16) | channel(8) | channel(0)
+    };
+    let levels: Vec<u32> = (0..=4).map(blend).collect();
+    assert_eq!((levels[0], levels[4]), (background, square));
+    let mut seen = [0usize; 5];
+    for (i, &p) in smooth.iter().enumerate() {
+        let level = levels.iter().position(|&l| l == p);
+        let level = level.unwrap_or_else(|| panic!("pixel {i} is {p:#08x}, not one of the blends {levels:#08x?}"));
+        seen[level] += 1;
+    }
+    assert!(seen[1..4].iter().all(|&n| n > 10), "pixels with 1, 2, 3 of 4 samples covered: {seen:?}");
+    let (w, h) = (w as usize, h as usize);
+    let mut inside = 0;
+    for y in 1..h - 1 {
+        for x in 1..w - 1 {
+            let around = (y - 1..=y + 1).flat_map(|y| (x - 1..=x + 1).map(move |x| y * w + x));
+            if around.clone().all(|i| plain[i] == square) {
+                assert_eq!(smooth[y * w + x], square, "pixel ({x}, {y}) inside the square");
+                inside += 1;
+            }
+        }
+    }
+    assert!(inside > 1000, "{inside} pixels inside");
 }
 
 #[test]

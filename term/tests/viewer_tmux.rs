@@ -125,7 +125,7 @@ fn a_scene_file_shows_and_its_effects_switch_off() {
         let screen = tmux.screen();
         (screen.contains("spot_sun.toml") && screen.contains("4 shadows on")).then_some(screen)
     });
-    assert!(hud.contains("phong perspective texture on wire off"), "HUD:\n{hud}");
+    assert!(hud.contains("phong perspective texture on wire off msaa off"), "HUD:\n{hud}");
     assert!(hud.contains("passes: 1 shadow"), "HUD:\n{hud}");
 
     // Shadows off: no shadow pass, and the picture changes (the ground under Spot is lit).
@@ -159,7 +159,18 @@ fn a_scene_file_shows_and_its_effects_switch_off() {
         steady.then_some(())
     });
     tmux.send_keys("Left");
-    tmux.wait_for("the picture to change after Left", || (tmux.screen_escaped() != plain).then_some(()));
+    let mut last = String::new();
+    let turned = tmux.wait_for("the picture to change after Left", || {
+        let screen = tmux.screen_escaped();
+        let steady = screen != plain && screen == last;
+        last = screen;
+        steady.then(|| last.clone())
+    });
+    // e smooths the edges (four samples per pixel): Spot's outline changes, and the HUD says so.
+    tmux.send_keys("e");
+    tmux.wait_for("the picture to change after e", || (tmux.screen_escaped() != turned).then_some(()));
+    tmux.send_keys("i");
+    tmux.wait_for("the HUD to say msaa 4x", || tmux.screen().contains("wire off msaa 4x").then_some(()));
 
     tmux.send_keys("q");
     let (status, tty_same) = tmux.wait_for_exit();

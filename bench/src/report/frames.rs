@@ -7,7 +7,8 @@
 //! warm-up frame of its own, the configurations taking turns block by block. Its rows are the scene with every
 //! effect its file asks for, with the shadow maps kept (one [`SceneRenderer`] for every frame) and drawn every
 //! frame (a fresh renderer per frame, as `rastty render` makes one per image), and the scene without shadows;
-//! a scene without a shadow-casting light has the one row.
+//! a scene without a shadow-casting light has the one row. A last row draws the first with four samples per pixel
+//! (`--msaa`).
 
 use std::fmt::Write as _;
 use std::io::Write;
@@ -17,7 +18,9 @@ use std::time::Duration;
 use super::effects::{EffectsError, Samples, ShadowMaps, TimedFrames, check_maps, plan};
 use super::median;
 use rastty::escaped::path_text;
-use rastty::scene_render::{EffectToggles, PreparedScene, SceneEffect, ScenePlan, SceneRenderer};
+use rastty::scene_render::{
+    EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError, SceneRenderer,
+};
 
 /// Frame size measured unless another is given: the tinyrenderer comparison's.
 pub const DEFAULT_SIZE: (u32, u32) = (800, 800);
@@ -86,21 +89,34 @@ pub struct Row {
     pub effects: EffectToggles,
     /// One renderer for every frame, or a fresh one per frame.
     pub maps: ShadowMaps,
+    /// Four samples per pixel ([`PlanOptions::multisample`]).
+    pub multisample: bool,
+}
+
+impl Row {
+    /// The row's plan of `scene`'s frame at `size` with its own camera.
+    fn plan(&self, scene: &PreparedScene, size: (u32, u32)) -> Result<ScenePlan, SceneRenderError> {
+        let options = PlanOptions { effects: self.effects, multisample: self.multisample, ..PlanOptions::default() };
+        ScenePlan::new(scene, &scene.camera(), size, &options)
+    }
 }
 
 /// The rows for a scene: with shadow passes, every effect with the maps kept and drawn every frame and every
-/// effect but shadows; without, every effect alone.
+/// effect but shadows; without, every effect alone; then the first row again with four samples per pixel.
 pub fn rows(has_shadows: bool) -> Vec<Row> {
     let all = EffectToggles::ALL_ON;
+    let row = |label, effects, maps| Row { label, effects, maps, multisample: false };
+    let msaa = |label| Row { label, effects: all, maps: ShadowMaps::Kept, multisample: true };
     if !has_shadows {
-        return vec![Row { label: "every effect", effects: all, maps: ShadowMaps::Kept }];
+        return vec![row("every effect", all, ShadowMaps::Kept), msaa("every effect, 4x MSAA")];
     }
     let mut no_shadows = all;
     no_shadows.set(SceneEffect::Shadows, false);
     vec![
-        Row { label: "every effect, shadow maps kept", effects: all, maps: ShadowMaps::Kept },
-        Row { label: "every effect, shadow maps drawn every frame", effects: all, maps: ShadowMaps::Drawn },
-        Row { label: "every effect but shadows", effects: no_shadows, maps: ShadowMaps::Kept },
+        row("every effect, shadow maps kept", all, ShadowMaps::Kept),
+        row("every effect, shadow maps drawn every frame", all, ShadowMaps::Drawn),
+        row("every effect but shadows", no_shadows, ShadowMaps::Kept),
+        msaa("every effect, 4x MSAA, shadow maps kept"),
     ]
 }
 
@@ -126,7 +142,7 @@ pub fn measure(scene: &PreparedScene, report: &FramesReport) -> Result<FramesRes
     }
     let has_shadows = !plan(scene, report.size, EffectToggles::ALL_ON)?.shadow_passes.is_empty();
     let rows = rows(has_shadows);
-    let plans = rows.iter().map(|row| plan(scene, report.size, row.effects)).collect::<Result<Vec<_>, _>>()?;
+    let plans = rows.iter().map(|row| row.plan(scene, report.size)).collect::<Result<Vec<_>, _>>()?;
     let threads = report.thread_count();
     let mut renderers: Vec<SceneRenderer> = rows.iter().map(|_| SceneRenderer::with_threads(threads)).collect();
     let mut samples: Vec<Samples> = plans.iter().map(Samples::for_plan).collect();

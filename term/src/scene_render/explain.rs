@@ -76,7 +76,11 @@ impl fmt::Display for ScenePlan {
         let plural = if self.draws.len() == 1 { "" } else { "s" };
         let wireframe = if self.wireframe { ", with wireframe lines" } else { "" };
         let textures = if self.textures { "" } else { ", diffuse textures off" };
-        writeln!(f, "  {}. forward: {} draw{plural}{wireframe}{textures}", next(), self.draws.len())?;
+        let samples = match self.samples.count() {
+            1 => String::new(),
+            n => format!(", {n} samples per pixel (shaded once, averaged)"),
+        };
+        writeln!(f, "  {}. forward: {} draw{plural}{wireframe}{textures}{samples}", next(), self.draws.len())?;
         for draw in &self.draws {
             writeln!(f, "       {}: {}", Escaped(&draw.label), draw.variant)?;
         }

@@ -7,6 +7,7 @@ use rastty_core::pipeline::DrawState;
 use rastty_core::shading::Transforms;
 use rastty_core::shading::{LightKind, LightUse, Material, Object, Variant};
 use rastty_core::shadow::{Bounds, ShadowView};
+use rastty_core::target::Samples;
 
 use super::camera::FrameCamera;
 use super::lights::{DroppedLight, LightName, PlannedLight, core_light};
@@ -109,6 +110,9 @@ pub struct ScenePlan {
     pub draws: Vec<PlannedDraw>,
     /// Triangle edges drawn over each part.
     pub wireframe: bool,
+    /// Samples per pixel of the forward pass ([`PlanOptions::multisample`]): with more than one it draws into
+    /// buffers of samples that the renderer keeps and resolves them into the frame's pixels.
+    pub samples: Samples,
     /// The ambient occlusion step after the forward pass, when the scene asks for it and the effect is on.
     pub ambient_occlusion: Option<AmbientOcclusion>,
     /// The diffuse textures are used.
@@ -201,6 +205,7 @@ impl ScenePlan {
             shadow_passes,
             draws: Vec::new(),
             wireframe: options.wireframe,
+            samples: if options.multisample { Samples::Four } else { Samples::One },
             ambient_occlusion: (data.ambient_occlusion && options.effects.ambient_occlusion)
                 .then_some(AmbientOcclusion { space: data.space, ..AMBIENT_OCCLUSION }),
             textures: options.textures,

@@ -1,5 +1,6 @@
 //! Running a plan: the shadow passes into maps the renderer keeps, the forward pass into the caller's frame in
-//! bands drawn side by side on threads, then the ambient occlusion step, also in bands.
+//! bands drawn side by side on threads (into samples the renderer keeps, resolved into the frame, when the plan
+//! multisamples), then the ambient occlusion step, also in bands.
 
 use std::ops::Range;
 use std::thread;
@@ -13,7 +14,7 @@ use rastty_core::shadow::{
     ShadowBias, ShadowError, ShadowMap, ShadowView, WindowRanges, clear_shadow_depth, draw_shadow_caster_band,
     window_ranges_band,
 };
-use rastty_core::target::{Rgb888, Target};
+use rastty_core::target::{Rgb888, Samples, Target, resolve_rgb888};
 
 use super::bins::TriangleBins;
 use super::material::part_material;
@@ -115,6 +116,11 @@ pub const BAND_PIXELS: usize = 65_536;
 /// each draw are computed once a frame, on the threads, and shared by the bands: only the varyings of vertices
 /// of triangles that reach several bands are computed again.
 ///
+/// A plan with several [`ScenePlan::samples`] per pixel draws its forward pass into colour and depth samples the
+/// renderer keeps, band by band as above; each band then averages its samples into its pixels
+/// ([`resolve_rgb888`], in the plan's shading space) and stores each pixel's nearest sample depth, which the
+/// ambient occlusion step reads as it reads a single-sampled frame's depth.
+///
 /// The threads are started with the renderer and kept (`workers.rs`), and so are the screen vertices and the lists
 /// the triangles are sorted into (`bins.rs`): a frame starts no thread and, once those have grown to the meshes,
 /// allocates nothing in proportion to them.
@@ -124,6 +130,42 @@ pub struct SceneRenderer {
     workers: Workers,
     /// The forward pass's triangles sorted into bands, one entry per draw of the last plan.
     bins: Vec<TriangleBins>,
+    /// A multisampled forward pass's samples (empty until a plan asks for them).
+    samples: SampleBuffers,
+}
+
+/// The colour and depth samples of a multisampled forward pass, [`Samples::count`] values a pixel, each pixel's
+/// side by side, kept from frame to frame.
+#[derive(Debug, Default)]
+struct SampleBuffers {
+    colors: Vec<u32>,
+    depths: Vec<f32>,
+}
+
+impl SampleBuffers {
+    /// The buffers grown to `rows` of a frame `width` pixels wide and split as [`split_rows`] splits those rows
+    /// into `band_count` bands; `None` for each band when `samples` is one.
+    #[allow(clippy::type_complexity)]
+    fn bands(
+        &mut self,
+        samples: Samples,
+        width: u32,
+        rows: Range<u32>,
+        band_count: usize,
+    ) -> Vec<Option<(&mut [u32], &mut [f32])>> {
+        if samples == Samples::One {
+            return (0..band_count.clamp(1, rows.len().max(1))).map(|_| None).collect();
+        }
+        let row = width * samples.count() as u32;
+        let values = row as usize * rows.len();
+        if self.colors.len() != values {
+            // Every value is cleared by its band before it is drawn, on the band's thread.
+            (self.colors, self.depths) = (vec![0; values], vec![0.0; values]);
+        }
+        let colors = split_rows(&mut self.colors, row, rows.clone(), band_count);
+        let depths = split_rows(&mut self.depths, row, rows, band_count);
+        colors.into_iter().zip(depths).map(|((_, c), (_, d))| Some((c, d))).collect()
+    }
 }
 
 impl Default for SceneRenderer {
@@ -139,6 +181,8 @@ struct Band<'a> {
     rows: Range<u32>,
     pixels: &'a mut [u32],
     depth: &'a mut [f32],
+    /// The band's colour and depth samples, when the plan multisamples.
+    samples: Option<(&'a mut [u32], &'a mut [f32])>,
 }
 
 /// What the forward pass did in one band.
@@ -157,7 +201,8 @@ impl SceneRenderer {
     /// band per row). It starts its threads now and keeps them; if the system refuses to start them, it draws the
     /// same frames on the calling thread alone.
     pub fn with_threads(threads: usize) -> Self {
-        Self { slots: Vec::new(), workers: Workers::new(threads), bins: Vec::new() }
+        let workers = Workers::new(threads);
+        Self { slots: Vec::new(), workers, bins: Vec::new(), samples: SampleBuffers::default() }
     }
 
     /// The number of threads frames are drawn on.
@@ -211,10 +256,12 @@ impl SceneRenderer {
         let lights = Lighting { ambient: plan.ambient, lights: &sources, space: plan.space };
         let (color, depth) = target.buffers_mut();
         let (pixels, depth) = (&mut *color.0, &mut **depth);
+        let samples = self.samples.bands(plan.samples, width, rows.clone(), band_count);
         let bands = split_rows(pixels, width, rows.clone(), band_count);
-        let bands = bands.into_iter().zip(split_rows(depth, width, rows.clone(), band_count)).enumerate();
-        let mut bands: Vec<_> =
-            bands.map(|(index, ((rows, pixels), (_, depth)))| Band { index, rows, pixels, depth }).collect();
+        let bands = bands.into_iter().zip(split_rows(depth, width, rows.clone(), band_count)).zip(samples).enumerate();
+        let mut bands: Vec<_> = bands
+            .map(|(index, (((rows, pixels), (_, depth)), samples))| Band { index, rows, pixels, depth, samples })
+            .collect();
         let rows: Vec<_> = bands.iter().map(|band| band.rows.clone()).collect();
         if self.bins.len() < plan.draws.len() {
             self.bins.resize_with(plan.draws.len(), TriangleBins::default);
@@ -391,7 +438,8 @@ fn planned_mesh<'a>(
 }
 
 /// The forward pass over one band: clears it to the background and draws every planned part into it, each with
-/// the triangles that `bins` sorted into the band.
+/// the triangles that `bins` sorted into the band; into its samples when the plan multisamples, then averaged into
+/// its pixels, each pixel's depth its nearest sample's.
 fn forward_band(
     scene: &PreparedScene,
     plan: &ScenePlan,
@@ -401,7 +449,32 @@ fn forward_band(
     width: u32,
     height: u32,
 ) -> Result<BandResult, SceneRenderError> {
-    Target::band(Rgb888(&mut *band.pixels), &mut *band.depth, width, height, band.rows.clone())?.clear(plan.background);
+    let Band { index, rows, pixels, depth, samples } = band;
+    let Some((sample_colors, sample_depths)) = samples else {
+        return draw_band(scene, plan, bins, lights, (index, rows, Samples::One), (pixels, depth), (width, height));
+    };
+    let place = (index, rows, plan.samples);
+    let result = draw_band(scene, plan, bins, lights, place, (sample_colors, sample_depths), (width, height))?;
+    resolve_rgb888(sample_colors, plan.samples, plan.space, pixels)?;
+    for (pixel, samples) in depth.iter_mut().zip(sample_depths.chunks_exact(plan.samples.count())) {
+        *pixel = samples.iter().fold(1.0, |nearest, &d| d.min(nearest));
+    }
+    Ok(result)
+}
+
+/// [`forward_band`]'s draws into band `index` (frame rows `rows`) with `samples` a pixel, into `colors` and
+/// `depths`.
+fn draw_band(
+    scene: &PreparedScene,
+    plan: &ScenePlan,
+    bins: &[TriangleBins],
+    lights: &Lighting<'_>,
+    (index, rows, samples): (usize, Range<u32>, Samples),
+    (colors, depths): (&mut [u32], &mut [f32]),
+    (width, height): (u32, u32),
+) -> Result<BandResult, SceneRenderError> {
+    Target::multisampled(Rgb888(&mut *colors), &mut *depths, width, height, rows.clone(), samples)?
+        .clear(plan.background);
     let mut result = BandResult { stats: DrawStats::default(), variants: Vec::with_capacity(plan.draws.len()) };
     for (draw, bins) in plan.draws.iter().zip(bins) {
         let (object, mesh) = planned_mesh(scene, draw)?;
@@ -412,12 +485,12 @@ fn forward_band(
         // The frame's screen vertices of the mesh, computed once for every band.
         let clip = &draw.transforms.clip_from_object;
         let shared = bins.shared(&mesh, clip, (width, height));
-        let target = Target::band(Rgb888(&mut *band.pixels), &mut *band.depth, width, height, band.rows.clone())?;
+        let target = Target::multisampled(Rgb888(&mut *colors), &mut *depths, width, height, rows.clone(), samples)?;
         let mut target = target.with_shared_vertices(shared);
         let mut variant = draw.variant;
         // The band's triangles come in pieces of the mesh (at least one), in its order: drawn one after the other,
         // the pieces give the pixels of one draw of them all.
-        for list in bins.band(band.index) {
+        for list in bins.band(index) {
             let triangles = mesh.with_indices(Indices::U32(list));
             let triangles = triangles.map_err(|error| SceneRenderError::Target(format!("{}: {error}", draw.label)))?;
             let surface = Object {

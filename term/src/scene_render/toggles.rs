@@ -156,10 +156,13 @@ pub struct PlanOptions {
     pub wireframe: bool,
     /// A background colour instead of the scene's.
     pub background: Option<Vec3>,
+    /// Four samples per pixel (multisample anti-aliasing): smooth edges, each pixel still shaded once per triangle.
+    pub multisample: bool,
 }
 
 impl Default for PlanOptions {
-    /// The scene as written: lit per pixel, every effect, textures, no wireframe, the scene's background.
+    /// The scene as written: lit per pixel, every effect, textures, no wireframe, the scene's background, one
+    /// sample per pixel.
     fn default() -> Self {
         Self {
             shading: ShadingMode::Phong,
@@ -167,6 +170,7 @@ impl Default for PlanOptions {
             textures: true,
             wireframe: false,
             background: None,
+            multisample: false,
         }
     }
 }

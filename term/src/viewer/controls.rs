@@ -34,6 +34,8 @@ pub enum Action {
     ToggleTexture,
     /// Wireframe on / off.
     ToggleWireframe,
+    /// Multisample anti-aliasing on / off.
+    ToggleMultisample,
     /// Turntable rotation on / off.
     ToggleTurntable,
     /// HUD on / off.
@@ -56,6 +58,7 @@ pub const HELP: &[&str] = &[
     "m                     shading mode",
     "t                     texture on / off",
     "x                     wireframe",
+    "e                     smooth edges (4x MSAA)",
     "1 2 3                 normal maps, specular, glow",
     "4 5                   shadows, ambient occlusion",
     "space                 turntable",
@@ -98,6 +101,7 @@ fn key_action(key: Key) -> Option<Action> {
         Key::Char(c @ '1'..='5') => SceneEffect::from_key(c).map(Action::ToggleEffect),
         Key::Char('t') => Some(Action::ToggleTexture),
         Key::Char('x') => Some(Action::ToggleWireframe),
+        Key::Char('e') => Some(Action::ToggleMultisample),
         Key::Char(' ') => Some(Action::ToggleTurntable),
         Key::Char('i') => Some(Action::ToggleHud),
         Key::Char('?') => Some(Action::ToggleHelp),

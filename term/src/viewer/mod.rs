@@ -491,11 +491,12 @@ impl Viewer<'_> {
                 s.triangles_in, s.rasterized, s.culled, s.clipped
             ),
             format!(
-                "{} {} texture {} wire {}   {}x{} {} {}",
+                "{} {} texture {} wire {} msaa {}   {}x{} {} {}",
                 mode,
                 lens,
                 if a.textures { "on" } else { "off" },
                 if a.wireframe { "on" } else { "off" },
+                if a.multisample { "4x" } else { "off" },
                 cols,
                 rows,
                 match self.graphics {

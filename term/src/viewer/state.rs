@@ -98,6 +98,7 @@ impl ViewerState {
             Action::ToggleEffect(effect) => self.options.effects.toggle(effect),
             Action::ToggleTexture => self.options.textures = !self.options.textures,
             Action::ToggleWireframe => self.options.wireframe = !self.options.wireframe,
+            Action::ToggleMultisample => self.options.multisample = !self.options.multisample,
             Action::ToggleTurntable => self.turntable = !self.turntable,
             Action::ToggleHud => self.hud = !self.hud,
             Action::ToggleHelp => self.help = !self.help,
