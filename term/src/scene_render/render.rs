@@ -142,17 +142,13 @@ struct SampleBuffers {
     depths: Vec<f32>,
 }
 
+/// One band's colour and depth samples, when the plan multisamples.
+type BandSamples<'a> = Option<(&'a mut [u32], &'a mut [f32])>;
+
 impl SampleBuffers {
     /// The buffers grown to `rows` of a frame `width` pixels wide and split as [`split_rows`] splits those rows
     /// into `band_count` bands; `None` for each band when `samples` is one.
-    #[allow(clippy::type_complexity)]
-    fn bands(
-        &mut self,
-        samples: Samples,
-        width: u32,
-        rows: Range<u32>,
-        band_count: usize,
-    ) -> Vec<Option<(&mut [u32], &mut [f32])>> {
+    fn bands(&mut self, samples: Samples, width: u32, rows: Range<u32>, band_count: usize) -> Vec<BandSamples<'_>> {
         if samples == Samples::One {
             return (0..band_count.clamp(1, rows.len().max(1))).map(|_| None).collect();
         }
@@ -181,8 +177,7 @@ struct Band<'a> {
     rows: Range<u32>,
     pixels: &'a mut [u32],
     depth: &'a mut [f32],
-    /// The band's colour and depth samples, when the plan multisamples.
-    samples: Option<(&'a mut [u32], &'a mut [f32])>,
+    samples: BandSamples<'a>,
 }
 
 /// What the forward pass did in one band.
