@@ -387,6 +387,16 @@ impl ColorBuffer for CheckedColor<'_> {
     }
 }
 
+/// A whole `width x height` frame of `samples` per pixel in the target's own buffers.
+fn checked_frame<'a>(
+    color: &'a mut [u32],
+    depth: CheckedDepth<'a>,
+    (width, height): (u32, u32),
+    samples: Samples,
+) -> Target<CheckedColor<'a>, CheckedDepth<'a>> {
+    Target::multisampled(CheckedColor(color), depth, width, height, 0..height, samples).expect("a valid frame")
+}
+
 /// The values a [`CheckedDepth`] stores, in either of the core's depth formats.
 enum Depths<'a> {
     F32(&'a mut [f32]),
@@ -558,8 +568,8 @@ fn compare_general(
     let mut color_g = vec![0u32; w * h];
     let mut depth_g = vec![0f32; w * h];
     {
-        let (c, d) = (CheckedColor(&mut color_g), CheckedDepth::f32(&mut depth_g, false));
-        let mut target = Target::multisampled(c, d, width, height, 0..height, samples).expect("a valid frame");
+        let depth = CheckedDepth::f32(&mut depth_g, false);
+        let mut target = checked_frame(&mut color_g, depth, (width, height), samples);
         target.clear(CLEAR);
         let (variant, stats) = draw_mesh_general(&mut target, object, lights, state)
             .expect("draw_mesh accepted the draw, draw_mesh_general must too");
@@ -856,8 +866,7 @@ pub fn run(input: Input) -> Option<DrawStats> {
     let mut depth = vec![0f32; w * h];
     let (full_variant, full_stats);
     {
-        let mut target = Target::new(CheckedColor(&mut color), CheckedDepth::f32(&mut depth, true), width, height)
-            .expect("a valid frame");
+        let mut target = checked_frame(&mut color, CheckedDepth::f32(&mut depth, true), (width, height), Samples::One);
         target.clear(CLEAR);
         match draw_mesh(&mut target, &object, &lighting, &state) {
             Ok((variant, stats)) => {
@@ -875,8 +884,7 @@ pub fn run(input: Input) -> Option<DrawStats> {
                 assert!(depth.iter().all(|&d| d == 1.0), "a refused draw wrote depth");
                 // Same refusal through the general path; nothing else to check.
                 let (mut c2, mut d2) = (vec![0u32; w * h], vec![0f32; w * h]);
-                let mut t2 = Target::new(CheckedColor(&mut c2), CheckedDepth::f32(&mut d2, true), width, height)
-                    .expect("a valid frame");
+                let mut t2 = checked_frame(&mut c2, CheckedDepth::f32(&mut d2, true), (width, height), Samples::One);
                 t2.clear(CLEAR);
                 match draw_mesh_general(&mut t2, &object, &general_lighting, &state) {
                     Ok(s) => panic!("draw_mesh refused with {e:?} but draw_mesh_general drew {s:?}"),
@@ -899,8 +907,7 @@ pub fn run(input: Input) -> Option<DrawStats> {
     // 3. The wireframe over it.
     let mut line_stats = DrawStats::default();
     if let Some(style) = &style {
-        let mut target = Target::new(CheckedColor(&mut color), CheckedDepth::f32(&mut depth, true), width, height)
-            .expect("a valid frame");
+        let mut target = checked_frame(&mut color, CheckedDepth::f32(&mut depth, true), (width, height), Samples::One);
         let stats = draw_wireframe(&mut target, &object.mesh, &transforms.clip_from_object, style, &state);
         check_stats("draw_wireframe", &stats, triangles);
         check_line_fragments("draw_wireframe", &stats, width.into(), height.into());
@@ -912,8 +919,8 @@ pub fn run(input: Input) -> Option<DrawStats> {
     //    (Its depth tests differ from the f32 frame's where two depths quantize alike: nothing to compare there.)
     let (mut color16, mut depth16) = (vec![0u32; w * h], vec![0u16; w * h]);
     let frame16 = {
-        let mut target = Target::new(CheckedColor(&mut color16), CheckedDepth::u16(&mut depth16, true), width, height)
-            .expect("a valid frame");
+        let depth = CheckedDepth::u16(&mut depth16, true);
+        let mut target = checked_frame(&mut color16, depth, (width, height), Samples::One);
         let draws = (&object, &lighting, &state);
         draw_band(&mut target, (&full_variant, triangles), draws, style.as_ref(), "the frame, u16 depth")
     };
@@ -999,15 +1006,7 @@ fn check_multisampled(
     let row = width as usize * n;
     let (mut color, mut depth) = (vec![0u32; row * height as usize], vec![0f32; row * height as usize]);
     let stats = {
-        let mut target = Target::multisampled(
-            CheckedColor(&mut color),
-            CheckedDepth::f32(&mut depth, true),
-            width,
-            height,
-            0..height,
-            Samples::Four,
-        )
-        .expect("a valid frame");
+        let mut target = checked_frame(&mut color, CheckedDepth::f32(&mut depth, true), (width, height), Samples::Four);
         target.clear(CLEAR);
         let (variant, stats) = draw_mesh(&mut target, object, lights, state).expect("the frame's draw was accepted");
         assert_same_variant("four samples", &variant, frame_variant);
@@ -1019,15 +1018,7 @@ fn check_multisampled(
     let full = (frame_variant, &stats);
     compare_general(object, general_lights, state, (width, height, Samples::Four), (&color, &depth), full);
     let lines = style.map_or(0, |style| {
-        let mut target = Target::multisampled(
-            CheckedColor(&mut color),
-            CheckedDepth::f32(&mut depth, true),
-            width,
-            height,
-            0..height,
-            Samples::Four,
-        )
-        .expect("a valid frame");
+        let mut target = checked_frame(&mut color, CheckedDepth::f32(&mut depth, true), (width, height), Samples::Four);
         let lines = draw_wireframe(&mut target, &object.mesh, &object.transforms.clip_from_object, style, state);
         check_stats("four samples, wireframe", &lines, triangles);
         check_line_fragments("four samples, wireframe", &lines, width.into(), height.into());
@@ -1098,8 +1089,7 @@ fn check_depth_only(
     let n = (width * height) as usize;
     let depth_only = Positions::<false>(*clip_from_object);
     let (mut colors, mut shaded) = (vec![0u32; n], vec![0f32; n]);
-    let mut target = Target::new(CheckedColor(&mut colors), CheckedDepth::f32(&mut shaded, true), width, height)
-        .expect("a valid frame");
+    let mut target = checked_frame(&mut colors, CheckedDepth::f32(&mut shaded, true), (width, height), Samples::One);
     target.clear(CLEAR);
     let expected = match draw(&mut target, mesh, &Positions::<true>(*clip_from_object), state) {
         Ok(stats) => stats,

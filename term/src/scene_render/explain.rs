@@ -76,7 +76,7 @@ impl fmt::Display for ScenePlan {
         let plural = if self.draws.len() == 1 { "" } else { "s" };
         let wireframe = if self.wireframe { ", with wireframe lines" } else { "" };
         let textures = if self.textures { "" } else { ", diffuse textures off" };
-        let samples = match self.samples.count() {
+        let samples = match self.samples().count() {
             1 => String::new(),
             n => format!(", {n} samples per pixel (shaded once, averaged)"),
         };

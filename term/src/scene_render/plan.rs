@@ -110,9 +110,6 @@ pub struct ScenePlan {
     pub draws: Vec<PlannedDraw>,
     /// Triangle edges drawn over each part.
     pub wireframe: bool,
-    /// Samples per pixel of the forward pass ([`PlanOptions::multisample`]): with more than one it draws into
-    /// buffers of samples that the renderer keeps and resolves them into the frame's pixels.
-    pub samples: Samples,
     /// The ambient occlusion step after the forward pass, when the scene asks for it and the effect is on.
     pub ambient_occlusion: Option<AmbientOcclusion>,
     /// The diffuse textures are used.
@@ -122,6 +119,12 @@ pub struct ScenePlan {
 }
 
 impl ScenePlan {
+    /// Samples per pixel of the forward pass ([`PlanOptions::multisample`]): with more than one it draws into
+    /// buffers of samples that the renderer keeps and resolves them into the frame's pixels.
+    pub fn samples(&self) -> Samples {
+        if self.options.multisample { Samples::Four } else { Samples::One }
+    }
+
     /// Plans a frame of `width x height` pixels of `scene` seen by `camera` (the file's, or the viewer's after
     /// orbiting), with the effects `options` allows.
     ///
@@ -205,7 +208,6 @@ impl ScenePlan {
             shadow_passes,
             draws: Vec::new(),
             wireframe: options.wireframe,
-            samples: if options.multisample { Samples::Four } else { Samples::One },
             ambient_occlusion: (data.ambient_occlusion && options.effects.ambient_occlusion)
                 .then_some(AmbientOcclusion { space: data.space, ..AMBIENT_OCCLUSION }),
             textures: options.textures,

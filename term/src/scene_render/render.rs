@@ -147,10 +147,18 @@ type BandSamples<'a> = Option<(&'a mut [u32], &'a mut [f32])>;
 
 impl SampleBuffers {
     /// The buffers grown to `rows` of a frame `width` pixels wide and split as [`split_rows`] splits those rows
-    /// into `band_count` bands; `None` for each band when `samples` is one.
-    fn bands(&mut self, samples: Samples, width: u32, rows: Range<u32>, band_count: usize) -> Vec<BandSamples<'_>> {
+    /// into `band_count` bands, top first, then `None` for every further band; `None` for every band when
+    /// `samples` is one.
+    fn bands(
+        &mut self,
+        samples: Samples,
+        width: u32,
+        rows: Range<u32>,
+        band_count: usize,
+    ) -> impl Iterator<Item = BandSamples<'_>> {
+        let none = std::iter::repeat_with(|| None);
         if samples == Samples::One {
-            return (0..band_count.clamp(1, rows.len().max(1))).map(|_| None).collect();
+            return Vec::new().into_iter().chain(none);
         }
         let row = width * samples.count() as u32;
         let values = row as usize * rows.len();
@@ -160,7 +168,8 @@ impl SampleBuffers {
         }
         let colors = split_rows(&mut self.colors, row, rows.clone(), band_count);
         let depths = split_rows(&mut self.depths, row, rows, band_count);
-        colors.into_iter().zip(depths).map(|((_, c), (_, d))| Some((c, d))).collect()
+        let bands: Vec<BandSamples<'_>> = colors.into_iter().zip(depths).map(|((_, c), (_, d))| Some((c, d))).collect();
+        bands.into_iter().chain(none)
     }
 }
 
@@ -251,7 +260,7 @@ impl SceneRenderer {
         let lights = Lighting { ambient: plan.ambient, lights: &sources, space: plan.space };
         let (color, depth) = target.buffers_mut();
         let (pixels, depth) = (&mut *color.0, &mut **depth);
-        let samples = self.samples.bands(plan.samples, width, rows.clone(), band_count);
+        let samples = self.samples.bands(plan.samples(), width, rows.clone(), band_count);
         let bands = split_rows(pixels, width, rows.clone(), band_count);
         let bands = bands.into_iter().zip(split_rows(depth, width, rows.clone(), band_count)).zip(samples).enumerate();
         let mut bands: Vec<_> = bands
@@ -448,10 +457,10 @@ fn forward_band(
     let Some((sample_colors, sample_depths)) = samples else {
         return draw_band(scene, plan, bins, lights, (index, rows, Samples::One), (pixels, depth), (width, height));
     };
-    let place = (index, rows, plan.samples);
+    let place = (index, rows, plan.samples());
     let result = draw_band(scene, plan, bins, lights, place, (sample_colors, sample_depths), (width, height))?;
-    resolve_rgb888(sample_colors, plan.samples, plan.space, pixels)?;
-    for (pixel, samples) in depth.iter_mut().zip(sample_depths.chunks_exact(plan.samples.count())) {
+    resolve_rgb888(sample_colors, plan.samples(), plan.space, pixels)?;
+    for (pixel, samples) in depth.iter_mut().zip(sample_depths.chunks_exact(plan.samples().count())) {
         *pixel = samples.iter().fold(1.0, |nearest, &d| d.min(nearest));
     }
     Ok(result)

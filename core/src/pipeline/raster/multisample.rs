@@ -148,7 +148,11 @@ impl<E: Edges> Coverage<E> {
                     // A constant: a depth-only shader compiles without the fragment stage.
                     if S::FRAGMENT_STAGE {
                         let (var, slopes) = stages.interpolate(&triangle, ef);
-                        write(target, first, passed, stages.shader.fragment(&fragment, face, &var, &slopes));
+                        target.color.write_samples(
+                            first,
+                            passed,
+                            stages.shader.fragment(&fragment, face, &var, &slopes),
+                        );
                     }
                     shaded += 1;
                 }
@@ -156,17 +160,6 @@ impl<E: Edges> Coverage<E> {
         }
         shaded
     }
-}
-
-/// Writes `color` to the samples in `mask` from sample index `first`.
-#[inline(always)]
-fn write<C: ColorBuffer, D: DepthBuffer, M: VertexMemory>(
-    target: &mut Target<C, D, M>,
-    first: usize,
-    mask: u8,
-    color: Vec3,
-) {
-    target.color.write_samples(first, mask, color);
 }
 
 /// Tests the samples in `mask` from sample index `first` at their `depths` and writes `color` to those that pass:
@@ -203,7 +196,7 @@ pub(super) fn write_batch<Z: DepthStage, V: Varyings, F: Copy, C: ColorBuffer, D
     for (i, ((&first, (mask, depths)), &color)) in fragments {
         match kept {
             Some(kept) => written += u64::from(kept[i] && write_tested(depth, target, first, (mask, depths), color)),
-            None => write(target, first, mask, color),
+            None => target.color.write_samples(first, mask, color),
         }
     }
     written
