@@ -654,8 +654,8 @@ fn from_scene_draws_what_rastty_draws() {
 #[test]
 fn from_scene_draws_the_builtin_model_as_rastty_does() {
     let scene = model_scene(rastty::builtin::builtin_model().unwrap());
-    // 2.5 levels: in linear light rastty blends the texels' codes and decodes the blend, where the reference
-    // decodes each texel and blends their light.
+    // 2.5 levels: at this size rastty reads the model's texture from its levels of detail, where the reference's
+    // centre probe reads the texture itself.
     let (compared, worst) = agree(&scene, (40, 30), &scene.camera(), &PlanOptions::default(), 2.5);
     assert!(compared > 150, "{compared}");
     println!("{compared} pixel centres within {worst:.2} levels");

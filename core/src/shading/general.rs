@@ -14,11 +14,11 @@ use super::{
     Cutout, LightKind, LightTerms, Lighting, Material, NormalSource, ShadingModel, SpecularSource, Transforms, Variant,
     world_normal,
 };
-use crate::color::{ShadingSpace, decode_srgb888, encode_srgb, texel_alpha, unpack_rgb888};
+use crate::color::{ShadingSpace, encode_srgb, texel_alpha, unpack_rgb888};
 use crate::math::{Vec2, Vec3, Vec4, float};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{Fragment, Shader, Slopes};
-use crate::texture::{Bilinear, Clamp, FilterMode, MipContent, MipFilter, Nearest, Repeat, Texture, WrapMode};
+use crate::texture::{Bilinear, Clamp, FilterMode, MipFilter, Nearest, Repeat, Texture, WrapMode};
 
 /// Everything any variant interpolates. Fields a variant does not use stay zero (so that they never make the
 /// pipeline skip a triangle).
@@ -78,33 +78,32 @@ impl<'a> GeneralShader<'a> {
         Self { variant, transforms, tangent_frame: TangentFrame::new(&transforms), tangents, material, lights }
     }
 
-    /// The packed texel of `map` at `at`, with the variant's filter, wrap mode and filter between levels,
-    /// anisotropic probes averaged as `content` says.
-    fn texel(&self, map: &Texture<'_>, at: &MapPoint, content: MipContent) -> u32 {
+    /// The packed texel of `map` at `at` as stored, with the variant's filter, wrap mode and filter between
+    /// levels.
+    fn texel(&self, map: &Texture<'_>, at: &MapPoint) -> u32 {
         let (chain, mip) = (map.mip_chain(), self.variant.mip_filter);
         let (uv, footprint) = (at.uv, &chain.footprint(&at.slopes, mip));
         match (self.variant.filter, self.variant.wrap) {
-            (FilterMode::Nearest, WrapMode::Repeat) => {
-                chain.sample_packed::<Nearest, Repeat>(uv, footprint, mip, content)
-            }
-            (FilterMode::Nearest, WrapMode::Clamp) => {
-                chain.sample_packed::<Nearest, Clamp>(uv, footprint, mip, content)
-            }
-            (FilterMode::Bilinear, WrapMode::Repeat) => {
-                chain.sample_packed::<Bilinear, Repeat>(uv, footprint, mip, content)
-            }
-            (FilterMode::Bilinear, WrapMode::Clamp) => {
-                chain.sample_packed::<Bilinear, Clamp>(uv, footprint, mip, content)
-            }
+            (FilterMode::Nearest, WrapMode::Repeat) => chain.sample_packed::<Nearest, Repeat>(uv, footprint, mip),
+            (FilterMode::Nearest, WrapMode::Clamp) => chain.sample_packed::<Nearest, Clamp>(uv, footprint, mip),
+            (FilterMode::Bilinear, WrapMode::Repeat) => chain.sample_packed::<Bilinear, Repeat>(uv, footprint, mip),
+            (FilterMode::Bilinear, WrapMode::Clamp) => chain.sample_packed::<Bilinear, Clamp>(uv, footprint, mip),
         }
     }
 
-    /// The colour of the colour map `map` at `at`: decoded from sRGB (its probes averaged in linear light) when the
-    /// draw lights in linear light, else the codes over 255.
+    /// The colour of the colour map `map` at `at`: in linear light, every texel decoded from sRGB before it is
+    /// blended, when the draw lights in linear light; else the blended codes over 255.
     fn color(&self, map: &Texture<'_>, at: &MapPoint) -> Vec3 {
-        match self.variant.space {
-            ShadingSpace::Linear => decode_srgb888(self.texel(map, at, MipContent::Color)),
-            ShadingSpace::Encoded => unpack_rgb888(self.texel(map, at, MipContent::Data)),
+        if self.variant.space == ShadingSpace::Encoded {
+            return unpack_rgb888(self.texel(map, at));
+        }
+        let (chain, mip) = (map.mip_chain(), self.variant.mip_filter);
+        let (uv, footprint) = (at.uv, &chain.footprint(&at.slopes, mip));
+        match (self.variant.filter, self.variant.wrap) {
+            (FilterMode::Nearest, WrapMode::Repeat) => chain.sample_light::<Nearest, Repeat>(uv, footprint, mip),
+            (FilterMode::Nearest, WrapMode::Clamp) => chain.sample_light::<Nearest, Clamp>(uv, footprint, mip),
+            (FilterMode::Bilinear, WrapMode::Repeat) => chain.sample_light::<Bilinear, Repeat>(uv, footprint, mip),
+            (FilterMode::Bilinear, WrapMode::Clamp) => chain.sample_light::<Bilinear, Clamp>(uv, footprint, mip),
         }
     }
 
@@ -159,12 +158,12 @@ impl<'a> GeneralShader<'a> {
             (NormalSource::TangentMap, Some(map)) => {
                 let (n, t) = (normal, tangent.truncate());
                 let b = n.cross(t) * tangent.w;
-                let d = decode_normal(self.texel(&map.texture, uv, MipContent::Data));
+                let d = decode_normal(self.texel(&map.texture, uv));
                 (t * d.x + b * d.y + n * d.z).normalize_or_zero()
             }
-            (NormalSource::ObjectMap, Some(map)) => (self.transforms.normal
-                * decode_normal(self.texel(&map.texture, uv, MipContent::Data)))
-            .normalize_or_zero(),
+            (NormalSource::ObjectMap, Some(map)) => {
+                (self.transforms.normal * decode_normal(self.texel(&map.texture, uv))).normalize_or_zero()
+            }
             _ => geometric,
         };
         let (geometric, shading) =
@@ -172,9 +171,7 @@ impl<'a> GeneralShader<'a> {
         let highlights = variant.specular != SpecularSource::None;
         let to_eye = if highlights { (self.transforms.eye - v.world).normalize_or_zero() } else { Vec3::ZERO };
         let mut diffuse = match m.occlusion_map {
-            Some(map) if variant.occlusion_map => {
-                self.lights.ambient.mul_elem(unpack_rgb888(self.texel(&map, uv, MipContent::Data)))
-            }
+            Some(map) if variant.occlusion_map => self.lights.ambient.mul_elem(unpack_rgb888(self.texel(&map, uv))),
             _ => self.lights.ambient,
         };
         let mut specular = Vec3::ZERO;
@@ -216,7 +213,7 @@ impl Shader for GeneralShader<'_> {
     fn kept(&self, _: &Fragment, _: &LightTerms, v: &GeneralVaryings, slopes: &Slopes<GeneralVaryings>) -> bool {
         match (self.variant.cutout, self.material.diffuse) {
             (Cutout::Map(cutoff), Some(map)) => {
-                self.material.keeps(texel_alpha(self.texel(&map, &MapPoint::of(v, slopes), MipContent::Data)), cutoff)
+                self.material.keeps(texel_alpha(self.texel(&map, &MapPoint::of(v, slopes))), cutoff)
             }
             (Cutout::Everything, _) => false,
             _ => true,

@@ -4,10 +4,10 @@ use core::marker::PhantomData;
 
 use super::columns::{Column2, Column3};
 use super::scratch::Scratch;
-use crate::color::{ShadingSpace, decode_srgb888, encode_srgb, unpack_rgb888};
+use crate::color::{ShadingSpace, encode_srgb, unpack_rgb888};
 use crate::math::{Vec2, Vec3};
 use crate::pipeline::{BATCH_SIZE, Slopes, lanes};
-use crate::texture::{Filter, Footprint, MipContent, MipFilter, Texture, Wrap, footprint};
+use crate::texture::{Filter, Footprint, MipFilter, Texture, Wrap, footprint};
 
 /// A batch's texture coordinates and, in a draw that mipmaps, their screen-space slopes.
 #[derive(Clone, Copy)]
@@ -66,45 +66,86 @@ impl<F: Filter, W: Wrap> MapReader<F, W> {
         Self { mip_filter, addresses: None, footprints: None, _wrap: PhantomData }
     }
 
-    /// The texels of `map` at the lanes' coordinates `at` (the same at every call), packed: from its levels of
-    /// detail when the draw mipmaps and the map has them (anisotropic probes averaged as `content` says), else from
-    /// the map alone.
+    /// The texels of `map` at the lanes' coordinates `at` (the same at every call), packed and as stored: from its
+    /// levels of detail when the draw mipmaps and the map has them, else from the map alone.
     #[inline(always)]
-    pub fn read(&mut self, map: &Texture<'_>, at: &Coordinates, content: MipContent, out: &mut [u32; BATCH_SIZE]) {
+    pub fn read(&mut self, map: &Texture<'_>, at: &Coordinates, out: &mut [u32; BATCH_SIZE]) {
         if self.mip_filter != MipFilter::Off && map.has_mip_levels() {
-            return self.read_levels(map, at, content, out);
+            return self.read_levels(map, at, out);
         }
+        F::read::<W, BATCH_SIZE>(map, self.addresses(map, at), out);
+    }
+
+    /// The colours of the sRGB-encoded colour map `map` at the lanes' coordinates `at` in linear light, every
+    /// texel decoded before it is blended ([`Filter::sample_light`], [`crate::texture::MipChain::sample_light`]),
+    /// into the first `len` lanes of `out`.
+    #[inline(always)]
+    pub fn read_light(&mut self, map: &Texture<'_>, at: &Coordinates, out: &mut Column3, len: usize) {
+        if self.mip_filter != MipFilter::Off && map.has_mip_levels() {
+            return self.read_light_levels(map, at, out, len);
+        }
+        let mut light = [Vec3::ZERO; BATCH_SIZE];
+        F::read_light::<W, BATCH_SIZE>(map, self.addresses(map, at), &mut light);
+        (0..lanes(len)).for_each(|i| out.set(i, light[i]));
+    }
+
+    /// Where the lanes read a map of `map`'s size, worked out for the first map of that size.
+    #[inline(always)]
+    fn addresses(&mut self, map: &Texture<'_>, at: &Coordinates) -> &F::Addresses<BATCH_SIZE> {
         let size = (map.width(), map.height());
-        let addresses = match &mut self.addresses {
-            Some((made_for, addresses)) if *made_for == size => addresses,
-            slot => &mut slot.insert((size, F::addresses::<W, BATCH_SIZE>(size.0, size.1, &at.uv.x, &at.uv.y))).1,
-        };
-        F::read::<W, BATCH_SIZE>(map, addresses, out);
+        if self.addresses.as_ref().is_some_and(|(made_for, _)| *made_for != size) {
+            self.addresses = None;
+        }
+        &self
+            .addresses
+            .get_or_insert_with(|| (size, F::addresses::<W, BATCH_SIZE>(size.0, size.1, &at.uv.x, &at.uv.y)))
+            .1
     }
 
     /// [`Self::read`] from the map's levels of detail, each lane where its footprint says. Not inlined: one copy
     /// per filter and wrap mode serves every draw's stages, which call it once per map and batch.
     #[inline(never)]
-    fn read_levels(&mut self, map: &Texture<'_>, at: &Coordinates, content: MipContent, out: &mut [u32; BATCH_SIZE]) {
+    fn read_levels(&mut self, map: &Texture<'_>, at: &Coordinates, out: &mut [u32; BATCH_SIZE]) {
         let (chain, mip) = (map.mip_chain(), self.mip_filter);
-        let shape = (map.width(), map.height(), chain.levels().len());
-        let footprints = match &mut self.footprints {
-            Some((made_for, footprints)) if *made_for == shape => footprints,
-            slot => {
+        let footprints = self.footprints(map, at);
+        for (i, o) in out.iter_mut().enumerate() {
+            *o = chain.sample_packed::<F, W>(Vec2::new(at.uv.x[i], at.uv.y[i]), &footprints[i], mip);
+        }
+    }
+
+    /// [`Self::read_light`] from the map's levels of detail, each lane where its footprint says; not inlined, as
+    /// [`Self::read_levels`].
+    #[inline(never)]
+    fn read_light_levels(&mut self, map: &Texture<'_>, at: &Coordinates, out: &mut Column3, len: usize) {
+        let (chain, mip) = (map.mip_chain(), self.mip_filter);
+        let footprints = self.footprints(map, at);
+        for (i, footprint) in footprints.iter().enumerate().take(lanes(len)) {
+            out.set(i, chain.sample_light::<F, W>(Vec2::new(at.uv.x[i], at.uv.y[i]), footprint, mip));
+        }
+    }
+
+    /// Where each lane reads a map of `map`'s size and number of levels, worked out for the first such map.
+    #[inline(always)]
+    fn footprints(&mut self, map: &Texture<'_>, at: &Coordinates) -> &[Footprint; BATCH_SIZE] {
+        let shape = (map.width(), map.height(), map.mip_chain().levels().len());
+        if self.footprints.as_ref().is_some_and(|(made_for, _)| *made_for != shape) {
+            self.footprints = None;
+        }
+        let most = self.mip_filter.max_probes_log2();
+        &self
+            .footprints
+            .get_or_insert_with(|| {
                 // Without slopes (coordinates gathered for a draw that does not mipmap), the texture itself.
-                let (w, h, most) = (shape.0 as f32, shape.1 as f32, mip.max_probes_log2());
+                let (w, h) = (shape.0 as f32, shape.1 as f32);
                 let footprints = match &at.slopes {
                     Some(Slopes { dx, dy }) => {
                         core::array::from_fn(|i| footprint(w, h, [dx.x[i], dx.y[i], dy.x[i], dy.y[i]], shape.2, most))
                     }
                     None => [Footprint::at_level(0); BATCH_SIZE],
                 };
-                &mut slot.insert((shape, footprints)).1
-            }
-        };
-        for (i, o) in out.iter_mut().enumerate() {
-            *o = chain.sample_packed::<F, W>(Vec2::new(at.uv.x[i], at.uv.y[i]), &footprints[i], mip, content);
-        }
+                (shape, footprints)
+            })
+            .1
     }
 }
 
@@ -114,20 +155,11 @@ impl<F: Filter, W: Wrap> MapReader<F, W> {
 pub(crate) enum Texels {
     /// Each code over 255.
     AsStored,
-    /// Each code decoded to linear light ([`crate::color::SRGB_DECODE`]).
+    /// Each code decoded to linear light ([`crate::color::SRGB_DECODE`]) before the texels are blended.
     Srgb,
 }
 
 impl Texels {
-    /// How anisotropic probes of such texels are averaged: in linear light when they are decoded to it.
-    #[inline(always)]
-    pub fn content(self) -> MipContent {
-        match self {
-            Self::AsStored => MipContent::Data,
-            Self::Srgb => MipContent::Color,
-        }
-    }
-
     /// How a colour map's texels are read in a draw lit in `space`.
     #[inline(always)]
     pub fn of_color(space: ShadingSpace) -> Self {
@@ -188,12 +220,14 @@ pub(crate) fn modulated<F: Filter, W: Wrap>(
     color: Option<&Column3>,
     len: usize,
 ) {
-    let mut packed = [0; BATCH_SIZE];
-    maps.read(map, at, texels.content(), &mut packed);
     let mut values = Column3::ZERO;
     match texels {
-        Texels::AsStored => (0..lanes(len)).for_each(|i| values.set(i, unpack_rgb888(packed[i]))),
-        Texels::Srgb => (0..lanes(len)).for_each(|i| values.set(i, decode_srgb888(packed[i]))),
+        Texels::AsStored => {
+            let mut packed = [0; BATCH_SIZE];
+            maps.read(map, at, &mut packed);
+            (0..lanes(len)).for_each(|i| values.set(i, unpack_rgb888(packed[i])));
+        }
+        Texels::Srgb => maps.read_light(map, at, &mut values, len),
     }
     match color {
         // `color.mul_elem(texel)`, lane by lane.
@@ -222,8 +256,8 @@ mod tests {
     use super::*;
     use crate::texture::{Anisotropy, Bilinear, Clamp, MipContent, Nearest, Repeat, build_mip_levels};
 
-    /// A reader gives each map's own samples when maps of different sizes take turns (its addresses are made
-    /// again whenever the size changes), for both filters.
+    /// A reader gives each map's own samples, as stored and in light, when maps of different sizes take turns
+    /// (its addresses are made again whenever the size changes), for both filters.
     #[test]
     fn maps_of_other_sizes_get_their_own_addresses() {
         let small: [u32; 12] = core::array::from_fn(|i| i as u32 * 0x01_0203);
@@ -241,9 +275,15 @@ mod tests {
             let at = Coordinates { uv: *uv, ..Coordinates::ZERO };
             for map in maps {
                 let (mut read, mut expected) = ([0; BATCH_SIZE], [0; BATCH_SIZE]);
-                reader.read(map, &at, MipContent::Data, &mut read);
+                reader.read(map, &at, &mut read);
                 F::sample_packed_lanes::<W, BATCH_SIZE>(map, &uv.x, &uv.y, &mut expected);
                 assert_eq!(read, expected, "{}x{}", map.width(), map.height());
+                let mut light = Column3::ZERO;
+                reader.read_light(map, &at, &mut light, BATCH_SIZE);
+                for i in 0..BATCH_SIZE {
+                    let expected = F::sample_light::<W>(map, Vec2::new(uv.x[i], uv.y[i]));
+                    assert_eq!(light.get(i), expected, "{}x{} lane {i}", map.width(), map.height());
+                }
             }
         }
         // The same size twice in a row, then other sizes, one with the same texel count.
@@ -254,8 +294,8 @@ mod tests {
         check::<Bilinear, Clamp>(maps, &uv);
     }
 
-    /// A mipmapping reader gives each lane the chain's sample at the lane's own level of detail, for maps with
-    /// levels of different sizes taking turns and a map without levels, which is read alone.
+    /// A mipmapping reader gives each lane the chain's sample at the lane's own level of detail, as stored and in
+    /// light, for maps with levels of different sizes taking turns and a map without levels, which is read alone.
     #[test]
     fn a_mipmapping_reader_samples_each_lane_at_its_level_of_detail() {
         let big: [u32; 64] = core::array::from_fn(|i| (i as u32 * 0x03_0507) & 0xFF_FFFF);
@@ -290,24 +330,28 @@ mod tests {
         for mip in [MipFilter::Nearest, MipFilter::Linear, MipFilter::Anisotropic(Anisotropy::X4)] {
             let mut reader = MapReader::<Bilinear, Repeat>::new(mip);
             let (mut levels_seen, mut probes_seen) = ([false; 4], [false; 3]);
-            // Each map's probes averaged as its levels were built.
-            let maps = [
-                (&big, MipContent::Color),
-                (&small, MipContent::Data),
-                (&alone, MipContent::Color),
-                (&big, MipContent::Color),
-            ];
-            for (map, content) in maps {
-                let mut read = [0; BATCH_SIZE];
-                reader.read(map, &at, content, &mut read);
+            // Colour maps read in light, data maps as stored.
+            let maps = [(&big, true), (&small, false), (&alone, true), (&big, true), (&small, true)];
+            for (map, in_light) in maps {
+                let (mut read, mut light) = ([0; BATCH_SIZE], Column3::ZERO);
+                if in_light {
+                    reader.read_light(map, &at, &mut light, BATCH_SIZE);
+                } else {
+                    reader.read(map, &at, &mut read);
+                }
                 let chain = map.mip_chain();
-                for (i, &texel) in read.iter().enumerate() {
+                for (i, &stored) in read.iter().enumerate() {
                     let footprint = chain.footprint(&lane(i), mip);
                     levels_seen[(footprint.lod / crate::texture::LEVEL) as usize] = true;
                     probes_seen[footprint.probes_log2 as usize] = true;
                     let uv = Vec2::new(at.uv.x[i], at.uv.y[i]);
-                    let expected = chain.sample_packed::<Bilinear, Repeat>(uv, &footprint, mip, content);
-                    assert_eq!(texel, expected, "{mip:?} lane {i}");
+                    if in_light {
+                        let expected = chain.sample_light::<Bilinear, Repeat>(uv, &footprint, mip);
+                        assert_eq!(light.get(i), expected, "{mip:?} lane {i}");
+                    } else {
+                        let expected = chain.sample_packed::<Bilinear, Repeat>(uv, &footprint, mip);
+                        assert_eq!(stored, expected, "{mip:?} lane {i}");
+                    }
                 }
             }
             let anisotropic = matches!(mip, MipFilter::Anisotropic(_));

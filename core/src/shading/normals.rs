@@ -5,7 +5,7 @@ use super::material::decode_normal;
 use super::scratch::Scratch;
 use crate::math::{Mat3, Vec3};
 use crate::pipeline::{BATCH_SIZE, lanes};
-use crate::texture::{Filter, MipContent, Texture, Wrap};
+use crate::texture::{Filter, Texture, Wrap};
 
 /// Two-sided lighting: the geometric and shading normals of each back-facing fragment turned round (times
 /// [`Scratch::facing`]). Turning round the interpolated normal and tangent frame before would give the same bits:
@@ -35,7 +35,7 @@ pub(crate) fn interpolated(s: &mut Scratch, shading_too: bool) {
 /// normalised, bit for bit the normal of a draw without the map.
 pub(crate) fn tangent_map<F: Filter, W: Wrap>(s: &mut Scratch, maps: &mut MapReader<F, W>, map: &Texture<'_>) {
     let mut texels = [0; BATCH_SIZE];
-    maps.read(map, &s.at, MipContent::Data, &mut texels);
+    maps.read(map, &s.at, &mut texels);
     for (i, &texel) in texels.iter().enumerate().take(lanes(s.len)) {
         let (n, t) = (s.normal.get(i), s.tangent.get(i));
         let b = n.cross(t) * s.handedness[i];
@@ -53,7 +53,7 @@ pub(crate) fn object_map<F: Filter, W: Wrap>(
     normal_matrix: &Mat3,
 ) {
     let mut texels = [0; BATCH_SIZE];
-    maps.read(map, &s.at, MipContent::Data, &mut texels);
+    maps.read(map, &s.at, &mut texels);
     for (i, &texel) in texels.iter().enumerate().take(lanes(s.len)) {
         let m: Vec3 = decode_normal(texel);
         s.shading.set(i, *normal_matrix * m);

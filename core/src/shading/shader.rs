@@ -16,7 +16,7 @@ use crate::math::{Mat4, Vec2, Vec3, Vec4};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{BATCH_SIZE, Fragment, FragmentBatch, Shader, Slopes};
 use crate::shading::{LightTerms, ShadingModel, TangentFrame, Transforms, world_normal};
-use crate::texture::{Bilinear, Clamp, Filter, FilterMode, MipContent, MipFilter, Nearest, Repeat, Wrap, WrapMode};
+use crate::texture::{Bilinear, Clamp, Filter, FilterMode, MipFilter, Nearest, Repeat, Wrap, WrapMode};
 
 /// Shades a mesh with a [`Material`] under [`Lighting`], computing what its [`Variant`] says:
 /// its shading model, maps and lights.
@@ -258,21 +258,21 @@ where
             return;
         };
         let at = self.coordinates(batch);
-        // Only the transparency byte is read, which probes average alike whatever the content.
+        // Only the transparency byte is read: as stored.
         let mut texels = [0; BATCH_SIZE];
         let mip = self.mip_filter();
         match (self.variant.filter, self.variant.wrap) {
             (FilterMode::Nearest, WrapMode::Repeat) => {
-                MapReader::<Nearest, Repeat>::new(mip).read(&map, &at, MipContent::Data, &mut texels)
+                MapReader::<Nearest, Repeat>::new(mip).read(&map, &at, &mut texels)
             }
             (FilterMode::Nearest, WrapMode::Clamp) => {
-                MapReader::<Nearest, Clamp>::new(mip).read(&map, &at, MipContent::Data, &mut texels)
+                MapReader::<Nearest, Clamp>::new(mip).read(&map, &at, &mut texels)
             }
             (FilterMode::Bilinear, WrapMode::Repeat) => {
-                MapReader::<Bilinear, Repeat>::new(mip).read(&map, &at, MipContent::Data, &mut texels);
+                MapReader::<Bilinear, Repeat>::new(mip).read(&map, &at, &mut texels);
             }
             (FilterMode::Bilinear, WrapMode::Clamp) => {
-                MapReader::<Bilinear, Clamp>::new(mip).read(&map, &at, MipContent::Data, &mut texels);
+                MapReader::<Bilinear, Clamp>::new(mip).read(&map, &at, &mut texels);
             }
         }
         for (k, &texel) in keep.iter_mut().zip(&texels).take(batch.len()) {

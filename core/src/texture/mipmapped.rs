@@ -2,9 +2,8 @@
 //! and the filter between levels.
 
 use super::sampler::blend;
-use super::{Filter, MipChain, MipContent, Texture, Wrap};
-use crate::color::{SRGB_DECODE, linear_to_srgb8};
-use crate::math::{Vec2, float};
+use super::{Filter, MipChain, Texture, Wrap};
+use crate::math::{Vec2, Vec3, float};
 use crate::pipeline::Slopes;
 
 /// How a sample chooses among a texture's levels of detail ([`Texture::with_mip_levels`]); within a level it is
@@ -121,30 +120,61 @@ impl MipChain<'_> {
         )
     }
 
-    /// The chain's texel at `uv` (wrap mode `W`) read where `at` says ([`Self::footprint`]), packed: filtered
-    /// within a level by `F` and between levels as `mip` says. Anisotropic probes are averaged as `content` says,
-    /// as the levels were built: colour in linear light, data as stored (a draw that lights sRGB codes reads its
-    /// colour maps as data).
+    /// The chain's texel at `uv` (wrap mode `W`) read where `at` says ([`Self::footprint`]), packed and as stored:
+    /// filtered within a level by `F` and between levels as `mip` says, anisotropic probes averaged. Data maps
+    /// (normals, occlusion, transparency) are read so, and colour maps in a draw that lights sRGB codes.
     #[must_use]
     #[inline(always)]
-    pub fn sample_packed<F: Filter, W: Wrap>(
-        &self,
-        uv: Vec2,
-        at: &Footprint,
-        mip: MipFilter,
-        content: MipContent,
-    ) -> u32 {
+    pub fn sample_packed<F: Filter, W: Wrap>(&self, uv: Vec2, at: &Footprint, mip: MipFilter) -> u32 {
         match mip {
             MipFilter::Off => F::sample_packed::<W>(self.level(0), uv),
-            // Level 0 up to a level of detail of one half, then the nearest (OpenGL 4.6, equation 8.7).
-            MipFilter::Nearest => F::sample_packed::<W>(self.level(((at.lod + LEVEL / 2 - 1) / LEVEL) as usize), uv),
+            MipFilter::Nearest => F::sample_packed::<W>(self.nearest_level(at.lod), uv),
             MipFilter::Linear => self.between_levels::<F, W>(uv, at.lod),
             MipFilter::Anisotropic(_) if at.probes_log2 == 0 => self.between_levels::<F, W>(uv, at.lod),
-            MipFilter::Anisotropic(_) => match content {
-                MipContent::Color => self.probes_in_light::<F, W>(uv, at),
-                MipContent::Data => self.probes_as_stored::<F, W>(uv, at),
-            },
+            MipFilter::Anisotropic(_) => {
+                // Every channel summed in its own 16 bits of a word (16 probes of 255 fit), the mean rounded to
+                // nearest.
+                let (mut rb, mut tg) = (0u32, 0u32);
+                for point in probe_points(uv, at) {
+                    let probe = self.between_levels::<F, W>(point, at.lod);
+                    rb += probe & 0xFF_00FF;
+                    tg += (probe >> 8) & 0xFF_00FF;
+                }
+                let half = (1u32 << at.probes_log2) / 2 * 0x1_0001;
+                let mean = |sum: u32| ((sum + half) >> at.probes_log2) & 0xFF_00FF;
+                mean(rb) | mean(tg) << 8
+            }
         }
+    }
+
+    /// The colour of the sRGB-encoded colour map at `uv` (wrap mode `W`) in linear light, read where `at` says:
+    /// what [`Self::sample_packed`] reads, but with every texel decoded before any blend, within a level
+    /// ([`Filter::sample_light`]), between levels and across probes, as the levels themselves are averaged
+    /// ([`super::build_mip_levels`]). Blending codes instead darkens every blend of a dark and a light texel: half-way
+    /// between codes 26 and 242 (a checkerboard's squares) it gives code 134 where the light's mean is code 178.
+    #[inline(always)]
+    pub fn sample_light<F: Filter, W: Wrap>(&self, uv: Vec2, at: &Footprint, mip: MipFilter) -> Vec3 {
+        match mip {
+            MipFilter::Off => F::sample_light::<W>(self.level(0), uv),
+            MipFilter::Nearest => F::sample_light::<W>(self.nearest_level(at.lod), uv),
+            MipFilter::Linear => self.light_between_levels::<F, W>(uv, at.lod),
+            MipFilter::Anisotropic(_) if at.probes_log2 == 0 => self.light_between_levels::<F, W>(uv, at.lod),
+            MipFilter::Anisotropic(_) => {
+                // Summed in probe order and scaled by the exact `1 / n`: the same bits on every target.
+                let mut light = Vec3::ZERO;
+                for point in probe_points(uv, at) {
+                    light += self.light_between_levels::<F, W>(point, at.lod);
+                }
+                light * (1.0 / (1u32 << at.probes_log2) as f32)
+            }
+        }
+    }
+
+    /// The level [`MipFilter::Nearest`] reads at `lod`: level 0 up to a level of detail of one half, then the
+    /// nearest (OpenGL 4.6, equation 8.7).
+    #[inline(always)]
+    fn nearest_level(&self, lod: u32) -> &Texture<'_> {
+        self.level(((lod + LEVEL / 2 - 1) / LEVEL) as usize)
     }
 
     /// The two levels around `lod` at `uv`, blended by where it lies between them.
@@ -155,46 +185,16 @@ impl MipChain<'_> {
         if fraction == 0 { near } else { blend(near, F::sample_packed::<W>(self.level(level + 1), uv), fraction) }
     }
 
-    /// `at`'s probes, each read between levels: probe `j` of `n` lies at `uv + axis (2j + 1 - n) / 2n`.
+    /// [`Self::between_levels`] in linear light.
     #[inline(always)]
-    fn each_probe<F: Filter, W: Wrap>(&self, uv: Vec2, at: &Footprint, mut probe: impl FnMut(u32)) {
-        let n = 1i32 << at.probes_log2;
-        for j in 0..n {
-            // An odd integer over a power of two: exact.
-            let t = (2 * j + 1 - n) as f32 / (2 * n) as f32;
-            probe(self.between_levels::<F, W>(uv + at.axis * t, at.lod));
+    fn light_between_levels<F: Filter, W: Wrap>(&self, uv: Vec2, lod: u32) -> Vec3 {
+        let (level, fraction) = ((lod / LEVEL) as usize, lod % LEVEL);
+        let near = F::sample_light::<W>(self.level(level), uv);
+        if fraction == 0 {
+            return near;
         }
-    }
-
-    /// The mean of `at`'s probes as stored, rounded to nearest: every channel is summed in its own 16 bits of a
-    /// word (16 probes of 255 fit).
-    #[inline(always)]
-    fn probes_as_stored<F: Filter, W: Wrap>(&self, uv: Vec2, at: &Footprint) -> u32 {
-        let (mut rb, mut tg) = (0u32, 0u32);
-        self.each_probe::<F, W>(uv, at, |probe| {
-            rb += probe & 0xFF_00FF;
-            tg += (probe >> 8) & 0xFF_00FF;
-        });
-        let half = (1u32 << at.probes_log2) / 2 * 0x1_0001;
-        let mean = |sum: u32| ((sum + half) >> at.probes_log2) & 0xFF_00FF;
-        mean(rb) | mean(tg) << 8
-    }
-
-    /// The mean of `at`'s probes in linear light: each colour channel decoded ([`SRGB_DECODE`]), summed in probe
-    /// order, scaled by the exact `1 / n` and encoded to the nearest code; the transparency byte as stored.
-    #[inline(always)]
-    fn probes_in_light<F: Filter, W: Wrap>(&self, uv: Vec2, at: &Footprint) -> u32 {
-        let (mut light, mut transparency) = ([0.0f32; 3], 0u32);
-        self.each_probe::<F, W>(uv, at, |probe| {
-            for (c, sum) in light.iter_mut().enumerate() {
-                *sum += SRGB_DECODE[((probe >> (16 - 8 * c)) & 0xFF) as usize];
-            }
-            transparency += probe >> 24;
-        });
-        let scale = 1.0 / (1u32 << at.probes_log2) as f32;
-        let [r, g, b] = light.map(|sum| linear_to_srgb8(sum * scale));
-        let t = (transparency + (1 << at.probes_log2) / 2) >> at.probes_log2;
-        t << 24 | r << 16 | g << 8 | b
+        // Exact: a fraction in 256ths.
+        near.lerp(F::sample_light::<W>(self.level(level + 1), uv), fraction as f32 * (1.0 / LEVEL as f32))
     }
 
     /// Level `k`, or the last.
@@ -203,6 +203,14 @@ impl MipChain<'_> {
         let levels = self.levels();
         &levels[k.min(levels.len() - 1)]
     }
+}
+
+/// Where `at`'s probes lie around `uv`: probe `j` of `n` at `uv + axis (2j + 1 - n) / 2n`.
+#[inline(always)]
+fn probe_points(uv: Vec2, at: &Footprint) -> impl Iterator<Item = Vec2> {
+    let n = 1i32 << at.probes_log2;
+    // An odd integer over a power of two: exact.
+    (0..n).map(move |j| uv + at.axis * ((2 * j + 1 - n) as f32 / (2 * n) as f32))
 }
 
 /// [`MipChain::footprint`] for a `width x height` texture of `levels` levels, from the coordinate slopes
@@ -250,6 +258,7 @@ fn log2_of_root(squared: f32) -> i32 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::color::SRGB_DECODE;
     use crate::texture::{Bilinear, MipContent, Nearest, Repeat, build_mip_levels, mip_chain_texels};
 
     fn slopes(dx: (f32, f32), dy: (f32, f32)) -> Slopes<Vec2> {
@@ -302,9 +311,7 @@ mod tests {
         let levels = [[grey(100); 4].as_slice(), &[grey(0)]].concat();
         let chain = Texture::new(&texels, 4, 4).unwrap().with_mip_levels(&levels).unwrap().mip_chain();
         let uv = Vec2::new(0.3, 0.6);
-        let sample = |lod, mip| {
-            chain.sample_packed::<Bilinear, Repeat>(uv, &Footprint::at_level(lod), mip, MipContent::Color) & 0xFF
-        };
+        let sample = |lod, mip| chain.sample_packed::<Bilinear, Repeat>(uv, &Footprint::at_level(lod), mip) & 0xFF;
         assert_eq!(sample(0, MipFilter::Linear), 200);
         // A quarter of the way from level 0 to level 1: 200 + (100 - 200) 64 / 256.
         assert_eq!(sample(64, MipFilter::Linear), 175);
@@ -315,10 +322,21 @@ mod tests {
         assert_eq!(sample(LEVEL + 128, MipFilter::Nearest), 100);
         assert_eq!(sample(LEVEL + 129, MipFilter::Nearest), 0);
         assert_eq!(sample(2 * LEVEL, MipFilter::Off), 200);
+        // In light the levels' decoded values are blended: a quarter of the way, 3/4 of 200's light and 1/4 of
+        // 100's, not the light of code 175.
+        let light = |lod, mip| chain.sample_light::<Bilinear, Repeat>(uv, &Footprint::at_level(lod), mip).x;
+        let decoded = |code: usize| SRGB_DECODE[code];
+        assert_eq!(light(0, MipFilter::Linear), decoded(200));
+        assert_eq!(light(64, MipFilter::Linear), decoded(200) + (decoded(100) - decoded(200)) * 0.25);
+        assert!((light(64, MipFilter::Linear) - 0.4650).abs() < 1e-3 && decoded(175) < 0.43);
+        assert_eq!(light(LEVEL + 128, MipFilter::Linear), decoded(100) * 0.5);
+        assert_eq!(light(129, MipFilter::Nearest), decoded(100));
+        assert_eq!(light(2 * LEVEL, MipFilter::Off), decoded(200));
         // A texture without levels is itself at every level of detail.
         let alone = Texture::new(&texels, 4, 4).unwrap().mip_chain();
         let far = Footprint::at_level(2 * LEVEL);
-        assert_eq!(alone.sample_packed::<Nearest, Repeat>(uv, &far, MipFilter::Linear, MipContent::Data) & 0xFF, 200);
+        assert_eq!(alone.sample_packed::<Nearest, Repeat>(uv, &far, MipFilter::Linear) & 0xFF, 200);
+        assert_eq!(alone.sample_light::<Nearest, Repeat>(uv, &far, MipFilter::Linear).x, decoded(200));
     }
 
     /// An anisotropic footprint takes the least power of two of probes that covers its longer side with squares
@@ -364,8 +382,8 @@ mod tests {
         }
     }
 
-    /// An anisotropic sample is the mean of its probes, each read between levels at its place along the axis, as
-    /// the levels are built: colour in linear light, data as stored; with one probe it is the trilinear sample.
+    /// An anisotropic sample is the mean of its probes, each read between levels at its place along the axis: as
+    /// stored, or in linear light; with one probe it is the trilinear sample.
     #[test]
     fn an_anisotropic_sample_is_the_mean_of_its_probes() {
         // 4x1 texels 0, 10, 20, 250 (grey), no levels: probes of a 4-texel footprint along u read one texel each.
@@ -373,29 +391,29 @@ mod tests {
         let texels = [grey(0), grey(10), grey(20), grey(250)];
         let chain = Texture::new(&texels, 4, 1).unwrap().mip_chain();
         let mip = MipFilter::Anisotropic(Anisotropy::X4);
-        let sample = |probes_log2, content| {
-            let at = Footprint { lod: 0, probes_log2, axis: Vec2::new(1.0, 0.0) };
-            chain.sample_packed::<Nearest, Repeat>(Vec2::new(0.5, 0.5), &at, mip, content)
-        };
+        let at = |probes_log2| Footprint { lod: 0, probes_log2, axis: Vec2::new(1.0, 0.0) };
+        let centre = Vec2::new(0.5, 0.5);
+        let stored = |probes_log2| chain.sample_packed::<Nearest, Repeat>(centre, &at(probes_log2), mip);
+        let light = |probes_log2| chain.sample_light::<Nearest, Repeat>(centre, &at(probes_log2), mip);
+        let decoded = |code: usize| SRGB_DECODE[code];
         // Probes at u = 0.5 + (-3, -1, 1, 3)/8: 0.125, 0.375, 0.625, 0.875, texels 0..4: (0 + 10 + 20 + 250) / 4 as
-        // stored; in light, the codes' mean light 0.2415 is code 134.80.
-        assert_eq!(sample(2, MipContent::Data), grey(70));
-        assert_eq!(sample(2, MipContent::Color), grey(135));
-        // Two probes at 0.25 and 0.75: (10 + 250) / 2; in light, 184.03.
-        assert_eq!(sample(1, MipContent::Data), grey(130));
-        assert_eq!(sample(1, MipContent::Color), grey(184));
+        // stored; in light, the mean of the decoded codes (0.2415, code 134.80).
+        assert_eq!(stored(2), grey(70));
+        assert_eq!(light(2), Vec3::splat((((decoded(0) + decoded(10)) + decoded(20)) + decoded(250)) * 0.25));
+        // Two probes at 0.25 and 0.75: (10 + 250) / 2; in light, 184.03's.
+        assert_eq!(stored(1), grey(130));
+        assert_eq!(light(1), Vec3::splat((decoded(10) + decoded(250)) * 0.5));
         // Every channel apart, transparency too: 255 in one of four probes is 63.75, 64; in light a quarter of
-        // white, 136.96, with the transparency as stored.
+        // white.
         let texels = [0xFF00_0000, 0x00FF_0000, 0x0000_FF00, 0x0000_00FF];
         let chain = Texture::new(&texels, 4, 1).unwrap().mip_chain();
-        let at = Footprint { lod: 0, probes_log2: 2, axis: Vec2::new(1.0, 0.0) };
-        let sample = |content| chain.sample_packed::<Nearest, Repeat>(Vec2::new(0.5, 0.5), &at, mip, content);
-        assert_eq!(sample(MipContent::Data), 0x4040_4040);
-        assert_eq!(sample(MipContent::Color), 0x4089_8989);
+        assert_eq!(chain.sample_packed::<Nearest, Repeat>(centre, &at(2), mip), 0x4040_4040);
+        assert_eq!(chain.sample_light::<Nearest, Repeat>(centre, &at(2), mip), Vec3::splat(0.25));
         // One probe: the trilinear sample.
-        let at = Footprint { lod: 0, probes_log2: 0, axis: Vec2::new(1.0, 0.0) };
         let uv = Vec2::new(0.3, 0.5);
-        let one = chain.sample_packed::<Bilinear, Repeat>(uv, &at, mip, MipContent::Color);
-        assert_eq!(one, chain.sample_packed::<Bilinear, Repeat>(uv, &at, MipFilter::Linear, MipContent::Color));
+        let one = chain.sample_packed::<Bilinear, Repeat>(uv, &at(0), mip);
+        assert_eq!(one, chain.sample_packed::<Bilinear, Repeat>(uv, &at(0), MipFilter::Linear));
+        let one = chain.sample_light::<Bilinear, Repeat>(uv, &at(0), mip);
+        assert_eq!(one, chain.sample_light::<Bilinear, Repeat>(uv, &at(0), MipFilter::Linear));
     }
 }

@@ -2,7 +2,7 @@
 //! enums for run-time selection.
 
 use super::Texture;
-use crate::color::unpack_rgb888;
+use crate::color::{decode_srgb888, unpack_rgb888};
 use crate::math::{Vec2, Vec3, float};
 
 /// How coordinates outside `[0, 1]` map onto the texture.
@@ -75,6 +75,9 @@ pub trait Filter {
     /// texels (0 past the end), never panic.
     fn read<W: Wrap, const N: usize>(texture: &Texture<'_>, addresses: &Self::Addresses<N>, out: &mut [u32; N]);
 
+    /// [`Filter::sample_light`] at the lanes' `addresses` (made for `texture`'s size), into `out[i]`.
+    fn read_light<W: Wrap, const N: usize>(texture: &Texture<'_>, addresses: &Self::Addresses<N>, out: &mut [Vec3; N]);
+
     /// [`Filter::sample_packed`] at each `(u[i], v[i])`, into `out[i]`: a batch of samples at once.
     #[inline(always)]
     fn sample_packed_lanes<W: Wrap, const N: usize>(
@@ -92,6 +95,11 @@ pub trait Filter {
     fn sample<W: Wrap>(texture: &Texture<'_>, uv: Vec2) -> Vec3 {
         unpack_rgb888(Self::sample_packed::<W>(texture, uv))
     }
+
+    /// Samples the sRGB-encoded colour texture `texture` at `uv` with wrap mode `W` in linear light: each texel's
+    /// codes decoded ([`crate::color::SRGB_DECODE`]) before the texels are blended, so that half-way between black
+    /// and white is half of white's light (code 188), not the codes' mean (128) decoded (0.22 of white's light).
+    fn sample_light<W: Wrap>(texture: &Texture<'_>, uv: Vec2) -> Vec3;
 }
 
 /// The texel containing the sample point.
@@ -106,6 +114,11 @@ impl Filter for Nearest {
     fn sample_packed<W: Wrap>(t: &Texture<'_>, uv: Vec2) -> u32 {
         let (x, y) = Self::texel::<W>(t.width, t.height, uv);
         t.packed(x, y)
+    }
+
+    #[inline(always)]
+    fn sample_light<W: Wrap>(t: &Texture<'_>, uv: Vec2) -> Vec3 {
+        decode_srgb888(Self::sample_packed::<W>(t, uv))
     }
 
     #[inline(always)]
@@ -125,6 +138,13 @@ impl Filter for Nearest {
             *o = t.at(i);
         }
     }
+
+    #[inline(always)]
+    fn read_light<W: Wrap, const N: usize>(t: &Texture<'_>, index: &[u32; N], out: &mut [Vec3; N]) {
+        for (o, &i) in out.iter_mut().zip(index) {
+            *o = decode_srgb888(t.at(i));
+        }
+    }
 }
 
 impl Nearest {
@@ -140,9 +160,10 @@ impl Nearest {
 
 /// The four texels around the sample point, weighted by distance (texel centres at half-integers).
 ///
-/// The sample point is snapped to 1/256 of a texel and the texels blended in integer arithmetic on the packed
-/// channels, as texture units do (8 bits of sub-texel precision is what Direct3D 11 requires, functional
-/// specification 7.18.16.1).
+/// The sample point is snapped to 1/256 of a texel (8 bits of sub-texel precision is what Direct3D 11 requires,
+/// functional specification 7.18.16.1). As stored ([`Filter::sample_packed`]) the texels are blended in integer
+/// arithmetic on the packed channels, as texture units do; in light ([`Filter::sample_light`]) in `f32` with
+/// those weights.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Bilinear;
 
@@ -164,7 +185,33 @@ impl Filter for Bilinear {
     }
 
     #[inline(always)]
+    fn read_light<W: Wrap, const N: usize>(t: &Texture<'_>, (u, v): &Self::Addresses<N>, out: &mut [Vec3; N]) {
+        for ((o, &u), &v) in out.iter_mut().zip(u).zip(v) {
+            *o = Self::sample_light::<W>(t, Vec2::new(u, v));
+        }
+    }
+
+    #[inline(always)]
     fn sample_packed<W: Wrap>(t: &Texture<'_>, uv: Vec2) -> u32 {
+        let ([top_left, top_right, bottom_left, bottom_right], (ax, ay)) = Self::taps::<W>(t, uv);
+        blend(blend(top_left, top_right, ax), blend(bottom_left, bottom_right, ax), ay)
+    }
+
+    #[inline(always)]
+    fn sample_light<W: Wrap>(t: &Texture<'_>, uv: Vec2) -> Vec3 {
+        let (texels, (ax, ay)) = Self::taps::<W>(t, uv);
+        let [top_left, top_right, bottom_left, bottom_right] = texels.map(decode_srgb888);
+        // Exact: an 8-bit weight over 256.
+        let (wx, wy) = (ax as f32 * (1.0 / 256.0), ay as f32 * (1.0 / 256.0));
+        top_left.lerp(top_right, wx).lerp(bottom_left.lerp(bottom_right, wx), wy)
+    }
+}
+
+impl Bilinear {
+    /// The four texels around `uv` (top left, top right, bottom left, bottom right) and the weights of the right
+    /// and the bottom ones, in 256ths.
+    #[inline(always)]
+    fn taps<W: Wrap>(t: &Texture<'_>, uv: Vec2) -> ([u32; 4], (u32, u32)) {
         let (w, h) = (t.width, t.height);
         // Fixed point with 8 fractional bits, offset by one texel (+256 - 128 for the half-texel centre shift) so
         // that it is never negative: the integer part is the left/top texel + 1, the fraction its neighbour's
@@ -172,12 +219,9 @@ impl Filter for Bilinear {
         let fixed = |r: f32, size: i32| float::round_small_to_u32(r * (size * 256) as f32 + 128.0);
         let (fx, fy) = (fixed(W::reduce(uv.x), w), fixed(1.0 - W::reduce(uv.y), h));
         let (x0, y0) = ((fx >> 8) as i32 - 1, (fy >> 8) as i32 - 1);
-        let (ax, ay) = (fx & 0xFF, fy & 0xFF);
         let (xa, xb) = (W::index(x0, w), W::index(x0 + 1, w));
         let (ya, yb) = (W::index(y0, h), W::index(y0 + 1, h));
-        let top = blend(t.packed(xa, ya), t.packed(xb, ya), ax);
-        let bottom = blend(t.packed(xa, yb), t.packed(xb, yb), ax);
-        blend(top, bottom, ay)
+        ([t.packed(xa, ya), t.packed(xb, ya), t.packed(xa, yb), t.packed(xb, yb)], (fx & 0xFF, fy & 0xFF))
     }
 }
 

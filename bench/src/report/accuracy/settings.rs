@@ -72,7 +72,7 @@ pub const DEFAULT: Setting = Setting {
 };
 
 /// Every setting measured: the default, then one knob at a time.
-pub const ALL: [Setting; 18] = [
+pub const ALL: [Setting; 19] = [
     DEFAULT,
     Setting { name: "0 sub-pixel bits", knob: "sub-pixel bits", subpixel_bits: 0, ..DEFAULT },
     Setting { name: "4 sub-pixel bits", knob: "sub-pixel bits", subpixel_bits: 4, ..DEFAULT },
@@ -81,6 +81,7 @@ pub const ALL: [Setting; 18] = [
     Setting { name: "nearest", knob: "texture filter", filter: FilterMode::Nearest, ..DEFAULT },
     Setting { name: "mipmaps off", knob: "mipmaps", mip_filter: MipFilter::Off, ..DEFAULT },
     Setting { name: "nearest level", knob: "mipmaps", mip_filter: MipFilter::Nearest, ..DEFAULT },
+    Setting { name: "anisotropic 2", knob: "mipmaps", mip_filter: MipFilter::Anisotropic(Anisotropy::X2), ..DEFAULT },
     Setting { name: "anisotropic 4", knob: "mipmaps", mip_filter: MipFilter::Anisotropic(Anisotropy::X4), ..DEFAULT },
     Setting { name: "anisotropic 8", knob: "mipmaps", mip_filter: MipFilter::Anisotropic(Anisotropy::X8), ..DEFAULT },
     Setting { name: "anisotropic 16", knob: "mipmaps", mip_filter: MipFilter::Anisotropic(Anisotropy::X16), ..DEFAULT },
