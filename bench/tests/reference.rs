@@ -654,9 +654,9 @@ fn from_scene_draws_what_rastty_draws() {
 #[test]
 fn from_scene_draws_the_builtin_model_as_rastty_does() {
     let scene = model_scene(rastty::builtin::builtin_model().unwrap());
-    // 2.5 levels: at this size rastty reads the model's texture from its levels of detail, where the reference's
-    // centre probe reads the texture itself.
-    let (compared, worst) = agree(&scene, (40, 30), &scene.camera(), &PlanOptions::default(), 2.5);
+    // Within 1.5 levels, as the quad: rastty decodes texels before blending them, within and between its levels
+    // of detail, as the reference does.
+    let (compared, worst) = agree(&scene, (40, 30), &scene.camera(), &PlanOptions::default(), 1.5);
     assert!(compared > 150, "{compared}");
     println!("{compared} pixel centres within {worst:.2} levels");
 }
