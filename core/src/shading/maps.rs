@@ -107,7 +107,7 @@ impl<F: Filter, W: Wrap> MapReader<F, W> {
     #[inline(never)]
     fn read_levels(&mut self, map: &Texture<'_>, at: &Coordinates, out: &mut [u32; BATCH_SIZE]) {
         let (chain, mip) = (map.mip_chain(), self.mip_filter);
-        let footprints = self.footprints(map, at);
+        let footprints = self.footprints((map.width(), map.height(), chain.levels().len()), at);
         for (i, o) in out.iter_mut().enumerate() {
             *o = chain.sample_packed::<F, W>(Vec2::new(at.uv.x[i], at.uv.y[i]), &footprints[i], mip);
         }
@@ -118,16 +118,15 @@ impl<F: Filter, W: Wrap> MapReader<F, W> {
     #[inline(never)]
     fn read_light_levels(&mut self, map: &Texture<'_>, at: &Coordinates, out: &mut Column3, len: usize) {
         let (chain, mip) = (map.mip_chain(), self.mip_filter);
-        let footprints = self.footprints(map, at);
+        let footprints = self.footprints((map.width(), map.height(), chain.levels().len()), at);
         for (i, footprint) in footprints.iter().enumerate().take(lanes(len)) {
             out.set(i, chain.sample_light::<F, W>(Vec2::new(at.uv.x[i], at.uv.y[i]), footprint, mip));
         }
     }
 
-    /// Where each lane reads a map of `map`'s size and number of levels, worked out for the first such map.
+    /// Where each lane reads a map of `shape`, worked out for the first map of that shape.
     #[inline(always)]
-    fn footprints(&mut self, map: &Texture<'_>, at: &Coordinates) -> &[Footprint; BATCH_SIZE] {
-        let shape = (map.width(), map.height(), map.mip_chain().levels().len());
+    fn footprints(&mut self, shape: MapShape, at: &Coordinates) -> &[Footprint; BATCH_SIZE] {
         if self.footprints.as_ref().is_some_and(|(made_for, _)| *made_for != shape) {
             self.footprints = None;
         }
