@@ -151,7 +151,7 @@ impl MipChain<'_> {
     /// what [`Self::sample_packed`] reads, but with every texel decoded before any blend, within a level
     /// ([`Filter::sample_light`]), between levels and across probes, as the levels themselves are averaged
     /// ([`super::build_mip_levels`]). Blending codes instead darkens every blend of a dark and a light texel: half-way
-    /// between codes 26 and 242 (a checkerboard's squares) it gives code 134 where the light's mean is code 178.
+    /// between codes 26 and 242 (a checkerboard's squares) it gives code 134 where the light's mean is code 179.
     #[inline(always)]
     pub fn sample_light<F: Filter, W: Wrap>(&self, uv: Vec2, at: &Footprint, mip: MipFilter) -> Vec3 {
         match mip {
