@@ -7,7 +7,7 @@ use super::scratch::Scratch;
 use crate::color::{ShadingSpace, encode_srgb, unpack_rgb888};
 use crate::math::{Vec2, Vec3};
 use crate::pipeline::{BATCH_SIZE, Slopes, lanes};
-use crate::texture::{Filter, Footprint, MipFilter, Texture, Wrap, footprint};
+use crate::texture::{Filter, Footprint, LEVEL, MipChain, MipFilter, Texture, Wrap, footprint};
 
 /// A batch's texture coordinates and, in a draw that mipmaps, their screen-space slopes.
 #[derive(Clone, Copy)]
@@ -107,7 +107,7 @@ impl<F: Filter, W: Wrap> MapReader<F, W> {
     #[inline(never)]
     fn read_levels(&mut self, map: &Texture<'_>, at: &Coordinates, out: &mut [u32; BATCH_SIZE]) {
         let (chain, mip) = (map.mip_chain(), self.mip_filter);
-        let footprints = self.footprints((map.width(), map.height(), chain.levels().len()), at);
+        let footprints = self.footprints((map.width(), map.height(), chain.level_count()), at);
         for (i, o) in out.iter_mut().enumerate() {
             *o = chain.sample_packed::<F, W>(Vec2::new(at.uv.x[i], at.uv.y[i]), &footprints[i], mip);
         }
@@ -118,7 +118,10 @@ impl<F: Filter, W: Wrap> MapReader<F, W> {
     #[inline(never)]
     fn read_light_levels(&mut self, map: &Texture<'_>, at: &Coordinates, out: &mut Column3, len: usize) {
         let (chain, mip) = (map.mip_chain(), self.mip_filter);
-        let footprints = self.footprints((map.width(), map.height(), chain.levels().len()), at);
+        let footprints = self.footprints((map.width(), map.height(), chain.level_count()), at);
+        if read_light_level_by_level::<F, W>(&chain, footprints, mip, at, out, len) {
+            return;
+        }
         for (i, footprint) in footprints.iter().enumerate().take(lanes(len)) {
             out.set(i, chain.sample_light::<F, W>(Vec2::new(at.uv.x[i], at.uv.y[i]), footprint, mip));
         }
@@ -146,6 +149,70 @@ impl<F: Filter, W: Wrap> MapReader<F, W> {
             })
             .1
     }
+}
+
+/// The most levels [`read_light_level_by_level`] reads: trilinear lanes spanning two levels read three.
+const MOST_LEVELS_READ: usize = 3;
+
+/// [`MapReader::read_light`] from `chain`'s levels for one probe a lane ([`MipFilter::Nearest`],
+/// [`MipFilter::Linear`]), a level at a time: every level some lane reads is sampled at every lane by the filter's
+/// lane loop ([`Filter::read_light`], as a map without levels is read: one loop the compiler widens, where a
+/// level per lane keeps each lane's sample on its own), and each lane keeps its levels' samples and blends them
+/// as [`MipChain::sample_light`] does, to the same bits. Reads nothing and returns false when the lanes read more
+/// than [`MOST_LEVELS_READ`] levels (or the filter takes probes).
+///
+/// [`MipChain::sample_light`]: crate::texture::MipChain::sample_light
+#[allow(clippy::needless_range_loop)] // lanes: one index into every column
+#[inline(always)]
+fn read_light_level_by_level<F: Filter, W: Wrap>(
+    chain: &MipChain<'_>,
+    footprints: &[Footprint; BATCH_SIZE],
+    mip: MipFilter,
+    at: &Coordinates,
+    out: &mut Column3,
+    len: usize,
+) -> bool {
+    if !matches!(mip, MipFilter::Nearest | MipFilter::Linear) {
+        return false;
+    }
+    // Each lane's level and its fraction of the way to the next (0 when it reads one level).
+    let mut near = [0usize; BATCH_SIZE];
+    let mut fraction = [0u32; BATCH_SIZE];
+    for i in 0..lanes(len) {
+        (near[i], fraction[i]) = chain.levels_read(footprints[i].lod, mip);
+    }
+    let n = len.min(BATCH_SIZE);
+    let (Some(&first), Some(&nearest_last)) = (near[..n].iter().min(), near[..n].iter().max()) else { return true };
+    // A fraction is never above 0 at the last level, so `level + 1` is in the chain wherever it is read.
+    let last = if fraction[..n].iter().any(|&f| f > 0) { nearest_last + 1 } else { nearest_last };
+    if last - first >= MOST_LEVELS_READ {
+        return false;
+    }
+    let (mut near_light, mut far_light) = ([Vec3::ZERO; BATCH_SIZE], [Vec3::ZERO; BATCH_SIZE]);
+    for level in first..=last {
+        let texture = chain.level(level);
+        let addresses = F::addresses::<W, BATCH_SIZE>(texture.width(), texture.height(), &at.uv.x, &at.uv.y);
+        let mut light = [Vec3::ZERO; BATCH_SIZE];
+        F::read_light::<W, BATCH_SIZE>(&texture, &addresses, &mut light);
+        for i in 0..BATCH_SIZE {
+            if near[i] == level {
+                near_light[i] = light[i];
+            }
+            if near[i] + 1 == level {
+                far_light[i] = light[i];
+            }
+        }
+    }
+    for i in 0..lanes(len) {
+        let light = if fraction[i] == 0 {
+            near_light[i]
+        } else {
+            // As `MipChain::sample_light` blends them: exact, a fraction in 256ths.
+            near_light[i].lerp(far_light[i], fraction[i] as f32 * (1.0 / LEVEL as f32))
+        };
+        out.set(i, light);
+    }
+    true
 }
 
 /// How a map's texels become values: colour maps are decoded from sRGB in a draw that lights in linear light,
@@ -293,6 +360,60 @@ mod tests {
         check::<Bilinear, Clamp>(maps, &uv);
     }
 
+    /// Reading level by level gives each lane what its own trilinear or nearest-level sample gives, to the bit,
+    /// for lanes reading one, two or three levels, all or some of the lanes; lanes spread over more levels, and
+    /// anisotropic filters, are left to the reader's loop over lanes.
+    #[test]
+    fn reading_level_by_level_gives_each_lane_its_own_sample() {
+        let texels: [u32; 256] = core::array::from_fn(|i| (i as u32 * 0x07_0B0D) & 0xFF_FFFF);
+        let mut levels = [0; 85];
+        let texture = Texture::new(&texels, 16, 16).unwrap();
+        build_mip_levels(&texture, MipContent::Color, &mut levels).unwrap();
+        let chain = texture.with_mip_levels(&levels).unwrap().mip_chain();
+        let uv = Column2 {
+            x: core::array::from_fn(|i| i as f32 * 0.0731 - 0.4),
+            y: core::array::from_fn(|i| 0.9 - i as f32 * 0.037),
+        };
+        // Footprints from `from` texels long, growing by `step` a lane, as wide as long.
+        let at = |from: f32, step: f32| {
+            let length = |i: usize| (from + i as f32 * step) / 16.0;
+            let dx = Column2 { x: core::array::from_fn(length), y: [0.0; BATCH_SIZE] };
+            let dy = Column2 { x: [0.0; BATCH_SIZE], y: core::array::from_fn(length) };
+            Coordinates { uv, slopes: Some(Slopes { dx, dy }) }
+        };
+        let read = |at: &Coordinates, mip, len| {
+            let footprints: [Footprint; BATCH_SIZE] = core::array::from_fn(|i| {
+                let lane = Slopes {
+                    dx: Vec2::new(at.slopes.unwrap().dx.x[i], 0.0),
+                    dy: Vec2::new(0.0, at.slopes.unwrap().dy.y[i]),
+                };
+                chain.footprint(&lane, mip)
+            });
+            let mut out = Column3::ZERO;
+            let read = read_light_level_by_level::<Bilinear, Repeat>(&chain, &footprints, mip, at, &mut out, len);
+            for (i, footprint) in footprints.iter().enumerate().take(len) {
+                let lane = Vec2::new(at.uv.x[i], at.uv.y[i]);
+                let expected = chain.sample_light::<Bilinear, Repeat>(lane, footprint, mip);
+                assert!(!read || out.get(i) == expected, "{mip:?} lane {i}");
+            }
+            (read, footprints.map(|f| f.lod))
+        };
+        for mip in [MipFilter::Nearest, MipFilter::Linear] {
+            // Lanes reading one level (magnified), two (trilinear within level 1 and on to 2; nearest: 1) and three
+            // (trilinear from level 0 into 1, and on to 2; nearest: 1 and 2).
+            for (from, step) in [(0.2, 0.01), (2.9, 0.01), (2.0, 0.1)] {
+                for len in [BATCH_SIZE, 5, 1] {
+                    assert!(read(&at(from, step), mip, len).0, "{mip:?} from {from} by {step}, {len} lanes");
+                }
+            }
+            // From magnified to the last level: left to the loop over lanes.
+            let (read_by_level, lods) = read(&at(0.2, 1.0), mip, BATCH_SIZE);
+            assert!(!read_by_level && lods[0] == 0 && lods[BATCH_SIZE - 1] == 4 * LEVEL, "{mip:?}");
+        }
+        let (read_by_level, _) = read(&at(2.9, 0.01), MipFilter::Anisotropic(Anisotropy::X2), BATCH_SIZE);
+        assert!(!read_by_level);
+    }
+
     /// A mipmapping reader gives each lane the chain's sample at the lane's own level of detail, as stored and in
     /// light, for maps with levels of different sizes taking turns and a map without levels, which is read alone.
     #[test]
@@ -309,10 +430,10 @@ mod tests {
         // Slopes from magnified to beyond the last level: long and narrow footprints, and square ones (every third
         // lane).
         let slopes = Slopes {
-            dx: Column2 { x: core::array::from_fn(|i| i as f32 * 0.04), y: [0.002; BATCH_SIZE] },
+            dx: Column2 { x: core::array::from_fn(|i| i as f32 * 0.06), y: [0.002; BATCH_SIZE] },
             dy: Column2 {
                 x: [0.0; BATCH_SIZE],
-                y: core::array::from_fn(|i| if i % 3 == 0 { i as f32 * 0.04 } else { (i % 5) as f32 * 0.07 }),
+                y: core::array::from_fn(|i| if i % 3 == 0 { i as f32 * 0.06 } else { (i % 5) as f32 * 0.07 }),
             },
         };
         let at = Coordinates {

@@ -25,34 +25,62 @@ pub enum MipContent {
 }
 
 /// A texture and its levels of detail, from the texture itself down to 1x1 ([`Texture::mip_chain`]).
+///
+/// It holds where each level starts, not the levels: a draw makes a chain for every map and batch it reads, and
+/// [`MipChain::level`] makes the level it is asked for.
 #[derive(Clone, Copy, Debug)]
 pub struct MipChain<'a> {
-    levels: [Texture<'a>; MAX_MIP_LEVELS],
+    /// The texture itself: level 0.
+    top: Texture<'a>,
+    /// The levels below it, laid out as [`build_mip_levels`] fills them.
+    below: &'a [u32],
+    /// Where level `k` starts in `below` (entry 0 unused).
+    starts: [u32; MAX_MIP_LEVELS],
+    /// The number of levels, the texture itself included.
     count: usize,
 }
 
 impl<'a> MipChain<'a> {
     /// The chain of `texture`, whose levels below it are `below` (laid out as [`build_mip_levels`] fills them,
-    /// interleaved like the texture), or `texture` alone when `below` is empty.
+    /// interleaved like the texture), or `texture` alone when `below` is empty. The levels are those `below`
+    /// holds whole.
     pub(super) fn new(texture: Texture<'a>, below: &'a [u32]) -> Self {
-        let mut levels = [texture; MAX_MIP_LEVELS];
-        let mut count = 1;
-        let (maps, map) = texture.interleaving();
-        let mut rest = below;
+        let (mut starts, mut count, mut start) = ([0; MAX_MIP_LEVELS], 1, 0);
         for (w, h) in level_sizes(texture.width(), texture.height()).skip(1) {
-            let Some((level, tail)) = rest.split_at_checked(w as usize * h as usize * maps as usize) else { break };
-            let Ok(texture) = Texture::interleaved(level, w, h, maps, map) else { break };
-            levels[count] = texture;
+            let end = start + w as usize * h as usize * texture.stride;
+            if end > below.len() {
+                break;
+            }
+            // At most 8 maps of MAX_TEXTURE_SIZE^2 / 3 texels: below 2^30.
+            starts[count] = start as u32;
             count += 1;
-            rest = tail;
+            start = end;
         }
-        Self { levels, count }
+        Self { top: texture, below, starts, count }
     }
 
-    /// The levels: the texture itself first, then each half the size of the one before, the last 1x1.
+    /// The number of levels, the texture itself included.
     #[must_use]
-    pub fn levels(&self) -> &[Texture<'a>] {
-        &self.levels[..self.count]
+    pub fn level_count(&self) -> usize {
+        self.count
+    }
+
+    /// Level `k`: the texture itself for 0, then each half the size of the one before (rounded down, at least 1),
+    /// the last 1x1; the last for any `k` past it.
+    #[must_use]
+    #[inline(always)]
+    pub fn level(&self, k: usize) -> Texture<'a> {
+        let k = k.min(self.count - 1);
+        if k == 0 {
+            return self.top;
+        }
+        // Halving k times, each rounded down and at least 1, is shifting by k, at least 1.
+        let (width, height) = ((self.top.width >> k).max(1), (self.top.height >> k).max(1));
+        let start = self.starts[k] as usize;
+        let len = width as usize * height as usize * self.top.stride;
+        // In range: `new` kept only the levels `below` holds whole.
+        let texels = self.below.get(start..start + len).unwrap_or(&[]);
+        Texture { texels, width, height, mips: &[], ..self.top }
     }
 }
 
@@ -104,7 +132,7 @@ pub fn mip_chain_texels(width: u32, height: u32) -> usize {
 /// build_mip_levels(&texture, MipContent::Color, &mut levels).unwrap();
 /// assert_eq!(levels, [0xBC_BCBC]);
 /// let texture = texture.with_mip_levels(&levels).unwrap();
-/// assert_eq!(texture.mip_chain().levels().len(), 2);
+/// assert_eq!(texture.mip_chain().level_count(), 2);
 /// ```
 pub fn build_mip_levels(texture: &Texture<'_>, content: MipContent, out: &mut [u32]) -> Result<(), TextureError> {
     let (width, height) = (texture.width(), texture.height());
@@ -204,7 +232,7 @@ mod tests {
     fn levels_of(texels: &[u32], width: u32, height: u32, content: MipContent, out: &mut [u32]) -> usize {
         let texture = Texture::new(texels, width, height).unwrap();
         build_mip_levels(&texture, content, out).unwrap();
-        texture.with_mip_levels(out).unwrap().mip_chain().levels().len()
+        texture.with_mip_levels(out).unwrap().mip_chain().level_count()
     }
 
     #[test]
@@ -226,7 +254,7 @@ mod tests {
         assert_eq!(build_mip_levels(&texture, MipContent::Data, &mut short).err(), wrong);
         assert_eq!(texture.with_mip_levels(&short).err(), wrong);
         // Without levels, the chain is the texture alone.
-        assert_eq!(texture.mip_chain().levels().len(), 1);
+        assert_eq!(texture.mip_chain().level_count(), 1);
     }
 
     /// Every 8-bit code survives decoding to linear light and encoding back, so a texture of one texel value keeps
@@ -301,10 +329,9 @@ mod tests {
             assert_eq!(alone, own_levels, "map {k}");
             let map = Texture::interleaved(&both, 4, 3, 2, k as u32).unwrap().with_mip_levels(&shared).unwrap();
             let chain = map.mip_chain();
-            let sizes: [(u32, u32); 3] =
-                core::array::from_fn(|i| (chain.levels()[i].width(), chain.levels()[i].height()));
+            let sizes: [(u32, u32); 3] = core::array::from_fn(|i| (chain.level(i).width(), chain.level(i).height()));
             assert_eq!(sizes, [(4, 3), (2, 1), (1, 1)]);
-            assert_eq!(chain.levels()[2].packed(0, 0), alone[2], "map {k}");
+            assert_eq!(chain.level(2).packed(0, 0), alone[2], "map {k}");
         }
     }
 }

@@ -97,10 +97,11 @@ impl MipChain<'_> {
     /// Where a sample whose texture coordinates change by `slopes` per pixel reads the chain under `mip`.
     ///
     /// The level of detail is `log2` of the longer side of the pixel's footprint in texels, `rho` (OpenGL 4.6
-    /// core profile, section 8.14.1, with `rho` the larger of the two lengths), 0 where a pixel covers at most a
-    /// texel (magnification) and at most the last level's. An anisotropic sample takes `2^k` probes, `k` the
+    /// core profile, section 8.14.1, with `rho` the larger of the two lengths), less half a level (a sharpening
+    /// measured against the reference, see `SHARPENING`), 0 where a pixel covers at most `sqrt(2)` texels and at
+    /// most the last level's. An anisotropic sample takes `2^k` probes, `k` the
     /// least with `2^k` at least the ratio of the longer side to the shorter, up to the filter's most, and reads
-    /// each at `log2(rho / 2^k)` (`EXT_texture_filter_anisotropic`, with the probe count rounded up to a power of
+    /// each at `log2(rho / 2^k)`, less the same half (`EXT_texture_filter_anisotropic`, with the probe count rounded up to a power of
     /// two); one probe where the footprint is at most a texel long or the texture has no levels. Non-finite slopes
     /// give one probe at the last level.
     ///
@@ -110,12 +111,12 @@ impl MipChain<'_> {
     #[must_use]
     #[inline(always)]
     pub fn footprint(&self, slopes: &Slopes<Vec2>, mip: MipFilter) -> Footprint {
-        let top = &self.levels()[0];
+        let top = self.level(0);
         footprint(
             top.width() as f32,
             top.height() as f32,
             [slopes.dx.x, slopes.dx.y, slopes.dy.x, slopes.dy.y],
-            self.levels().len(),
+            self.level_count(),
             mip.max_probes_log2(),
         )
     }
@@ -127,8 +128,8 @@ impl MipChain<'_> {
     #[inline(always)]
     pub fn sample_packed<F: Filter, W: Wrap>(&self, uv: Vec2, at: &Footprint, mip: MipFilter) -> u32 {
         match mip {
-            MipFilter::Off => F::sample_packed::<W>(self.level(0), uv),
-            MipFilter::Nearest => F::sample_packed::<W>(self.nearest_level(at.lod), uv),
+            MipFilter::Off => F::sample_packed::<W>(&self.level(0), uv),
+            MipFilter::Nearest => F::sample_packed::<W>(&self.nearest_level(at.lod), uv),
             MipFilter::Linear => self.between_levels::<F, W>(uv, at.lod),
             MipFilter::Anisotropic(_) if at.probes_log2 == 0 => self.between_levels::<F, W>(uv, at.lod),
             MipFilter::Anisotropic(_) => {
@@ -155,8 +156,8 @@ impl MipChain<'_> {
     #[inline(always)]
     pub fn sample_light<F: Filter, W: Wrap>(&self, uv: Vec2, at: &Footprint, mip: MipFilter) -> Vec3 {
         match mip {
-            MipFilter::Off => F::sample_light::<W>(self.level(0), uv),
-            MipFilter::Nearest => F::sample_light::<W>(self.nearest_level(at.lod), uv),
+            MipFilter::Off => F::sample_light::<W>(&self.level(0), uv),
+            MipFilter::Nearest => F::sample_light::<W>(&self.nearest_level(at.lod), uv),
             MipFilter::Linear => self.light_between_levels::<F, W>(uv, at.lod),
             MipFilter::Anisotropic(_) if at.probes_log2 == 0 => self.light_between_levels::<F, W>(uv, at.lod),
             MipFilter::Anisotropic(_) => {
@@ -173,35 +174,44 @@ impl MipChain<'_> {
     /// The level [`MipFilter::Nearest`] reads at `lod`: level 0 up to a level of detail of one half, then the
     /// nearest (OpenGL 4.6, equation 8.7).
     #[inline(always)]
-    fn nearest_level(&self, lod: u32) -> &Texture<'_> {
-        self.level(((lod + LEVEL / 2 - 1) / LEVEL) as usize)
+    fn nearest_level(&self, lod: u32) -> Texture<'_> {
+        self.level(self.levels_read(lod, MipFilter::Nearest).0)
+    }
+
+    /// The level a one-probe sample at level of detail `lod` reads under `mip` (not past the last), and how far
+    /// it is toward the next, in 1/[`LEVEL`]: 0 when it reads that level alone (always under
+    /// [`MipFilter::Nearest`] and [`MipFilter::Off`], which reads level 0).
+    #[inline(always)]
+    pub(crate) fn levels_read(&self, lod: u32, mip: MipFilter) -> (usize, u32) {
+        let last = self.level_count() - 1;
+        match mip {
+            MipFilter::Off => (0, 0),
+            MipFilter::Nearest => ((((lod + LEVEL / 2 - 1) / LEVEL) as usize).min(last), 0),
+            MipFilter::Linear | MipFilter::Anisotropic(_) => match (lod / LEVEL) as usize {
+                level if level >= last => (last, 0),
+                level => (level, lod % LEVEL),
+            },
+        }
     }
 
     /// The two levels around `lod` at `uv`, blended by where it lies between them.
     #[inline(always)]
     fn between_levels<F: Filter, W: Wrap>(&self, uv: Vec2, lod: u32) -> u32 {
         let (level, fraction) = ((lod / LEVEL) as usize, lod % LEVEL);
-        let near = F::sample_packed::<W>(self.level(level), uv);
-        if fraction == 0 { near } else { blend(near, F::sample_packed::<W>(self.level(level + 1), uv), fraction) }
+        let near = F::sample_packed::<W>(&self.level(level), uv);
+        if fraction == 0 { near } else { blend(near, F::sample_packed::<W>(&self.level(level + 1), uv), fraction) }
     }
 
     /// [`Self::between_levels`] in linear light.
     #[inline(always)]
     fn light_between_levels<F: Filter, W: Wrap>(&self, uv: Vec2, lod: u32) -> Vec3 {
-        let (level, fraction) = ((lod / LEVEL) as usize, lod % LEVEL);
-        let near = F::sample_light::<W>(self.level(level), uv);
+        let (level, fraction) = self.levels_read(lod, MipFilter::Linear);
+        let near = F::sample_light::<W>(&self.level(level), uv);
         if fraction == 0 {
             return near;
         }
         // Exact: a fraction in 256ths.
-        near.lerp(F::sample_light::<W>(self.level(level + 1), uv), fraction as f32 * (1.0 / LEVEL as f32))
-    }
-
-    /// Level `k`, or the last.
-    #[inline(always)]
-    fn level(&self, k: usize) -> &Texture<'_> {
-        let levels = self.levels();
-        &levels[k.min(levels.len() - 1)]
+        near.lerp(F::sample_light::<W>(&self.level(level + 1), uv), fraction as f32 * (1.0 / LEVEL as f32))
     }
 }
 
@@ -236,7 +246,7 @@ pub(crate) fn footprint(
     // A texture without levels is read alone, as without anisotropy.
     let most = if levels > 1 { max_probes_log2 } else { 0 };
     if most == 0 {
-        return Footprint::at_level(rho.clamp(0, last) as u32);
+        return Footprint::at_level((rho - SHARPENING).clamp(0, last) as u32);
     }
     let (shorter, axis) = if along_x >= along_y { (along_y, Vec2::new(ux, vx)) } else { (along_x, Vec2::new(uy, vy)) };
     // The least k with 2^k at least the longer side over the shorter (the difference of their logarithms, rounded
@@ -244,8 +254,14 @@ pub(crate) fn footprint(
     // probes would read one texel).
     let spread = if rho > 0 { (rho - log2_of_root(shorter)).max(0) as u32 } else { 0 };
     let k = spread.div_ceil(LEVEL).min(most);
-    Footprint { lod: (rho - (k * LEVEL) as i32).clamp(0, last) as u32, probes_log2: k, axis }
+    Footprint { lod: (rho - SHARPENING - (k * LEVEL) as i32).clamp(0, last) as u32, probes_log2: k, axis }
 }
+
+/// How much finer than `log2(rho)` a sample's level of detail is taken: half a level. A level's texel stands for
+/// a box of texels above it, and the bilinear filter and the blend with the next level widen that further, so
+/// `log2(rho)` blurs a pixel over more than its footprint. Chosen by measurement against the reference (the
+/// accuracy report's floor and model, trilinear, for 0, 1/4, 1/2 and 3/4 of a level; docs/accuracy.md).
+const SHARPENING: i32 = LEVEL as i32 / 2;
 
 /// `log2(sqrt(squared))` in 1/[`LEVEL`] levels, for a finite `squared >= 0`: (exponent - 127) * 2^23 + mantissa,
 /// over 2^23, is `log2` in the piecewise-linear approximation; over 2^16 it is the root's in 1/256 levels. Zero
@@ -265,10 +281,10 @@ mod tests {
         Slopes { dx: Vec2::new(dx.0, dx.1), dy: Vec2::new(dy.0, dy.1) }
     }
 
-    /// A pixel spanning 2^k texels along its longer side is at level k exactly; magnification and degenerate
-    /// slopes clamp to the chain.
+    /// A pixel spanning 2^k texels along its longer side is at level k - 1/2 exactly; magnification and
+    /// degenerate slopes clamp to the chain.
     #[test]
-    fn the_level_of_detail_is_log2_of_the_footprint() {
+    fn the_level_of_detail_is_log2_of_the_footprint_less_a_half() {
         let texels = [0; 64 * 16];
         let mut levels = [0; 343];
         assert_eq!(levels.len(), mip_chain_texels(64, 16));
@@ -276,22 +292,24 @@ mod tests {
         build_mip_levels(&texture, MipContent::Data, &mut levels).unwrap();
         // 64x16, 32x8, 16x4, 8x2, 4x1, 2x1, 1x1: seven levels.
         let chain = texture.with_mip_levels(&levels).unwrap().mip_chain();
-        assert_eq!(chain.levels().len(), 7);
+        assert_eq!(chain.level_count(), 7);
         let at = |dx, dy| {
             let footprint = chain.footprint(&slopes(dx, dy), MipFilter::Linear);
             assert_eq!(footprint.probes_log2, 0);
             footprint.lod
         };
-        // One texel per pixel across u (1/64) or down v (1/16): level 0.
+        // One texel per pixel across u (1/64) or down v (1/16), and sqrt(2) texels: level 0.
         assert_eq!(at((1.0 / 64.0, 0.0), (0.0, 1.0 / 16.0)), 0);
-        // Four texels per pixel along the longer axis, whichever it is: level 2.
-        assert_eq!(at((4.0 / 64.0, 0.0), (0.0, 1.0 / 16.0)), 2 * LEVEL);
-        assert_eq!(at((0.0, 0.0), (0.0, 4.0 / 16.0)), 2 * LEVEL);
+        assert_eq!(at((1.0 / 64.0, 1.0 / 16.0), (0.0, 0.0)), 0);
+        // Four texels per pixel along the longer axis, whichever it is: level 2 less a half.
+        assert_eq!(at((4.0 / 64.0, 0.0), (0.0, 1.0 / 16.0)), 2 * LEVEL - LEVEL / 2);
+        assert_eq!(at((0.0, 0.0), (0.0, 4.0 / 16.0)), 2 * LEVEL - LEVEL / 2);
         // 3 texels: rho^2 = 9 = 2^3 x 1.125, read as log2 3 + 0.125, halved: 1.5625 levels (log2 3 = 1.585), 400
-        // of 256.
-        assert_eq!(at((3.0 / 64.0, 0.0), (0.0, 0.0)), 400);
-        // A diagonal 3 by 4 texels, 5 long: rho^2 = 25 = 2^4 x 1.5625, (4 + 0.5625) / 2 levels (log2 5 = 2.32).
-        assert_eq!(at((3.0 / 64.0, 4.0 / 16.0), (0.0, 0.0)), 584);
+        // of 256, less 128.
+        assert_eq!(at((3.0 / 64.0, 0.0), (0.0, 0.0)), 272);
+        // A diagonal 3 by 4 texels, 5 long: rho^2 = 25 = 2^4 x 1.5625, (4 + 0.5625) / 2 levels (log2 5 = 2.32),
+        // 584, less 128.
+        assert_eq!(at((3.0 / 64.0, 4.0 / 16.0), (0.0, 0.0)), 456);
         // Magnified, zero, and beyond the last level.
         assert_eq!(at((0.1 / 64.0, 0.0), (0.0, 0.0)), 0);
         assert_eq!(at((0.0, 0.0), (0.0, 0.0)), 0);
@@ -340,7 +358,8 @@ mod tests {
     }
 
     /// An anisotropic footprint takes the least power of two of probes that covers its longer side with squares
-    /// of its shorter, up to the filter's most, and reads them at the longer side's level less that power.
+    /// of its shorter, up to the filter's most, and reads them at the longer side's level less that power (and
+    /// less the half level every footprint is sharpened by).
     #[test]
     fn anisotropic_footprints_count_probes_along_the_longer_side() {
         let texels = [0; 64 * 64];
@@ -353,28 +372,26 @@ mod tests {
         let at = |dx: (f32, f32), dy: (f32, f32), most| chain.footprint(&slopes(dx, dy), MipFilter::Anisotropic(most));
         let footprint =
             |lod, probes_log2, axis: (f32, f32)| Footprint { lod, probes_log2, axis: Vec2::new(axis.0, axis.1) };
-        // 8 texels along x, 1 down y: 8 probes at level 0 along x's slope, or 4 at level 1 when 4 is the most.
+        // 8 texels along x, 1 down y: 8 probes at level 0 along x's slope, or 4 at level 1/2 when 4 is the most.
         assert_eq!(at((8.0 * texel, 0.0), (0.0, texel), Anisotropy::X16), footprint(0, 3, (8.0 * texel, 0.0)));
-        assert_eq!(at((8.0 * texel, 0.0), (0.0, texel), Anisotropy::X4), footprint(LEVEL, 2, (8.0 * texel, 0.0)));
-        // The longer side down the screen, 16 by 2 texels: 8 probes at level 1.
+        assert_eq!(at((8.0 * texel, 0.0), (0.0, texel), Anisotropy::X4), footprint(128, 2, (8.0 * texel, 0.0)));
+        // The longer side down the screen, 16 by 2 texels: 8 probes at level 1/2.
         assert_eq!(
             at((2.0 * texel, 0.0), (0.0, 16.0 * texel), Anisotropy::X16),
-            footprint(LEVEL, 3, (0.0, 16.0 * texel))
+            footprint(128, 3, (0.0, 16.0 * texel))
         );
         // Slanted in the texture, 20 (12 across, 16 down) by 2 texels: log2 400 read as 8 + 0.5625, halved, is 1,096
-        // 256ths (log2 20 = 4.32 levels); 16 probes (log2 10 = 3.3, rounded up to 4 levels) at 1,096 - 1,024.
+        // 256ths (log2 20 = 4.32 levels); 16 probes (log2 10 = 3.3, rounded up to 4 levels) at 1,096 - 128 -
+        // 1,024 < 0, so level 0.
         let (du, dv) = (12.0 * texel, 16.0 * texel);
-        assert_eq!(at((2.0 * texel, 0.0), (du, dv), Anisotropy::X16), footprint(72, 4, (du, dv)));
+        assert_eq!(at((2.0 * texel, 0.0), (du, dv), Anisotropy::X16), footprint(0, 4, (du, dv)));
         // 3 by 1: 4 probes (the least power of two at least 3, log2 3 read as 1.5625 levels), at log2 3 - 2 < 0,
         // so level 0.
         assert_eq!(at((3.0 * texel, 0.0), (0.0, texel), Anisotropy::X16), footprint(0, 2, (3.0 * texel, 0.0)));
         // A round footprint, 4 by 4 texels: one probe, as trilinear reads it.
-        assert_eq!(
-            at((4.0 * texel, 0.0), (0.0, 4.0 * texel), Anisotropy::X16),
-            footprint(2 * LEVEL, 0, (4.0 * texel, 0.0))
-        );
-        // A line (no width): the most probes; magnified: one at level 0.
-        assert_eq!(at((32.0 * texel, 0.0), (0.0, 0.0), Anisotropy::X8), footprint(2 * LEVEL, 3, (32.0 * texel, 0.0)));
+        assert_eq!(at((4.0 * texel, 0.0), (0.0, 4.0 * texel), Anisotropy::X16), footprint(384, 0, (4.0 * texel, 0.0)));
+        // A line (no width), 32 texels long: the most probes, at level 5 - 3 - 1/2; magnified: one at level 0.
+        assert_eq!(at((32.0 * texel, 0.0), (0.0, 0.0), Anisotropy::X8), footprint(384, 3, (32.0 * texel, 0.0)));
         assert_eq!(at((0.5 * texel, 0.0), (0.0, 0.25 * texel), Anisotropy::X16), footprint(0, 0, (0.5 * texel, 0.0)));
         // Not finite: one probe at the last level (six levels below the top).
         for bad in [f32::NAN, -f32::NAN, f32::INFINITY, f32::NEG_INFINITY] {

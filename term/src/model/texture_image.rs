@@ -151,6 +151,6 @@ mod tests {
         // One level below, the linear-light average of red and green, built once for the first content asked.
         assert_eq!(t.mip_levels(MipContent::Color).unwrap(), [0xBC_BC00]);
         assert_eq!(t.mip_levels(MipContent::Data).unwrap(), [0xBC_BC00]);
-        assert_eq!(t.mipmapped(MipContent::Color).unwrap().mip_chain().levels().len(), 2);
+        assert_eq!(t.mipmapped(MipContent::Color).unwrap().mip_chain().level_count(), 2);
     }
 }
