@@ -181,10 +181,12 @@ fn read_light_level_by_level<F: Filter, W: Wrap>(
     for i in 0..lanes(len) {
         (near[i], fraction[i]) = chain.levels_read(footprints[i].lod, mip);
     }
+    // The levels read: from the least lane's level to the greatest level a lane reads, its own or, with a
+    // fraction, the next (never past the chain: the last level has no fraction).
     let n = len.min(BATCH_SIZE);
-    let (Some(&first), Some(&nearest_last)) = (near[..n].iter().min(), near[..n].iter().max()) else { return true };
-    // A fraction is never above 0 at the last level, so `level + 1` is in the chain wherever it is read.
-    let last = if fraction[..n].iter().any(|&f| f > 0) { nearest_last + 1 } else { nearest_last };
+    let first = near[..n].iter().min();
+    let last = (0..n).map(|i| near[i] + usize::from(fraction[i] > 0)).max();
+    let (Some(&first), Some(last)) = (first, last) else { return true };
     if last - first >= MOST_LEVELS_READ {
         return false;
     }
