@@ -7,7 +7,7 @@ use super::scratch::Scratch;
 use crate::color::{ShadingSpace, encode_srgb, unpack_rgb888};
 use crate::math::{Vec2, Vec3};
 use crate::pipeline::{BATCH_SIZE, Slopes, lanes};
-use crate::texture::{Filter, Footprint, LEVEL, MipChain, MipFilter, Texture, Wrap, footprint};
+use crate::texture::{Filter, Footprint, MipChain, MipFilter, Texture, Wrap, footprint, light_between};
 
 /// A batch's texture coordinates and, in a draw that mipmaps, their screen-space slopes.
 #[derive(Clone, Copy)]
@@ -206,12 +206,8 @@ fn read_light_level_by_level<F: Filter, W: Wrap>(
         }
     }
     for i in 0..lanes(len) {
-        let light = if fraction[i] == 0 {
-            near_light[i]
-        } else {
-            // As `MipChain::sample_light` blends them: exact, a fraction in 256ths.
-            near_light[i].lerp(far_light[i], fraction[i] as f32 * (1.0 / LEVEL as f32))
-        };
+        let light =
+            if fraction[i] == 0 { near_light[i] } else { light_between(near_light[i], far_light[i], fraction[i]) };
         out.set(i, light);
     }
     true
@@ -410,7 +406,7 @@ mod tests {
             }
             // From magnified to the last level: left to the loop over lanes.
             let (read_by_level, lods) = read(&at(0.2, 1.0), mip, BATCH_SIZE);
-            assert!(!read_by_level && lods[0] == 0 && lods[BATCH_SIZE - 1] == 4 * LEVEL, "{mip:?}");
+            assert!(!read_by_level && lods[0] == 0 && lods[BATCH_SIZE - 1] == 4 * crate::texture::LEVEL, "{mip:?}");
         }
         let (read_by_level, _) = read(&at(2.9, 0.01), MipFilter::Anisotropic(Anisotropy::X2), BATCH_SIZE);
         assert!(!read_by_level);

@@ -197,7 +197,7 @@ impl MipChain<'_> {
     /// The two levels around `lod` at `uv`, blended by where it lies between them.
     #[inline(always)]
     fn between_levels<F: Filter, W: Wrap>(&self, uv: Vec2, lod: u32) -> u32 {
-        let (level, fraction) = ((lod / LEVEL) as usize, lod % LEVEL);
+        let (level, fraction) = self.levels_read(lod, MipFilter::Linear);
         let near = F::sample_packed::<W>(&self.level(level), uv);
         if fraction == 0 { near } else { blend(near, F::sample_packed::<W>(&self.level(level + 1), uv), fraction) }
     }
@@ -210,9 +210,16 @@ impl MipChain<'_> {
         if fraction == 0 {
             return near;
         }
-        // Exact: a fraction in 256ths.
-        near.lerp(F::sample_light::<W>(&self.level(level + 1), uv), fraction as f32 * (1.0 / LEVEL as f32))
+        light_between(near, F::sample_light::<W>(&self.level(level + 1), uv), fraction)
     }
+}
+
+/// The light `fraction` (in 1/[`LEVEL`], above 0) of the way from a level's sample `near` to the next level's
+/// `far`: the one blend between levels in light, so that every reader of levels gives the same bits.
+#[inline(always)]
+pub(crate) fn light_between(near: Vec3, far: Vec3, fraction: u32) -> Vec3 {
+    // Exact: a fraction in 256ths.
+    near.lerp(far, fraction as f32 * (1.0 / LEVEL as f32))
 }
 
 /// Where `at`'s probes lie around `uv`: probe `j` of `n` at `uv + axis (2j + 1 - n) / 2n`.

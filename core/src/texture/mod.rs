@@ -14,8 +14,8 @@ mod mipmapped;
 mod sampler;
 
 pub use mip_chain::{MAX_MIP_LEVELS, MipChain, MipContent, build_mip_levels, mip_chain_texels};
-pub(crate) use mipmapped::footprint;
 pub use mipmapped::{Anisotropy, Footprint, LEVEL, MipFilter};
+pub(crate) use mipmapped::{footprint, light_between};
 pub use sampler::{Bilinear, Clamp, Filter, FilterMode, Nearest, Repeat, Wrap, WrapMode};
 
 use crate::math::{Vec2, Vec3};
