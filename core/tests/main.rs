@@ -18,6 +18,7 @@ mod robustness;
 mod shadows;
 mod specialisation;
 mod stability;
+mod strip_bins;
 mod strips;
 mod supersample;
 mod tangents;

@@ -1,22 +1,26 @@
 //! The firmware's scene (`core/firmware/scene`) rendered on the host: the lines it prints are the ones the firmware
 //! must print under QEMU. `core/firmware/check.sh` runs both and compares the `frame N: checksum ...` lines; this
-//! test checks what the host alone can: the two frames differ from each other and from a blank frame, the strips
-//! cover the frame top to bottom, the band buffers fit 16 KiB, and the strips add up to the frame rendered whole,
-//! both by the scene's specialised draw and by `draw_mesh`.
+//! test checks what the host alone can: the two frames differ from each other and from a blank frame, every memory
+//! layout gives the same frames within its budget, the strips cover the frame top to bottom, and the strips add up
+//! to the frame rendered whole, both by the scene's specialised draw and by `draw_mesh`.
 //!
 //! Run `cargo test -p rastty-tests --test integration firmware_checksum:: -- --nocapture` to see the lines.
 
 use rastty_core::pipeline::DrawStats;
 use rastty_core::target::{Rgb565, Target};
 use rastty_firmware_scene::{
-    BACKGROUND, BAND_BUFFER_BYTES, BAND_ROWS, BandBuffers, FRAMES, Fnv1a, FrameReport, HEIGHT, STRIPS, Scene, WIDTH,
-    checksum_frame, render_frame, spot,
+    BACKGROUND, BIN_ENTRIES, FRAME_MEMORY_BYTES, FRAMES, Fnv1a, FrameMemory, FrameReport, HEIGHT, LAYOUTS, Scene,
+    WIDTH, checksum_frame, render_frame, spot,
 };
 
-/// Every frame's report, rendered in strips as the firmware renders them.
+/// Every frame's report in every layout, rendered in strips as the firmware renders them, in its order.
 fn reports() -> Vec<FrameReport> {
-    let mut buffers = Box::new(BandBuffers::new());
-    (0..FRAMES).map(|frame| checksum_frame(frame, &mut buffers).expect("the frame renders")).collect()
+    let mut memory = Box::new(FrameMemory::new());
+    LAYOUTS
+        .iter()
+        .flat_map(|&layout| (0..FRAMES).map(move |frame| (layout, frame)))
+        .map(|(layout, frame)| checksum_frame(frame, layout, &mut memory).expect("the frame renders"))
+        .collect()
 }
 
 /// FNV-1a of a whole frame rendered at once by `draw`, and what `draw` returns.
@@ -42,31 +46,54 @@ fn the_firmware_scene_gives_two_distinct_checksums() {
     });
     println!("blank frame: checksum 0x{blank:08x}");
 
-    assert_eq!(reports.len(), 2);
+    assert_eq!(reports.len(), FRAMES * LAYOUTS.len());
     assert_ne!(reports[0].checksum, reports[1].checksum, "the checksum depends on the rotation");
     for report in &reports {
+        let first = &reports[report.frame];
+        assert_eq!((report.checksum, report.stats), (first.checksum, first.stats), "every layout, the same frame");
         assert_ne!(report.checksum, blank, "frame {} is not blank", report.frame);
-        assert_eq!(report.strips, 20);
-        assert_eq!(report.stats.triangles_in, (STRIPS as usize * spot::TRIANGLE_COUNT) as u64);
+        assert_eq!(report.strips, HEIGHT.div_ceil(report.layout.band_rows));
+        // Binning saw every triangle once; about half face away.
+        assert_eq!(report.stats.triangles_in, spot::TRIANGLE_COUNT as u64);
+        assert!(report.stats.culled > 2_000, "frame {}: {:?}", report.frame, report.stats);
         assert!(report.stats.fragments > 10_000, "frame {}: Spot covers a good part of the frame", report.frame);
     }
 }
 
 #[test]
-fn the_strips_cover_the_frame_top_to_bottom_in_16_kib() {
-    assert_eq!(BAND_BUFFER_BYTES, 2 * 2 * 320 * 12);
-    const { assert!(BAND_BUFFER_BYTES <= 16 * 1024) };
-    let mut buffers = Box::new(BandBuffers::new());
-    let mut next_row = 0;
-    let (strips, _) = render_frame(0, &mut buffers, |strip| {
-        assert_eq!(strip.rows.start, next_row, "strips arrive top to bottom, none missing");
-        assert!(strip.rows.end - strip.rows.start <= BAND_ROWS);
-        assert_eq!(strip.pixels.len(), (WIDTH * (strip.rows.end - strip.rows.start)) as usize);
-        next_row = strip.rows.end;
-    })
-    .unwrap();
-    assert_eq!(next_row, HEIGHT);
-    assert_eq!(strips, STRIPS);
+fn every_layout_fits_its_budget_and_the_bins_hold_every_kept_triangle() {
+    assert_eq!(LAYOUTS.map(|l| (l.budget_kib, l.band_rows)), [(16, 4), (32, 16), (64, 42)]);
+    for layout in LAYOUTS {
+        assert_eq!(layout.bytes(), 2 * 2 * 320 * layout.band_rows as usize + 4 * BIN_ENTRIES);
+        assert!(layout.bytes() <= layout.budget_kib * 1024);
+    }
+    assert_eq!(FRAME_MEMORY_BYTES, LAYOUTS[2].bytes());
+    for frame in 0..FRAMES {
+        let scene = Scene::new(frame).unwrap();
+        let mut bins = vec![rastty_core::pipeline::BinnedTriangle::UNSET; spot::TRIANGLE_COUNT];
+        let strips = rastty_core::pipeline::Strips::new(WIDTH, HEIGHT, 4, rastty_core::target::Samples::One).unwrap();
+        let bins = scene.bin(&mut bins, strips).unwrap();
+        println!("frame {frame}: {} triangles kept", bins.kept());
+        assert!(bins.kept() <= BIN_ENTRIES, "frame {frame}: {} kept, {BIN_ENTRIES} entries", bins.kept());
+        assert_eq!(bins.rest(), spot::TRIANGLE_COUNT);
+    }
+}
+
+#[test]
+fn the_strips_cover_the_frame_top_to_bottom() {
+    let mut memory = Box::new(FrameMemory::new());
+    for layout in LAYOUTS {
+        let mut next_row = 0;
+        let (strips, _) = render_frame(0, layout, &mut memory, |strip| {
+            assert_eq!(strip.rows.start, next_row, "strips arrive top to bottom, none missing");
+            assert!(strip.rows.end - strip.rows.start <= layout.band_rows);
+            assert_eq!(strip.pixels.len(), (WIDTH * (strip.rows.end - strip.rows.start)) as usize);
+            next_row = strip.rows.end;
+        })
+        .unwrap();
+        assert_eq!(next_row, HEIGHT);
+        assert_eq!(strips, HEIGHT.div_ceil(layout.band_rows));
+    }
 }
 
 #[test]

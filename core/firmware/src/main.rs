@@ -1,7 +1,8 @@
 //! rastty-core on a Cortex-M4: renders the shared scene (`rastty-firmware-scene`: Spot the cow, Phong-lit,
-//! 320x240 RGB565, `u16` depth) in 12-row strips through 15,360 bytes of band buffers, folds every strip into an
-//! FNV-1a checksum, and prints, through semihosting, one line per frame that the host must reproduce exactly
-//! (`check.sh` compares them), then the instructions each frame took, the band buffers' RAM and the peak stack.
+//! 320x240 RGB565, `u16` depth) in strips, its triangles binned once a frame, in each memory layout (16, 32 and
+//! 64 KiB for the band buffers and the bins together), folds every strip into an FNV-1a checksum, and prints,
+//! through semihosting, one line per frame and layout that the host must reproduce exactly (`check.sh` compares
+//! them), then the instructions each took, the frame memory's RAM and the peak stack.
 //! It exits through semihosting: status 0, or 1 after a panic or a hard fault.
 //!
 //! Built for QEMU's `mps2-an386` machine (`memory.x`); `cargo run --release` runs it there (`.cargo/config.toml`),
@@ -19,44 +20,58 @@ use core::panic::PanicInfo;
 
 use cortex_m_rt::{ExceptionFrame, entry, exception};
 use cortex_m_semihosting::{debug, hio};
-use rastty_firmware_scene::{BAND_BUFFER_BYTES, BAND_ROWS, BandBuffers, FRAMES, HEIGHT, STRIPS, WIDTH};
+use rastty_firmware_scene::{FRAME_MEMORY_BYTES, FRAMES, FrameMemory, HEIGHT, LAYOUTS, WIDTH};
 use rastty_firmware_scene::{checksum_frame, spot};
 
-/// The band buffers, in `.bss`: the only frame memory.
-static mut BANDS: BandBuffers = BandBuffers::new();
+/// The band buffers and the bins, in `.bss`: the only frame memory.
+static mut MEMORY: FrameMemory = FrameMemory::new();
 
 #[entry]
 fn main() -> ! {
     let mut out = hio::hstdout().unwrap_or_else(|()| fail());
-    let bands = &raw mut BANDS;
-    // SAFETY: `main` runs once and is the only place that touches `BANDS`.
-    let bands: &'static mut BandBuffers = unsafe { &mut *bands };
+    let memory = &raw mut MEMORY;
+    // SAFETY: `main` runs once and is the only place that touches `MEMORY`.
+    let memory: &'static mut FrameMemory = unsafe { &mut *memory };
     timer::start();
 
     let _ = writeln!(
         out,
-        "rastty-core on a Cortex-M4: Spot ({} vertices, {} triangles), {WIDTH}x{HEIGHT} RGB565 + u16 depth, \
-         {STRIPS} strips of {BAND_ROWS} rows",
+        "rastty-core on a Cortex-M4: Spot ({} vertices, {} triangles), {WIDTH}x{HEIGHT} RGB565 + u16 depth",
         spot::VERTEX_COUNT,
         spot::TRIANGLE_COUNT,
     );
-    let mut instructions = [0u64; FRAMES];
-    for (frame, count) in instructions.iter_mut().enumerate() {
-        let t0 = timer::now();
-        let report = checksum_frame(frame, bands).unwrap_or_else(|e| panic!("frame {frame}: {e}"));
-        *count = timer::instructions_since(t0);
-        let _ = writeln!(out, "{report}");
+    let mut instructions = [[0u64; FRAMES]; LAYOUTS.len()];
+    for (layout, counts) in LAYOUTS.iter().zip(&mut instructions) {
+        for (frame, count) in counts.iter_mut().enumerate() {
+            let t0 = timer::now();
+            let report = checksum_frame(frame, *layout, memory).unwrap_or_else(|e| panic!("frame {frame}: {e}"));
+            *count = timer::instructions_since(t0);
+            let _ = writeln!(out, "{report}");
+        }
     }
     let stack = stack::peak_bytes();
 
-    for (frame, &count) in instructions.iter().enumerate() {
-        let per_pixel = count / u64::from(WIDTH * HEIGHT);
-        let _ = writeln!(out, "frame {frame}: {count} instructions, {per_pixel} per pixel (under -icount shift=0)");
+    for (layout, counts) in LAYOUTS.iter().zip(&instructions) {
+        let _ = writeln!(
+            out,
+            "layout {} KiB: strips of {} rows, {} bytes of buffers",
+            layout.budget_kib,
+            layout.band_rows,
+            layout.bytes()
+        );
+        for (frame, &count) in counts.iter().enumerate() {
+            let per_pixel = count / u64::from(WIDTH * HEIGHT);
+            let _ = writeln!(
+                out,
+                "frame {frame} in {} KiB: {count} instructions, {per_pixel} per pixel (under -icount shift=0)",
+                layout.budget_kib
+            );
+        }
     }
     let t0 = timer::now();
     timer::two_million_instructions();
     let _ = writeln!(out, "timer check: a 2000000-instruction loop measures {}", timer::instructions_since(t0));
-    let _ = writeln!(out, "band buffers: {BAND_BUFFER_BYTES} bytes of RAM");
+    let _ = writeln!(out, "frame memory: {FRAME_MEMORY_BYTES} bytes of RAM (the largest layout's)");
     let _ = writeln!(out, "peak stack: {stack} bytes");
     debug::exit(debug::EXIT_SUCCESS);
     fail()

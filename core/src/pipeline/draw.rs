@@ -7,6 +7,7 @@ use super::edges::{DynamicEdgeSetup, EdgeSetup, FixedPoint, FloatingPoint};
 use super::interpolator::{Affine, DynamicInterpolator, Interpolator, PerspectiveCorrect};
 use super::raster::{Rasterizer, Setup, Stages, shade_batch};
 use super::screen_vertex::{NO_SCREEN, NOT_FINITE, ScreenVertex, screen_vertices};
+use super::strip_bins::Walk;
 use super::vertex_cache::VertexCache;
 use super::{DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation, MAX_SUBPIXEL_BITS, Shader, Varyings};
 use crate::mesh::{Attributes, Mesh};
@@ -93,10 +94,28 @@ where
     M: VertexMemory,
 {
     check(mesh, S::ATTRIBUTES, state)?;
-    Ok(match state.edges {
-        EdgeArithmetic::FixedPoint => with_interpolation_and_depth(target, mesh, shader, state, FixedPoint),
-        EdgeArithmetic::Float => with_interpolation_and_depth(target, mesh, shader, state, FloatingPoint),
-    })
+    Ok(draw_walk(target, mesh, shader, state, Walk::All(0..mesh.triangle_count())))
+}
+
+/// [`draw`] of the triangles `walk` takes, once checked: the first choice, the edge arithmetic.
+#[inline(always)]
+pub(super) fn draw_walk<S, C, D, M>(
+    target: &mut Target<C, D, M>,
+    mesh: &Mesh<'_>,
+    shader: &S,
+    state: &DrawState,
+    walk: Walk<'_>,
+) -> DrawStats
+where
+    S: Shader,
+    C: ColorBuffer,
+    D: DepthBuffer,
+    M: VertexMemory,
+{
+    match state.edges {
+        EdgeArithmetic::FixedPoint => with_interpolation_and_depth(target, mesh, shader, state, FixedPoint, walk),
+        EdgeArithmetic::Float => with_interpolation_and_depth(target, mesh, shader, state, FloatingPoint, walk),
+    }
 }
 
 /// The second and third choices of [`draw`]: the interpolator and the depth stage.
@@ -106,6 +125,7 @@ fn with_interpolation_and_depth<S, C, D, E, M>(
     shader: &S,
     state: &DrawState,
     edges: E,
+    walk: Walk<'_>,
 ) -> DrawStats
 where
     S: Shader,
@@ -115,11 +135,12 @@ where
     E: EdgeSetup,
 {
     use {DepthTest as T, Interpolation as I};
+    let stages = (edges, walk);
     match (state.interpolation, state.depth_test) {
-        (I::PerspectiveCorrect, T::Less) => run(target, mesh, shader, state, edges, PerspectiveCorrect, DepthLess),
-        (I::PerspectiveCorrect, T::Off) => run(target, mesh, shader, state, edges, PerspectiveCorrect, DepthOff),
-        (I::Affine, T::Less) => run(target, mesh, shader, state, edges, Affine, DepthLess),
-        (I::Affine, T::Off) => run(target, mesh, shader, state, edges, Affine, DepthOff),
+        (I::PerspectiveCorrect, T::Less) => run(target, mesh, shader, state, stages, PerspectiveCorrect, DepthLess),
+        (I::PerspectiveCorrect, T::Off) => run(target, mesh, shader, state, stages, PerspectiveCorrect, DepthOff),
+        (I::Affine, T::Less) => run(target, mesh, shader, state, stages, Affine, DepthLess),
+        (I::Affine, T::Off) => run(target, mesh, shader, state, stages, Affine, DepthOff),
     }
 }
 
@@ -144,10 +165,11 @@ where
 {
     check(mesh, S::ATTRIBUTES, state)?;
     let (interpolator, depth) = (DynamicInterpolator(state.interpolation), DynamicDepth(state.depth_test));
-    Ok(run(target, mesh, shader, state, DynamicEdgeSetup(state.edges), interpolator, depth))
+    let walk = Walk::All(0..mesh.triangle_count());
+    Ok(run(target, mesh, shader, state, (DynamicEdgeSetup(state.edges), walk), interpolator, depth))
 }
 
-fn check(mesh: &Mesh<'_>, needed: Attributes, state: &DrawState) -> Result<(), DrawError> {
+pub(super) fn check(mesh: &Mesh<'_>, needed: Attributes, state: &DrawState) -> Result<(), DrawError> {
     let present = mesh.attributes();
     if !present.contains(needed) {
         return Err(DrawError::MissingAttributes { needed, present });
@@ -202,13 +224,14 @@ fn shared_vertices<'m, S: Shader, M: VertexMemory>(
     memory.shared()?.for_draw(mesh.positions(), matrix, frame, state.subpixel_bits)
 }
 
-/// The draw loop, monomorphised on the shader, the edge arithmetic, the interpolator and the depth stage.
+/// The draw loop over the triangles `walk` takes, monomorphised on the shader, the edge arithmetic, the
+/// interpolator and the depth stage.
 fn run<S, C, D, E, I, Z, M>(
     target: &mut Target<C, D, M>,
     mesh: &Mesh<'_>,
     shader: &S,
     state: &DrawState,
-    edges: E,
+    (edges, walk): (E, Walk<'_>),
     interpolator: I,
     depth: Z,
 ) -> DrawStats
@@ -249,7 +272,7 @@ where
     // A loop, not `Mesh::for_each_triangle`: its closure, called from one place per index type, stayed out of line,
     // and each triangle paid a call and reloaded every captured value (callgrind, sphere1m with vertex memory, two
     // frames: 776.1 against 725.9 million instructions).
-    for t in 0..mesh.triangle_count() {
+    for t in walk {
         let indices = mesh.triangle(t);
         stats.triangles_in += 1;
         let Some(indices) = indices else {

@@ -115,12 +115,12 @@ impl Edges for FixedEdges {
     #[inline(always)]
     fn weights(&self, e: &[i64; 3]) -> [f32; 3] {
         // Unbiased: >= 0 and summing to the doubled area, so the weights are a convex combination.
-        [(e[0] - self.bias[0]) as f32, (e[1] - self.bias[1]) as f32, (e[2] - self.bias[2]) as f32]
+        [0, 1, 2].map(|k| float::from_i64(e[k] - self.bias[k]))
     }
 
     #[inline(always)]
     fn steps(&self) -> [[f32; 3]; 2] {
-        [self.step_x.map(|s| s as f32), self.step_y.map(|s| s as f32)]
+        [self.step_x.map(float::from_i64), self.step_y.map(float::from_i64)]
     }
 
     /// A sample `(ox, oy)` eighths of a pixel from the centre changes an edge function `E` by `(step_x ox + step_y

@@ -42,6 +42,7 @@ mod shader;
 mod slopes;
 mod state;
 mod stats;
+mod strip_bins;
 mod varyings;
 mod vertex_cache;
 
@@ -56,4 +57,5 @@ pub use shader::{Fragment, Shader};
 pub use slopes::Slopes;
 pub use state::{Cull, DepthTest, DrawState, EdgeArithmetic, FixedFunction, Interpolation, MAX_SUBPIXEL_BITS, Winding};
 pub use stats::DrawStats;
+pub use strip_bins::{BinnedTriangle, StripBins, Strips, draw_strip};
 pub use varyings::Varyings;

@@ -244,7 +244,7 @@ impl Rasterizer {
             edges.step_x[k] = -dy << shift;
             edges.step_y[k] = dx << shift;
         }
-        let frame = Frame::new([x0, x1, y0, y1], front_facing, swapped, v, area.unsigned_abs() as f32, self.samples);
+        let frame = Frame::new([x0, x1, y0, y1], front_facing, swapped, v, float::from_i64(area.abs()), self.samples);
         Setup::Ready(Coverage { edges, frame })
     }
 
@@ -417,6 +417,12 @@ impl<S: Shader, I: Interpolator, Z> Stages<'_, S, I, Z> {
 const SMALL_BOX: i64 = 4;
 
 impl<E: Edges> Coverage<E> {
+    /// The first and last rows of the triangle's bounding box, clamped to the target's rows.
+    #[inline(always)]
+    pub fn rows(&self) -> (i32, i32) {
+        (self.frame.y0, self.frame.y1)
+    }
+
     /// False when the triangle covers none of the pixel centres (the samples, on a multisampled target) of its
     /// bounding box in the target, which is tested centre by centre for a box of at most [`SMALL_BOX`] pixels; true
     /// otherwise. A dense mesh's triangles are mostly smaller than a pixel and many cover no centre: this lets them

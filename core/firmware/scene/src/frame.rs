@@ -1,21 +1,18 @@
-//! A frame, rendered strip by strip through one pair of band buffers, and its checksum.
+//! A frame, rendered strip by strip through one pair of band buffers with its geometry binned once, and its
+//! checksum.
 
 use core::fmt;
 use core::ops::Range;
 
-use rastty_core::pipeline::DrawStats;
-use rastty_core::target::{Rgb565, Target};
+use rastty_core::pipeline::{DrawStats, Strips};
+use rastty_core::target::{Rgb565, Samples, Target};
 
-use crate::{BandBuffers, Fnv1a, Scene, SceneError};
+use crate::{Fnv1a, FrameMemory, Layout, Scene, SceneError};
 
 /// Frame width in pixels.
 pub const WIDTH: u32 = 320;
 /// Frame height in pixels.
 pub const HEIGHT: u32 = 240;
-/// Rows per strip. The last strip is shorter when this does not divide [`HEIGHT`] (here it does).
-pub const BAND_ROWS: u32 = 12;
-/// Strips per frame.
-pub const STRIPS: u32 = HEIGHT.div_ceil(BAND_ROWS);
 
 /// One finished strip of the frame, as a display would receive it.
 #[derive(Clone, Debug)]
@@ -26,8 +23,9 @@ pub struct Strip<'a> {
     pub pixels: &'a [u16],
 }
 
-/// Renders frame `frame` strip by strip through `buffers`, handing each finished strip to `show`, top to bottom.
-/// Returns the number of strips and the draw counts summed over them.
+/// Renders frame `frame` in the strips of `layout` through `memory`, handing each finished strip to `show`, top to
+/// bottom: bins the triangles once, then draws each strip from the bins. Returns the number of strips and the
+/// draw counts: binning's, with the strips' fragments.
 ///
 /// # Panics
 /// If `frame >= FRAMES`.
@@ -36,23 +34,24 @@ pub struct Strip<'a> {
 /// A [`SceneError`] if the mesh, the camera, a band or a draw fails (none does).
 pub fn render_frame(
     frame: usize,
-    buffers: &mut BandBuffers,
+    layout: Layout,
+    memory: &mut FrameMemory,
     mut show: impl FnMut(&Strip<'_>),
 ) -> Result<(u32, DrawStats), SceneError> {
     let scene = Scene::new(frame)?;
-    let mut stats = DrawStats::default();
-    let mut strips = 0;
-    for y0 in (0..HEIGHT).step_by(BAND_ROWS as usize) {
-        let y1 = (y0 + BAND_ROWS).min(HEIGHT);
-        let len = (WIDTH * (y1 - y0)) as usize;
-        let BandBuffers { color, depth } = buffers;
-        let mut band = Target::band(Rgb565(&mut color[..len]), &mut depth[..len], WIDTH, HEIGHT, y0..y1)
+    let strips = Strips::new(WIDTH, HEIGHT, layout.band_rows, Samples::One).map_err(SceneError::Target)?;
+    let FrameMemory { color, depth, bins } = memory;
+    let bins = scene.bin(bins, strips)?;
+    let mut stats = bins.stats();
+    for strip in 0..strips.count() {
+        let rows = strips.rows(strip);
+        let len = (WIDTH * rows.len() as u32) as usize;
+        let mut band = Target::band(Rgb565(&mut color[..len]), &mut depth[..len], WIDTH, HEIGHT, rows.clone())
             .map_err(SceneError::Target)?;
-        stats += scene.draw(&mut band)?;
-        show(&Strip { rows: y0..y1, pixels: &color[..len] });
-        strips += 1;
+        stats.fragments += scene.draw_strip(&mut band, &bins)?.fragments;
+        show(&Strip { rows, pixels: &color[..len] });
     }
-    Ok((strips, stats))
+    Ok((strips.count(), stats))
 }
 
 /// Renders frame `frame` and folds every strip, as it is finished, into the frame's [`Fnv1a`] checksum: the
@@ -63,10 +62,10 @@ pub fn render_frame(
 ///
 /// # Errors
 /// As [`render_frame`].
-pub fn checksum_frame(frame: usize, buffers: &mut BandBuffers) -> Result<FrameReport, SceneError> {
+pub fn checksum_frame(frame: usize, layout: Layout, memory: &mut FrameMemory) -> Result<FrameReport, SceneError> {
     let mut checksum = Fnv1a::new();
-    let (strips, stats) = render_frame(frame, buffers, |strip| checksum.write_rgb565(strip.pixels))?;
-    Ok(FrameReport { frame, checksum: checksum.finish(), strips, stats })
+    let (strips, stats) = render_frame(frame, layout, memory, |strip| checksum.write_rgb565(strip.pixels))?;
+    Ok(FrameReport { frame, layout, checksum: checksum.finish(), strips, stats })
 }
 
 /// What rendering a frame did.
@@ -74,22 +73,24 @@ pub fn checksum_frame(frame: usize, buffers: &mut BandBuffers) -> Result<FrameRe
 pub struct FrameReport {
     /// The frame's index.
     pub frame: usize,
+    /// The memory layout it was rendered in.
+    pub layout: Layout,
     /// [`Fnv1a`] of the frame's pixels.
     pub checksum: u32,
     /// Strips rendered and checksummed.
     pub strips: u32,
-    /// Triangle and fragment counts, summed over the strips (each strip draws the whole mesh).
+    /// Triangle counts from binning, fragments summed over the strips.
     pub stats: DrawStats,
 }
 
 impl fmt::Display for FrameReport {
     /// The line that the firmware and the host both print, and `check.sh` compares:
-    /// `frame 0: checksum 0x1234abcd, 20 strips, 24680 fragments`.
+    /// `frame 0 in 16 KiB: checksum 0x1234abcd, 60 strips, 24680 fragments`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "frame {}: checksum 0x{:08x}, {} strips, {} fragments",
-            self.frame, self.checksum, self.strips, self.stats.fragments
+            "frame {} in {} KiB: checksum 0x{:08x}, {} strips, {} fragments",
+            self.frame, self.layout.budget_kib, self.checksum, self.strips, self.stats.fragments
         )
     }
 }

@@ -7,7 +7,7 @@
 //! (the host test checks it), but it picks the shader at run time, so a firmware calling it links every variant
 //! of the pipeline.
 
-use rastty_core::pipeline::draw;
+use rastty_core::pipeline::{BinnedTriangle, StripBins, Strips, draw, draw_strip};
 use rastty_core::shading::{Absent, Layout, LightUse, SurfaceShader, Variant, capabilities};
 use rastty_core::target::{ColorBuffer, DepthBuffer};
 use rastty_core::{
@@ -100,15 +100,45 @@ impl Scene {
     /// [`SceneError::Draw`] if the draw fails, [`SceneError::Variant`] if the scene resolves to another variant
     /// than [`SpotShader`] draws (neither happens).
     pub fn draw<C: ColorBuffer, D: DepthBuffer>(&self, target: &mut Target<C, D>) -> Result<DrawStats, SceneError> {
+        let shader = self.shader()?;
+        target.clear(BACKGROUND);
+        draw(target, &self.object.mesh, &shader, &STATE).map_err(SceneError::Draw)
+    }
+
+    /// Bins Spot's triangles by the strips of `strips` into `memory`, once for the frame: what
+    /// [`Scene::draw_strip`] reads.
+    ///
+    /// # Errors
+    /// As [`Scene::draw`].
+    pub fn bin<'m>(&self, memory: &'m mut [BinnedTriangle], strips: Strips) -> Result<StripBins<'m>, SceneError> {
+        let shader = self.shader()?;
+        StripBins::bin(memory, &self.object.mesh, &shader, &STATE, strips).map_err(SceneError::Draw)
+    }
+
+    /// Clears `target`, one strip of the frame, to [`BACKGROUND`] and draws the triangles of `bins` that meet it:
+    /// the pixels of [`Scene::draw`] on the same target.
+    ///
+    /// # Errors
+    /// As [`Scene::draw`].
+    pub fn draw_strip<C: ColorBuffer, D: DepthBuffer>(
+        &self,
+        target: &mut Target<C, D>,
+        bins: &StripBins<'_>,
+    ) -> Result<DrawStats, SceneError> {
+        let shader = self.shader()?;
+        target.clear(BACKGROUND);
+        draw_strip(target, &self.object.mesh, &shader, &STATE, bins).map_err(SceneError::Draw)
+    }
+
+    /// The one shader the scene's variant calls for.
+    fn shader(&self) -> Result<SpotShader<'_>, SceneError> {
         let variant = Variant::resolve(&self.object, self.lights.iter().map(LightUse::from), SPACE, &STATE)
             .map_err(draw_error)?;
         if variant.layout() != LAYOUT || variant.state != STATE {
             return Err(SceneError::Variant);
         }
         let o = &self.object;
-        let shader = SpotShader::new(variant, o.transforms, &[], o.material, self.lights()).map_err(draw_error)?;
-        target.clear(BACKGROUND);
-        draw(target, &o.mesh, &shader, &STATE).map_err(SceneError::Draw)
+        SpotShader::new(variant, o.transforms, &[], o.material, self.lights()).map_err(draw_error)
     }
 
     /// [`Scene::draw`] through [`draw_mesh`], which picks the shader at run time: the same pixels, for the host
