@@ -6,6 +6,9 @@
 //!
 //! Run `cargo test -p rastty-tests --test integration firmware_checksum:: -- --nocapture` to see the lines.
 
+use embedded_graphics_core::draw_target::DrawTarget;
+use embedded_graphics_core::geometry::{OriginDimensions, Point, Size};
+use embedded_graphics_core::primitives::Rectangle;
 use rastty_core::pipeline::DrawStats;
 use rastty_core::target::{Rgb565, Target};
 use rastty_firmware_scene::{
@@ -79,20 +82,52 @@ fn every_layout_fits_its_budget_and_the_bins_hold_every_kept_triangle() {
     }
 }
 
+/// A display that records the areas it is sent and the number of colours for each.
+#[derive(Default)]
+struct Recording(Vec<(Rectangle, usize)>);
+
+impl OriginDimensions for Recording {
+    fn size(&self) -> Size {
+        Size::new(WIDTH, HEIGHT)
+    }
+}
+
+impl DrawTarget for Recording {
+    type Color = embedded_graphics_core::pixelcolor::Rgb565;
+    type Error = std::convert::Infallible;
+    fn draw_iter<I: IntoIterator<Item = embedded_graphics_core::Pixel<Self::Color>>>(
+        &mut self,
+        _: I,
+    ) -> Result<(), Self::Error> {
+        panic!("strips go through fill_contiguous");
+    }
+    fn fill_contiguous<I: IntoIterator<Item = Self::Color>>(
+        &mut self,
+        area: &Rectangle,
+        colors: I,
+    ) -> Result<(), Self::Error> {
+        self.0.push((*area, colors.into_iter().count()));
+        Ok(())
+    }
+}
+
 #[test]
 fn the_strips_cover_the_frame_top_to_bottom() {
     let mut memory = Box::new(FrameMemory::new());
     for layout in LAYOUTS {
-        let mut next_row = 0;
-        let (strips, _) = render_frame(0, layout, &mut memory, |strip| {
-            assert_eq!(strip.rows.start, next_row, "strips arrive top to bottom, none missing");
-            assert!(strip.rows.end - strip.rows.start <= layout.band_rows);
-            assert_eq!(strip.pixels.len(), (WIDTH * (strip.rows.end - strip.rows.start)) as usize);
-            next_row = strip.rows.end;
-        })
-        .unwrap();
-        assert_eq!(next_row, HEIGHT);
+        let mut display = Recording::default();
+        let (strips, _) = render_frame(0, layout, &mut memory, &mut display).unwrap();
         assert_eq!(strips, HEIGHT.div_ceil(layout.band_rows));
+        assert_eq!(display.0.len(), strips as usize);
+        let mut next_row = 0;
+        for (area, colors) in display.0 {
+            assert_eq!(area.top_left, Point::new(0, next_row as i32), "strips arrive top to bottom, none missing");
+            assert_eq!(area.size.width, WIDTH);
+            assert!(area.size.height <= layout.band_rows);
+            assert_eq!(colors, (WIDTH * area.size.height) as usize, "one colour a pixel of the area");
+            next_row += area.size.height;
+        }
+        assert_eq!(next_row, HEIGHT);
     }
 }
 

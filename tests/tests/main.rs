@@ -4,6 +4,7 @@
 //! file here is a module declared below). Run one subject with `cargo test -p rastty-tests --test integration MODULE::`.
 
 mod effect_snapshots;
+mod embedded_graphics;
 mod firmware_checksum;
 mod snapshot;
 mod snapshots;

@@ -85,6 +85,24 @@ impl Strips {
         Ok(Self { width, height, rows, samples })
     }
 
+    /// The frame's width and height.
+    #[must_use]
+    pub fn size(&self) -> (u32, u32) {
+        (self.width, self.height)
+    }
+
+    /// Rows of every strip but perhaps the last.
+    #[must_use]
+    pub fn rows_per_strip(&self) -> u32 {
+        self.rows
+    }
+
+    /// Samples per pixel of the strips' targets.
+    #[must_use]
+    pub fn samples(&self) -> Samples {
+        self.samples
+    }
+
     /// The number of strips.
     #[must_use]
     pub fn count(&self) -> u32 {

@@ -1,31 +1,25 @@
 //! A frame, rendered strip by strip through one pair of band buffers with its geometry binned once, and its
 //! checksum.
 
+use core::convert::Infallible;
 use core::fmt;
-use core::ops::Range;
 
+use embedded_graphics_core::draw_target::DrawTarget;
+use embedded_graphics_core::pixelcolor::Rgb565;
 use rastty_core::pipeline::{DrawStats, Strips};
-use rastty_core::target::{Rgb565, Samples, Target};
+use rastty_core::target::Samples;
+use rastty_embedded_graphics::{FrameError, StripMemory, draw_frame};
 
-use crate::{Fnv1a, FrameMemory, Layout, Scene, SceneError};
+use crate::{ChecksumDisplay, FrameMemory, Layout, Scene, SceneError};
 
 /// Frame width in pixels.
 pub const WIDTH: u32 = 320;
 /// Frame height in pixels.
 pub const HEIGHT: u32 = 240;
 
-/// One finished strip of the frame, as a display would receive it.
-#[derive(Clone, Debug)]
-pub struct Strip<'a> {
-    /// The frame rows it holds.
-    pub rows: Range<u32>,
-    /// Its RGB565 pixels, row-major, `WIDTH * rows.len()` of them.
-    pub pixels: &'a [u16],
-}
-
-/// Renders frame `frame` in the strips of `layout` through `memory`, handing each finished strip to `show`, top to
-/// bottom: bins the triangles once, then draws each strip from the bins. Returns the number of strips and the
-/// draw counts: binning's, with the strips' fragments.
+/// Renders frame `frame` in the strips of `layout` through `memory` into `display`, strip by strip, top to bottom,
+/// through [`draw_frame`] (one `fill_contiguous` a strip): bins the triangles once, then draws each strip from the
+/// bins. Returns the number of strips and the draw counts: binning's, with the strips' fragments.
 ///
 /// # Panics
 /// If `frame >= FRAMES`.
@@ -36,26 +30,29 @@ pub fn render_frame(
     frame: usize,
     layout: Layout,
     memory: &mut FrameMemory,
-    mut show: impl FnMut(&Strip<'_>),
+    display: &mut impl DrawTarget<Color = Rgb565, Error = Infallible>,
 ) -> Result<(u32, DrawStats), SceneError> {
     let scene = Scene::new(frame)?;
     let strips = Strips::new(WIDTH, HEIGHT, layout.band_rows, Samples::One).map_err(SceneError::Target)?;
     let FrameMemory { color, depth, bins } = memory;
     let bins = scene.bin(bins, strips)?;
     let mut stats = bins.stats();
-    for strip in 0..strips.count() {
-        let rows = strips.rows(strip);
-        let len = (WIDTH * rows.len() as u32) as usize;
-        let mut band = Target::band(Rgb565(&mut color[..len]), &mut depth[..len], WIDTH, HEIGHT, rows.clone())
-            .map_err(SceneError::Target)?;
-        stats.fragments += scene.draw_strip(&mut band, &bins)?.fragments;
-        show(&Strip { rows, pixels: &color[..len] });
-    }
+    let strip_memory = StripMemory::<Rgb565, u16> { color, depth };
+    draw_frame(display, strips, strip_memory, |band| {
+        stats.fragments += scene.draw_strip(band, &bins)?.fragments;
+        Ok(())
+    })
+    .map_err(|e| match e {
+        FrameError::Target(e) => SceneError::Target(e),
+        FrameError::Draw(e) => e,
+        FrameError::Samples(_) => SceneError::Multisampled,
+        FrameError::Display(never) => match never {},
+    })?;
     Ok((strips.count(), stats))
 }
 
-/// Renders frame `frame` and folds every strip, as it is finished, into the frame's [`Fnv1a`] checksum: the
-/// checksum is the firmware's display.
+/// Renders frame `frame` into a [`ChecksumDisplay`], which folds every strip, as it is sent, into the frame's
+/// [`crate::Fnv1a`] checksum: the checksum is the firmware's display.
 ///
 /// # Panics
 /// If `frame >= FRAMES`.
@@ -63,9 +60,9 @@ pub fn render_frame(
 /// # Errors
 /// As [`render_frame`].
 pub fn checksum_frame(frame: usize, layout: Layout, memory: &mut FrameMemory) -> Result<FrameReport, SceneError> {
-    let mut checksum = Fnv1a::new();
-    let (strips, stats) = render_frame(frame, layout, memory, |strip| checksum.write_rgb565(strip.pixels))?;
-    Ok(FrameReport { frame, layout, checksum: checksum.finish(), strips, stats })
+    let mut display = ChecksumDisplay::new();
+    let (strips, stats) = render_frame(frame, layout, memory, &mut display)?;
+    Ok(FrameReport { frame, layout, checksum: display.checksum(), strips, stats })
 }
 
 /// What rendering a frame did.
@@ -75,7 +72,7 @@ pub struct FrameReport {
     pub frame: usize,
     /// The memory layout it was rendered in.
     pub layout: Layout,
-    /// [`Fnv1a`] of the frame's pixels.
+    /// [`crate::Fnv1a`] of the frame's pixels.
     pub checksum: u32,
     /// Strips rendered and checksummed.
     pub strips: u32,

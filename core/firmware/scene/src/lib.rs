@@ -16,6 +16,7 @@
 
 #![no_std]
 
+mod display;
 mod error;
 mod fnv1a;
 mod frame;
@@ -23,8 +24,9 @@ mod memory;
 mod scene;
 pub mod spot;
 
+pub use display::ChecksumDisplay;
 pub use error::SceneError;
 pub use fnv1a::Fnv1a;
-pub use frame::{FrameReport, HEIGHT, Strip, WIDTH, checksum_frame, render_frame};
+pub use frame::{FrameReport, HEIGHT, WIDTH, checksum_frame, render_frame};
 pub use memory::{BIN_ENTRIES, FRAME_MEMORY_BYTES, FrameMemory, LAYOUTS, Layout, MAX_BAND_PIXELS};
 pub use scene::{BACKGROUND, FRAMES, Scene, SpotShader, YAWS};
