@@ -36,6 +36,7 @@ struct Plane([f32; 4]);
 
 impl Plane {
     /// The signed distance `a . p`, exactly.
+    #[cfg_attr(not(any(target_feature = "sse2", target_feature = "neon", target_feature = "simd128")), inline(never))]
     fn distance(&self, p: Vec4) -> Expansion {
         let a = self.0;
         Expansion::product(a[0], p.x)
@@ -46,6 +47,7 @@ impl Plane {
 
     /// The point where the segment from `p` (distance `dp`) to `q` (distance `dq`, of the other sign) meets the
     /// plane: `(dp q - dq p) / (dp - dq)`, with numerator and denominator exact and rounded once each.
+    #[cfg_attr(not(any(target_feature = "sse2", target_feature = "neon", target_feature = "simd128")), inline(never))]
     fn meet(p: Vec4, dp: &Expansion, q: Vec4, dq: &Expansion) -> Vec4 {
         let den = dp.sub(dq).value();
         let coord = |a: f32, b: f32| (dp.scale(f64::from(b)).sub(&dq.scale(f64::from(a))).value() / den) as f32;
