@@ -3,18 +3,30 @@
 # - flash (.text + .rodata) and RAM (.data + .bss), from the ELF file (arm-none-eabi-size -A);
 # - which crate each byte of .text comes from (arm-none-eabi-addr2line) and what .rodata holds (arm-none-eabi-nm);
 # - from a run under QEMU with -icount shift=0 (1 ns of virtual time per instruction): instructions per frame and
-#   per pixel, the peak stack, and the frame rate they imply at 168 MHz, an estimate at 1 instruction per cycle.
-# Needs arm-none-eabi-size, -nm and -addr2line (Debian: binutils-arm-none-eabi) and qemu-system-arm; check.sh,
-# which CI runs, needs none of the binutils.
-# Usage: core/firmware/measure.sh [--no-build]
+#   per pixel in each memory layout, the peak stack, and the frame rate they imply at 168 MHz, an estimate at 1
+#   instruction per cycle;
+# - with --stages, from a second run logging every translated block and every block executed
+#   (-d in_asm,exec,nochain, read through a pipe by stages.py): the instructions of each pipeline stage.
+# Needs arm-none-eabi-size, -nm and -addr2line (Debian: binutils-arm-none-eabi), qemu-system-arm and, for --stages,
+# python3; check.sh, which CI runs, needs none of them but QEMU.
+# Usage: core/firmware/measure.sh [--no-build] [--stages]
 set -euo pipefail
 cd "$(dirname "$0")"
 elf=target/thumbv7em-none-eabihf/release/rastty-firmware
-if [ "${1:-}" != --no-build ]; then
+build=1 stages=0
+for arg in "$@"; do
+    case $arg in
+        --no-build) build=0 ;;
+        --stages) stages=1 ;;
+        *) echo "usage: $0 [--no-build] [--stages]" >&2; exit 2 ;;
+    esac
+done
+if [ "$build" = 1 ]; then
     cargo build --release --locked
 fi
 out=$(mktemp)
-trap 'rm -f "$out"' EXIT
+pipe=$(mktemp -u)
+trap 'rm -f "$out" "$pipe"' EXIT
 
 echo "== arm-none-eabi-size -A $elf"
 arm-none-eabi-size -A "$elf" | awk '$1 ~ /^\.(vector_table|text|rodata|data|bss|uninit)$/'
@@ -39,6 +51,8 @@ seq "$text_start" 2 $((text_start + text_size - 2)) | awk '{ printf "%x\n", $1 }
         if (f ~ /\/core\/src\//) return "rastty-core"
         if (f ~ /\/firmware\/scene\//) return "rastty-firmware-scene"
         if (f ~ /\/firmware\/src\//) return "rastty-firmware"
+        if (f ~ /\/embedded\/src\//) return "rastty-embedded-graphics"
+        if (f ~ /\/embedded-graphics-core-/) return "embedded-graphics-core"
         if (f ~ /\/libm-/) return "libm"
         if (f ~ /compiler.builtins/) return "compiler-builtins (f64 soft-float, memcpy, u64 division)"
         if (f ~ /\/cortex-m/) return "cortex-m, cortex-m-rt, cortex-m-semihosting"
@@ -75,7 +89,20 @@ timeout 300 qemu-system-arm -cpu cortex-m4 -machine mps2-an386 -nographic \
 echo "== estimate: the frame rate at 168 MHz, assuming 1 instruction per cycle (a Cortex-M4 often needs more)"
 awk '
     match($0, /[0-9]+x[0-9]+ RGB565/) { split(substr($0, RSTART, RLENGTH - 7), wh, "x"); pixels = wh[1] * wh[2] }
-    /^frame [0-9]+: [0-9]+ instructions/ {
-        printf "%s %s %d instructions, %.1f per pixel: %.2f frames per second, %.1f ms per frame\n",
-            $1, $2, $3, $3 / pixels, 168e6 / $3, $3 / 168e3
+    /^frame [0-9]+ in [0-9]+ KiB: [0-9]+ instructions/ {
+        printf "%s %s in %s KiB: %d instructions, %.1f per pixel: %.2f frames per second, %.1f ms per frame\n",
+            $1, $2, $4, $6, $6 / pixels, 168e6 / $6, $6 / 168e3
     }' "$out"
+
+if [ "$stages" = 1 ]; then
+    frames=$(grep -cE '^frame [0-9]+ in [0-9]+ KiB: checksum' "$out")
+    echo "== instructions by stage over the run's $frames frames: qemu-system-arm ... -d in_asm,exec,nochain," \
+        "read by stages.py"
+    mkfifo "$pipe"
+    python3 stages.py "$elf" "$pipe" "$frames" &
+    reader=$!
+    timeout 900 qemu-system-arm -cpu cortex-m4 -machine mps2-an386 -nographic \
+        -semihosting-config enable=on,target=native -icount shift=0 -d in_asm,exec,nochain -D "$pipe" \
+        -kernel "$elf" >/dev/null
+    wait "$reader"
+fi
