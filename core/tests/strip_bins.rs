@@ -2,13 +2,14 @@
 //! ([`draw_strip`]) gives every strip exactly what [`draw`] gives it: colours, depths and fragments, with the near
 //! plane cutting the model, both edge arithmetics, the depth test on and off, culling on and off, one and four
 //! samples a pixel, strips of several heights, and bins too small for the mesh (the rest is then drawn in every
-//! strip). Bins made for another draw are not used. Binning counts each triangle once.
+//! strip). Bins made for another draw (another matrix, state, index buffer, a target across strips, a shader that
+//! does not tell its matrix) are not used. Binning counts each triangle once.
 
 use crate::common;
 
 use common::{ExactColor, Torus};
 use rastty_core::math::{Mat4, Vec3, Vec4};
-use rastty_core::mesh::{Attributes, Mesh};
+use rastty_core::mesh::{Attributes, Indices, Mesh};
 use rastty_core::pipeline::{
     BinnedTriangle, Cull, DepthTest, DrawState, DrawStats, EdgeArithmetic, Fragment, Shader, Slopes, StripBins, Strips,
     draw, draw_strip,
@@ -163,6 +164,15 @@ fn bins_made_for_another_draw_are_not_used() {
         let binned =
             strip(rows.clone(), Samples::One, |t| draw_strip(t, &mesh, &untold, &state, &untold_bins).unwrap());
         assert_same(&format!("a shader without a matrix, strip {s}"), &expected, &binned);
+    }
+    // The same positions under the same matrix, another index buffer of as many triangles.
+    let reversed: Vec<u16> = torus.indices.chunks(3).rev().flatten().copied().collect();
+    let other = Mesh::new(&torus.positions, Indices::U16(&reversed)).unwrap().with_normals(&torus.normals).unwrap();
+    for s in 0..strips.count() {
+        let rows = strips.rows(s);
+        let expected = strip(rows.clone(), Samples::One, |t| draw(t, &other, &turned, &state).unwrap());
+        let binned = strip(rows.clone(), Samples::One, |t| draw_strip(t, &other, &turned, &state, &bins).unwrap());
+        assert_same(&format!("another index buffer, strip {s}"), &expected, &binned);
     }
     let across = 4..9;
     let expected = strip(across.clone(), Samples::One, |t| draw(t, &mesh, &turned, &state).unwrap());

@@ -219,6 +219,11 @@ impl<'a> Mesh<'a> {
         self.positions
     }
 
+    /// The indices.
+    pub fn indices(&self) -> Indices<'a> {
+        self.indices
+    }
+
     /// All normals, if the mesh has them.
     pub fn normals(&self) -> Option<&'a [Vec3]> {
         self.normals

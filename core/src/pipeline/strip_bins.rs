@@ -34,7 +34,7 @@ use super::raster::{Rasterizer, Setup};
 use super::screen_vertex::{NO_SCREEN, NOT_FINITE};
 use super::vertex_cache::VertexCache;
 use super::{ClipVolume, DrawError, DrawState, DrawStats, EdgeArithmetic, Shader};
-use crate::mesh::Mesh;
+use crate::mesh::{Indices, Mesh};
 use crate::target::{ColorBuffer, DepthBuffer, MAX_DIMENSION, Samples, Target, TargetError, VertexMemory};
 
 /// One kept triangle: its index in the mesh and the first and last strips it may cover. Four bytes.
@@ -126,8 +126,9 @@ impl Strips {
 /// What a set of bins was made for: a draw that differs in any of these draws every triangle instead.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 struct BinKey {
-    /// The address and length of the mesh's positions, and its triangle count.
-    mesh: (usize, usize, usize),
+    /// The addresses and lengths of the mesh's positions and indices (the slices themselves, not merely equal
+    /// values).
+    mesh: [(usize, usize); 2],
     /// The bits of the shader's clip-from-object matrix, when it tells it ([`Shader::clip_from_object`]): bins
     /// without one are never used.
     matrix: Option<[u32; 16]>,
@@ -145,12 +146,12 @@ impl BinKey {
             }
             bits
         });
-        Self {
-            mesh: (positions.as_ptr() as usize, positions.len(), mesh.triangle_count()),
-            matrix,
-            state: *state,
-            strips,
-        }
+        let indices = match mesh.indices() {
+            Indices::Sequential => (0, 0),
+            Indices::U16(ix) => (ix.as_ptr() as usize, ix.len()),
+            Indices::U32(ix) => (ix.as_ptr() as usize, ix.len()),
+        };
+        Self { mesh: [(positions.as_ptr() as usize, positions.len()), indices], matrix, state: *state, strips }
     }
 }
 
