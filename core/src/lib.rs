@@ -20,7 +20,8 @@
 //! [`draw_mesh`] draws an [`Object`] under [`Lighting`]: it resolves the [`shading::Variant`] the object and the
 //! lights call for, once per draw, and runs the pipeline compiled for exactly that (see [`shading`]). Shadow maps
 //! ([`shadow`]) and ambient occlusion ([`occlusion`]) are passes of their own. [`pipeline::draw`] runs a
-//! [`pipeline::Shader`] of your own: the low-level way in.
+//! [`pipeline::Shader`] of your own: the low-level way in. A frame drawn strip by strip through a small band
+//! bins its triangles once ([`pipeline::StripBins`]) and draws each strip from its bin ([`pipeline::draw_strip`]).
 //!
 //! The crate root re-exports what a typical draw needs, so one `use` line does.
 //!
