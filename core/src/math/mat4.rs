@@ -81,6 +81,17 @@ impl Mat4 {
         }
     }
 
+    /// The bits of the sixteen elements, column by column: equal exactly when the matrices are the same bits
+    /// (what a cache keyed on a matrix compares; `-0.0` and `0.0` differ, a NaN equals itself).
+    #[must_use]
+    pub fn to_bits(&self) -> [u32; 16] {
+        let mut bits = [0; 16];
+        for (b, v) in bits.iter_mut().zip(self.cols.iter().flat_map(|c| [c.x, c.y, c.z, c.w])) {
+            *b = v.to_bits();
+        }
+        bits
+    }
+
     /// The transpose.
     pub fn transpose(&self) -> Self {
         Self::from_cols(self.row(0), self.row(1), self.row(2), self.row(3))

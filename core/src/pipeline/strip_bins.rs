@@ -34,8 +34,9 @@ use super::raster::{Rasterizer, Setup};
 use super::screen_vertex::{NO_SCREEN, NOT_FINITE};
 use super::vertex_cache::VertexCache;
 use super::{ClipVolume, DrawError, DrawState, DrawStats, EdgeArithmetic, Shader};
+use crate::math::Mat4;
 use crate::mesh::{Indices, Mesh};
-use crate::target::{ColorBuffer, DepthBuffer, MAX_DIMENSION, Samples, Target, TargetError, VertexMemory};
+use crate::target::{ColorBuffer, DepthBuffer, Samples, Target, TargetError, VertexMemory, check_size};
 
 /// One kept triangle: its index in the mesh and the first and last strips it may cover. Four bytes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -73,12 +74,7 @@ impl Strips {
     /// [`TargetError::Empty`] or [`TargetError::TooLarge`] for the frame's size, as [`Target::band`];
     /// [`TargetError::Rows`] when `rows` is 0.
     pub fn new(width: u32, height: u32, rows: u32, samples: Samples) -> Result<Self, TargetError> {
-        if width == 0 || height == 0 {
-            return Err(TargetError::Empty);
-        }
-        if width > MAX_DIMENSION || height > MAX_DIMENSION {
-            return Err(TargetError::TooLarge { width, height });
-        }
+        check_size(width, height)?;
         if rows == 0 {
             return Err(TargetError::Rows { rows: 0..0, height });
         }
@@ -89,12 +85,6 @@ impl Strips {
     #[must_use]
     pub fn size(&self) -> (u32, u32) {
         (self.width, self.height)
-    }
-
-    /// Rows of every strip but perhaps the last.
-    #[must_use]
-    pub fn rows_per_strip(&self) -> u32 {
-        self.rows
     }
 
     /// Samples per pixel of the strips' targets.
@@ -139,13 +129,7 @@ struct BinKey {
 impl BinKey {
     fn new<S: Shader>(mesh: &Mesh<'_>, shader: &S, state: &DrawState, strips: Strips) -> Self {
         let positions = mesh.positions();
-        let matrix = shader.clip_from_object().map(|m| {
-            let mut bits = [0; 16];
-            for (b, v) in bits.iter_mut().zip(m.cols.iter().flat_map(|c| [c.x, c.y, c.z, c.w])) {
-                *b = v.to_bits();
-            }
-            bits
-        });
+        let matrix = shader.clip_from_object().map(Mat4::to_bits);
         let indices = match mesh.indices() {
             Indices::Sequential => (0, 0),
             Indices::U16(ix) => (ix.as_ptr() as usize, ix.len()),

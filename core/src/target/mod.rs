@@ -99,6 +99,19 @@ impl core::fmt::Display for TargetError {
 
 impl core::error::Error for TargetError {}
 
+/// Whether a `width x height` frame can be drawn: [`TargetError::Empty`] when it has no pixels,
+/// [`TargetError::TooLarge`] beyond [`MAX_DIMENSION`]. What [`Target::band`] and
+/// [`crate::pipeline::Strips::new`] check first.
+pub(crate) fn check_size(width: u32, height: u32) -> Result<(), TargetError> {
+    if width == 0 || height == 0 {
+        return Err(TargetError::Empty);
+    }
+    if width > MAX_DIMENSION || height > MAX_DIMENSION {
+        return Err(TargetError::TooLarge { width, height });
+    }
+    Ok(())
+}
+
 /// A colour buffer and a depth buffer holding rows `[y0, y1)` of a `width x height` frame, one value per sample:
 /// one sample per pixel, or four ([`Target::multisampled`]).
 #[derive(Debug)]
@@ -148,12 +161,7 @@ impl<C: ColorBuffer, D: DepthBuffer> Target<C, D> {
         rows: Range<u32>,
         samples: Samples,
     ) -> Result<Self, TargetError> {
-        if width == 0 || height == 0 {
-            return Err(TargetError::Empty);
-        }
-        if width > MAX_DIMENSION || height > MAX_DIMENSION {
-            return Err(TargetError::TooLarge { width, height });
-        }
+        check_size(width, height)?;
         if rows.start >= rows.end || rows.end > height {
             return Err(TargetError::Rows { rows, height });
         }

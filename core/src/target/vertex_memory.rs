@@ -77,10 +77,7 @@ struct FrameKey {
 
 impl FrameKey {
     fn new(positions: &[Vec3], clip_from_object: &Mat4, frame: (u32, u32), subpixel_bits: u8) -> Self {
-        let mut matrix = [0; 16];
-        for (bits, value) in matrix.iter_mut().zip(clip_from_object.cols.iter().flat_map(|c| [c.x, c.y, c.z, c.w])) {
-            *bits = value.to_bits();
-        }
+        let matrix = clip_from_object.to_bits();
         Self { positions: (positions.as_ptr() as usize, positions.len()), matrix, frame, subpixel_bits }
     }
 }
