@@ -82,9 +82,34 @@ pub fn atan(x: f32) -> f32 {
 #[inline(always)]
 #[must_use]
 pub fn pow(x: f32, y: f32) -> f32 {
-    match whole_exponent(y) {
-        Some(n) => powi(x, n),
-        None => libm::powf(x, y),
+    Exponent::new(y).raise(x)
+}
+
+/// An exponent of [`pow`], sorted once where many values are raised to it: whole (computed by [`powi`]) or not.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Exponent {
+    /// A whole number from 0 to 256 ([`whole_exponent`]).
+    Whole(u32),
+    /// Any other value, for `powf`.
+    Other(f32),
+}
+
+impl Exponent {
+    /// `y`, sorted.
+    #[inline(always)]
+    #[must_use]
+    pub fn new(y: f32) -> Self {
+        whole_exponent(y).map_or(Self::Other(y), Self::Whole)
+    }
+
+    /// `x` raised to this exponent: [`pow`]`(x, y)`.
+    #[inline(always)]
+    #[must_use]
+    pub fn raise(self, x: f32) -> f32 {
+        match self {
+            Self::Whole(n) => powi(x, n),
+            Self::Other(y) => libm::powf(x, y),
+        }
     }
 }
 

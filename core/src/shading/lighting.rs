@@ -10,7 +10,8 @@ use super::capabilities::{self, has};
 use super::columns::{self, Column, Column3};
 use super::scratch::Scratch;
 use super::{LightKind, Lighting};
-use crate::math::{Vec3, float};
+use crate::math::Vec3;
+use crate::math::float::{self, Exponent};
 use crate::pipeline::{BATCH_SIZE, lanes};
 
 /// Fills `s.diffuse` (and `s.specular` when `specular`) with the light arriving at each fragment: the ambient
@@ -25,7 +26,7 @@ pub(crate) fn light<const CAPS: u32>(
     s: &mut Scratch,
     lights: &Lighting<'_>,
     eye: Vec3,
-    shininess: f32,
+    shininess: Exponent,
     specular: bool,
     occluded: bool,
 ) {
@@ -86,7 +87,7 @@ fn highlight(
     n_dot_l: &Column,
     shares: Option<&Column>,
     color: Vec3,
-    shininess: f32,
+    shininess: Exponent,
     specular: &mut Column3,
 ) {
     let mut h = Column3::ZERO;

@@ -12,6 +12,7 @@ use super::varyings::{Absent, Slot, SurfaceVaryings};
 use super::{Cutout, ShadingError, coarse, views};
 use super::{Layout, Lighting, Material, NormalSource, SpecularSource, Variant, lighting};
 use crate::color::{ShadingSpace, texel_alpha};
+use crate::math::float::Exponent;
 use crate::math::{Mat4, Vec2, Vec3, Vec4};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{BATCH_SIZE, Fragment, FragmentBatch, Shader, Slopes};
@@ -32,6 +33,8 @@ pub struct SurfaceShader<'a, A, B, U, T, C = Absent, const CAPS: u32 = { capabil
     tangent_frame: TangentFrame,
     tangents: &'a [Vec4],
     material: Material<'a>,
+    /// The material's shininess, sorted once for the highlights.
+    shininess: Exponent,
     lights: Lighting<'a>,
     variant: Variant,
     /// The slots the variant fills (a general draw may carry more, which then hold zeros).
@@ -89,6 +92,7 @@ where
             tangent_frame: TangentFrame::new(&transforms),
             tangents,
             material,
+            shininess: Exponent::new(material.shininess),
             lights,
             variant,
             layout,
@@ -174,7 +178,7 @@ where
             }
             _ => false,
         };
-        lighting::light::<CAPS>(s, &self.lights, self.transforms.eye, m.shininess, specular, occluded);
+        lighting::light::<CAPS>(s, &self.lights, self.transforms.eye, self.shininess, specular, occluded);
         match (v.specular, m.specular_map) {
             (SpecularSource::Map, Some(map)) if U::PRESENT => specular_color(s, maps, &map, texels, m.specular),
             _ => s.specular_color = Column3::splat(m.specular),
