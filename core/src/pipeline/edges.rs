@@ -12,8 +12,9 @@ use super::raster::{Rasterizer, Setup, Snapped};
 use crate::math::float;
 use crate::target::{SAMPLE_COUNT, SAMPLE_POSITIONS};
 
-/// Edge functions of an oriented triangle (positive inside), walked over pixel centres.
-pub(crate) trait Edges: Copy {
+/// Edge functions of an oriented triangle (positive inside) at pixel centres, walked along rows: what the pixel
+/// loops read.
+pub(crate) trait CentreEdges: Copy {
     /// The three values at one pixel centre.
     type At: Copy;
     /// The values at the centre of pixel `(x, y)`.
@@ -24,7 +25,11 @@ pub(crate) trait Edges: Copy {
     fn covered(&self, at: &Self::At) -> bool;
     /// The three values as non-negative weights: barycentric coordinates times twice the area.
     fn weights(&self, at: &Self::At) -> [f32; 3];
-    /// How [`Self::weights`] change one pixel to the right and one pixel down (inside the triangle, where no
+}
+
+/// Edge functions of an oriented triangle, with what set-up, multisampling and the depth-only loop also read.
+pub(crate) trait Edges: CentreEdges {
+    /// How [`CentreEdges::weights`] change one pixel to the right and one pixel down (inside the triangle, where no
     /// weight is clamped).
     fn steps(&self) -> [[f32; 3]; 2];
     /// What takes the values at a pixel centre to those at each of its [`SAMPLE_POSITIONS`], with
@@ -32,19 +37,19 @@ pub(crate) trait Edges: Copy {
     fn sample_offsets(&self) -> [Self::At; SAMPLE_COUNT];
     /// Each edge's largest offset over the samples: [`Self::at_sample`] with it gives, edge by edge, the largest
     /// value of any sample of the pixel (values grow with the offset, exactly or through monotonic rounding). When
-    /// those are not [`Self::covered`], no sample is; when they are [`Self::closed`], no sample is there or further
+    /// those are not [`CentreEdges::covered`], no sample is; when they are [`Self::closed`], no sample is there or further
     /// right in the row.
     fn sample_reach(&self) -> Self::At;
     /// The values at a sample, from those at its pixel's centre and its one of [`Self::sample_offsets`]: covered as
-    /// [`Self::covered`] says, weighted as [`Self::sample_weights`] says.
+    /// [`CentreEdges::covered`] says, weighted as [`Self::sample_weights`] says.
     fn at_sample(&self, centre: &Self::At, offset: &Self::At) -> Self::At;
-    /// [`Self::weights`] of values at a sample.
+    /// [`CentreEdges::weights`] of values at a sample.
     fn sample_weights(&self, at: &Self::At) -> [f32; 3];
     /// Whether values `at` (at a centre or a sample) fail an edge whose value never rises to the right: then the
-    /// same point of every pixel further right in the row is uncovered too, as [`Self::step`] computes it.
+    /// same point of every pixel further right in the row is uncovered too, as [`CentreEdges::step`] computes it.
     fn closed(&self, at: &Self::At) -> bool;
     /// The functions as [`EdgeLanes`] over the pixel centres `x0..=x1` by `y0..=y1`, when that computes exactly
-    /// what [`Self::at`], [`Self::step`], [`Self::covered`] and [`Self::weights`] do there; `None` otherwise.
+    /// what [`CentreEdges::at`], [`CentreEdges::step`], [`CentreEdges::covered`] and [`CentreEdges::weights`] do there; `None` otherwise.
     #[inline(always)]
     fn lanes(&self, _x0: i32, _x1: i32, _y0: i32, _y1: i32) -> Option<EdgeLanes> {
         None
@@ -59,7 +64,10 @@ pub(crate) trait Edges: Copy {
 /// must be masked off by the caller.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct EdgeLanes {
-    /// The (biased) values at the box's top-left pixel centre.
+    /// The box's top-left pixel.
+    pub x0: i32,
+    pub y0: i32,
+    /// The (biased) values at its centre.
     pub origin: [i32; 3],
     pub step_x: [i32; 3],
     pub step_y: [i32; 3],
@@ -68,16 +76,46 @@ pub(crate) struct EdgeLanes {
 }
 
 impl EdgeLanes {
-    /// Whether the centre with values `v` is covered: [`Edges::covered`].
+    /// Whether the centre with values `v` is covered: [`CentreEdges::covered`].
     #[inline(always)]
-    pub fn covered(v0: i32, v1: i32, v2: i32) -> bool {
+    pub fn lane_covered(v0: i32, v1: i32, v2: i32) -> bool {
         (v0 | v1 | v2) >= 0
     }
 
-    /// The weights of the second and third vertex at values `v`: [`Edges::weights`]`[1..]`.
+    /// The weights of the second and third vertex at values `v`: [`CentreEdges::weights`]`[1..]`.
     #[inline(always)]
-    pub fn weights(&self, v1: i32, v2: i32) -> [f32; 2] {
+    pub fn lane_weights(&self, v1: i32, v2: i32) -> [f32; 2] {
         [v1.wrapping_sub(self.bias[1]) as f32, v2.wrapping_sub(self.bias[2]) as f32]
+    }
+}
+
+/// The values of [`FixedEdges`] inside the box, one pixel at a time: `i32` steps where a target has no 64-bit
+/// registers, the same values (outside the box they may wrap: the pixel loops do not leave it).
+impl CentreEdges for EdgeLanes {
+    type At = [i32; 3];
+
+    #[inline(always)]
+    fn at(&self, x: i32, y: i32) -> [i32; 3] {
+        let (dx, dy) = (x.wrapping_sub(self.x0), y.wrapping_sub(self.y0));
+        let at = |k: usize| {
+            self.origin[k].wrapping_add(self.step_x[k].wrapping_mul(dx)).wrapping_add(self.step_y[k].wrapping_mul(dy))
+        };
+        [at(0), at(1), at(2)]
+    }
+
+    #[inline(always)]
+    fn step(&self, e: [i32; 3]) -> [i32; 3] {
+        [0, 1, 2].map(|k| e[k].wrapping_add(self.step_x[k]))
+    }
+
+    #[inline(always)]
+    fn covered(&self, e: &[i32; 3]) -> bool {
+        Self::lane_covered(e[0], e[1], e[2])
+    }
+
+    #[inline(always)]
+    fn weights(&self, e: &[i32; 3]) -> [f32; 3] {
+        [0, 1, 2].map(|k| e[k].wrapping_sub(self.bias[k]) as f32)
     }
 }
 
@@ -92,7 +130,7 @@ pub(crate) struct FixedEdges {
     pub bias: [i64; 3],
 }
 
-impl Edges for FixedEdges {
+impl CentreEdges for FixedEdges {
     type At = [i64; 3];
 
     #[inline(always)]
@@ -117,7 +155,9 @@ impl Edges for FixedEdges {
         // Unbiased: >= 0 and summing to the doubled area, so the weights are a convex combination.
         [0, 1, 2].map(|k| float::from_i64(e[k] - self.bias[k]))
     }
+}
 
+impl Edges for FixedEdges {
     #[inline(always)]
     fn steps(&self) -> [[f32; 3]; 2] {
         [self.step_x.map(float::from_i64), self.step_y.map(float::from_i64)]
@@ -173,6 +213,8 @@ impl Edges for FixedEdges {
         // Truncating casts: modulo 2^32, which is all the wrapping arithmetic of the lanes needs.
         let wrap = |v: [i64; 3]| v.map(|v| v as i32);
         Some(EdgeLanes {
+            x0,
+            y0,
             origin: wrap(corners[0]),
             step_x: wrap(self.step_x),
             step_y: wrap(self.step_y),
@@ -195,7 +237,7 @@ pub(crate) struct FloatEdges {
     pub threshold: [f32; 3],
 }
 
-impl Edges for FloatEdges {
+impl CentreEdges for FloatEdges {
     type At = [f32; 3];
 
     #[inline(always)]
@@ -220,7 +262,9 @@ impl Edges for FloatEdges {
     fn weights(&self, e: &[f32; 3]) -> [f32; 3] {
         [float::max(e[0], 0.0), float::max(e[1], 0.0), float::max(e[2], 0.0)]
     }
+}
 
+impl Edges for FloatEdges {
     #[inline(always)]
     fn steps(&self) -> [[f32; 3]; 2] {
         [self.a, self.b]
@@ -274,7 +318,7 @@ pub(crate) enum DynamicAt {
     Float([f32; 3]),
 }
 
-impl Edges for DynamicEdges {
+impl CentreEdges for DynamicEdges {
     type At = DynamicAt;
 
     #[inline(always)]
@@ -311,7 +355,9 @@ impl Edges for DynamicEdges {
             _ => [0.0; 3],
         }
     }
+}
 
+impl Edges for DynamicEdges {
     #[inline(always)]
     fn steps(&self) -> [[f32; 3]; 2] {
         match self {
@@ -498,5 +544,45 @@ mod tests {
             fixed_closed > 4000 && float_closed > 4000,
             "closed points: fixed {fixed_closed}, float {float_closed}"
         );
+    }
+
+    /// Where [`FixedEdges::lanes`] gives `i32` values, walking them as [`CentreEdges`] covers and weighs every
+    /// pixel of the box as the `i64` values do, values at the limits of `i32` included; where it gives none, a
+    /// value at a corner does not fit.
+    #[test]
+    fn i32_values_walk_the_box_as_the_i64_values_do() {
+        let mut state = 0x2545_F491_4F6C_DD1D;
+        let (mut narrow, mut wide) = (0, 0);
+        for i in 0..4000 {
+            // Half the boxes' values near `i32`'s limits, half beyond them.
+            let (range, step) = if i % 2 == 0 { (1 << 30, 1 << 20) } else { (1 << 33, 1 << 24) };
+            let fixed = FixedEdges {
+                origin: [0; 3].map(|_| signed(&mut state, range)),
+                step_x: [0; 3].map(|_| signed(&mut state, step)),
+                step_y: [0; 3].map(|_| signed(&mut state, step)),
+                bias: [0; 3].map(|_| -((next(&mut state) & 1) as i64)),
+            };
+            let (x0, y0) = (signed(&mut state, 300) as i32, signed(&mut state, 300) as i32);
+            let (x1, y1) = (x0 + (next(&mut state) % 40) as i32, y0 + (next(&mut state) % 40) as i32);
+            let Some(lanes) = fixed.lanes(x0, x1, y0, y1) else {
+                let corners = [fixed.at(x0, y0), fixed.at(x1, y0), fixed.at(x0, y1), fixed.at(x1, y1)];
+                let fits = |v: i64| (i64::from(i32::MIN)..i64::from(i32::MAX)).contains(&v);
+                assert!(!corners.iter().flatten().all(|&v| fits(v)), "#{i}: every corner fits, no lanes");
+                wide += 1;
+                continue;
+            };
+            narrow += 1;
+            for y in y0..=y1 {
+                let (mut e, mut l) = (fixed.at(x0, y), lanes.at(x0, y));
+                for x in x0..=x1 {
+                    assert_eq!(l.map(i64::from), e, "#{i} ({x}, {y}): values");
+                    assert_eq!(lanes.covered(&l), fixed.covered(&e), "#{i} ({x}, {y}): coverage");
+                    let bits = |w: [f32; 3]| w.map(f32::to_bits);
+                    assert_eq!(bits(lanes.weights(&l)), bits(fixed.weights(&e)), "#{i} ({x}, {y}): weights");
+                    (e, l) = (fixed.step(e), lanes.step(l));
+                }
+            }
+        }
+        assert!(narrow > 1000 && wide > 1000, "boxes with i32 values: {narrow}, without: {wide}");
     }
 }

@@ -18,7 +18,7 @@ mod multisample;
 
 use super::batch::{BATCH_SIZE, FragmentBatch};
 use super::depth_stage::DepthStage;
-use super::edges::{EdgeLanes, Edges, FixedEdges, FloatEdges};
+use super::edges::{CentreEdges, EdgeLanes, Edges, FixedEdges, FloatEdges};
 use super::interpolator::Interpolator;
 use super::slopes::FractionSteps;
 use super::{Cull, Fragment, Shader, Slopes, Varyings, Winding};
@@ -65,6 +65,10 @@ fn oriented<T: Copy>(swapped: bool, [a, b, c]: [T; 3]) -> [T; 3] {
 /// 2^[`super::MAX_SUBPIXEL_BITS`] it stays below 2^23, where `f32` still holds every integer.
 const SNAP_LIMIT_PX: f32 = 2.0 * super::clip::GUARD_BAND;
 const _: () = assert!(SNAP_LIMIT_PX * (1u32 << super::MAX_SUBPIXEL_BITS) as f32 <= 8_388_608.0);
+
+/// Whether the target has no 64-bit registers (a Cortex-M4, 32-bit RISC-V): there the batched pixel loop walks a
+/// triangle's edge values in `i32` where they fit ([`Edges::lanes`]), one add each instead of two.
+const NARROW: bool = cfg!(not(target_pointer_width = "64"));
 
 /// What became of one triangle (or clipped piece) at set-up.
 pub(crate) enum Setup<E> {
@@ -480,10 +484,21 @@ impl<E: Edges> Coverage<E> {
                 return self.fill_depth(lanes, &stages.depth, target);
             }
         } else if S::BATCHED {
-            return if stages.cutout {
-                self.fill_batched::<true, S, I, Z, C, D, M>(stages, face, varyings, batch, target)
-            } else {
-                self.fill_batched::<false, S, I, Z, C, D, M>(stages, face, varyings, batch, target)
+            // Where a target has no 64-bit registers, the edge values in `i32` where they fit (the same values).
+            let lanes = if NARROW { self.edges.lanes(f.x0, f.x1, f.y0, f.y1) } else { None };
+            return match (&lanes, stages.cutout) {
+                (Some(l), true) => {
+                    self.fill_batched::<true, _, _, _, _, _, _, _>(l, stages, face, varyings, batch, target)
+                }
+                (Some(l), false) => {
+                    self.fill_batched::<false, _, _, _, _, _, _, _>(l, stages, face, varyings, batch, target)
+                }
+                (None, true) => {
+                    self.fill_batched::<true, _, _, _, _, _, _, _>(&self.edges, stages, face, varyings, batch, target)
+                }
+                (None, false) => {
+                    self.fill_batched::<false, _, _, _, _, _, _, _>(&self.edges, stages, face, varyings, batch, target)
+                }
             };
         }
         let edges = &self.edges;
@@ -566,9 +581,9 @@ impl<E: Edges> Coverage<E> {
                     let v0 = e[0].wrapping_add(offsets[0][j]);
                     let v1 = e[1].wrapping_add(offsets[1][j]);
                     let v2 = e[2].wrapping_add(offsets[2][j]);
-                    let [w1, w2] = lanes.weights(v1, v2);
+                    let [w1, w2] = lanes.lane_weights(v1, v2);
                     // Lanes past the box's last column may have wrapped: never covered.
-                    covered[j] = EdgeLanes::covered(v0, v1, v2) & (x + (j as i32) < count);
+                    covered[j] = EdgeLanes::lane_covered(v0, v1, v2) & (x + (j as i32) < count);
                     z[j] = f.depth(w1, w2);
                 }
                 passed += u64::from(depth.test_lanes(&mut target.depth, first + x as usize, &z, &covered));
@@ -582,7 +597,7 @@ impl<E: Edges> Coverage<E> {
 
     /// [`Coverage::fill`] for a [`Shader::BATCHED`] shader: the same fragments, in the same order, depth-tested
     /// alike, gathered with their interpolation weights into `batch` and shaded with [`Shader::shade_batch`]
-    /// whenever it fills.
+    /// whenever it fills. `edges` are the triangle's, in `i64` or, where they fit, in `i32` ([`EdgeLanes`]).
     ///
     /// Its row walk repeats `fill`'s on purpose: sharing one walk through a closure made the per-pixel loop twice
     /// as slow (`cargo bench -p rastty-bench --bench render -- sphere_2_5k_phong_lambert_800x800`: fastest 13.4
@@ -590,9 +605,14 @@ impl<E: Edges> Coverage<E> {
     ///
     /// With `CUTOUT` (a draw whose shader discards fragments) a fragment is pushed when it is nearer than the
     /// stored depth, which is written only at [`shade_batch`], for the fragments kept.
-    #[inline(always)]
-    fn fill_batched<const CUTOUT: bool, S, I, Z, C, D, M>(
+    ///
+    /// Out of line where it has two kinds of edges ([`NARROW`]): inlined, each kind was copied into each of the draw
+    /// loop's calls (on the firmware, 12 KB more code).
+    #[cfg_attr(target_pointer_width = "64", inline(always))]
+    #[cfg_attr(not(target_pointer_width = "64"), inline(never))]
+    fn fill_batched<const CUTOUT: bool, W, S, I, Z, C, D, M>(
         &self,
+        edges: &W,
         stages: &Stages<'_, S, I, Z>,
         face: &S::Face,
         varyings: [&S::Varyings; 3],
@@ -600,6 +620,7 @@ impl<E: Edges> Coverage<E> {
         target: &mut Target<C, D, M>,
     ) -> u64
     where
+        W: CentreEdges,
         S: Shader,
         I: Interpolator,
         Z: DepthStage,
@@ -608,9 +629,8 @@ impl<E: Edges> Coverage<E> {
         M: VertexMemory,
     {
         let f = &self.frame;
-        let edges = &self.edges;
         let setup = stages.interpolator.setup(f.inv_w, f.inv_area);
-        let steps = stages.fraction_steps(&setup, edges);
+        let steps = stages.fraction_steps(&setup, &self.edges);
         let [v0, v1, v2] = oriented(f.swapped, varyings);
         batch.start_triangle([*v0, v1.sub(v0), v2.sub(v0)], *face, f.front_facing, steps);
         let width = target.width() as usize;
