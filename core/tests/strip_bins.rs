@@ -2,7 +2,7 @@
 //! ([`draw_strip`]) gives every strip exactly what [`draw`] gives it: colours, depths and fragments, with the near
 //! plane cutting the model, both edge arithmetics, the depth test on and off, culling on and off, one and four
 //! samples a pixel, strips of several heights, and bins too small for the mesh (the rest is then drawn in every
-//! strip). Bins made for another draw (another matrix, state, index buffer, a target across strips, a shader that
+//! strip), with room for the entries' block summaries or without. Bins made for another draw (another matrix, state, index buffer, a target across strips, a shader that
 //! does not tell its matrix) are not used. Binning counts each triangle once.
 
 use crate::common;
@@ -11,8 +11,8 @@ use common::{ExactColor, Torus};
 use rastty_core::math::{Mat4, Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh};
 use rastty_core::pipeline::{
-    BinnedTriangle, Cull, DepthTest, DrawState, DrawStats, EdgeArithmetic, Fragment, Shader, Slopes, StripBins, Strips,
-    draw, draw_strip,
+    BIN_BLOCK, BinnedTriangle, Cull, DepthTest, DrawState, DrawStats, EdgeArithmetic, Fragment, Shader, Slopes,
+    StripBins, Strips, draw, draw_strip,
 };
 use rastty_core::target::Samples;
 
@@ -97,6 +97,7 @@ fn every_strip_drawn_from_its_bin_equals_the_strip_drawn_whole() {
     let shader = shader();
     let triangles = mesh.triangle_count();
     let (mut kept_some, mut rest_some, mut clipped) = (false, false, 0);
+    let (mut with_blocks, mut without_blocks) = (0, 0);
     for edges in [EdgeArithmetic::FixedPoint, EdgeArithmetic::Float] {
         for depth_test in [DepthTest::Less, DepthTest::Off] {
             for cull in [Cull::Back, Cull::None] {
@@ -104,11 +105,14 @@ fn every_strip_drawn_from_its_bin_equals_the_strip_drawn_whole() {
                     let state = DrawState { edges, depth_test, cull, ..DrawState::default() };
                     for rows in [1, 4, 7, H] {
                         let strips = Strips::new(W, H, rows, samples).unwrap();
-                        // Room for every triangle, for a few, for none.
-                        for entries in [triangles, 40, 0] {
+                        // Room for every triangle and its block, for every triangle alone, for a few, for none.
+                        for entries in [triangles + triangles.div_ceil(BIN_BLOCK), triangles, 40, 0] {
                             let mut memory = vec![BinnedTriangle::UNSET; entries];
                             let bins = StripBins::bin(&mut memory, &mesh, &shader, &state, strips).unwrap();
                             kept_some |= bins.kept() > 0;
+                            if bins.kept() > 0 {
+                                *if bins.blocks() { &mut with_blocks } else { &mut without_blocks } += 1;
+                            }
                             rest_some |= bins.rest() < triangles;
                             clipped += bins.stats().clipped;
                             for s in 0..strips.count() {
@@ -131,6 +135,7 @@ fn every_strip_drawn_from_its_bin_equals_the_strip_drawn_whole() {
         }
     }
     assert!(kept_some && rest_some && clipped > 0, "bins kept triangles, ran out, and kept clipped ones");
+    assert!(with_blocks > 0 && without_blocks > 0, "blocks: {with_blocks} bins with, {without_blocks} without");
 }
 
 #[test]

@@ -75,12 +75,13 @@ fn every_layout_fits_its_budget_and_the_bins_hold_every_kept_triangle() {
     assert_eq!(FRAME_MEMORY_BYTES, LAYOUTS[2].bytes());
     for frame in 0..FRAMES {
         let scene = Scene::new(frame).unwrap();
-        let mut bins = vec![rastty_core::pipeline::BinnedTriangle::UNSET; spot::TRIANGLE_COUNT];
+        let mut bins = vec![rastty_core::pipeline::BinnedTriangle::UNSET; BIN_ENTRIES];
         let strips = rastty_core::pipeline::Strips::new(WIDTH, HEIGHT, 4, rastty_core::target::Samples::One).unwrap();
         let bins = scene.bin(&mut bins, strips).unwrap();
         println!("frame {frame}: {} triangles kept", bins.kept());
-        assert!(bins.kept() <= BIN_ENTRIES, "frame {frame}: {} kept, {BIN_ENTRIES} entries", bins.kept());
-        assert_eq!(bins.rest(), spot::TRIANGLE_COUNT);
+        // Every kept triangle and its block's summary fit.
+        assert_eq!(bins.rest(), spot::TRIANGLE_COUNT, "frame {frame}: {} kept", bins.kept());
+        assert!(bins.blocks(), "frame {frame}: {} kept, no room for their blocks", bins.kept());
     }
 }
 

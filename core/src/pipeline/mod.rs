@@ -57,5 +57,5 @@ pub use shader::{Fragment, Shader};
 pub use slopes::Slopes;
 pub use state::{Cull, DepthTest, DrawState, EdgeArithmetic, FixedFunction, Interpolation, MAX_SUBPIXEL_BITS, Winding};
 pub use stats::DrawStats;
-pub use strip_bins::{BinnedTriangle, StripBins, Strips, draw_strip};
+pub use strip_bins::{BIN_BLOCK, BinnedTriangle, StripBins, Strips, draw_strip};
 pub use varyings::Varyings;

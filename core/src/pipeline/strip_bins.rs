@@ -18,9 +18,10 @@
 //! - drawing each strip whole ([`super::draw`] on each band): no memory beyond the band (and the vertex cache on the
 //!   stack); every strip pays the position stage of about `N` to `3 T` vertices and `T` rejections;
 //! - binning: 4 bytes a kept triangle (at most `4 T`; for a closed model, about the triangles facing the camera),
-//!   the position stage of the frame once, then per strip a scan of the kept entries (a few instructions each) and
-//!   the draw of the triangles that meet it. Smaller strips take less band memory (`R W` colours and depths) and
-//!   meet more triangles twice.
+//!   and 4 bytes for each [`BIN_BLOCK`] of them, the position stage of the frame once, then per strip a scan of the
+//!   blocks and of the kept entries in the blocks that meet it (a few instructions each), and the draw of the
+//!   triangles that meet it. Smaller strips take less band memory (`R W` colours and depths) and meet more triangles
+//!   twice. Where there is no room left for the blocks, each strip scans every entry: the same pixels.
 //!
 //! When the entries run out (or at triangle 65,536, or in a frame of more than 256 strips), the triangles from
 //! there on are drawn in every strip as [`super::draw`] draws them: slower, the same pixels.
@@ -38,7 +39,13 @@ use crate::math::Mat4;
 use crate::mesh::{Indices, Mesh};
 use crate::target::{ColorBuffer, DepthBuffer, Samples, Target, TargetError, VertexMemory, check_size};
 
-/// One kept triangle: its index in the mesh and the first and last strips it may cover. Four bytes.
+/// Kept triangles per block: the strips of each run of this many entries are summed up in one more entry, which a
+/// strip that it does not meet skips whole. Triangles kept in mesh order that lie near each other (a mesh ordered
+/// for the vertex cache) fall in few strips, so a strip skips most blocks.
+pub const BIN_BLOCK: usize = 32;
+
+/// One kept triangle: its index in the mesh and the first and last strips it may cover; or a [`BIN_BLOCK`]'s summary,
+/// the first and last strips of its triangles. Four bytes.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct BinnedTriangle {
     triangle: u16,
@@ -145,6 +152,8 @@ impl BinKey {
 pub struct StripBins<'m> {
     /// The kept triangles, in mesh order.
     kept: &'m [BinnedTriangle],
+    /// The strips of each [`BIN_BLOCK`] of `kept`, or none where they did not fit the memory.
+    blocks: &'m [BinnedTriangle],
     /// The first triangle not binned: it and all after it are drawn in every strip.
     rest: usize,
     key: BinKey,
@@ -168,13 +177,32 @@ impl<'m> StripBins<'m> {
         check(mesh, S::ATTRIBUTES, state)?;
         let key = BinKey::new(mesh, shader, state, strips);
         if key.matrix.is_none() {
-            return Ok(Self { kept: &[], rest: 0, key, stats: DrawStats::default() });
+            return Ok(Self { kept: &[], blocks: &[], rest: 0, key, stats: DrawStats::default() });
         }
         let (kept, rest, stats) = match state.edges {
             EdgeArithmetic::FixedPoint => bin_with(memory, mesh, shader, state, strips, FixedPoint),
             EdgeArithmetic::Float => bin_with(memory, mesh, shader, state, strips, FloatingPoint),
         };
-        Ok(Self { kept: &memory[..kept], rest, key, stats })
+        let (kept, after) = memory.split_at_mut(kept);
+        let blocks = match after.get_mut(..kept.len().div_ceil(BIN_BLOCK)) {
+            Some(blocks) => {
+                for (block, entries) in blocks.iter_mut().zip(kept.chunks(BIN_BLOCK)) {
+                    let first = entries.iter().map(|e| e.first).min().unwrap_or(0);
+                    let last = entries.iter().map(|e| e.last).max().unwrap_or(0);
+                    *block = BinnedTriangle { triangle: 0, first, last };
+                }
+                &*blocks
+            }
+            None => &[],
+        };
+        Ok(Self { kept, blocks, rest, key, stats })
+    }
+
+    /// Whether each strip's walk skips the [`BIN_BLOCK`]s of entries that do not meet it: false where the memory held
+    /// no room for their summaries after the kept entries.
+    #[must_use]
+    pub fn blocks(&self) -> bool {
+        !self.blocks.is_empty() || self.kept.is_empty()
     }
 
     /// The triangles kept.
@@ -313,9 +341,14 @@ where
         && bins.key.matrix.is_some()
         && bins.key == BinKey::new(mesh, shader, state, strips);
     let walk = match strips.holding(&target.rows()) {
-        Some(strip) if fits => {
-            Walk::Strip { kept: bins.kept.iter(), strip: strip as u8, rest: bins.rest..mesh.triangle_count() }
-        }
+        Some(strip) if fits => Walk::Strip {
+            kept: bins.kept,
+            blocks: bins.blocks,
+            next: 0,
+            block_end: 0,
+            strip: strip as u8,
+            rest: bins.rest..mesh.triangle_count(),
+        },
         _ => all,
     };
     Ok(draw_walk(target, mesh, shader, state, walk))
@@ -328,10 +361,24 @@ impl Iterator for Walk<'_> {
     fn next(&mut self) -> Option<usize> {
         match self {
             Self::All(all) => all.next(),
-            Self::Strip { kept, strip, rest } => {
-                let strip = *strip;
-                kept.find(|e| e.meets(strip)).map(|e| usize::from(e.triangle)).or_else(|| rest.next())
-            }
+            Self::Strip { kept, blocks, next, block_end, strip, rest } => loop {
+                if *next < *block_end {
+                    let entry = kept[*next];
+                    *next += 1;
+                    if entry.meets(*strip) {
+                        return Some(usize::from(entry.triangle));
+                    }
+                } else if *next < kept.len() {
+                    // The next block: skipped whole if it does not meet the strip.
+                    let end = (*next + BIN_BLOCK).min(kept.len());
+                    match blocks.get(*next / BIN_BLOCK) {
+                        Some(block) if !block.meets(*strip) => *next = end,
+                        _ => *block_end = end,
+                    }
+                } else {
+                    return rest.next();
+                }
+            },
         }
     }
 }
@@ -344,7 +391,13 @@ pub(crate) enum Walk<'b> {
     /// The kept triangles that meet strip `strip`, then every triangle of `rest`.
     Strip {
         /// The kept triangles.
-        kept: core::slice::Iter<'b, BinnedTriangle>,
+        kept: &'b [BinnedTriangle],
+        /// Their blocks' strips (empty: none to skip by).
+        blocks: &'b [BinnedTriangle],
+        /// The next entry of `kept` to look at, and the end of its block where that block meets the strip (else
+        /// `next`).
+        next: usize,
+        block_end: usize,
         /// The strip drawn.
         strip: u8,
         /// The triangles that were not binned.

@@ -1,12 +1,15 @@
 //! The frame memory: one strip's colour and depth, and the triangle bins; and the layouts that share it out.
 
+#[cfg(doc)]
+use rastty_core::pipeline::BIN_BLOCK;
 use rastty_core::pipeline::BinnedTriangle;
 
 use crate::frame::WIDTH;
 
-/// Triangles the bins hold: Spot's kept triangles (those facing the camera that cover a pixel centre: 2,158 and
-/// 2,142 in the two frames), with 30% to spare. Triangles beyond it would be drawn in every strip (slower, the same
-/// pixels).
+/// Entries the bins hold: Spot's kept triangles (those facing the camera that cover a pixel centre: 2,158 and
+/// 2,142 in the two frames) and one entry for each [`BIN_BLOCK`] of them, with 26% to spare. Triangles beyond it
+/// would be drawn in every strip, and without room for the blocks each strip would scan every entry (slower, the
+/// same pixels).
 pub const BIN_ENTRIES: usize = 2_816;
 
 /// How the frame memory is shared out: rows per strip, within a budget of RAM for every buffer together.
