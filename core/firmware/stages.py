@@ -26,7 +26,7 @@ STAGES = [
     ("shading: normals, light, highlight, RGB565", ["shade_batch", "SurfaceShader"]),
     ("clearing the strip", ["Target::clear"]),
     ("binning: the triangle loop, rejections, entries", ["StripBins::bin", "bin_with"]),
-    ("strip draws: the triangle loop, entry scan", ["draw::run", "draw_walk", "Walk"]),
+    ("strip draws: the triangle loop, block and entry scan", ["draw::run", "draw_walk", "Walk"]),
     ("display: colours sent, FNV-1a", ["draw_frame", "ChecksumDisplay", "Fnv1a"]),
     ("scene: shader variant, matrices", ["Scene::", "Variant::", "Transforms"]),
 ]
