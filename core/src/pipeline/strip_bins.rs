@@ -198,8 +198,8 @@ impl<'m> StripBins<'m> {
         Ok(Self { kept, blocks, rest, key, stats })
     }
 
-    /// Whether each strip's walk skips the [`BIN_BLOCK`]s of entries that do not meet it: false where the memory held
-    /// no room for their summaries after the kept entries.
+    /// Whether each strip's walk skips the [`BIN_BLOCK`]s of entries that do not meet it: false only where there are
+    /// kept entries and the memory held no room for their summaries after them.
     #[must_use]
     pub fn blocks(&self) -> bool {
         !self.blocks.is_empty() || self.kept.is_empty()
@@ -394,9 +394,9 @@ pub(crate) enum Walk<'b> {
         kept: &'b [BinnedTriangle],
         /// Their blocks' strips (empty: none to skip by).
         blocks: &'b [BinnedTriangle],
-        /// The next entry of `kept` to look at, and the end of its block where that block meets the strip (else
-        /// `next`).
+        /// The next entry of `kept` to look at.
         next: usize,
+        /// The end of the block being scanned; at most `next` between blocks.
         block_end: usize,
         /// The strip drawn.
         strip: u8,
