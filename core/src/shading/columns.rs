@@ -179,7 +179,7 @@ pub(crate) fn pow_lanes(x: &mut Column, y: Exponent, len: usize) {
 
 /// The lanes of [`pow_lanes`] raised by `powf`, out of line: inlined, the compiler hoisted the parts of `powf` that
 /// depend on the exponent alone out of the lane loop, before the test for a whole exponent, so every batch paid for
-/// them (on the firmware, about 40 instructions a fragment).
+/// them (on the firmware, about 23 instructions a fragment: shading 9.96 against 9.52 million a frame).
 #[cold]
 #[inline(never)]
 fn raise_lanes_out_of_line(x: &mut Column, y: Exponent, len: usize) {
