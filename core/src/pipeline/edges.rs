@@ -75,20 +75,6 @@ pub(crate) struct EdgeLanes {
     pub bias: [i32; 3],
 }
 
-impl EdgeLanes {
-    /// Whether the centre with values `v` is covered: [`CentreEdges::covered`].
-    #[inline(always)]
-    pub fn lane_covered(v0: i32, v1: i32, v2: i32) -> bool {
-        (v0 | v1 | v2) >= 0
-    }
-
-    /// The weights of the second and third vertex at values `v`: [`CentreEdges::weights`]`[1..]`.
-    #[inline(always)]
-    pub fn lane_weights(&self, v1: i32, v2: i32) -> [f32; 2] {
-        [v1.wrapping_sub(self.bias[1]) as f32, v2.wrapping_sub(self.bias[2]) as f32]
-    }
-}
-
 /// The values of [`FixedEdges`] inside the box, one pixel at a time: `i32` steps where a target has no 64-bit
 /// registers, the same values (outside the box they may wrap: the pixel loops do not leave it).
 impl CentreEdges for EdgeLanes {
@@ -110,7 +96,7 @@ impl CentreEdges for EdgeLanes {
 
     #[inline(always)]
     fn covered(&self, e: &[i32; 3]) -> bool {
-        Self::lane_covered(e[0], e[1], e[2])
+        (e[0] | e[1] | e[2]) >= 0
     }
 
     #[inline(always)]

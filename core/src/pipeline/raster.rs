@@ -581,9 +581,9 @@ impl<E: Edges> Coverage<E> {
                     let v0 = e[0].wrapping_add(offsets[0][j]);
                     let v1 = e[1].wrapping_add(offsets[1][j]);
                     let v2 = e[2].wrapping_add(offsets[2][j]);
-                    let [w1, w2] = lanes.lane_weights(v1, v2);
+                    let [_, w1, w2] = lanes.weights(&[v0, v1, v2]);
                     // Lanes past the box's last column may have wrapped: never covered.
-                    covered[j] = EdgeLanes::lane_covered(v0, v1, v2) & (x + (j as i32) < count);
+                    covered[j] = lanes.covered(&[v0, v1, v2]) & (x + (j as i32) < count);
                     z[j] = f.depth(w1, w2);
                 }
                 passed += u64::from(depth.test_lanes(&mut target.depth, first + x as usize, &z, &covered));
