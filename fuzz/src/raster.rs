@@ -410,9 +410,9 @@ enum Depths<'a> {
 ///
 /// With `shortcuts`, the early test of cut-out draws (`nearer`) and the lane-wise test go through the core's slices
 /// too; without, through the trait's defaults (shade every fragment, test pixel by pixel), so that a frame drawn
-/// one way and its bands the other prove the shortcuts change nothing. Every draw here uses this one depth type
-/// (and [`CheckedColor`]): each pair of buffer types instantiates the whole specialised pipeline again, most of
-/// this crate's instrumented build time.
+/// one way and its bands the other prove the shortcuts change nothing. The pipeline tests it through its view
+/// (`DepthView::Other`), in the pixel loops every shader shares; the comparison with the library's own buffers
+/// (`draw_mesh` into `&mut [f32]`) covers the loop compiled into each draw loop.
 struct CheckedDepth<'a> {
     depths: Depths<'a>,
     shortcuts: bool,

@@ -1,17 +1,15 @@
 //! A draw call: mesh → vertex stage → clip → raster → fragment → target.
 
-use super::batch::FragmentBatch;
 use super::clip::{CLIP_MASK, ClipVertex, ClipVolume, MAX_CLIPPED};
-use super::depth_stage::{DepthLess, DepthOff, DepthStage, DynamicDepth};
-use super::edges::{DynamicEdgeSetup, EdgeSetup, FixedPoint, FloatingPoint};
-use super::interpolator::{Affine, DynamicInterpolator, Interpolator, PerspectiveCorrect};
-use super::raster::{Rasterizer, Setup, Stages, shade_batch};
+use super::fragment_stage::{FragmentStage, ShaderStage, Writes};
+use super::fragments::Fragments;
+use super::raster::{Coverage, EdgeSetup, FixedPoint, FloatingPoint, Pass, PixelLoops, Rasterizer, Setup, Shading};
 use super::screen_vertex::{NO_SCREEN, NOT_FINITE, ScreenVertex, screen_vertices};
 use super::strip_bins::Walk;
 use super::vertex_cache::VertexCache;
-use super::{DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation, MAX_SUBPIXEL_BITS, Shader, Varyings};
+use super::{DrawState, DrawStats, EdgeArithmetic, Interpolation, MAX_SUBPIXEL_BITS, Shader, Varyings};
 use crate::mesh::{Attributes, Mesh};
-use crate::target::{ColorBuffer, DepthBuffer, Target, VertexMemory};
+use crate::target::{ColorBuffer, DepthBuffer, Samples, Target, TargetView, VertexMemory, VertexSource};
 
 /// Why a draw was refused (nothing was drawn).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -42,9 +40,9 @@ impl core::error::Error for DrawError {}
 
 /// Draws the triangles of `mesh` with `shader` into `target`.
 ///
-/// The edge arithmetic, interpolation mode and depth test of `state` select one of eight compiled pixel loops,
-/// once for the whole draw; together with the shader type that makes a loop that does exactly what this draw
-/// needs.
+/// The state's interpolation and the target's samples select the pixel loop, once for the whole draw; the loops do
+/// not depend on the shader or the buffers, and hand the shader batches of fragments
+/// ([`Shader::shade_batch`]).
 ///
 /// # Errors
 /// [`DrawError`] when the mesh lacks an attribute the shader reads or the state is out of range. Bad triangles
@@ -94,57 +92,11 @@ where
     M: VertexMemory,
 {
     check(mesh, S::ATTRIBUTES, state)?;
-    Ok(draw_walk(target, mesh, shader, state, Walk::All(0..mesh.triangle_count())))
+    Ok(draw_walk(target, mesh, shader, state, Walk::All(0..mesh.triangle_count()), Path::Specialised))
 }
 
-/// [`draw`] of the triangles `walk` takes, once checked: the first choice, the edge arithmetic.
-#[inline(always)]
-pub(super) fn draw_walk<S, C, D, M>(
-    target: &mut Target<C, D, M>,
-    mesh: &Mesh<'_>,
-    shader: &S,
-    state: &DrawState,
-    walk: Walk<'_>,
-) -> DrawStats
-where
-    S: Shader,
-    C: ColorBuffer,
-    D: DepthBuffer,
-    M: VertexMemory,
-{
-    match state.edges {
-        EdgeArithmetic::FixedPoint => with_interpolation_and_depth(target, mesh, shader, state, FixedPoint, walk),
-        EdgeArithmetic::Float => with_interpolation_and_depth(target, mesh, shader, state, FloatingPoint, walk),
-    }
-}
-
-/// The second and third choices of [`draw`]: the interpolator and the depth stage.
-fn with_interpolation_and_depth<S, C, D, E, M>(
-    target: &mut Target<C, D, M>,
-    mesh: &Mesh<'_>,
-    shader: &S,
-    state: &DrawState,
-    edges: E,
-    walk: Walk<'_>,
-) -> DrawStats
-where
-    S: Shader,
-    C: ColorBuffer,
-    D: DepthBuffer,
-    M: VertexMemory,
-    E: EdgeSetup,
-{
-    use {DepthTest as T, Interpolation as I};
-    let stages = (edges, walk);
-    match (state.interpolation, state.depth_test) {
-        (I::PerspectiveCorrect, T::Less) => run(target, mesh, shader, state, stages, PerspectiveCorrect, DepthLess),
-        (I::PerspectiveCorrect, T::Off) => run(target, mesh, shader, state, stages, PerspectiveCorrect, DepthOff),
-        (I::Affine, T::Less) => run(target, mesh, shader, state, stages, Affine, DepthLess),
-        (I::Affine, T::Off) => run(target, mesh, shader, state, stages, Affine, DepthOff),
-    }
-}
-
-/// Like [`draw`], but through one general pixel loop that decides interpolation and depth test per pixel.
+/// Like [`draw`], but through the general pixel loops, which decide the edge arithmetic and the interpolation
+/// per pixel.
 ///
 /// Slower, and otherwise identical to the pixel: it exists so tests can prove that the specialised loops compute
 /// exactly what the general one does, and benchmarks can show what specialising saves.
@@ -164,9 +116,40 @@ where
     M: VertexMemory,
 {
     check(mesh, S::ATTRIBUTES, state)?;
-    let (interpolator, depth) = (DynamicInterpolator(state.interpolation), DynamicDepth(state.depth_test));
-    let walk = Walk::All(0..mesh.triangle_count());
-    Ok(run(target, mesh, shader, state, (DynamicEdgeSetup(state.edges), walk), interpolator, depth))
+    Ok(draw_walk(target, mesh, shader, state, Walk::All(0..mesh.triangle_count()), Path::General))
+}
+
+/// Which pixel loops a draw runs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Path {
+    /// Those specialised for the draw ([`PixelLoops::specialised`]).
+    Specialised,
+    /// The general ones ([`PixelLoops::general`]).
+    General,
+}
+
+/// [`draw`] of the triangles `walk` takes, once checked: the target as one type whatever its buffers
+/// ([`Target::views`]), so that what follows is compiled once per shader.
+#[inline(always)]
+pub(super) fn draw_walk<S, C, D, M>(
+    target: &mut Target<C, D, M>,
+    mesh: &Mesh<'_>,
+    shader: &S,
+    state: &DrawState,
+    walk: Walk<'_>,
+    path: Path,
+) -> DrawStats
+where
+    S: Shader,
+    C: ColorBuffer,
+    D: DepthBuffer,
+    M: VertexMemory,
+{
+    let (view, vertices) = target.views(state.depth_test);
+    match state.edges {
+        EdgeArithmetic::FixedPoint => run::<S, FixedPoint>(view, vertices, mesh, shader, state, walk, path),
+        EdgeArithmetic::Float => run::<S, FloatingPoint>(view, vertices, mesh, shader, state, walk, path),
+    }
 }
 
 pub(super) fn check(mesh: &Mesh<'_>, needed: Attributes, state: &DrawState) -> Result<(), DrawError> {
@@ -210,64 +193,70 @@ impl Outcome {
     }
 }
 
-/// The screen vertices in `memory` computed beforehand for this draw (its mesh's positions under the shader's
-/// matrix, into a frame of `frame` pixels with the state's sub-pixel bits), if there are any.
-#[inline(always)]
-fn shared_vertices<'m, S: Shader, M: VertexMemory>(
-    memory: &'m M,
-    shader: &S,
-    mesh: &Mesh<'_>,
-    frame: (u32, u32),
-    state: &DrawState,
-) -> Option<&'m [ScreenVertex]> {
-    let matrix = shader.clip_from_object()?;
-    memory.shared()?.for_draw(mesh.positions(), matrix, frame, state.subpixel_bits)
-}
-
-/// The draw loop over the triangles `walk` takes, monomorphised on the shader, the edge arithmetic, the
-/// interpolator and the depth stage.
-fn run<S, C, D, E, I, Z, M>(
-    target: &mut Target<C, D, M>,
+/// The draw loop over the triangles `walk` takes, compiled per shader and edge arithmetic: the vertex stage,
+/// clipping and set-up, then each triangle that covers a pixel through the draw's pixel loop.
+///
+/// The edge arithmetic is a type here, the set-up's, for the draw loop's sake: chosen per triangle instead, the
+/// two set-ups' results met in one value, which was kept in memory, not registers (callgrind, sphere1m: 50
+/// instructions a triangle more). The pixel loops do not depend on it.
+fn run<S: Shader, E: EdgeSetup>(
+    target: TargetView<'_>,
+    vertices: VertexSource<'_>,
     mesh: &Mesh<'_>,
     shader: &S,
     state: &DrawState,
-    (edges, walk): (E, Walk<'_>),
-    interpolator: I,
-    depth: Z,
-) -> DrawStats
-where
-    S: Shader,
-    C: ColorBuffer,
-    D: DepthBuffer,
-    M: VertexMemory,
-    E: EdgeSetup,
-    I: Interpolator,
-    Z: DepthStage,
-{
+    walk: Walk<'_>,
+    path: Path,
+) -> DrawStats {
     let rows = target.rows();
     let volume = ClipVolume::new(target.width(), target.height(), rows.start, rows.end);
-    let raster = Rasterizer::new(target, state.subpixel_bits, state.cull, state.front_face);
-    // Asked once per draw; a constant false for shaders that never discard.
-    let stages = Stages { shader, interpolator, depth, cutout: S::CUTOUT && shader.cutout(), slopes: shader.slopes() };
-    // The caller's memory for screen positions, taken out of the target for the draw (the pixel loop borrows the
-    // target) and put back at the end. Screen vertices computed beforehand for the frame are read as they are,
-    // when they are this draw's; a buffer holding every vertex of the mesh gets the position stage once per
-    // vertex, in order, first; otherwise the triangles go through the cache. (`shared_vertices` is asked twice:
-    // a `match` on it would keep `memory` borrowed into the arm that borrows it mutably.)
-    let mut memory = core::mem::take(&mut target.vertices);
+    let raster = Rasterizer::new(&target, state.subpixel_bits, state.cull, state.front_face);
     let frame = (target.width(), target.height());
-    let screen: Option<&[ScreenVertex]> = if shared_vertices(&memory, shader, mesh, frame, state).is_some() {
-        shared_vertices(&memory, shader, mesh, frame, state)
-    } else {
-        memory.screen_vertices().and_then(|m| m.get_mut(..mesh.vertex_count())).map(|screen| {
+    // The pixel loops, chosen once, and what they work with: the target, the batch and the fragment stage.
+    let stage = ShaderStage::new(shader);
+    let shading = match (S::FRAGMENT_STAGE, stage.cutout()) {
+        (false, _) => Shading::DepthOnly,
+        (true, false) => Shading::Shaded,
+        (true, true) => Shading::CutOut,
+    };
+    let loops = match path {
+        Path::Specialised => PixelLoops::specialised(state.interpolation, target.samples(), shading),
+        Path::General => PixelLoops::general(target.samples(), shading),
+    };
+    // The one combination compiled into this loop: exact edges, one sample per pixel, perspective-correct (or no
+    // fragment stage), nothing discarded; the general path never.
+    let inline = path == Path::Specialised
+        && target.samples() == Samples::One
+        && match shading {
+            Shading::DepthOnly => true,
+            Shading::Shaded => state.interpolation == Interpolation::PerspectiveCorrect,
+            Shading::CutOut => false,
+        };
+    let mut pass = Pass {
+        inline,
+        fragments: S::FRAGMENT_STAGE.then(Fragments::new),
+        interpolation: state.interpolation,
+        cutout: shading == Shading::CutOut,
+        // Asked once per draw.
+        slopes: shader.slopes(),
+        target,
+        stage,
+    };
+    // Screen vertices computed beforehand for the frame are read as they are, when they are this draw's; memory
+    // holding every vertex of the mesh gets the position stage once per vertex, in order, first; otherwise the
+    // triangles go through the cache.
+    let screen: Option<&[ScreenVertex]> = match vertices {
+        VertexSource::Shared(shared) => shader
+            .clip_from_object()
+            .and_then(|matrix| shared.for_draw(mesh.positions(), matrix, frame, state.subpixel_bits)),
+        VertexSource::Memory(memory) => memory.get_mut(..mesh.vertex_count()).map(|screen| {
             screen_vertices(|i| shader.position(mesh, i), 0, &volume, &raster, screen);
             &*screen
-        })
+        }),
+        VertexSource::Cache => None,
     };
     let mut cache = if screen.is_some() { VertexCache::for_varyings() } else { VertexCache::new() };
     let mut stats = DrawStats::default();
-    // Fragments of a batched shader, across triangles; made with the first rasterized triangle's values.
-    let mut batch: Option<FragmentBatch<S::Varyings, S::Face>> = None;
 
     // A loop, not `Mesh::for_each_triangle`: its closure, called from one place per index type, stayed out of line,
     // and each triangle paid a call and reloaded every captured value (callgrind, sphere1m with vertex memory, two
@@ -308,10 +297,9 @@ where
                 stats.outside += 1;
                 continue;
             }
-            let (sa, sb, sc) = (a.screen, b.screen, c.screen);
-            let setup = edges.setup(&raster, [sa, sb, sc]);
+            let setup = E::setup(&raster, [a.screen, b.screen, c.screen]);
             outcome.record(&setup);
-            if let Setup::Ready(coverage) = setup
+            if let Setup::Ready(coverage) = &setup
                 && coverage.covers_a_centre()
             {
                 let vars = cache.triangle_varyings(shader, mesh, indices);
@@ -320,8 +308,8 @@ where
                     continue;
                 }
                 let face = shader.face(mesh, indices);
-                let batch = batch.get_or_insert_with(|| FragmentBatch::new(vars[0], face));
-                stats.fragments += coverage.fill(&stages, &face, vars.each_ref(), batch, target);
+                let inline = pass.inline;
+                stats.fragments += fill::<S, E>(&mut pass, &loops, coverage, vars.each_ref(), face, inline);
             }
         } else {
             // Clipping cuts varyings too, so they are needed first.
@@ -346,21 +334,57 @@ where
             // A convex polygon is a fan around its first vertex.
             for i in 1..verts.len().saturating_sub(1) {
                 let (Some(p), Some(q), Some(r)) = (snapped[0], snapped[i], snapped[i + 1]) else { continue };
-                let setup = edges.setup(&raster, [p, q, r]);
+                let setup = E::setup(&raster, [p, q, r]);
                 outcome.record(&setup);
-                if let Setup::Ready(coverage) = setup {
-                    let face = face.get_or_insert_with(|| shader.face(mesh, indices));
-                    let batch = batch.get_or_insert_with(|| FragmentBatch::new(verts[0].var, *face));
+                if let Setup::Ready(coverage) = &setup {
+                    let face = *face.get_or_insert_with(|| shader.face(mesh, indices));
                     let pieces = [&verts[0].var, &verts[i].var, &verts[i + 1].var];
-                    stats.fragments += coverage.fill(&stages, face, pieces, batch, target);
+                    // Rare: the shared loops, not a second copy of the draw's own.
+                    stats.fragments += fill::<S, E>(&mut pass, &loops, coverage, pieces, face, false);
                 }
             }
         }
         outcome.count(&mut stats);
     }
-    if let Some(batch) = batch.as_mut().filter(|b| !b.is_empty()) {
-        stats.fragments += shade_batch(&stages, batch, target);
+    // What is left in the batch.
+    if let Some(fragments) = &mut pass.fragments
+        && fragments.len() > 0
+    {
+        let target = &mut pass.target;
+        let samples = target.samples();
+        let mut depth = target.depth.view();
+        let depth = (shading == Shading::CutOut).then_some(&mut depth);
+        let writes = Writes { color: &mut target.color, depth, samples };
+        stats.fragments += pass.stage.flush(fragments, writes);
     }
-    target.vertices = memory;
     stats
+}
+
+/// Runs the draw's pixel loop over one triangle (or clipped piece) that reaches it, with its varyings given in input
+/// order and its face, first putting them into the batch's next slot: the fragments it counts.
+///
+/// With `inline` ([`Pass::inline`]), the draw's usual pixel loop is compiled here, into the draw loop, with the
+/// shader's fragment stage called directly; otherwise one of the loops every shader shares ([`PixelLoops`]), which
+/// reads the coverage from memory: it is copied there for the triangles that reach it, so that the set-up of the
+/// many that do not keeps it in registers (callgrind, sphere1m: 12 instructions a triangle).
+#[inline(always)]
+fn fill<S: Shader, E: EdgeSetup>(
+    pass: &mut Pass<'_, ShaderStage<'_, S>>,
+    loops: &PixelLoops,
+    coverage: &Coverage<E::Edges>,
+    varyings: [&S::Varyings; 3],
+    face: S::Face,
+    inline: bool,
+) -> u64 {
+    if let Some(fragments) = &pass.fragments {
+        pass.stage.start_triangle(fragments, coverage.oriented(varyings), face);
+    }
+    if E::INLINE
+        && inline
+        && let Some(fragments) = E::fill_inline(coverage, pass, S::FRAGMENT_STAGE)
+    {
+        return fragments;
+    }
+    let stored = *coverage;
+    E::fill(loops, &stored, pass)
 }

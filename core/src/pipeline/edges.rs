@@ -7,8 +7,6 @@
 //! which is what the accuracy report measures. Both evaluate each row from frame coordinates alone, so bands give
 //! the frame's pixels.
 
-use super::EdgeArithmetic;
-use super::raster::{Rasterizer, Setup, Snapped};
 use crate::math::float;
 use crate::target::{SAMPLE_COUNT, SAMPLE_POSITIONS};
 
@@ -297,6 +295,20 @@ pub(crate) enum DynamicEdges {
     Float(FloatEdges),
 }
 
+impl From<FixedEdges> for DynamicEdges {
+    #[inline(always)]
+    fn from(edges: FixedEdges) -> Self {
+        Self::Fixed(edges)
+    }
+}
+
+impl From<FloatEdges> for DynamicEdges {
+    #[inline(always)]
+    fn from(edges: FloatEdges) -> Self {
+        Self::Float(edges)
+    }
+}
+
 /// Values of [`DynamicEdges`].
 #[derive(Clone, Copy, Debug)]
 pub(crate) enum DynamicAt {
@@ -400,54 +412,6 @@ impl Edges for DynamicEdges {
         match self {
             Self::Fixed(e) => e.lanes(x0, x1, y0, y1),
             Self::Float(e) => e.lanes(x0, x1, y0, y1),
-        }
-    }
-}
-
-/// How a draw sets up edge functions: a type chosen once per draw, or the state's choice made per triangle (the
-/// general path).
-pub(crate) trait EdgeSetup: Copy {
-    /// The edge functions it produces.
-    type Edges: Edges;
-    /// Area, facing, bounding box and edge functions of a triangle.
-    fn setup(&self, raster: &Rasterizer, v: [Snapped; 3]) -> Setup<Self::Edges>;
-}
-
-/// Exact fixed point ([`EdgeArithmetic::FixedPoint`]).
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct FixedPoint;
-
-impl EdgeSetup for FixedPoint {
-    type Edges = FixedEdges;
-    #[inline(always)]
-    fn setup(&self, raster: &Rasterizer, v: [Snapped; 3]) -> Setup<FixedEdges> {
-        raster.setup_fixed(v)
-    }
-}
-
-/// Plain `f32` ([`EdgeArithmetic::Float`]).
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct FloatingPoint;
-
-impl EdgeSetup for FloatingPoint {
-    type Edges = FloatEdges;
-    #[inline(always)]
-    fn setup(&self, raster: &Rasterizer, v: [Snapped; 3]) -> Setup<FloatEdges> {
-        raster.setup_float(v)
-    }
-}
-
-/// The state's choice, wrapped so one loop handles both.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct DynamicEdgeSetup(pub EdgeArithmetic);
-
-impl EdgeSetup for DynamicEdgeSetup {
-    type Edges = DynamicEdges;
-    #[inline(always)]
-    fn setup(&self, raster: &Rasterizer, v: [Snapped; 3]) -> Setup<DynamicEdges> {
-        match self.0 {
-            EdgeArithmetic::FixedPoint => raster.setup_fixed(v).map(DynamicEdges::Fixed),
-            EdgeArithmetic::Float => raster.setup_float(v).map(DynamicEdges::Float),
         }
     }
 }

@@ -11,6 +11,8 @@ use super::slopes::FractionSteps;
 pub(crate) trait Interpolator: Copy {
     /// Per-triangle constants.
     type Setup: Copy;
+    /// The interpolator of a draw that interpolates in `mode` (which only the general path's reads).
+    fn new(mode: Interpolation) -> Self;
     /// Prepares a triangle from its vertices' `1/w` and the reciprocal of its doubled screen area.
     fn setup(&self, inv_w: [f32; 3], inv_area: f32) -> Self::Setup;
     /// The weights of vertices 1 and 2 at a pixel with edge-function values `e`, as fractions `[n1, n2, d]`: the
@@ -26,16 +28,6 @@ pub(crate) trait Interpolator: Copy {
     fn fraction_steps(&self, setup: &Self::Setup, [x, y]: [[f32; 3]; 2]) -> FractionSteps {
         FractionSteps { dx: self.fraction_step(setup, x), dy: self.fraction_step(setup, y) }
     }
-
-    /// The weights of vertices 1 and 2 at a pixel with edge-function values `e`, and the reciprocal of their
-    /// fractions' denominator: `[w1, w2, 1 / d]`.
-    #[inline(always)]
-    fn weights(&self, setup: &Self::Setup, e: [f32; 3]) -> [f32; 3] {
-        let [n1, n2, d] = self.fractions(setup, e);
-        // For `d = 1` (affine) this folds away: `1 / 1` and `n * 1` are exact.
-        let r = 1.0 / d;
-        [n1 * r, n2 * r, r]
-    }
 }
 
 /// Perspective-correct: `w_k = (e_k / w_k) / sum_j (e_j / w_j)` (Heckbert and Moreton, "Interpolation for
@@ -45,6 +37,11 @@ pub(crate) struct PerspectiveCorrect;
 
 impl Interpolator for PerspectiveCorrect {
     type Setup = [f32; 3];
+
+    #[inline(always)]
+    fn new(_: Interpolation) -> Self {
+        Self
+    }
 
     #[inline(always)]
     fn setup(&self, inv_w: [f32; 3], _: f32) -> [f32; 3] {
@@ -73,6 +70,11 @@ impl Interpolator for Affine {
     type Setup = f32;
 
     #[inline(always)]
+    fn new(_: Interpolation) -> Self {
+        Self
+    }
+
+    #[inline(always)]
     fn setup(&self, _: [f32; 3], inv_area: f32) -> f32 {
         inv_area
     }
@@ -94,6 +96,11 @@ pub(crate) struct DynamicInterpolator(pub Interpolation);
 
 impl Interpolator for DynamicInterpolator {
     type Setup = ([f32; 3], f32);
+
+    #[inline(always)]
+    fn new(mode: Interpolation) -> Self {
+        Self(mode)
+    }
 
     #[inline(always)]
     fn setup(&self, inv_w: [f32; 3], inv_area: f32) -> Self::Setup {

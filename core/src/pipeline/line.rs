@@ -1,12 +1,11 @@
 //! Wireframe: the edges of a mesh's triangles as one-pixel lines, clipped like triangles.
 
 use super::clip::ClipVolume;
-use super::depth_stage::{DepthStage, DynamicDepth};
-use super::{Cull, DepthTest, DrawState, DrawStats, Winding};
+use super::{Cull, DrawState, DrawStats, Winding};
 use crate::camera::Viewport;
 use crate::math::{Mat4, Vec3, Vec4, float};
 use crate::mesh::Mesh;
-use crate::target::{ColorBuffer, DepthBuffer, Target, VertexMemory, clamp_depth};
+use crate::target::{ColorBuffer, DepthBuffer, Target, TargetView, VertexMemory, clamp_depth};
 
 /// How wireframe lines look.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -44,6 +43,18 @@ pub fn draw_wireframe<C: ColorBuffer, D: DepthBuffer, M: VertexMemory>(
     style: &LineStyle,
     state: &DrawState,
 ) -> DrawStats {
+    let (mut view, _) = target.views(state.depth_test);
+    draw_lines(&mut view, mesh, clip_from_object, style, state)
+}
+
+/// [`draw_wireframe`] into the target's views: compiled once, whatever its buffers.
+fn draw_lines(
+    target: &mut TargetView<'_>,
+    mesh: &Mesh<'_>,
+    clip_from_object: &Mat4,
+    style: &LineStyle,
+    state: &DrawState,
+) -> DrawStats {
     let rows = target.rows();
     let volume = ClipVolume::new(target.width(), target.height(), rows.start, rows.end);
     let pen = Pen {
@@ -52,7 +63,6 @@ pub fn draw_wireframe<C: ColorBuffer, D: DepthBuffer, M: VertexMemory>(
         row0: rows.start as i32,
         row1: rows.end as i32,
         style: *style,
-        depth_test: state.depth_test,
     };
     let mut stats = DrawStats::default();
     for t in 0..mesh.triangle_count() {
@@ -114,17 +124,11 @@ struct Pen {
     row0: i32,
     row1: i32,
     style: LineStyle,
-    depth_test: DepthTest,
 }
 
 impl Pen {
     /// Draws one clipped segment (both ends have `w > 0`); returns the pixels written.
-    fn line<C: ColorBuffer, D: DepthBuffer, M: VertexMemory>(
-        &self,
-        target: &mut Target<C, D, M>,
-        p: Vec4,
-        q: Vec4,
-    ) -> u64 {
+    fn line(&self, target: &mut TargetView<'_>, p: Vec4, q: Vec4) -> u64 {
         if !(p.w > 0.0 && q.w > 0.0) {
             return 0;
         }
@@ -168,9 +172,9 @@ impl Pen {
     /// Plots the pixels of major coordinates `lo..hi` along the line from `a` (major axis in `x`) with the given
     /// minor-per-major slope; `to_xy` maps (major, minor) to (column, row).
     #[allow(clippy::too_many_arguments)]
-    fn plot_span<C: ColorBuffer, D: DepthBuffer, M: VertexMemory>(
+    fn plot_span(
         &self,
-        target: &mut Target<C, D, M>,
+        target: &mut TargetView<'_>,
         lo: i32,
         hi: i32,
         a: &Vec3,
@@ -179,7 +183,6 @@ impl Pen {
         to_xy: impl Fn(i32, i32) -> (i32, i32),
     ) -> u64 {
         let (length, dz) = (b.x - a.x, b.z - a.z);
-        let depth_test = DynamicDepth(self.depth_test);
         let width = target.width() as usize;
         let samples = target.samples().count();
         let mut written = 0;
@@ -197,7 +200,7 @@ impl Pen {
             let first = ((y - self.row0) as usize * width + x as usize) * samples;
             let mut any = false;
             for index in first..first + samples {
-                if depth_test.test(&mut target.depth, index, z) {
+                if target.depth.test_and_set(index, z) {
                     target.color.write(index, self.style.color);
                     any = true;
                 }

@@ -12,11 +12,19 @@
 //!    covered pixel centres with exact integer edge functions and the top-left rule.
 //! 4. **Vertex stage, varyings** ([`Shader::varyings`]): only for the vertices of triangles that reach the pixel
 //!    loop (or must be clipped); a triangle with non-finite varyings is skipped.
-//! 5. **Fragment**: depth test ([`DepthTest`]), interpolation ([`Interpolation`]) with the varyings' screen-space
-//!    [`Slopes`] when the shader asks ([`Shader::slopes`]), [`Shader::fragment`], write;
-//!    or, for a [`Shader::BATCHED`] shader, up to [`BATCH_SIZE`] fragments at a time through
-//!    [`Shader::shade_batch`]; or, for a depth-only shader (no [`Shader::FRAGMENT_STAGE`]), the depth test alone,
+//! 5. **Fragment**: depth test ([`DepthTest`]), then up to [`BATCH_SIZE`] fragments at a time, across triangles,
+//!    into a [`FragmentBatch`]: interpolation ([`Interpolation`]) with the varyings' screen-space [`Slopes`] when
+//!    the shader asks ([`Shader::slopes`]), [`Shader::shade_batch`] (by default [`Shader::fragment`] for each),
+//!    write; or, for a depth-only shader (no [`Shader::FRAGMENT_STAGE`]), the depth test alone,
 //!    [`DEPTH_LANES`](crate::target::DEPTH_LANES) pixels of a row at a time.
+//!
+//! # What is compiled
+//! The pixel loops (coverage, depth test, the batch) do not depend on the shader or on the target's buffer types:
+//! they draw into the target's views ([`crate::target::ColorView`], [`crate::target::DepthView`]) and hand each full
+//! batch to the draw's fragment stage through one `dyn` call. They are compiled once per edge arithmetic,
+//! interpolation, samples per pixel and fragment stage (none, shading, shading what it keeps), and a draw picks
+//! its loop once. Per shader type there is the vertex stage, the triangle loop and the batch's interpolation and
+//! shading; per buffer type, one conversion into the views.
 //!
 //! # Clipping
 //! Near plane `z >= 0`, far plane `z <= w`, and a guard band of ±[`GUARD_BAND`] pixels in x and y; see the
@@ -31,9 +39,10 @@
 
 mod batch;
 mod clip;
-mod depth_stage;
 pub(crate) mod draw;
 mod edges;
+mod fragment_stage;
+mod fragments;
 mod interpolator;
 mod line;
 mod raster;
@@ -46,7 +55,7 @@ mod strip_bins;
 mod varyings;
 mod vertex_cache;
 
-pub use batch::{BATCH_SIZE, FragmentBatch, Lanes, lanes};
+pub use batch::{BATCH_SIZE, FragmentBatch, Lanes, OneFragment, lanes};
 pub(crate) use clip::ClipVolume;
 pub use clip::GUARD_BAND;
 pub use draw::{DrawError, draw};

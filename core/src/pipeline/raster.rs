@@ -16,15 +16,18 @@
 
 mod multisample;
 
-use super::batch::{BATCH_SIZE, FragmentBatch};
-use super::depth_stage::DepthStage;
-use super::edges::{CentreEdges, EdgeLanes, Edges, FixedEdges, FloatEdges};
-use super::interpolator::Interpolator;
+use super::edges::{CentreEdges, DynamicEdges, EdgeLanes, Edges, FixedEdges, FloatEdges};
+use super::fragment_stage::{FragmentStage, Writes};
+use super::fragments::Fragments;
+use super::interpolator::{Affine, DynamicInterpolator, Interpolator, PerspectiveCorrect};
 use super::slopes::FractionSteps;
-use super::{Cull, Fragment, Shader, Slopes, Varyings, Winding};
+use super::{Cull, Interpolation, Winding};
 use crate::camera::Viewport;
-use crate::math::{Vec3, Vec4, float};
-use crate::target::{ColorBuffer, DEPTH_LANES, DepthBuffer, SAMPLE_REACH, Samples, Target, VertexMemory, clamp_depth};
+use crate::math::{Vec4, float};
+use crate::target::{
+    ColorBuffer, DEPTH_LANES, DepthBuffer, DepthView, SAMPLE_REACH, Samples, Target, TargetView, VertexMemory,
+    clamp_depth,
+};
 
 /// A vertex position in screen space, snapped to the sub-pixel grid (and kept unsnapped for `f32` edges).
 #[derive(Clone, Copy, Debug)]
@@ -81,19 +84,6 @@ pub(crate) enum Setup<E> {
     /// Its bounding box holds pixel centres of the target (a sliver may still cover none): ready for the pixel
     /// loop.
     Ready(Coverage<E>),
-}
-
-impl<E> Setup<E> {
-    /// The same outcome with the edge functions converted.
-    #[inline(always)]
-    pub fn map<F>(self, f: impl FnOnce(E) -> F) -> Setup<F> {
-        match self {
-            Self::Degenerate => Setup::Degenerate,
-            Self::Culled => Setup::Culled,
-            Self::Empty => Setup::Empty,
-            Self::Ready(c) => Setup::Ready(Coverage { edges: f(c.edges), frame: c.frame }),
-        }
-    }
 }
 
 /// Per-draw rasterizer settings.
@@ -294,6 +284,7 @@ impl Rasterizer {
 }
 
 /// Everything about a triangle in the pixel loop that does not depend on how its edges are evaluated.
+#[derive(Clone, Copy, Debug)]
 pub(crate) struct Frame {
     x0: i32,
     x1: i32,
@@ -349,91 +340,300 @@ impl Frame {
 }
 
 /// A triangle that reaches the pixel loop: its edge functions and its geometric interpolants (depth, `1/w`).
+#[derive(Clone, Copy, Debug)]
 pub(crate) struct Coverage<E> {
     edges: E,
     frame: Frame,
 }
 
-/// The per-draw stages the pixel loop is specialised on.
-pub(crate) struct Stages<'s, S, I, Z> {
-    pub shader: &'s S,
-    pub interpolator: I,
-    pub depth: Z,
-    /// The shader discards fragments in this draw: [`Shader::CUTOUT`] and [`Shader::cutout`], asked once.
-    pub cutout: bool,
-    /// The shader reads its varyings' slopes in this draw ([`Shader::slopes`], asked once).
-    pub slopes: bool,
-}
-
-/// A triangle's varyings as the pixel loops interpolate them, made once per triangle by
-/// [`Stages::triangle_varyings`].
-struct TriangleVaryings<V, T> {
-    /// The first (oriented) vertex's varyings and the differences to the second's and the third's.
-    v0: V,
-    d1: V,
-    d2: V,
-    /// The interpolator's set-up.
-    setup: T,
-    /// The fraction steps when the draw reads slopes, zero otherwise.
-    steps: FractionSteps,
-    /// Zero slopes, for draws that do not read them.
-    no_slopes: Slopes<V>,
-}
-
-impl<S: Shader, I: Interpolator, Z> Stages<'_, S, I, Z> {
-    /// The fraction steps of a triangle with interpolator set-up `setup` and edge functions `edges`, when the draw
-    /// reads slopes; zero otherwise.
-    #[inline(always)]
-    fn fraction_steps<E: Edges>(&self, setup: &I::Setup, edges: &E) -> FractionSteps {
-        if self.slopes { self.interpolator.fraction_steps(setup, edges.steps()) } else { FractionSteps::default() }
-    }
-
-    /// The varyings of the triangle covering `frame` with edge functions `edges`, given for its input vertices in
-    /// input order, ready for [`Self::interpolate`] (or a batch).
-    #[inline(always)]
-    fn triangle_varyings<E: Edges>(
-        &self,
-        frame: &Frame,
-        edges: &E,
-        varyings: [&S::Varyings; 3],
-    ) -> TriangleVaryings<S::Varyings, I::Setup> {
-        let setup = self.interpolator.setup(frame.inv_w, frame.inv_area);
-        let steps = self.fraction_steps(&setup, edges);
-        let [v0, v1, v2] = oriented(frame.swapped, varyings);
-        TriangleVaryings { v0: *v0, d1: v1.sub(v0), d2: v2.sub(v0), setup, steps, no_slopes: Slopes::zero(v0) }
-    }
-
-    /// A fragment's varyings at edge weights `ef` and, when the draw reads them, their slopes (zero otherwise).
-    #[inline(always)]
-    fn interpolate(
-        &self,
-        t: &TriangleVaryings<S::Varyings, I::Setup>,
-        ef: [f32; 3],
-    ) -> (S::Varyings, Slopes<S::Varyings>) {
-        let [w1, w2, r] = self.interpolator.weights(&t.setup, ef);
-        let var = t.v0.interpolate(&t.d1, w1, &t.d2, w2);
-        let slopes = if self.slopes { Slopes::of(&t.d1, &t.d2, t.steps.weight_slopes(w1, w2, r)) } else { t.no_slopes };
-        (var, slopes)
-    }
-}
-
-/// Largest bounding box, in pixel centres, that [`Coverage::covers_a_centre`] tests centre by centre.
-const SMALL_BOX: i64 = 4;
-
 impl<E: Edges> Coverage<E> {
+    /// The triangle as the pixel loops read it.
+    #[inline(always)]
+    fn covered(&self) -> Covered<'_, E> {
+        Covered { edges: &self.edges, frame: &self.frame }
+    }
+
+    /// [`Covered::covers_a_centre`].
+    #[inline(always)]
+    pub fn covers_a_centre(&self) -> bool {
+        self.covered().covers_a_centre()
+    }
+
     /// The first and last rows of the triangle's bounding box, clamped to the target's rows.
     #[inline(always)]
     pub fn rows(&self) -> (i32, i32) {
         (self.frame.y0, self.frame.y1)
     }
 
+    /// Per-vertex values given in input order, in the triangle's oriented order (see [`oriented`]).
+    #[inline(always)]
+    pub fn oriented<T: Copy>(&self, values: [T; 3]) -> [T; 3] {
+        oriented(self.frame.swapped, values)
+    }
+}
+
+/// The depth format of the pixel loop compiled into each draw loop ([`EdgeSetup::fill_inline`]): `f32` where there
+/// are 64-bit registers (a desktop's), `u16` elsewhere (a microcontroller's, where memory is scarce). A target with
+/// another depth buffer draws through the shared loops, which test its [`DepthView`] pixel by pixel. One format,
+/// not one loop per format: the loop is compiled once per shader.
+#[cfg(target_pointer_width = "64")]
+pub(crate) type InlineDepth = f32;
+/// See the 64-bit definition.
+#[cfg(not(target_pointer_width = "64"))]
+pub(crate) type InlineDepth = u16;
+
+/// How a draw sets up its triangles: exact fixed point ([`FixedPoint`]) or plain `f32` ([`FloatingPoint`]), the
+/// type the draw loop is compiled for.
+pub(crate) trait EdgeSetup: Copy {
+    /// The edge functions it produces.
+    type Edges: Edges;
+    /// Area, facing, bounding box and edge functions of a triangle.
+    fn setup(raster: &Rasterizer, v: [Snapped; 3]) -> Setup<Self::Edges>;
+    /// The draw's pixel loop for its edge functions.
+    fn pixel_loop(loops: &PixelLoops) -> Fill<Self::Edges>;
+    /// Whether draws in this arithmetic may run the pixel loop compiled into their draw loop
+    /// ([`Self::fill_inline`]): only the default's, exact fixed point.
+    const INLINE: bool;
+
+    /// The pixel loop of a draw with exact edges, one sample per pixel and perspective-correct interpolation that
+    /// discards nothing, or of a depth-only draw (`!shaded`), compiled into the caller for a depth buffer of
+    /// [`InlineDepth`]: its fragment stage `St` is called directly and its depth buffer tested without a branch on
+    /// the format. What most draws run. `None`, having drawn nothing, for a target with another depth buffer.
+    #[inline(always)]
+    fn fill_inline<St: FragmentStage + ?Sized>(
+        coverage: &Coverage<Self::Edges>,
+        pass: &mut Pass<'_, St>,
+        shaded: bool,
+    ) -> Option<u64> {
+        let view = core::mem::replace(&mut pass.target.depth, DepthView::Off);
+        let mut depth = match <&mut [InlineDepth]>::try_from(view) {
+            Ok(depth) => depth,
+            Err(view) => {
+                pass.target.depth = view;
+                return None;
+            }
+        };
+        let fragments = if shaded {
+            fill_single::<_, PerspectiveCorrect, false, St, _>(coverage.covered(), pass, &mut depth)
+        } else {
+            fill_depth_only::<_, St, _>(coverage.covered(), pass, &mut depth)
+        };
+        pass.target.depth = depth.into();
+        Some(fragments)
+    }
+
+    /// Runs the draw's pixel loop over `coverage`: the fragments it counts.
+    #[inline(always)]
+    fn fill(loops: &PixelLoops, coverage: &Coverage<Self::Edges>, pass: &mut Pass<'_, dyn FragmentStage + '_>) -> u64 {
+        Self::pixel_loop(loops)(coverage.covered(), pass)
+    }
+}
+
+/// Exact fixed point ([`super::EdgeArithmetic::FixedPoint`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FixedPoint;
+
+impl EdgeSetup for FixedPoint {
+    type Edges = FixedEdges;
+    const INLINE: bool = true;
+    #[inline(always)]
+    fn setup(raster: &Rasterizer, v: [Snapped; 3]) -> Setup<FixedEdges> {
+        raster.setup_fixed(v)
+    }
+    #[inline(always)]
+    fn pixel_loop(loops: &PixelLoops) -> Fill<FixedEdges> {
+        loops.fixed
+    }
+}
+
+/// Plain `f32` ([`super::EdgeArithmetic::Float`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FloatingPoint;
+
+impl EdgeSetup for FloatingPoint {
+    type Edges = FloatEdges;
+    const INLINE: bool = false;
+    #[inline(always)]
+    fn setup(raster: &Rasterizer, v: [Snapped; 3]) -> Setup<FloatEdges> {
+        raster.setup_float(v)
+    }
+    #[inline(always)]
+    fn pixel_loop(loops: &PixelLoops) -> Fill<FloatEdges> {
+        loops.float
+    }
+}
+
+/// A triangle as a pixel loop reads it: its edge functions in one arithmetic, and its frame.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Covered<'c, E> {
+    edges: &'c E,
+    frame: &'c Frame,
+}
+
+/// What a draw's pixel loops work with besides the triangle: its target, the batch they fill and the fragment
+/// stage that shades it when full (no batch for a depth-only draw), and the draw's settings they read. `St` is
+/// the stage: the draw's own type, seen by the pixel loops as `dyn FragmentStage`.
+pub(crate) struct Pass<'t, St: ?Sized> {
+    /// The draw runs the pixel loop compiled into its draw loop ([`EdgeSetup::fill_inline`]), not a shared one.
+    pub inline: bool,
+    /// The target, through its views.
+    pub target: TargetView<'t>,
+    /// The batch, or `None` for a depth-only draw ([`super::Shader::FRAGMENT_STAGE`]).
+    pub fragments: Option<Fragments>,
+    /// The draw's interpolation (read by the general path's interpolator, per pixel).
+    pub interpolation: Interpolation,
+    /// The fragment stage discards fragments ([`super::Shader::cutout`]): depth is compared when a fragment is
+    /// pushed and tested and written when it is kept.
+    pub cutout: bool,
+    /// The fragment stage reads its varyings' slopes ([`super::Shader::slopes`]).
+    pub slopes: bool,
+    /// The fragment stage.
+    pub stage: St,
+}
+
+/// A triangle's pixel loop, shared by every shader: covered pixel centres (or samples), depth test, fragments into
+/// the batch, which goes to the fragment stage through a `dyn` reference. The fragments it counts.
+pub(crate) type Fill<E> = for<'c, 'p, 't, 's> fn(Covered<'c, E>, &'p mut Pass<'t, dyn FragmentStage + 's>) -> u64;
+
+/// The pixel loops of a draw, one for each edge arithmetic, chosen once per draw: for its interpolation, its
+/// target's samples and its fragment stage (none, shading, or shading what it keeps), or the general loops that
+/// decide the edge arithmetic and the interpolation per pixel. They do not depend on the shader or the buffers,
+/// so each is compiled once whatever a program draws.
+#[derive(Clone, Copy)]
+pub(crate) struct PixelLoops {
+    fixed: Fill<FixedEdges>,
+    float: Fill<FloatEdges>,
+}
+
+/// What a draw's fragments go through after the depth test.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Shading {
+    /// Nothing: a depth-only draw.
+    DepthOnly,
+    /// The fragment stage.
+    Shaded,
+    /// The fragment stage, discarding some ([`super::Shader::cutout`]).
+    CutOut,
+}
+
+impl PixelLoops {
+    /// The loops specialised for a draw with `interpolation` into a target with `samples` per pixel.
+    pub fn specialised(interpolation: Interpolation, samples: Samples, shading: Shading) -> Self {
+        use {Interpolation as I, Shading as S};
+        match (samples, shading, interpolation) {
+            (_, S::DepthOnly, _) => Self { fixed: shared_depth_only, float: shared_depth_only },
+            (Samples::Four, _, I::PerspectiveCorrect) => Self::multisample::<PerspectiveCorrect>(),
+            (Samples::Four, _, I::Affine) => Self::multisample::<Affine>(),
+            (Samples::One, S::Shaded, I::PerspectiveCorrect) => Self::single::<PerspectiveCorrect, false>(),
+            (Samples::One, S::Shaded, I::Affine) => Self::single::<Affine, false>(),
+            (Samples::One, S::CutOut, I::PerspectiveCorrect) => Self::single::<PerspectiveCorrect, true>(),
+            (Samples::One, S::CutOut, I::Affine) => Self::single::<Affine, true>(),
+        }
+    }
+
+    /// The general loops: edge arithmetic and interpolation decided per pixel, for a draw into a target with
+    /// `samples` per pixel.
+    pub fn general(samples: Samples, shading: Shading) -> Self {
+        match (samples, shading) {
+            (_, Shading::DepthOnly) => Self { fixed: general_depth_only, float: general_depth_only },
+            (Samples::Four, _) => Self { fixed: general_multisample, float: general_multisample },
+            (Samples::One, Shading::Shaded) => {
+                Self { fixed: general_single::<_, false>, float: general_single::<_, false> }
+            }
+            (Samples::One, Shading::CutOut) => {
+                Self { fixed: general_single::<_, true>, float: general_single::<_, true> }
+            }
+        }
+    }
+
+    fn single<I: Interpolator, const CUTOUT: bool>() -> Self {
+        Self { fixed: shared_single::<_, I, CUTOUT>, float: shared_single::<_, I, CUTOUT> }
+    }
+
+    fn multisample<I: Interpolator>() -> Self {
+        Self { fixed: shared_multisample::<_, I>, float: shared_multisample::<_, I> }
+    }
+}
+
+/// [`fill_single`] for every shader, its fragment stage seen as `dyn FragmentStage`.
+fn shared_single<E: Edges, I: Interpolator, const CUTOUT: bool>(
+    c: Covered<'_, E>,
+    pass: &mut Pass<'_, dyn FragmentStage + '_>,
+) -> u64 {
+    with_depth_view(pass, |pass, depth| fill_single::<E, I, CUTOUT, _, _>(c, pass, depth))
+}
+
+/// [`fill_multisample`] for every shader, its fragment stage seen as `dyn FragmentStage`.
+fn shared_multisample<E: Edges, I: Interpolator>(
+    c: Covered<'_, E>,
+    pass: &mut Pass<'_, dyn FragmentStage + '_>,
+) -> u64 {
+    fill_multisample::<E, I, _>(c, pass)
+}
+
+/// [`fill_depth_only`] for every shader ([`fill_multisample`] on a multisampled target).
+fn shared_depth_only<E: Edges>(c: Covered<'_, E>, pass: &mut Pass<'_, dyn FragmentStage + '_>) -> u64 {
+    if c.frame.samples != Samples::One {
+        return fill_multisample::<E, PerspectiveCorrect, _>(c, pass);
+    }
+    with_depth_view(pass, |pass, depth| fill_depth_only::<E, _, _>(c, pass, depth))
+}
+
+/// Runs a pixel loop with the target's depth buffer, as its [`DepthView`], lent to it apart from the target.
+#[inline(always)]
+fn with_depth_view<'t, St: ?Sized>(
+    pass: &mut Pass<'t, St>,
+    fill: impl FnOnce(&mut Pass<'t, St>, &mut DepthView<'t>) -> u64,
+) -> u64 {
+    let mut depth = core::mem::replace(&mut pass.target.depth, DepthView::Off);
+    let fragments = fill(pass, &mut depth);
+    pass.target.depth = depth;
+    fragments
+}
+
+/// [`fill_single`] with the edge arithmetic and the interpolation decided per pixel.
+fn general_single<E: Edges + Into<DynamicEdges>, const CUTOUT: bool>(
+    c: Covered<'_, E>,
+    pass: &mut Pass<'_, dyn FragmentStage + '_>,
+) -> u64 {
+    let edges = (*c.edges).into();
+    let c = Covered { edges: &edges, frame: c.frame };
+    with_depth_view(pass, |pass, depth| fill_single::<_, DynamicInterpolator, CUTOUT, _, _>(c, pass, depth))
+}
+
+/// [`fill_multisample`] with the edge arithmetic and the interpolation decided per pixel.
+fn general_multisample<E: Edges + Into<DynamicEdges>>(
+    c: Covered<'_, E>,
+    pass: &mut Pass<'_, dyn FragmentStage + '_>,
+) -> u64 {
+    let edges = (*c.edges).into();
+    fill_multisample::<_, DynamicInterpolator, _>(Covered { edges: &edges, frame: c.frame }, pass)
+}
+
+/// [`fill_depth_only`] with the edge arithmetic decided per pixel.
+fn general_depth_only<E: Edges + Into<DynamicEdges>>(
+    c: Covered<'_, E>,
+    pass: &mut Pass<'_, dyn FragmentStage + '_>,
+) -> u64 {
+    let edges = (*c.edges).into();
+    let c = Covered { edges: &edges, frame: c.frame };
+    if c.frame.samples != Samples::One {
+        return fill_multisample::<_, PerspectiveCorrect, _>(c, pass);
+    }
+    with_depth_view(pass, |pass, depth| fill_depth_only::<_, _, _>(c, pass, depth))
+}
+
+/// Largest bounding box, in pixel centres, that [`Covered::covers_a_centre`] tests centre by centre.
+const SMALL_BOX: i64 = 4;
+
+impl<E: Edges> Covered<'_, E> {
     /// False when the triangle covers none of the pixel centres (the samples, on a multisampled target) of its
     /// bounding box in the target, which is tested centre by centre for a box of at most [`SMALL_BOX`] pixels; true
     /// otherwise. A dense mesh's triangles are mostly smaller than a pixel and many cover no centre: this lets them
     /// skip their varyings and set-up.
     #[inline(always)]
-    pub fn covers_a_centre(&self) -> bool {
-        let f = &self.frame;
+    fn covers_a_centre(self) -> bool {
+        let (f, edges) = (self.frame, self.edges);
         if i64::from(f.x1 - f.x0 + 1) * i64::from(f.y1 - f.y0 + 1) > SMALL_BOX {
             return true;
         }
@@ -441,129 +641,105 @@ impl<E: Edges> Coverage<E> {
             return self.covers_a_sample();
         }
         for y in f.y0..=f.y1 {
-            let mut e = self.edges.at(f.x0, y);
+            let mut e = edges.at(f.x0, y);
             for _ in f.x0..=f.x1 {
-                if self.edges.covered(&e) {
+                if edges.covered(&e) {
                     return true;
                 }
-                e = self.edges.step(e);
+                e = edges.step(e);
             }
         }
         false
     }
 
-    /// Visits every covered pixel centre in the target's rows: depth test, interpolation of `varyings` (given for
-    /// the input vertices, in input order), fragment stage, write. Returns the number of fragments shaded.
-    ///
-    /// A [`Shader::BATCHED`] shader's fragments go into `batch`, which is shaded and written whenever it fills;
-    /// the caller shades what is left at the end of the draw ([`shade_batch`]).
+    /// Starts the triangle in the batch: its facing, and the steps of its weight fractions when the draw reads
+    /// slopes. Returns the interpolator's set-up for it.
     #[inline(always)]
-    pub fn fill<S, I, Z, C, D, M>(
-        &self,
-        stages: &Stages<'_, S, I, Z>,
-        face: &S::Face,
-        varyings: [&S::Varyings; 3],
-        batch: &mut FragmentBatch<S::Varyings, S::Face>,
-        target: &mut Target<C, D, M>,
-    ) -> u64
-    where
-        S: Shader,
-        I: Interpolator,
-        Z: DepthStage,
-        C: ColorBuffer,
-        D: DepthBuffer,
-        M: VertexMemory,
-    {
-        let f = &self.frame;
-        if f.samples != Samples::One {
-            return self.fill_multisample(stages, face, varyings, batch, target);
-        }
-        if !S::FRAGMENT_STAGE {
-            // Depth only: nothing to shade. Several pixels at a time where the edge values fit `i32`.
-            if let Some(lanes) = self.edges.lanes(f.x0, f.x1, f.y0, f.y1) {
-                return self.fill_depth(lanes, &stages.depth, target);
-            }
-        } else if S::BATCHED {
-            // Where a target has no 64-bit registers, the edge values in `i32` where they fit (the same values).
-            let lanes = if NARROW { self.edges.lanes(f.x0, f.x1, f.y0, f.y1) } else { None };
-            return match (&lanes, stages.cutout) {
-                (Some(l), true) => {
-                    self.fill_batched::<true, _, _, _, _, _, _, _>(l, stages, face, varyings, batch, target)
-                }
-                (Some(l), false) => {
-                    self.fill_batched::<false, _, _, _, _, _, _, _>(l, stages, face, varyings, batch, target)
-                }
-                (None, true) => {
-                    self.fill_batched::<true, _, _, _, _, _, _, _>(&self.edges, stages, face, varyings, batch, target)
-                }
-                (None, false) => {
-                    self.fill_batched::<false, _, _, _, _, _, _, _>(&self.edges, stages, face, varyings, batch, target)
-                }
+    fn start<I: Interpolator, St: FragmentStage + ?Sized>(self, interpolator: &I, pass: &mut Pass<'_, St>) -> I::Setup {
+        let f = self.frame;
+        let setup = interpolator.setup(f.inv_w, f.inv_area);
+        if let Some(fragments) = &mut pass.fragments {
+            let steps = if pass.slopes {
+                interpolator.fraction_steps(&setup, self.edges.steps())
+            } else {
+                FractionSteps::default()
             };
+            fragments.start_triangle(f.front_facing, steps);
         }
-        let edges = &self.edges;
-        let triangle = stages.triangle_varyings(f, edges, varyings);
-        let width = target.width() as usize;
-        let row0 = target.rows().start as i32;
-        let mut shaded = 0u64;
-        for y in f.y0..=f.y1 {
-            let mut e = edges.at(f.x0, y);
-            let mut x = f.x0;
-            // The covered centres of a row are contiguous (a triangle is convex): skip to them, run, stop.
-            while x <= f.x1 && !edges.covered(&e) {
-                e = edges.step(e);
-                x += 1;
-            }
-            let base = (y - row0) as usize * width;
-            while x <= f.x1 && edges.covered(&e) {
-                let ef = edges.weights(&e);
-                let z = f.depth(ef[1], ef[2]);
-                let index = base + x as usize;
-                if S::CUTOUT && stages.cutout {
-                    // Shaded when nearer, written (and counted) when kept and still nearer.
-                    if stages.depth.nearer(&target.depth, index, z) {
-                        let (var, slopes) = stages.interpolate(&triangle, ef);
-                        let fragment = Fragment { x: x as u32, y: y as u32, depth: z, front_facing: f.front_facing };
-                        if stages.shader.kept(&fragment, face, &var, &slopes)
-                            && stages.depth.test(&mut target.depth, index, z)
-                        {
-                            target.color.write(index, stages.shader.fragment(&fragment, face, &var, &slopes));
-                            shaded += 1;
-                        }
-                    }
-                } else if stages.depth.test(&mut target.depth, index, z) {
-                    // A constant: a depth-only shader compiles without the fragment stage.
-                    if S::FRAGMENT_STAGE {
-                        let (var, slopes) = stages.interpolate(&triangle, ef);
-                        let fragment = Fragment { x: x as u32, y: y as u32, depth: z, front_facing: f.front_facing };
-                        let color = stages.shader.fragment(&fragment, face, &var, &slopes);
-                        target.color.write(index, color);
-                    }
-                    shaded += 1;
-                }
-                e = edges.step(e);
-                x += 1;
-            }
-        }
-        shaded
+        setup
     }
+}
 
-    /// [`Coverage::fill`] for a depth-only shader, with the edge functions as `lanes`: the depth test
-    /// alone, [`DEPTH_LANES`] pixels of a row at a time across the bounding box, with coverage, weights and depth
-    /// worked out per lane exactly as the pixel walk works them out per pixel (the same depths reach the same
-    /// pixels). The lanes are one branch-free loop, which the compiler widens to SIMD.
+/// The pixel loop of a draw with a fragment stage into a target of one sample per pixel: every covered pixel
+/// centre in the target's rows, depth-tested, gathered with its interpolation weights into the batch, which is
+/// shaded and written whenever it fills; the caller shades what is left at the end of the draw. Returns the
+/// fragments that passed the depth test (in a cut-out draw, the fragments written when a batch was shaded).
+///
+/// With `CUTOUT` (a draw whose shader discards fragments) a fragment is pushed when it is nearer than the stored
+/// depth, which is written only when its batch is shaded, for the fragments kept.
+///
+/// Where a target has no 64-bit registers, the edge values are walked in `i32` where they fit (the same values).
+#[inline(always)]
+pub(super) fn fill_single<E: Edges, I: Interpolator, const CUTOUT: bool, St: FragmentStage + ?Sized, D: DepthBuffer>(
+    c: Covered<'_, E>,
+    pass: &mut Pass<'_, St>,
+    depth: &mut D,
+) -> u64 {
+    let f = c.frame;
+    if NARROW && let Some(lanes) = c.edges.lanes(f.x0, f.x1, f.y0, f.y1) {
+        return c.walk_batched::<_, I, CUTOUT, St, D>(&lanes, pass, depth);
+    }
+    c.walk_batched::<_, I, CUTOUT, St, D>(c.edges, pass, depth)
+}
+
+/// The pixel loop of a depth-only draw into a target of one sample per pixel, with its depth buffer `depth`: the
+/// depth test alone, several pixels of a row at a time where the edge values fit `i32` ([`Covered::fill_depth`]),
+/// else pixel by pixel. Returns the pixels that passed.
+#[inline(always)]
+pub(super) fn fill_depth_only<E: Edges, St: FragmentStage + ?Sized, D: DepthBuffer>(
+    c: Covered<'_, E>,
+    pass: &mut Pass<'_, St>,
+    depth: &mut D,
+) -> u64 {
+    let (f, edges) = (c.frame, c.edges);
+    let width = pass.target.width() as usize;
+    let row0 = pass.target.rows().start as i32;
+    if let Some(lanes) = edges.lanes(f.x0, f.x1, f.y0, f.y1) {
+        return c.fill_depth(lanes, width, row0, depth);
+    }
+    let mut passed = 0u64;
+    for y in f.y0..=f.y1 {
+        let mut e = edges.at(f.x0, y);
+        let mut x = f.x0;
+        // The covered centres of a row are contiguous (a triangle is convex): skip to them, run, stop.
+        while x <= f.x1 && !edges.covered(&e) {
+            e = edges.step(e);
+            x += 1;
+        }
+        let base = (y - row0) as usize * width;
+        while x <= f.x1 && edges.covered(&e) {
+            let ef = edges.weights(&e);
+            if depth.test_and_set(base + x as usize, f.depth(ef[1], ef[2])) {
+                passed += 1;
+            }
+            e = edges.step(e);
+            x += 1;
+        }
+    }
+    passed
+}
+
+pub(super) use multisample::fill_multisample;
+
+impl<E: Edges> Covered<'_, E> {
+    /// [`fill_depth_only`] with the edge functions as `lanes`: the depth test alone, [`DEPTH_LANES`] pixels of a
+    /// row at a time across the bounding box, with coverage, weights and depth worked out per lane exactly as the
+    /// pixel walk works them out per pixel (the same depths reach the same pixels). The lanes are one branch-free
+    /// loop, which the compiler widens to SIMD.
     #[inline(always)]
-    fn fill_depth<Z, C, D, M>(&self, lanes: EdgeLanes, depth: &Z, target: &mut Target<C, D, M>) -> u64
-    where
-        Z: DepthStage,
-        C: ColorBuffer,
-        D: DepthBuffer,
-        M: VertexMemory,
-    {
+    fn fill_depth<D: DepthBuffer>(self, lanes: EdgeLanes, width: usize, row0: i32, depth: &mut D) -> u64 {
         const N: usize = DEPTH_LANES;
-        let f = &self.frame;
-        let width = target.width() as usize;
-        let row0 = target.rows().start as i32;
+        let f = self.frame;
         let count = f.x1 - f.x0 + 1;
         // Lane j of a group lies j pixels right of its first: its values are the first's plus j steps.
         let offsets: [[i32; N]; 3] =
@@ -586,7 +762,7 @@ impl<E: Edges> Coverage<E> {
                     covered[j] = lanes.covered(&[v0, v1, v2]) & (x + (j as i32) < count);
                     z[j] = f.depth(w1, w2);
                 }
-                passed += u64::from(depth.test_lanes(&mut target.depth, first + x as usize, &z, &covered));
+                passed += u64::from(depth.test_and_set_lanes(first + x as usize, &z, &covered));
                 e = [0, 1, 2].map(|k| e[k].wrapping_add(group_step[k]));
                 x += N as i32;
             }
@@ -595,47 +771,29 @@ impl<E: Edges> Coverage<E> {
         passed
     }
 
-    /// [`Coverage::fill`] for a [`Shader::BATCHED`] shader: the same fragments, in the same order, depth-tested
-    /// alike, gathered with their interpolation weights into `batch` and shaded with [`Shader::shade_batch`]
-    /// whenever it fills. `edges` are the triangle's, in `i64` or, where they fit, in `i32` ([`EdgeLanes`]).
+    /// [`fill_single`]'s walk with the triangle's edges as `edges` (in `i64`, or in `i32` where they fit,
+    /// [`EdgeLanes`]): the covered centres of each row in order, each depth-tested (in a cut-out draw, compared)
+    /// and pushed into the batch, which is handed to the fragment stage whenever it fills.
     ///
-    /// Its row walk repeats `fill`'s on purpose: sharing one walk through a closure made the per-pixel loop twice
-    /// as slow (`cargo bench -p rastty-bench --bench render -- sphere_2_5k_phong_lambert_800x800`: fastest 13.4
-    /// against 6.5 ms).
-    ///
-    /// With `CUTOUT` (a draw whose shader discards fragments) a fragment is pushed when it is nearer than the
-    /// stored depth, which is written only at [`shade_batch`], for the fragments kept.
-    ///
-    /// Out of line where it has two kinds of edges ([`NARROW`]): inlined, each kind was copied into each of the draw
-    /// loop's calls (on the firmware, 12 KB more code).
+    /// Out of line where it has two kinds of edges ([`NARROW`]): inlined, each kind was copied into each of the
+    /// draw loop's calls (on the firmware, 12 KB more code).
     #[cfg_attr(target_pointer_width = "64", inline(always))]
     #[cfg_attr(not(target_pointer_width = "64"), inline(never))]
-    fn fill_batched<const CUTOUT: bool, W, S, I, Z, C, D, M>(
-        &self,
+    fn walk_batched<W: CentreEdges, I: Interpolator, const CUTOUT: bool, St: FragmentStage + ?Sized, D: DepthBuffer>(
+        self,
         edges: &W,
-        stages: &Stages<'_, S, I, Z>,
-        face: &S::Face,
-        varyings: [&S::Varyings; 3],
-        batch: &mut FragmentBatch<S::Varyings, S::Face>,
-        target: &mut Target<C, D, M>,
-    ) -> u64
-    where
-        W: CentreEdges,
-        S: Shader,
-        I: Interpolator,
-        Z: DepthStage,
-        C: ColorBuffer,
-        D: DepthBuffer,
-        M: VertexMemory,
-    {
-        let f = &self.frame;
-        let setup = stages.interpolator.setup(f.inv_w, f.inv_area);
-        let steps = stages.fraction_steps(&setup, &self.edges);
-        let [v0, v1, v2] = oriented(f.swapped, varyings);
-        batch.start_triangle([*v0, v1.sub(v0), v2.sub(v0)], *face, f.front_facing, steps);
+        pass: &mut Pass<'_, St>,
+        depth: &mut D,
+    ) -> u64 {
+        let interpolator = I::new(pass.interpolation);
+        let setup = self.start(&interpolator, pass);
+        let f = self.frame;
+        let Pass { target, fragments: Some(fragments), stage, .. } = pass else { return 0 };
         let width = target.width() as usize;
         let row0 = target.rows().start as i32;
-        let mut shaded = 0u64;
+        let samples = target.samples();
+        // At most one fragment per pixel of the frame, which has fewer than 2^32.
+        let mut shaded = 0u32;
         for y in f.y0..=f.y1 {
             let mut e = edges.at(f.x0, y);
             let mut x = f.x0;
@@ -648,84 +806,28 @@ impl<E: Edges> Coverage<E> {
                 let ef = edges.weights(&e);
                 let z = f.depth(ef[1], ef[2]);
                 let index = base + x as usize;
-                let passed = if CUTOUT {
-                    stages.depth.nearer(&target.depth, index, z)
-                } else {
-                    stages.depth.test(&mut target.depth, index, z)
-                };
+                let passed = if CUTOUT { depth.nearer(index, z) } else { depth.test_and_set(index, z) };
                 if passed {
-                    let fractions = stages.interpolator.fractions(&setup, ef);
+                    let fractions = interpolator.fractions(&setup, ef);
+                    if fragments.push(x as u32, y as u32, z, fractions, index) {
+                        // A cut-out draw counts its fragments as written, and lends the fragment stage its depth
+                        // buffer for those it keeps ([`Writes`]); the others count them as they pass.
+                        if CUTOUT {
+                            let depth = Some(&mut depth.view());
+                            shaded +=
+                                stage.flush(fragments, Writes { color: &mut target.color, depth, samples }) as u32;
+                        } else {
+                            stage.flush(fragments, Writes { color: &mut target.color, depth: None, samples });
+                        }
+                    }
                     if !CUTOUT {
                         shaded += 1;
-                    }
-                    if batch.push(x as u32, y as u32, z, fractions, index) {
-                        shaded += shade_batch(stages, batch, target);
                     }
                 }
                 e = edges.step(e);
                 x += 1;
             }
         }
-        shaded
+        u64::from(shaded)
     }
-}
-
-/// Shades `batch`'s fragments with the stages' shader, writes their colours in the order they were pushed, and
-/// empties it. In a cut-out draw the fragments kept are found first (a batch with none is not shaded), and only
-/// those that still pass the depth test (against the depths written by those before them) are written, depth and
-/// colour; their number is returned (the fragments a cut-out draw counts); 0 otherwise (the others are counted
-/// when pushed). On a multisampled target a fragment's colour goes to its samples (in a cut-out draw, to those
-/// that pass).
-///
-/// Not inlined: it runs once per batch, and the draw loop calls it from three places (on the firmware its code
-/// is 4.2 KB).
-#[inline(never)]
-pub(crate) fn shade_batch<S, I, Z, C, D, M>(
-    stages: &Stages<'_, S, I, Z>,
-    batch: &mut FragmentBatch<S::Varyings, S::Face>,
-    target: &mut Target<C, D, M>,
-) -> u64
-where
-    S: Shader,
-    Z: DepthStage,
-    C: ColorBuffer,
-    D: DepthBuffer,
-    M: VertexMemory,
-{
-    let mut colors = [Vec3::ZERO; BATCH_SIZE];
-    batch.resolve();
-    let written = if S::CUTOUT && stages.cutout {
-        let mut keep = [false; BATCH_SIZE];
-        stages.shader.kept_batch(batch, &mut keep);
-        // A batch with nothing kept (a draw cut out whole, a clear stretch of the map) is not shaded.
-        if keep[..batch.len()].contains(&true) {
-            stages.shader.shade_batch(batch, &mut colors);
-        }
-        if target.samples() != Samples::One {
-            let written = multisample::write_batch(&stages.depth, batch, Some(&keep), &colors, target);
-            batch.clear();
-            return written;
-        }
-        let depths = batch.depths();
-        let mut written = 0;
-        for (i, &index) in batch.indices().iter().enumerate() {
-            if keep[i] && stages.depth.test(&mut target.depth, index, depths[i]) {
-                target.color.write(index, colors[i]);
-                written += 1;
-            }
-        }
-        written
-    } else {
-        stages.shader.shade_batch(batch, &mut colors);
-        if target.samples() == Samples::One {
-            for (&index, &color) in batch.indices().iter().zip(&colors) {
-                target.color.write(index, color);
-            }
-        } else {
-            multisample::write_batch(&stages.depth, batch, None, &colors, target);
-        }
-        0
-    };
-    batch.clear();
-    written
 }

@@ -75,13 +75,10 @@ pub trait Shader {
         false
     }
 
-    /// Whether the pixel loop gathers fragments into a [`FragmentBatch`] and calls [`Shader::shade_batch`] rather
-    /// than [`Shader::fragment`] per pixel. A constant, so the pixel loop is chosen at compile time.
-    const BATCHED: bool = false;
-
     /// False for a depth-only shader (a shadow map's caster pass, a depth pre-pass): it has no fragment stage, so a
     /// draw with it runs the depth test alone, [`DEPTH_LANES`](crate::target::DEPTH_LANES) pixels of a row at a
-    /// time, and writes no colour; [`Shader::fragment`] is never called. A constant, like [`Shader::BATCHED`].
+    /// time, and writes no colour; [`Shader::fragment`] is never called. A constant, so that its draws compile
+    /// without a fragment stage.
     const FRAGMENT_STAGE: bool = true;
 
     /// True for a shader that may discard fragments ([`Shader::cutout`]): a constant, so that the pixel loops of
@@ -112,7 +109,7 @@ pub trait Shader {
 
     /// [`Shader::kept`] for a batch, into `keep[..batch.len()]`; by default fragment by fragment.
     #[inline(always)]
-    fn kept_batch(&self, batch: &FragmentBatch<Self::Varyings, Self::Face>, keep: &mut [bool; BATCH_SIZE]) {
+    fn kept_batch(&self, batch: &FragmentBatch<'_, Self::Varyings, Self::Face>, keep: &mut [bool; BATCH_SIZE]) {
         for (i, k) in keep.iter_mut().enumerate().take(batch.len()) {
             *k = self.kept(&batch.fragment(i), batch.face(i), batch.varyings(i), &batch.slopes(i));
         }
@@ -120,9 +117,10 @@ pub trait Shader {
 
     /// Fragment stage for a batch: the colours of `batch`'s fragments into `colors[..batch.len()]`. A batch may
     /// hold fragments of several triangles: [`FragmentBatch::face`] and [`FragmentBatch::fragment`] give each
-    /// fragment's. Called only when [`Shader::BATCHED`] is set; by default it calls [`Shader::fragment`] for each.
+    /// fragment's. By default it calls [`Shader::fragment`] for each; a shader that decides per batch what it runs
+    /// (as [`crate::shading::SurfaceShader`] does) overrides it.
     #[inline(always)]
-    fn shade_batch(&self, batch: &FragmentBatch<Self::Varyings, Self::Face>, colors: &mut [Vec3; BATCH_SIZE]) {
+    fn shade_batch(&self, batch: &FragmentBatch<'_, Self::Varyings, Self::Face>, colors: &mut [Vec3; BATCH_SIZE]) {
         for (i, c) in colors.iter_mut().enumerate().take(batch.len()) {
             *c = self.fragment(&batch.fragment(i), batch.face(i), batch.varyings(i), &batch.slopes(i));
         }

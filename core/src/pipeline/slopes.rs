@@ -26,13 +26,6 @@ impl<V: Varyings> Slopes<V> {
         let zero = d1.sub(d1);
         Self { dx: zero.interpolate(d1, w1x, d2, w2x), dy: zero.interpolate(d1, w1y, d2, w2y) }
     }
-
-    /// Zero slopes: what a draw that asks for none ([`super::Shader::slopes`]) hands its shader.
-    #[inline(always)]
-    pub(crate) fn zero(v: &V) -> Self {
-        let zero = v.sub(v);
-        Self { dx: zero, dy: zero }
-    }
 }
 
 /// A triangle's weight fractions' change per pixel: `[n1, n2, d]` one pixel to the right (`dx`) and one down

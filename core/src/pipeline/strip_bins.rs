@@ -29,9 +29,8 @@
 use core::ops::Range;
 
 use super::clip::CLIP_MASK;
-use super::draw::{check, draw_walk};
-use super::edges::{EdgeSetup, FixedPoint, FloatingPoint};
-use super::raster::{Rasterizer, Setup};
+use super::draw::{Path, check, draw_walk};
+use super::raster::{EdgeSetup, FixedPoint, FloatingPoint, Rasterizer, Setup};
 use super::screen_vertex::{NO_SCREEN, NOT_FINITE};
 use super::vertex_cache::VertexCache;
 use super::{ClipVolume, DrawError, DrawState, DrawStats, EdgeArithmetic, Shader};
@@ -180,8 +179,8 @@ impl<'m> StripBins<'m> {
             return Ok(Self { kept: &[], blocks: &[], rest: 0, key, stats: DrawStats::default() });
         }
         let (kept, rest, stats) = match state.edges {
-            EdgeArithmetic::FixedPoint => bin_with(memory, mesh, shader, state, strips, FixedPoint),
-            EdgeArithmetic::Float => bin_with(memory, mesh, shader, state, strips, FloatingPoint),
+            EdgeArithmetic::FixedPoint => bin_triangles::<S, FixedPoint>(memory, mesh, shader, state, strips),
+            EdgeArithmetic::Float => bin_triangles::<S, FloatingPoint>(memory, mesh, shader, state, strips),
         };
         let (kept, after) = memory.split_at_mut(kept);
         let blocks = match after.get_mut(..kept.len().div_ceil(BIN_BLOCK)) {
@@ -229,13 +228,12 @@ impl<'m> StripBins<'m> {
 
 /// [`StripBins::bin`] with the edge set-up of the state.
 #[inline(always)]
-fn bin_with<S: Shader, E: EdgeSetup>(
+fn bin_triangles<S: Shader, E: EdgeSetup>(
     memory: &mut [BinnedTriangle],
     mesh: &Mesh<'_>,
     shader: &S,
     state: &DrawState,
     strips: Strips,
-    edges: E,
 ) -> (usize, usize, DrawStats) {
     let (width, height) = (strips.width, strips.height);
     let volume = ClipVolume::new(width, height, 0, height);
@@ -281,7 +279,7 @@ fn bin_with<S: Shader, E: EdgeSetup>(
             stats.clipped += 1;
             (0, last)
         } else {
-            match edges.setup(&raster, [a.screen, b.screen, c.screen]) {
+            match E::setup(&raster, [a.screen, b.screen, c.screen]) {
                 Setup::Degenerate => {
                     stats.degenerate += 1;
                     continue;
@@ -351,7 +349,7 @@ where
         },
         _ => all,
     };
-    Ok(draw_walk(target, mesh, shader, state, walk))
+    Ok(draw_walk(target, mesh, shader, state, walk, Path::Specialised))
 }
 
 impl Iterator for Walk<'_> {

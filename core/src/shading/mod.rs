@@ -37,6 +37,7 @@ mod normals;
 mod scratch;
 mod shader;
 mod shading_model;
+mod surface;
 mod transforms;
 mod variant;
 mod varyings;

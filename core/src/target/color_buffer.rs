@@ -21,6 +21,98 @@ pub trait ColorBuffer {
     fn write_samples(&mut self, first: usize, mask: u8, color: Vec3) {
         for_each_sample(mask, |s| self.write(first + s, color));
     }
+    /// Stores `colors[i]` at index `indices[i]` for each `i`, in order (a later write to an index wins): a batch
+    /// of shaded fragments, handed over once. By default one [`Self::write`] each.
+    #[inline(always)]
+    fn write_batch(&mut self, indices: &[usize], colors: &[Vec3]) {
+        for (&index, &color) in indices.iter().zip(colors) {
+            self.write(index, color);
+        }
+    }
+    /// The buffer as the pipeline writes it: by default [`ColorView::Other`], written through this trait's
+    /// methods (a call per batch of fragments). A type that holds one of the library's formats (an enum over
+    /// buffers, say) may hand that over instead, to have it written directly.
+    #[inline(always)]
+    fn view(&mut self) -> ColorView<'_>
+    where
+        Self: Sized,
+    {
+        ColorView::Other(self)
+    }
+}
+
+/// A colour buffer as the pipeline writes it: one of the library's packed formats, stored into directly, or any
+/// other [`ColorBuffer`], through its methods.
+///
+/// The pipeline draws into this one type whatever buffer the caller gave ([`ColorBuffer::view`]), so that its
+/// loops are compiled once, not once for every colour buffer type a program draws into: the format is one branch
+/// per batch of shaded fragments.
+pub enum ColorView<'a> {
+    /// `0x00RRGGBB` pixels ([`Rgb888`]).
+    Rgb888(&'a mut [u32]),
+    /// RGB565 pixels ([`Rgb565`]).
+    Rgb565(&'a mut [u16]),
+    /// Any other colour buffer.
+    Other(&'a mut dyn ColorBuffer),
+}
+
+impl core::fmt::Debug for ColorView<'_> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Self::Rgb888(p) => write!(f, "Rgb888({} pixels)", p.len()),
+            Self::Rgb565(p) => write!(f, "Rgb565({} pixels)", p.len()),
+            Self::Other(c) => write!(f, "Other({:?} pixels)", c.pixel_count()),
+        }
+    }
+}
+
+impl ColorBuffer for ColorView<'_> {
+    fn pixel_count(&self) -> Option<usize> {
+        match self {
+            Self::Rgb888(p) => Some(p.len()),
+            Self::Rgb565(p) => Some(p.len()),
+            Self::Other(c) => c.pixel_count(),
+        }
+    }
+    #[inline(always)]
+    fn write(&mut self, index: usize, color: Vec3) {
+        match self {
+            Self::Rgb888(p) => Rgb888(p).write(index, color),
+            Self::Rgb565(p) => Rgb565(p).write(index, color),
+            Self::Other(c) => c.write(index, color),
+        }
+    }
+    fn fill(&mut self, color: Vec3) {
+        match self {
+            Self::Rgb888(p) => Rgb888(p).fill(color),
+            Self::Rgb565(p) => Rgb565(p).fill(color),
+            Self::Other(c) => c.fill(color),
+        }
+    }
+    #[inline(always)]
+    fn write_samples(&mut self, first: usize, mask: u8, color: Vec3) {
+        match self {
+            Self::Rgb888(p) => Rgb888(p).write_samples(first, mask, color),
+            Self::Rgb565(p) => Rgb565(p).write_samples(first, mask, color),
+            Self::Other(c) => c.write_samples(first, mask, color),
+        }
+    }
+    #[inline(always)]
+    fn write_batch(&mut self, indices: &[usize], colors: &[Vec3]) {
+        match self {
+            Self::Rgb888(p) => Rgb888(p).write_batch(indices, colors),
+            Self::Rgb565(p) => Rgb565(p).write_batch(indices, colors),
+            Self::Other(c) => c.write_batch(indices, colors),
+        }
+    }
+    #[inline(always)]
+    fn view(&mut self) -> ColorView<'_> {
+        match self {
+            Self::Rgb888(p) => ColorView::Rgb888(p),
+            Self::Rgb565(p) => ColorView::Rgb565(p),
+            Self::Other(c) => ColorView::Other(&mut **c),
+        }
+    }
 }
 
 /// Calls `f` with the index of every bit set in `mask`, lowest first.
@@ -64,6 +156,10 @@ impl ColorBuffer for Rgb888<'_> {
     fn write_samples(&mut self, first: usize, mask: u8, color: Vec3) {
         store_samples(self.0, first, mask, pack_rgb888(color));
     }
+    #[inline(always)]
+    fn view(&mut self) -> ColorView<'_> {
+        ColorView::Rgb888(self.0)
+    }
 }
 
 /// RGB565 pixels in `u16`s, the native format of most small SPI displays (see [`crate::color`]).
@@ -86,6 +182,10 @@ impl ColorBuffer for Rgb565<'_> {
     #[inline(always)]
     fn write_samples(&mut self, first: usize, mask: u8, color: Vec3) {
         store_samples(self.0, first, mask, pack_rgb565(color));
+    }
+    #[inline(always)]
+    fn view(&mut self) -> ColorView<'_> {
+        ColorView::Rgb565(self.0)
     }
 }
 

@@ -40,6 +40,133 @@ pub trait DepthBuffer {
     }
     /// Resets every value to the far plane.
     fn clear(&mut self);
+    /// The buffer as the pipeline tests it: by default [`DepthView::Other`], tested through this trait's methods
+    /// (a call per fragment). A type that holds one of the library's formats (an enum over buffers, say) may hand
+    /// that over instead, to have it tested directly.
+    #[inline(always)]
+    fn view(&mut self) -> DepthView<'_>
+    where
+        Self: Sized,
+    {
+        DepthView::Other(self)
+    }
+}
+
+/// A depth buffer as the pipeline tests it: one of the library's formats, tested directly, any other
+/// [`DepthBuffer`] through its methods, or none at all for a draw without the depth test.
+///
+/// The pipeline draws into this one type whatever buffer the caller gave ([`DepthBuffer::view`]), so that its
+/// loops are compiled once, not once for every depth buffer type a program draws into: the format is a branch
+/// that takes the same way for every fragment of a draw.
+pub enum DepthView<'a> {
+    /// `f32` depth (`&mut [f32]`).
+    F32(&'a mut [f32]),
+    /// `u16` depth (`&mut [u16]`).
+    U16(&'a mut [u16]),
+    /// Any other depth buffer.
+    Other(&'a mut dyn DepthBuffer),
+    /// No test and no write: every fragment passes ([`crate::pipeline::DepthTest::Off`]).
+    Off,
+}
+
+impl core::fmt::Debug for DepthView<'_> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Self::F32(d) => write!(f, "F32({} pixels)", d.len()),
+            Self::U16(d) => write!(f, "U16({} pixels)", d.len()),
+            Self::Other(d) => write!(f, "Other({:?} pixels)", d.pixel_count()),
+            Self::Off => f.write_str("Off"),
+        }
+    }
+}
+
+impl<'a> From<&'a mut [f32]> for DepthView<'a> {
+    fn from(depth: &'a mut [f32]) -> Self {
+        Self::F32(depth)
+    }
+}
+
+impl<'a> From<&'a mut [u16]> for DepthView<'a> {
+    fn from(depth: &'a mut [u16]) -> Self {
+        Self::U16(depth)
+    }
+}
+
+/// The `f32` buffer a view holds, or the view back when it holds another.
+impl<'a> TryFrom<DepthView<'a>> for &'a mut [f32] {
+    type Error = DepthView<'a>;
+    fn try_from(view: DepthView<'a>) -> Result<Self, DepthView<'a>> {
+        match view {
+            DepthView::F32(depth) => Ok(depth),
+            other => Err(other),
+        }
+    }
+}
+
+/// The `u16` buffer a view holds, or the view back when it holds another.
+impl<'a> TryFrom<DepthView<'a>> for &'a mut [u16] {
+    type Error = DepthView<'a>;
+    fn try_from(view: DepthView<'a>) -> Result<Self, DepthView<'a>> {
+        match view {
+            DepthView::U16(depth) => Ok(depth),
+            other => Err(other),
+        }
+    }
+}
+
+impl DepthBuffer for DepthView<'_> {
+    fn pixel_count(&self) -> Option<usize> {
+        match self {
+            Self::F32(d) => Some(d.len()),
+            Self::U16(d) => Some(d.len()),
+            Self::Other(d) => d.pixel_count(),
+            Self::Off => None,
+        }
+    }
+    #[inline(always)]
+    fn test_and_set(&mut self, index: usize, z: f32) -> bool {
+        match self {
+            Self::F32(d) => d.test_and_set(index, z),
+            Self::U16(d) => d.test_and_set(index, z),
+            Self::Other(d) => d.test_and_set(index, z),
+            Self::Off => true,
+        }
+    }
+    #[inline(always)]
+    fn nearer(&self, index: usize, z: f32) -> bool {
+        match self {
+            Self::F32(d) => d.nearer(index, z),
+            Self::U16(d) => d.nearer(index, z),
+            Self::Other(d) => d.nearer(index, z),
+            Self::Off => true,
+        }
+    }
+    #[inline(always)]
+    fn test_and_set_lanes(&mut self, start: usize, z: &[f32; DEPTH_LANES], covered: &[bool; DEPTH_LANES]) -> u32 {
+        match self {
+            Self::F32(d) => d.test_and_set_lanes(start, z, covered),
+            Self::U16(d) => d.test_and_set_lanes(start, z, covered),
+            Self::Other(d) => d.test_and_set_lanes(start, z, covered),
+            Self::Off => covered.iter().map(|&c| u32::from(c)).sum(),
+        }
+    }
+    fn clear(&mut self) {
+        match self {
+            Self::F32(d) => d.clear(),
+            Self::U16(d) => d.clear(),
+            Self::Other(d) => d.clear(),
+            Self::Off => {}
+        }
+    }
+    #[inline(always)]
+    fn view(&mut self) -> DepthView<'_> {
+        match self {
+            Self::F32(d) => DepthView::F32(d),
+            Self::U16(d) => DepthView::U16(d),
+            Self::Other(d) => DepthView::Other(&mut **d),
+            Self::Off => DepthView::Off,
+        }
+    }
 }
 
 /// `f32` depth: the depth as given, in `[0, 1]` (see [`clamp_depth`]).
@@ -90,6 +217,10 @@ impl DepthBuffer for &mut [f32] {
     }
     fn clear(&mut self) {
         self.fill(1.0);
+    }
+    #[inline(always)]
+    fn view(&mut self) -> DepthView<'_> {
+        DepthView::F32(self)
     }
 }
 
@@ -154,6 +285,10 @@ impl DepthBuffer for &mut [u16] {
     }
     fn clear(&mut self) {
         self.fill(u16::MAX);
+    }
+    #[inline(always)]
+    fn view(&mut self) -> DepthView<'_> {
+        DepthView::U16(self)
     }
 }
 

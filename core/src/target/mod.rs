@@ -28,14 +28,15 @@ mod vertex_memory;
 
 use core::ops::Range;
 
-pub use color_buffer::{ColorBuffer, NoColor, Rgb565, Rgb888};
-pub use depth_buffer::{DEPTH_LANES, DepthBuffer, NoDepth, clamp_depth, depth_to_u16};
+pub use color_buffer::{ColorBuffer, ColorView, NoColor, Rgb565, Rgb888};
+pub use depth_buffer::{DEPTH_LANES, DepthBuffer, DepthView, NoDepth, clamp_depth, depth_to_u16};
 pub(crate) use samples::{SAMPLE_COUNT, SAMPLE_REACH};
 pub use samples::{SAMPLE_POSITIONS, Samples};
 pub use supersample::{downsample_rgb888, resolve_rgb888};
-pub use vertex_memory::{NoVertexMemory, SharedScreenVertices, VertexMemory};
+pub use vertex_memory::{NoVertexMemory, SharedScreenVertices, VertexMemory, VertexSource};
 
 use crate::math::Vec3;
+use crate::pipeline::DepthTest;
 
 /// Largest frame width or height, in pixels.
 ///
@@ -255,4 +256,27 @@ impl<C: ColorBuffer, D: DepthBuffer, V: VertexMemory> Target<C, D, V> {
     pub fn into_parts(self) -> (C, D) {
         (self.color, self.depth)
     }
+
+    /// The target as a draw with `depth_test` draws into it, one type whatever its buffers ([`ColorBuffer::view`],
+    /// [`DepthBuffer::view`]; [`DepthView::Off`] without the test), and what its draws find of screen vertices.
+    pub(crate) fn views(&mut self, depth_test: DepthTest) -> (TargetView<'_>, VertexSource<'_>) {
+        let Self { color, depth, vertices, width, height, rows, samples } = self;
+        let depth = match depth_test {
+            DepthTest::Less => depth.view(),
+            DepthTest::Off => DepthView::Off,
+        };
+        let view = Target {
+            color: color.view(),
+            depth,
+            vertices: NoVertexMemory,
+            width: *width,
+            height: *height,
+            rows: rows.clone(),
+            samples: *samples,
+        };
+        (view, vertices.source())
+    }
 }
+
+/// A target as the pipeline draws into it: the caller's buffers behind one type ([`Target::views`]).
+pub(crate) type TargetView<'a> = Target<ColorView<'a>, DepthView<'a>>;

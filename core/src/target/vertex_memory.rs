@@ -15,17 +15,26 @@
 use crate::math::{Mat4, Vec3};
 use crate::pipeline::{DrawError, MAX_SUBPIXEL_BITS, ScreenVertex};
 
-/// Where a target keeps vertex positions for its draws, if anywhere: [`NoVertexMemory`] (the default) or a
-/// caller's `&mut [ScreenVertex]`.
+/// Where a target keeps vertex positions for its draws, if anywhere: [`NoVertexMemory`] (the default), a caller's
+/// `&mut [ScreenVertex]`, or the frame's [`SharedScreenVertices`].
 pub trait VertexMemory: Default {
-    /// The buffer, if there is one.
-    fn screen_vertices(&mut self) -> Option<&mut [ScreenVertex]>;
+    /// What a draw finds: memory to compute its screen vertices into, the frame's computed beforehand, or neither.
+    fn source(&mut self) -> VertexSource<'_>;
+}
 
-    /// Screen vertices computed beforehand for the whole frame, if the target has them.
-    #[inline(always)]
-    fn shared(&self) -> Option<SharedScreenVertices<'_>> {
-        None
-    }
+/// What a draw finds of its screen vertices in its target ([`VertexMemory::source`]): one type whatever the
+/// memory, so that the pipeline is compiled once for all of them.
+#[derive(Debug, Default)]
+pub enum VertexSource<'a> {
+    /// Nothing: the triangles find their vertices through the vertex cache.
+    #[default]
+    Cache,
+    /// Memory for the position stage of every vertex, run once, in order, before the triangles (used by a draw of
+    /// a mesh of at most as many vertices; a larger one uses the cache).
+    Memory(&'a mut [ScreenVertex]),
+    /// The frame's screen vertices, computed beforehand (used by the draw they were computed for; any other uses
+    /// the cache).
+    Shared(SharedScreenVertices<'a>),
 }
 
 /// No memory for vertices: draws use the vertex cache.
@@ -34,8 +43,8 @@ pub struct NoVertexMemory;
 
 impl VertexMemory for NoVertexMemory {
     #[inline(always)]
-    fn screen_vertices(&mut self) -> Option<&mut [ScreenVertex]> {
-        None
+    fn source(&mut self) -> VertexSource<'_> {
+        VertexSource::Cache
     }
 }
 
@@ -43,8 +52,8 @@ impl VertexMemory for NoVertexMemory {
 /// mesh uses the vertex cache). Its contents between draws mean nothing.
 impl VertexMemory for &mut [ScreenVertex] {
     #[inline(always)]
-    fn screen_vertices(&mut self) -> Option<&mut [ScreenVertex]> {
-        Some(self)
+    fn source(&mut self) -> VertexSource<'_> {
+        VertexSource::Memory(self)
     }
 }
 
@@ -142,12 +151,7 @@ impl<'a> SharedScreenVertices<'a> {
 /// Shared screen vertices, lent by `Target::with_shared_vertices`.
 impl VertexMemory for Option<SharedScreenVertices<'_>> {
     #[inline(always)]
-    fn screen_vertices(&mut self) -> Option<&mut [ScreenVertex]> {
-        None
-    }
-
-    #[inline(always)]
-    fn shared(&self) -> Option<SharedScreenVertices<'_>> {
-        *self
+    fn source(&mut self) -> VertexSource<'_> {
+        self.map_or(VertexSource::Cache, VertexSource::Shared)
     }
 }

@@ -5,7 +5,7 @@ use rastty_core::math::{Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh};
 use rastty_core::pipeline::{DrawState, DrawStats, Fragment, Shader, Slopes, draw};
 use rastty_core::target::{
-    ColorBuffer, DEPTH_LANES, DepthBuffer, NoDepth, Rgb565, Rgb888, Samples, Target, depth_to_u16,
+    ColorBuffer, ColorView, DEPTH_LANES, DepthBuffer, DepthView, NoDepth, Rgb565, Rgb888, Samples, Target, depth_to_u16,
 };
 
 /// Counts how many times each pixel is written.
@@ -375,10 +375,9 @@ pub fn assert_same_depths<T: DepthBits>(what: &str, actual: &[T], expected: &[T]
     }
 }
 
-/// The colour buffer of a frame or band: exact colours or one of the library's packed formats.
-///
-/// One type (with [`AnyDepth`]) so that `draw_mesh`, whose pixel loops are compiled for each pair of buffer types,
-/// is compiled once for this test binary: each further pair costs about a minute of its build.
+/// The colour buffer of a frame or band: exact colours or one of the library's packed formats, so that a test can
+/// run against any of them. Its view hands the library's formats to the pipeline as they are: draws into it take the
+/// paths draws into those formats take.
 pub enum AnyColor<'a> {
     Exact(ExactColor<'a>),
     Rgb888(Rgb888<'a>),
@@ -414,10 +413,17 @@ impl ColorBuffer for AnyColor<'_> {
             Self::Rgb565(c) => c.write_samples(first, mask, color),
         }
     }
+    fn view(&mut self) -> ColorView<'_> {
+        match self {
+            Self::Exact(c) => c.view(),
+            Self::Rgb888(c) => c.view(),
+            Self::Rgb565(c) => c.view(),
+        }
+    }
 }
 
 /// The depth buffer of a frame or band: the library's (lane-wise where it can be) or a caller's own (pixel by
-/// pixel). One type, like [`AnyColor`].
+/// pixel). One type, like [`AnyColor`], whose view hands the library's formats over as they are.
 pub enum AnyDepth<'a> {
     F32(&'a mut [f32]),
     U16(&'a mut [u16]),
@@ -456,6 +462,14 @@ impl DepthBuffer for AnyDepth<'_> {
             Self::U16(d) => d.clear(),
             Self::Plain(d) => d.clear(),
             Self::Plain16(d) => d.clear(),
+        }
+    }
+    fn view(&mut self) -> DepthView<'_> {
+        match self {
+            Self::F32(d) => d.view(),
+            Self::U16(d) => d.view(),
+            Self::Plain(d) => d.view(),
+            Self::Plain16(d) => d.view(),
         }
     }
 }
