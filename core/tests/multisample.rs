@@ -1,6 +1,6 @@
 //! Multisample anti-aliasing: coverage at four samples per pixel as exact and watertight as at pixel centres, one
 //! shading per pixel, the shading of a pixel inside one triangle the single-sample one, bands equal to the frame,
-//! lines on every sample, and the resolve.
+//! lines on every sample, the depth test at every sample, and the resolve.
 
 use crate::common;
 
@@ -340,4 +340,55 @@ fn an_edge_pixel_resolves_to_its_samples_mean_light() {
     // Samples 1 (+3/8) and 3 (+1/8) of pixel 10 are right of the edge, 0 (-1/8) and 2 (-3/8) left of it.
     assert_eq!(&color[(row + 10) * SAMPLES..(row + 11) * SAMPLES], &[0, 0xFFFFFF, 0, 0xFFFFFF]);
     assert_eq!(&pixels[row + 9..row + 12], &[0, 0xBCBCBC, 0xFFFFFF]);
+}
+
+/// The depth test holds at every sample: a square drawn first, nearer, keeps all of its samples against a larger
+/// one drawn behind it afterwards, with the depths the single-sample draw stores. The near square spans pixels 16
+/// to 47 both ways (its edges on pixel boundaries, every sample of those pixels inside), so exactly 32 x 32 x 4
+/// samples are its.
+#[test]
+fn a_nearer_triangle_keeps_its_samples_against_one_drawn_later() {
+    const NEAR: Vec3 = Vec3::new(1.0, 0.0, 0.0);
+    const FAR: Vec3 = Vec3::new(0.0, 0.0, 1.0);
+    let square = |half: f32, z: f32| {
+        [(-half, -half), (half, -half), (half, half), (-half, -half), (half, half), (-half, half)]
+            .map(|(x, y)| Vec3::new(x, y, z))
+    };
+    let (near, far) = (square(0.5, -1.5), square(1.0, -2.5));
+    let draw = |samples: Samples| {
+        let len = (SIZE * SIZE) as usize * samples.count();
+        let (mut color, mut depth) = (vec![[0u32; 3]; len], vec![0f32; len]);
+        let mut target = common::multisampled(ExactColor(&mut color), &mut depth[..], SIZE, SIZE, 0..SIZE, samples);
+        target.clear(Vec3::ZERO);
+        let projection = rastty_core::camera::orthographic(-1.0, 1.0, -1.0, 1.0, 1.0, 3.0).unwrap();
+        let transforms = Transforms::new(Mat4::IDENTITY, Mat4::IDENTITY, projection);
+        let lights = Lighting { ambient: Vec3::ONE, lights: &[], space: ShadingSpace::Linear };
+        for (positions, color) in [(&near, NEAR), (&far, FAR)] {
+            let mesh = Mesh::new(positions, Indices::Sequential).unwrap();
+            let object = Object {
+                mesh,
+                tangents: None,
+                transforms,
+                shading: ShadingModel::Unlit,
+                material: Material::plain(color),
+            };
+            draw_mesh(&mut target, &object, &lights, &DrawState::default()).unwrap();
+        }
+        (color, depth)
+    };
+    let (centres, centre_depths) = draw(Samples::One);
+    let (samples, sample_depths) = draw(Samples::Four);
+    let near_color = centres[(SIZE * SIZE / 2 + SIZE / 2) as usize];
+    let far_color = centres[0];
+    assert_ne!(near_color, far_color);
+    assert_eq!(samples.iter().filter(|&&c| c == near_color).count(), 32 * 32 * SAMPLES);
+    for p in 0..(SIZE * SIZE) as usize {
+        let (x, y) = (p as u32 % SIZE, p as u32 / SIZE);
+        let inside = (16..48).contains(&x) && (16..48).contains(&y);
+        for s in 0..SAMPLES {
+            let i = p * SAMPLES + s;
+            assert_eq!(samples[i], if inside { near_color } else { far_color }, "pixel ({x}, {y}) sample {s}");
+            assert_eq!(sample_depths[i].to_bits(), centre_depths[p].to_bits(), "pixel ({x}, {y}) sample {s}");
+        }
+    }
 }

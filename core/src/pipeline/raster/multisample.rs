@@ -98,11 +98,8 @@ pub(in crate::pipeline) fn fill_multisample<E: Edges, I: Interpolator, St: Fragm
             for s in (0..SAMPLE_COUNT).filter(|s| covered >> s & 1 == 1) {
                 let w = edges.sample_weights(&at[s]);
                 depths[s] = f.depth(w[1], w[2]);
-                let pass = if cutout {
-                    target.depth.nearer(first + s, depths[s])
-                } else {
-                    target.depth.test_and_set(first + s, depths[s])
-                };
+                let pass =
+                    if cutout { depth.nearer(first + s, depths[s]) } else { depth.test_and_set(first + s, depths[s]) };
                 passed |= u8::from(pass) << s;
             }
             if passed == 0 {
