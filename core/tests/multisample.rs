@@ -382,13 +382,13 @@ fn a_nearer_triangle_keeps_its_samples_against_one_drawn_later() {
     let far_color = centres[0];
     assert_ne!(near_color, far_color);
     assert_eq!(samples.iter().filter(|&&c| c == near_color).count(), 32 * 32 * SAMPLES);
-    for p in 0..(SIZE * SIZE) as usize {
+    for (p, centre_depth) in centre_depths.iter().enumerate() {
         let (x, y) = (p as u32 % SIZE, p as u32 / SIZE);
         let inside = (16..48).contains(&x) && (16..48).contains(&y);
         for s in 0..SAMPLES {
             let i = p * SAMPLES + s;
             assert_eq!(samples[i], if inside { near_color } else { far_color }, "pixel ({x}, {y}) sample {s}");
-            assert_eq!(sample_depths[i].to_bits(), centre_depths[p].to_bits(), "pixel ({x}, {y}) sample {s}");
+            assert_eq!(sample_depths[i].to_bits(), centre_depth.to_bits(), "pixel ({x}, {y}) sample {s}");
         }
     }
 }

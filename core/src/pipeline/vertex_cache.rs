@@ -103,20 +103,40 @@ impl<V: Varyings> VertexCache<V> {
         [self.varyings(shader, mesh, a), self.varyings(shader, mesh, b), self.varyings(shader, mesh, c)]
     }
 
-    /// The varyings of vertex `index`, from the cache or computed: kept if the vertex still has its slot, or, in a
-    /// cache for varyings only, in the slot it takes.
+    /// The varyings of vertex `index`, from the cache or computed ([`Self::varyings_miss`]).
     #[inline(always)]
     pub fn varyings<S: Shader<Varyings = V>>(&mut self, shader: &S, mesh: &Mesh<'_>, index: usize) -> V {
+        match &self.slots[slot(index)] {
+            Some(Entry { index: cached, varyings: Some(varyings), .. }) if *cached == index => *varyings,
+            _ => self.varyings_miss(shader, mesh, index),
+        }
+    }
+
+    /// [`Self::varyings`] when they are not cached: computes them ([`vertex_stage`]) and keeps them if the vertex
+    /// still has its slot, or, in a cache for varyings only, in the slot it takes.
+    #[inline(always)]
+    fn varyings_miss<S: Shader<Varyings = V>>(&mut self, shader: &S, mesh: &Mesh<'_>, index: usize) -> V {
+        let varyings = vertex_stage(shader, mesh, index);
         let varyings_only = self.varyings_only;
         let slot = &mut self.slots[slot(index)];
         match slot {
-            Some(entry) if entry.index == index => *entry.varyings.get_or_insert_with(|| shader.varyings(mesh, index)),
+            Some(entry) if entry.index == index => entry.varyings = Some(varyings),
             _ if varyings_only => {
-                let varyings = shader.varyings(mesh, index);
-                *slot = Some(Entry { index, position: ScreenVertex::UNSET, varyings: Some(varyings) });
-                varyings
+                *slot = Some(Entry { index, position: ScreenVertex::UNSET, varyings: Some(varyings) })
             }
-            _ => shader.varyings(mesh, index),
+            _ => {}
         }
+        varyings
     }
+}
+
+/// The shader's varyings for vertex `index`.
+///
+/// Out of line on a processor with SIMD registers: inlined, the vertex stage (for Gouraud shading, every light)
+/// was copied into each of the draw loop's six lookups, 50 to 75 KB of code a draw loop. Inlined elsewhere, where
+/// [`VertexCache::triangle_varyings`] is the one copy.
+#[cfg_attr(any(target_feature = "sse2", target_feature = "neon", target_feature = "simd128"), inline(never))]
+#[cfg_attr(not(any(target_feature = "sse2", target_feature = "neon", target_feature = "simd128")), inline(always))]
+fn vertex_stage<S: Shader>(shader: &S, mesh: &Mesh<'_>, index: usize) -> S::Varyings {
+    shader.varyings(mesh, index)
 }
