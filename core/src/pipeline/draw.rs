@@ -233,7 +233,6 @@ fn run<S: Shader, E: EdgeSetup>(
             Shading::CutOut => false,
         };
     let mut pass = Pass {
-        inline,
         fragments: S::FRAGMENT_STAGE.then(Fragments::new),
         interpolation: state.interpolation,
         cutout: shading == Shading::CutOut,
@@ -308,7 +307,6 @@ fn run<S: Shader, E: EdgeSetup>(
                     continue;
                 }
                 let face = shader.face(mesh, indices);
-                let inline = pass.inline;
                 stats.fragments += fill::<S, E>(&mut pass, &loops, coverage, vars.each_ref(), face, inline);
             }
         } else {
@@ -363,7 +361,7 @@ fn run<S: Shader, E: EdgeSetup>(
 /// Runs the draw's pixel loop over one triangle (or clipped piece) that reaches it, with its varyings given in input
 /// order and its face, first putting them into the batch's next slot: the fragments it counts.
 ///
-/// With `inline` ([`Pass::inline`]), the draw's usual pixel loop is compiled here, into the draw loop, with the
+/// With `inline`, the draw's usual pixel loop is compiled here, into the draw loop, with the
 /// shader's fragment stage called directly; otherwise one of the loops every shader shares ([`PixelLoops`]), which
 /// reads the coverage from memory: it is copied there for the triangles that reach it, so that the set-up of the
 /// many that do not keeps it in registers (callgrind, sphere1m: 12 instructions a triangle).

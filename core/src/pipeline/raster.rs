@@ -474,8 +474,6 @@ pub(crate) struct Covered<'c, E> {
 /// stage that shades it when full (no batch for a depth-only draw), and the draw's settings they read. `St` is
 /// the stage: the draw's own type, seen by the pixel loops as `dyn FragmentStage`.
 pub(crate) struct Pass<'t, St: ?Sized> {
-    /// The draw runs the pixel loop compiled into its draw loop ([`EdgeSetup::fill_inline`]), not a shared one.
-    pub inline: bool,
     /// The target, through its views.
     pub target: TargetView<'t>,
     /// The batch, or `None` for a depth-only draw ([`super::Shader::FRAGMENT_STAGE`]).
