@@ -10,7 +10,7 @@
 //! |---|---|---|
 //! | mesh | [`mesh`] | borrowed positions, normals, UVs, colours, `u16`/`u32` indices |
 //! | camera | [`camera`] | look-at, perspective or orthographic projection, viewport |
-//! | vertex stage | [`pipeline::Shader::position`] | object space to clip space and the screen (once per vertex into [`target::Target::with_vertex_memory`], else through a small cache) |
+//! | vertex stage | [`pipeline::Shader::position`] | object space to clip space and the screen (once per vertex into [`target::Target::with_vertex_memory`], once a frame for every band ([`target::FrameGeometry`]), else through a small cache) |
 //! | clip | [`pipeline`] (`clip.rs`) | near/far planes and a guard band, in homogeneous coordinates |
 //! | raster | [`pipeline`] (`raster.rs`) | fixed-point snapping, exact edge functions, top-left rule |
 //! | vertex stage | [`pipeline::Shader::varyings`] | per-vertex values, only for triangles that reach the pixel loop or need clipping |
@@ -20,8 +20,9 @@
 //! [`draw_mesh`] draws an [`Object`] under [`Lighting`]: it resolves the [`shading::Variant`] the object and the
 //! lights call for, once per draw, and runs the pipeline compiled for exactly that (see [`shading`]). Shadow maps
 //! ([`shadow`]) and ambient occlusion ([`occlusion`]) are passes of their own. [`pipeline::draw`] runs a
-//! [`pipeline::Shader`] of your own: the low-level way in. A frame drawn strip by strip through a small band
-//! bins its triangles once ([`pipeline::StripBins`]) and draws each strip from its bin ([`pipeline::draw_strip`]).
+//! [`pipeline::Shader`] of your own: the low-level way in. A frame drawn band by band (through one small buffer, or
+//! on threads) bins its triangles once ([`pipeline::BandBins`]) and lends the bins to each band's target
+//! ([`target::FrameGeometry`]).
 //!
 //! The crate root re-exports what a typical draw needs, so one `use` line does.
 //!

@@ -4,6 +4,8 @@
 //! file here is a module declared below). Run one subject with `cargo test -p rastty-core --test integration MODULE::`.
 
 mod ambient_occlusion;
+mod bands;
+mod bins;
 mod clipping;
 mod common;
 mod cutout;
@@ -18,8 +20,6 @@ mod robustness;
 mod shadows;
 mod specialisation;
 mod stability;
-mod strip_bins;
-mod strips;
 mod supersample;
 mod tangents;
 mod texture;

@@ -210,12 +210,13 @@ fn every_choice_of_a_variant_equals_the_general_path() {
         ShadingModel::Depth { near: 0.2, far: 0.9 },
         ShadingModel::Normals,
     ];
+    let meshes = [with_colors, without_colors, colors_without_uvs];
     let (mut draws, mut clipped, mut multisampled) = (0, 0, 0);
     let mut seen = Seen::default();
     for projection in projections {
         let transforms = Transforms::new(model, view, projection);
         for shading in shadings {
-            for mesh in [with_colors, without_colors, colors_without_uvs] {
+            for mesh in meshes {
                 for material in &materials {
                     for lights in &light_sets {
                         let (interpolation, depth_test, cull, edges) = STATES[draws % STATES.len()];
@@ -255,6 +256,34 @@ fn every_choice_of_a_variant_equals_the_general_path() {
     assert_eq!(multisampled, 765);
     assert!(clipped > 0);
     seen.assert_every_choice();
+    // docs/stability.md describes this matrix: its counts must be the ones run here.
+    let quoted = [
+        format!("{} shading models", shadings.len()),
+        format!("{} meshes", meshes.len()),
+        format!("{} materials", materials.len()),
+        format!("{} sets of lights", light_sets.len()),
+        format!("{} projections", projections.len()),
+        format!("{} fixed-function states", STATES.len()),
+        format!("{} draws", thousands(draws)),
+        format!("every fourth, {multisampled},"),
+    ];
+    let doc = include_str!("../../docs/stability.md");
+    for figure in quoted {
+        assert!(doc.contains(&figure), "docs/stability.md must say \"{figure}\" of the specialisation matrix");
+    }
+}
+
+/// `n` with a comma between each three digits, as the docs write numbers.
+fn thousands(n: usize) -> String {
+    let digits = n.to_string();
+    let mut out = String::new();
+    for (i, digit) in digits.chars().enumerate() {
+        if i > 0 && (digits.len() - i) % 3 == 0 {
+            out.push(',');
+        }
+        out.push(digit);
+    }
+    out
 }
 
 /// Which values of each of a variant's choices the matrix reached: a choice it never made proves nothing.

@@ -12,7 +12,7 @@ use rastty_core::math::{Mat4, Vec3};
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::{DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation, ScreenVertex, draw};
 use rastty_core::shading::{Light, Lighting, Material, Object, ShadingModel, draw_mesh};
-use rastty_core::target::{SharedScreenVertices, Target, VertexMemory};
+use rastty_core::target::{ColorBuffer, DepthBuffer, FrameGeometry, SharedScreenVertices, Target, VertexMemory};
 use rastty_core::texture::{FilterMode, Texture, WrapMode};
 
 const W: u32 = 41;
@@ -72,8 +72,8 @@ fn draw_scene<M: VertexMemory>(target: &mut Target<AnyColor<'_>, AnyDepth<'_>, M
 
 /// Draws `torus`, cut by the near plane and textured with a checker where the model reads texture coordinates,
 /// into `target` (not cleared); returns its counts.
-fn draw_torus<M: VertexMemory>(
-    target: &mut Target<AnyColor<'_>, AnyDepth<'_>, M>,
+fn draw_torus<C: ColorBuffer, D: DepthBuffer, M: VertexMemory>(
+    target: &mut Target<C, D, M>,
     torus: &Torus,
     shading: ShadingModel,
     state: &DrawState,
@@ -199,7 +199,8 @@ fn banded_with_shared(state: &DrawState, compute_matrix: &Mat4, key_matrix: &Mat
         let (c, c_rest) = std::mem::take(&mut color_rest).split_at_mut(len);
         let (d, d_rest) = std::mem::take(&mut depth_rest).split_at_mut(len);
         (color_rest, depth_rest) = (c_rest, d_rest);
-        let mut target = common::band(ExactColor(c), d, W, H, rows).with_shared_vertices(shared);
+        let mut band = common::band(ExactColor(c), d, W, H, rows);
+        let mut target = band.for_draw(FrameGeometry { vertices: Some(shared), bins: &[] });
         target.clear(BACKGROUND);
         stats += draw_torus(&mut target, &torus, ShadingModel::Phong, state);
     }

@@ -4,12 +4,12 @@ use embedded_graphics_core::pixelcolor::raw::RawU16;
 use embedded_graphics_core::pixelcolor::{PixelColor, Rgb565, Rgb888};
 use rastty_core::target::ColorBuffer;
 
-/// A display's colour type that the core renders to: what one pixel of a strip is stored as, the core's colour
+/// A display's colour type that the core renders to: what one pixel of a band is stored as, the core's colour
 /// buffer over such pixels, and the display's colour of a stored pixel.
 pub trait DisplayColor: PixelColor {
     /// One stored pixel.
     type Stored: Copy + Default;
-    /// The core's colour buffer over a strip of stored pixels.
+    /// The core's colour buffer over a band of stored pixels.
     type Buffer<'a>: ColorBuffer;
 
     /// The core's colour buffer over `pixels`.

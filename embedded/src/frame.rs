@@ -1,36 +1,36 @@
-//! A frame, strip by strip, from the caller's draw to the display.
+//! A frame, band by band, from the caller's draw to the display.
 
 use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::geometry::{Point, Size};
 use embedded_graphics_core::primitives::Rectangle;
-use rastty_core::pipeline::Strips;
+use rastty_core::pipeline::Bands;
 use rastty_core::target::{DepthBuffer, Samples, Target, TargetError};
 
 use crate::{DisplayColor, FrameError};
 
-/// One strip's memory, lent by the caller and reused for every strip: stored pixels and depths, at least as many
-/// of each as a strip has pixels.
+/// One band's memory, lent by the caller and reused for every band: stored pixels and depths, at least as many
+/// of each as a band has pixels.
 #[derive(Debug)]
-pub struct StripMemory<'m, C: DisplayColor, Z> {
-    /// The strip's pixels, in the display's colour type as the core stores it.
+pub struct BandMemory<'m, C: DisplayColor, Z> {
+    /// The band's pixels, in the display's colour type as the core stores it.
     pub color: &'m mut [C::Stored],
-    /// The strip's depths (`u16` or `f32`).
+    /// The band's depths (`u16` or `f32`).
     pub depth: &'m mut [Z],
 }
 
-/// Draws a frame cut as `strips` into `display`, strip by strip, top to bottom, through `memory`: `draw` draws into
-/// each strip's target (clearing it first, as it sees fit), then the strip goes to the display in one
+/// Draws a frame cut as `bands` into `display`, band by band, top to bottom, through `memory`: `draw` draws into
+/// each band's target (clearing it first, as it sees fit), then the band goes to the display in one
 /// `fill_contiguous` call over its rows of the frame, from column 0.
 ///
 /// # Errors
-/// [`FrameError::Samples`] when `strips` has more than one sample a pixel, [`FrameError::Target`] when `memory` is
-/// shorter than a strip; otherwise the first error of `draw` or of the display, after which nothing more is drawn.
+/// [`FrameError::Samples`] when `bands` has more than one sample a pixel, [`FrameError::Target`] when `memory` is
+/// shorter than a band; otherwise the first error of `draw` or of the display, after which nothing more is drawn.
 ///
 /// # Examples
 /// ```
 /// use embedded_graphics_core::{draw_target::DrawTarget, geometry::{OriginDimensions, Size}, pixelcolor::Rgb565};
-/// use rastty_core::{math::Vec3, pipeline::Strips, target::Samples};
-/// use rastty_embedded_graphics::{StripMemory, draw_frame};
+/// use rastty_core::{math::Vec3, pipeline::Bands, target::Samples};
+/// use rastty_embedded_graphics::{BandMemory, draw_frame};
 ///
 /// /// A display that counts the pixels it is sent.
 /// struct Counting(usize);
@@ -48,11 +48,11 @@ pub struct StripMemory<'m, C: DisplayColor, Z> {
 ///     }
 /// }
 ///
-/// let strips = Strips::new(32, 24, 8, Samples::One).unwrap();
+/// let bands = Bands::new(32, 24, 8, Samples::One).unwrap();
 /// let (mut color, mut depth) = ([0u16; 32 * 8], [0u16; 32 * 8]);
-/// let memory = StripMemory::<Rgb565, u16> { color: &mut color, depth: &mut depth };
+/// let memory = BandMemory::<Rgb565, u16> { color: &mut color, depth: &mut depth };
 /// let mut display = Counting(0);
-/// draw_frame(&mut display, strips, memory, |target| {
+/// draw_frame(&mut display, bands, memory, |target| {
 ///     target.clear(Vec3::new(0.1, 0.2, 0.3));
 ///     Ok::<(), core::convert::Infallible>(())
 /// })
@@ -61,8 +61,8 @@ pub struct StripMemory<'m, C: DisplayColor, Z> {
 /// ```
 pub fn draw_frame<D, C, Z, E>(
     display: &mut D,
-    strips: Strips,
-    memory: StripMemory<'_, C, Z>,
+    bands: Bands,
+    memory: BandMemory<'_, C, Z>,
     mut draw: impl FnMut(&mut Target<C::Buffer<'_>, &mut [Z]>) -> Result<(), E>,
 ) -> Result<(), FrameError<D::Error, E>>
 where
@@ -70,13 +70,13 @@ where
     C: DisplayColor,
     for<'a> &'a mut [Z]: DepthBuffer,
 {
-    if strips.samples() != Samples::One {
-        return Err(FrameError::Samples(strips.samples()));
+    if bands.samples() != Samples::One {
+        return Err(FrameError::Samples(bands.samples()));
     }
-    let (width, height) = strips.size();
-    let StripMemory { color, depth } = memory;
-    for strip in 0..strips.count() {
-        let rows = strips.rows(strip);
+    let (width, height) = bands.size();
+    let BandMemory { color, depth } = memory;
+    for band in 0..bands.count() {
+        let rows = bands.rows(band);
         let len = width as usize * rows.len();
         let (Some(color), Some(depth)) = (color.get_mut(..len), depth.get_mut(..len)) else {
             let short = if color.len() < len {

@@ -1,7 +1,7 @@
-//! `rastty-embedded-graphics`: a frame drawn strip by strip through `draw_frame` into an in-memory
+//! `rastty-embedded-graphics`: a frame drawn band by band through `draw_frame` into an in-memory
 //! `embedded-graphics` display holds exactly the pixels of the same frame drawn whole into the core's own targets,
-//! in RGB565 and in RGB888 (the firmware's scene: Spot, lit, from triangles binned once a frame); the strips reach
-//! the display in order through `fill_contiguous`; short memory, multisampled strips, a failing draw and a failing
+//! in RGB565 and in RGB888 (the firmware's scene: Spot, lit, from triangles binned once a frame); the bands reach
+//! the display in order through `fill_contiguous`; short memory, multisampled bands, a failing draw and a failing
 //! display are reported, and nothing is sent after them.
 
 use embedded_graphics_core::Pixel;
@@ -10,9 +10,9 @@ use embedded_graphics_core::geometry::{OriginDimensions, Point, Size};
 use embedded_graphics_core::pixelcolor::{Rgb565, Rgb888, RgbColor};
 use embedded_graphics_core::prelude::IntoStorage;
 use embedded_graphics_core::primitives::Rectangle;
-use rastty_core::pipeline::{BinnedTriangle, Strips};
+use rastty_core::pipeline::{Bands, BinnedTriangle};
 use rastty_core::target::{Samples, Target, TargetError};
-use rastty_embedded_graphics::{DisplayColor, FrameError, StripMemory, draw_frame};
+use rastty_embedded_graphics::{BandMemory, DisplayColor, FrameError, draw_frame};
 use rastty_firmware_scene::{HEIGHT, Scene, SceneError, WIDTH, spot};
 
 /// An in-memory display of any colour: a `Vec` of its pixels, written by `fill_contiguous` and `draw_iter`
@@ -67,18 +67,18 @@ impl<C: RgbColor> DrawTarget for Memory<C> {
     }
 }
 
-/// Frame `frame` drawn through `draw_frame` into a `Memory` display of colour `C`, in strips of `rows` rows.
+/// Frame `frame` drawn through `draw_frame` into a `Memory` display of colour `C`, in bands of `rows` rows.
 fn through_embedded_graphics<C: DisplayColor + RgbColor>(frame: usize, rows: u32) -> Memory<C> {
     let scene = Scene::new(frame).unwrap();
-    let strips = Strips::new(WIDTH, HEIGHT, rows, Samples::One).unwrap();
+    let bands = Bands::new(WIDTH, HEIGHT, rows, Samples::One).unwrap();
     let mut bins = vec![BinnedTriangle::UNSET; spot::TRIANGLE_COUNT];
-    let bins = scene.bin(&mut bins, strips).unwrap();
+    let bins = scene.bin(&mut bins, bands).unwrap();
     let n = (WIDTH * rows) as usize;
     let (mut color, mut depth) = (vec![C::Stored::default(); n], vec![0u16; n]);
     let mut display = Memory::new();
-    let memory = StripMemory::<C, u16> { color: &mut color, depth: &mut depth };
-    draw_frame(&mut display, strips, memory, |band| scene.draw_strip(band, &bins).map(drop)).unwrap();
-    assert_eq!(display.calls, strips.count() as usize, "one fill_contiguous a strip");
+    let memory = BandMemory::<C, u16> { color: &mut color, depth: &mut depth };
+    draw_frame(&mut display, bands, memory, |band| scene.draw_band(band, &bins).map(drop)).unwrap();
+    assert_eq!(display.calls, bands.count() as usize, "one fill_contiguous a band");
     display
 }
 
@@ -95,10 +95,10 @@ fn a_frame_through_embedded_graphics_is_the_cores_own_frame_in_rgb565_and_rgb888
         for rows in [1, 7, 24, HEIGHT] {
             let display = through_embedded_graphics::<Rgb565>(frame, rows);
             let sent: Vec<u16> = display.pixels.iter().map(|c| c.into_storage()).collect();
-            assert!(sent == rgb565, "frame {frame}, strips of {rows} rows: RGB565 pixels differ");
+            assert!(sent == rgb565, "frame {frame}, bands of {rows} rows: RGB565 pixels differ");
             let display = through_embedded_graphics::<Rgb888>(frame, rows);
             let sent: Vec<u32> = display.pixels.iter().map(|c| c.into_storage()).collect();
-            assert!(sent == rgb888, "frame {frame}, strips of {rows} rows: RGB888 pixels differ");
+            assert!(sent == rgb888, "frame {frame}, bands of {rows} rows: RGB888 pixels differ");
         }
         assert!(rgb565.iter().any(|&p| p != rgb565[0]), "frame {frame} is not blank");
     }
@@ -106,32 +106,32 @@ fn a_frame_through_embedded_graphics_is_the_cores_own_frame_in_rgb565_and_rgb888
 
 #[test]
 fn failures_are_reported_and_nothing_is_sent_after_them() {
-    let strips = Strips::new(WIDTH, HEIGHT, 10, Samples::One).unwrap();
+    let bands = Bands::new(WIDTH, HEIGHT, 10, Samples::One).unwrap();
     let (mut color, mut depth) = (vec![0u16; (WIDTH * 10) as usize], vec![0u16; (WIDTH * 10) as usize]);
     let clear = |band: &mut Target<rastty_core::Rgb565<'_>, &mut [u16]>| {
         band.clear(rastty_core::Vec3::ONE);
         Ok::<(), SceneError>(())
     };
 
-    // Memory one pixel short of a strip.
+    // Memory one pixel short of a band.
     let mut display = Memory::<Rgb565>::new();
-    let short = StripMemory::<Rgb565, u16> { color: &mut color[1..], depth: &mut depth };
-    let e = draw_frame(&mut display, strips, short, clear).unwrap_err();
+    let short = BandMemory::<Rgb565, u16> { color: &mut color[1..], depth: &mut depth };
+    let e = draw_frame(&mut display, bands, short, clear).unwrap_err();
     assert_eq!(e, FrameError::Target(TargetError::ColorLength { expected: 3200, actual: 3199 }));
-    let short = StripMemory::<Rgb565, u16> { color: &mut color, depth: &mut depth[1..] };
-    let e = draw_frame(&mut display, strips, short, clear).unwrap_err();
+    let short = BandMemory::<Rgb565, u16> { color: &mut color, depth: &mut depth[1..] };
+    let e = draw_frame(&mut display, bands, short, clear).unwrap_err();
     assert_eq!(e, FrameError::Target(TargetError::DepthLength { expected: 3200, actual: 3199 }));
     assert_eq!(display.calls, 0);
 
     // Four samples a pixel.
-    let msaa = Strips::new(WIDTH, HEIGHT, 10, Samples::Four).unwrap();
-    let memory = StripMemory::<Rgb565, u16> { color: &mut color, depth: &mut depth };
+    let msaa = Bands::new(WIDTH, HEIGHT, 10, Samples::Four).unwrap();
+    let memory = BandMemory::<Rgb565, u16> { color: &mut color, depth: &mut depth };
     assert_eq!(draw_frame(&mut display, msaa, memory, clear).unwrap_err(), FrameError::Samples(Samples::Four));
 
-    // The draw fails on the third strip: two strips were sent.
+    // The draw fails on the third band: two bands were sent.
     let mut draws = 0;
-    let memory = StripMemory::<Rgb565, u16> { color: &mut color, depth: &mut depth };
-    let e = draw_frame(&mut display, strips, memory, |band| {
+    let memory = BandMemory::<Rgb565, u16> { color: &mut color, depth: &mut depth };
+    let e = draw_frame(&mut display, bands, memory, |band| {
         draws += 1;
         if draws == 3 { Err(SceneError::Variant) } else { clear(band) }
     })
@@ -141,7 +141,7 @@ fn failures_are_reported_and_nothing_is_sent_after_them() {
 
     // The display fails on its fifth call: no sixth.
     let mut display = Memory::<Rgb565> { fail_at: Some(5), ..Memory::new() };
-    let memory = StripMemory::<Rgb565, u16> { color: &mut color, depth: &mut depth };
-    assert_eq!(draw_frame(&mut display, strips, memory, clear).unwrap_err(), FrameError::Display("the bus is down"));
+    let memory = BandMemory::<Rgb565, u16> { color: &mut color, depth: &mut depth };
+    assert_eq!(draw_frame(&mut display, bands, memory, clear).unwrap_err(), FrameError::Display("the bus is down"));
     assert_eq!(display.calls, 5);
 }

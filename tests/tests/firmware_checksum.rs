@@ -1,7 +1,7 @@
-//! The firmware's scene (`core/firmware/scene`) rendered on the host: the lines it prints are the ones the firmware
-//! must print under QEMU. `core/firmware/check.sh` runs both and compares the `frame N: checksum ...` lines; this
+//! The firmware's scene (`firmware/scene`) rendered on the host: the lines it prints are the ones the firmware
+//! must print under QEMU. `firmware/check.sh` runs both and compares the `frame N: checksum ...` lines; this
 //! test checks what the host alone can: the two frames differ from each other and from a blank frame, every memory
-//! layout gives the same frames within its budget, the strips cover the frame top to bottom, and the strips add up
+//! layout gives the same frames within its budget, the bands cover the frame top to bottom, and the bands add up
 //! to the frame rendered whole, both by the scene's specialised draw and by `draw_mesh`.
 //!
 //! Run `cargo test -p rastty-tests --test integration firmware_checksum:: -- --nocapture` to see the lines.
@@ -18,7 +18,7 @@ use rastty_firmware_scene::{
     WIDTH, checksum_frame, render_frame, spot,
 };
 
-/// Every frame's report in every layout, rendered in strips as the firmware renders them, in its order.
+/// Every frame's report in every layout, rendered in bands as the firmware renders them, in its order.
 fn reports() -> Vec<FrameReport> {
     let mut memory = Box::new(FrameMemory::new());
     LAYOUTS
@@ -57,7 +57,7 @@ fn the_firmware_scene_gives_two_distinct_checksums() {
         let first = &reports[report.frame];
         assert_eq!((report.checksum, report.stats), (first.checksum, first.stats), "every layout, the same frame");
         assert_ne!(report.checksum, blank, "frame {} is not blank", report.frame);
-        assert_eq!(report.strips, HEIGHT.div_ceil(report.layout.band_rows));
+        assert_eq!(report.bands, HEIGHT.div_ceil(report.layout.band_rows));
         // Binning saw every triangle once; about half face away.
         assert_eq!(report.stats.triangles_in, spot::TRIANGLE_COUNT as u64);
         assert!(report.stats.culled > 2_000, "frame {}: {:?}", report.frame, report.stats);
@@ -76,8 +76,8 @@ fn every_layout_fits_its_budget_and_the_bins_hold_every_kept_triangle() {
     for frame in 0..FRAMES {
         let scene = Scene::new(frame).unwrap();
         let mut bins = vec![rastty_core::pipeline::BinnedTriangle::UNSET; BIN_ENTRIES];
-        let strips = rastty_core::pipeline::Strips::new(WIDTH, HEIGHT, 4, rastty_core::target::Samples::One).unwrap();
-        let bins = scene.bin(&mut bins, strips).unwrap();
+        let bands = rastty_core::pipeline::Bands::new(WIDTH, HEIGHT, 4, rastty_core::target::Samples::One).unwrap();
+        let bins = scene.bin(&mut bins, bands).unwrap();
         println!("frame {frame}: {} triangles kept", bins.kept());
         // Every kept triangle and its block's summary fit.
         assert_eq!(bins.rest(), spot::TRIANGLE_COUNT, "frame {frame}: {} kept", bins.kept());
@@ -102,7 +102,7 @@ impl DrawTarget for Recording {
         &mut self,
         _: I,
     ) -> Result<(), Self::Error> {
-        panic!("strips go through fill_contiguous");
+        panic!("bands go through fill_contiguous");
     }
     fn fill_contiguous<I: IntoIterator<Item = Self::Color>>(
         &mut self,
@@ -115,16 +115,16 @@ impl DrawTarget for Recording {
 }
 
 #[test]
-fn the_strips_cover_the_frame_top_to_bottom() {
+fn the_bands_cover_the_frame_top_to_bottom() {
     let mut memory = Box::new(FrameMemory::new());
     for layout in LAYOUTS {
         let mut display = Recording::default();
-        let (strips, _) = render_frame(0, layout, &mut memory, &mut display).unwrap();
-        assert_eq!(strips, HEIGHT.div_ceil(layout.band_rows));
-        assert_eq!(display.0.len(), strips as usize);
+        let (bands, _) = render_frame(0, layout, &mut memory, &mut display).unwrap();
+        assert_eq!(bands, HEIGHT.div_ceil(layout.band_rows));
+        assert_eq!(display.0.len(), bands as usize);
         let mut next_row = 0;
         for (area, colors) in display.0 {
-            assert_eq!(area.top_left, Point::new(0, next_row as i32), "strips arrive top to bottom, none missing");
+            assert_eq!(area.top_left, Point::new(0, next_row as i32), "bands arrive top to bottom, none missing");
             assert_eq!(area.size.width, WIDTH);
             assert!(area.size.height <= layout.band_rows);
             assert_eq!(colors, (WIDTH * area.size.height) as usize, "one colour a pixel of the area");
@@ -135,13 +135,13 @@ fn the_strips_cover_the_frame_top_to_bottom() {
 }
 
 #[test]
-fn the_strips_add_up_to_the_whole_frame_and_draw_mesh_agrees() {
+fn the_bands_add_up_to_the_whole_frame_and_draw_mesh_agrees() {
     for report in reports() {
         let scene = Scene::new(report.frame).unwrap();
         let direct = whole_frame(|target| scene.draw(target).unwrap());
         let through_draw_mesh = whole_frame(|target| scene.draw_through_draw_mesh(target).unwrap());
         for (checksum, stats) in [direct, through_draw_mesh] {
-            assert_eq!(checksum, report.checksum, "frame {}: strips and whole frame agree", report.frame);
+            assert_eq!(checksum, report.checksum, "frame {}: bands and whole frame agree", report.frame);
             assert_eq!(stats.fragments, report.stats.fragments, "frame {}: the same fragments", report.frame);
         }
     }
@@ -196,7 +196,7 @@ impl Shader for CountingPositions {
     }
 }
 
-/// The build script's triangle order (`core/firmware/scene/build/vertex_order.rs`) is what makes the core's vertex
+/// The build script's triangle order (`firmware/scene/build/vertex_order.rs`) is what makes the core's vertex
 /// cache pay: in the file's order Spot's triangles ran the position stage 1.31 times each.
 #[test]
 fn spot_runs_the_position_stage_less_than_once_a_triangle() {

@@ -10,7 +10,7 @@
 //! On a target without SIMD registers (a microcontroller), where each `f64` operation is a call into software
 //! arithmetic, the operations are kept out of line: clipping is rare, and inlined they made this file the core's
 //! largest code on the firmware (8.2 KB of 33.2). Out of line, with the clipper's distances and meeting points,
-//! the core's code there is 5.9 KB smaller (27.3 KB, `core/firmware/measure.sh`).
+//! the core's code there is 5.9 KB smaller (27.3 KB, `firmware/measure.sh`).
 
 /// Components an expansion can hold: enough for `a * b - c * d` with `a`, `c` sums of four exact products.
 const CAPACITY: usize = 32;

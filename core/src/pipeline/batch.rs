@@ -31,7 +31,7 @@ const SIMD: bool = cfg!(any(target_feature = "sse2", target_feature = "neon", ta
 /// The most fragments a [`FragmentBatch`] holds: 32 where the target has SIMD registers, 1 elsewhere.
 ///
 /// A target without SIMD (a Cortex-M4) computes one lane at a time, so a larger batch saves no instruction per
-/// fragment and costs stack and code: on the firmware's frame (`core/firmware/measure.sh`, 2026-11-26), batches of
+/// fragment and costs stack and code: on the firmware's frame (`firmware/measure.sh`, 2026-11-26), batches of
 /// 8 took 40,652 bytes of the core's code and 91.7 million instructions, batches of 1 25,084 bytes and 88.6
 /// million: the lane loops compile to the code of one fragment.
 pub const BATCH_SIZE: usize = if SIMD { 32 } else { 1 };

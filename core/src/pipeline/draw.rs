@@ -1,11 +1,11 @@
 //! A draw call: mesh → vertex stage → clip → raster → fragment → target.
 
+use super::bins::Walk;
 use super::clip::{CLIP_MASK, ClipVertex, ClipVolume, MAX_CLIPPED};
 use super::fragment_stage::{FragmentStage, ShaderStage, Writes};
 use super::fragments::Fragments;
 use super::raster::{Coverage, EdgeSetup, FixedPoint, FloatingPoint, Pass, PixelLoops, Rasterizer, Setup, Shading};
 use super::screen_vertex::{NO_SCREEN, NOT_FINITE, ScreenVertex, screen_vertices};
-use super::strip_bins::Walk;
 use super::vertex_cache::VertexCache;
 use super::{DrawState, DrawStats, EdgeArithmetic, Interpolation, MAX_SUBPIXEL_BITS, Shader, Varyings};
 use crate::mesh::{Attributes, Mesh};
@@ -91,8 +91,8 @@ where
     D: DepthBuffer,
     M: VertexMemory,
 {
-    check(mesh, S::ATTRIBUTES, state)?;
-    Ok(draw_walk(target, mesh, shader, state, Walk::All(0..mesh.triangle_count()), Path::Specialised))
+    state.check(mesh, S::ATTRIBUTES)?;
+    Ok(draw_walk(target, mesh, shader, state, Path::Specialised))
 }
 
 /// Like [`draw`], but through the general pixel loops, which decide the edge arithmetic and the interpolation
@@ -115,28 +115,28 @@ where
     D: DepthBuffer,
     M: VertexMemory,
 {
-    check(mesh, S::ATTRIBUTES, state)?;
-    Ok(draw_walk(target, mesh, shader, state, Walk::All(0..mesh.triangle_count()), Path::General))
+    state.check(mesh, S::ATTRIBUTES)?;
+    Ok(draw_walk(target, mesh, shader, state, Path::General))
 }
 
 /// Which pixel loops a draw runs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum Path {
+enum Path {
     /// Those specialised for the draw ([`PixelLoops::specialised`]).
     Specialised,
     /// The general ones ([`PixelLoops::general`]).
     General,
 }
 
-/// [`draw`] of the triangles `walk` takes, once checked: the target as one type whatever its buffers
-/// ([`Target::views`]), so that what follows is compiled once per shader.
+/// [`draw`], once checked: the target as one type whatever its buffers ([`Target::views`]), so that what follows is
+/// compiled once per shader, and the triangles it takes: those of the target's bins for its band when they were made
+/// for this draw ([`Walk`]), otherwise all of them.
 #[inline(always)]
-pub(super) fn draw_walk<S, C, D, M>(
+fn draw_walk<S, C, D, M>(
     target: &mut Target<C, D, M>,
     mesh: &Mesh<'_>,
     shader: &S,
     state: &DrawState,
-    walk: Walk<'_>,
     path: Path,
 ) -> DrawStats
 where
@@ -145,22 +145,12 @@ where
     D: DepthBuffer,
     M: VertexMemory,
 {
-    let (view, vertices) = target.views(state.depth_test);
+    let (view, vertices, bins) = target.views(state.depth_test);
+    let walk = Walk::new(bins, mesh, shader, state, &view);
     match state.edges {
         EdgeArithmetic::FixedPoint => run::<S, FixedPoint>(view, vertices, mesh, shader, state, walk, path),
         EdgeArithmetic::Float => run::<S, FloatingPoint>(view, vertices, mesh, shader, state, walk, path),
     }
-}
-
-pub(super) fn check(mesh: &Mesh<'_>, needed: Attributes, state: &DrawState) -> Result<(), DrawError> {
-    let present = mesh.attributes();
-    if !present.contains(needed) {
-        return Err(DrawError::MissingAttributes { needed, present });
-    }
-    if state.subpixel_bits > MAX_SUBPIXEL_BITS {
-        return Err(DrawError::SubpixelBits(state.subpixel_bits));
-    }
-    Ok(())
 }
 
 /// What happened to the pieces of one input triangle, to count it once in [`DrawStats`].

@@ -43,7 +43,7 @@ pub fn draw_wireframe<C: ColorBuffer, D: DepthBuffer, M: VertexMemory>(
     style: &LineStyle,
     state: &DrawState,
 ) -> DrawStats {
-    let (mut view, _) = target.views(state.depth_test);
+    let (mut view, _, _) = target.views(state.depth_test);
     draw_lines(&mut view, mesh, clip_from_object, style, state)
 }
 

@@ -5,7 +5,9 @@
 //! 1. **Vertex stage, positions** ([`Shader::position`]): each triangle's three vertices to clip space and, when
 //!    they need no clipping, snapped to the screen ([`ScreenVertex`]): once per vertex into memory the target
 //!    lends ([`crate::target::Target::with_vertex_memory`]), or about once per vertex shared by neighbouring
-//!    triangles through a small cache. Triangles with an index out of range or a non-finite position are skipped.
+//!    triangles through a small cache, or read from the frame's screen vertices computed beforehand
+//!    ([`crate::target::FrameGeometry`]), whose bins also limit the triangles a band's draw takes ([`BandBins`]).
+//!    Triangles with an index out of range or a non-finite position are skipped.
 //! 2. **Clip** ([`clip`](self#clipping)): rejected when all vertices are outside one plane of the view volume or
 //!    the target's rows; cut when crossing the near or far plane or the guard band.
 //! 3. **Raster** ([`raster`](self#rasterization)): divide by `w`, snap to fixed point, cull by winding, walk the
@@ -38,6 +40,7 @@
 //! under the same rule, and each pixel is shaded once.
 
 mod batch;
+mod bins;
 mod clip;
 pub(crate) mod draw;
 mod edges;
@@ -51,20 +54,20 @@ mod shader;
 mod slopes;
 mod state;
 mod stats;
-mod strip_bins;
 mod varyings;
 mod vertex_cache;
 
 pub use batch::{BATCH_SIZE, FragmentBatch, Lanes, OneFragment, lanes};
+pub use bins::{BIN_BLOCK, BandBins, Bands, BinnedTriangle, MAX_BINNED_BANDS, MAX_PART_TRIANGLES};
 pub(crate) use clip::ClipVolume;
 pub use clip::GUARD_BAND;
 pub use draw::{DrawError, draw};
 pub use line::{LineStyle, draw_wireframe};
 pub use screen_vertex::ScreenVertex;
 pub(crate) use screen_vertex::frame_screen_vertices;
+pub(crate) use shader::PositionShader;
 pub use shader::{Fragment, Shader};
 pub use slopes::Slopes;
 pub use state::{Cull, DepthTest, DrawState, EdgeArithmetic, FixedFunction, Interpolation, MAX_SUBPIXEL_BITS, Winding};
 pub use stats::DrawStats;
-pub use strip_bins::{BIN_BLOCK, BinnedTriangle, StripBins, Strips, draw_strip};
 pub use varyings::Varyings;

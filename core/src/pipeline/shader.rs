@@ -126,3 +126,33 @@ pub trait Shader {
         }
     }
 }
+
+/// A depth-only shader whose position stage is a matrix, and nothing else: the shadow pass's (into the light's clip
+/// space), and the one binning places vertices with.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct PositionShader {
+    pub(crate) clip_from_object: Mat4,
+}
+
+impl Shader for PositionShader {
+    type Varyings = ();
+    type Face = ();
+    const ATTRIBUTES: Attributes = Attributes::NONE;
+    const FRAGMENT_STAGE: bool = false;
+
+    #[inline(always)]
+    fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
+        self.clip_from_object.project_point(mesh.position(i))
+    }
+    fn clip_from_object(&self) -> Option<&Mat4> {
+        Some(&self.clip_from_object)
+    }
+    #[inline(always)]
+    fn varyings(&self, _: &Mesh<'_>, _: usize) {}
+    #[inline(always)]
+    fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
+    #[inline(always)]
+    fn fragment(&self, _: &Fragment, _: &(), _: &(), _: &Slopes<Self::Varyings>) -> Vec3 {
+        Vec3::ZERO
+    }
+}

@@ -1,5 +1,8 @@
 //! Fixed-function settings of a draw.
 
+use super::DrawError;
+use crate::mesh::{Attributes, Mesh};
+
 /// Which winding counts as front-facing, judged in NDC (`+y` up) as seen by the camera.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Winding {
@@ -128,6 +131,18 @@ impl DrawState {
         subpixel_bits: MAX_SUBPIXEL_BITS,
         edges: EdgeArithmetic::FixedPoint,
     };
+
+    /// Whether a draw of `mesh` with this state by a shader that reads `needed` may run.
+    pub(crate) fn check(&self, mesh: &Mesh<'_>, needed: Attributes) -> Result<(), DrawError> {
+        let present = mesh.attributes();
+        if !present.contains(needed) {
+            return Err(DrawError::MissingAttributes { needed, present });
+        }
+        if self.subpixel_bits > MAX_SUBPIXEL_BITS {
+            return Err(DrawError::SubpixelBits(self.subpixel_bits));
+        }
+        Ok(())
+    }
 }
 
 impl Default for DrawState {

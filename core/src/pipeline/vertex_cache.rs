@@ -74,7 +74,7 @@ impl<V: Varyings> VertexCache<V> {
     /// peers comparison's sphere1m through `draw_mesh`, 3 rounds taking turns: medians 46.9, 46.6, 63.8 ms against
     /// 51.5, 54.5, 51.7; two rounds agree, the third was disturbed),
     /// one shared copy elsewhere: on the firmware 1.5 KB less code for 2.5 % more instructions
-    /// (`core/firmware/measure.sh`, 2026-11-26).
+    /// (`firmware/measure.sh`, 2026-11-26).
     #[cfg_attr(any(target_feature = "sse2", target_feature = "neon", target_feature = "simd128"), inline(always))]
     #[cfg_attr(not(any(target_feature = "sse2", target_feature = "neon", target_feature = "simd128")), inline(never))]
     fn miss<S: Shader<Varyings = V>>(

@@ -14,9 +14,9 @@
 use core::ops::Range;
 
 use crate::camera::{CameraError, look_at, orthographic, perspective};
-use crate::math::{Mat4, Vec3, Vec4, float};
-use crate::mesh::{Attributes, Mesh};
-use crate::pipeline::{BATCH_SIZE, ClipVolume, Cull, DrawState, DrawStats, Fragment, Shader, Slopes, draw, lanes};
+use crate::math::{Mat4, Vec3, float};
+use crate::mesh::Mesh;
+use crate::pipeline::{BATCH_SIZE, ClipVolume, Cull, DrawState, DrawStats, PositionShader, draw, lanes};
 use crate::shading::LightKind;
 use crate::shading::columns::{self, Column, Column3};
 use crate::target::{MAX_DIMENSION, NoColor, Target};
@@ -254,32 +254,6 @@ impl ShadowView {
     }
 }
 
-/// The depth-only shader of the shadow pass: positions into the light's clip space, nothing else.
-#[derive(Clone, Copy, Debug)]
-struct CasterShader {
-    clip_from_object: Mat4,
-}
-
-impl Shader for CasterShader {
-    type Varyings = ();
-    type Face = ();
-    const ATTRIBUTES: Attributes = Attributes::NONE;
-    const FRAGMENT_STAGE: bool = false;
-
-    #[inline(always)]
-    fn position(&self, mesh: &Mesh<'_>, i: usize) -> Vec4 {
-        self.clip_from_object.project_point(mesh.position(i))
-    }
-    #[inline(always)]
-    fn varyings(&self, _: &Mesh<'_>, _: usize) {}
-    #[inline(always)]
-    fn face(&self, _: &Mesh<'_>, _: [usize; 3]) {}
-    #[inline(always)]
-    fn fragment(&self, _: &Fragment, _: &(), _: &(), _: &Slopes<Self::Varyings>) -> Vec3 {
-        Vec3::ZERO
-    }
-}
-
 /// The depth pass of a shadow map: draws `mesh` (placed by `model`) into `depth`, the map's `size * rows`
 /// buffer ([`ShadowView::rows`]), as the light sees it, into every face. Both sides of a triangle cast shadows.
 /// Clear the buffer to 1.0 first ([`clear_shadow_depth`]).
@@ -353,7 +327,7 @@ pub fn draw_shadow_caster_band(
             return Err(ShadowError::Buffer { expected: length, actual: length });
         };
         // The caster reads positions only and the state is valid, so the pipeline has nothing to refuse.
-        stats += draw(&mut target, mesh, &CasterShader { clip_from_object }, &state).unwrap_or_default();
+        stats += draw(&mut target, mesh, &PositionShader { clip_from_object }, &state).unwrap_or_default();
     }
     Ok(stats)
 }

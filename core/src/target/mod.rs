@@ -33,7 +33,7 @@ pub use depth_buffer::{DEPTH_LANES, DepthBuffer, DepthView, NoDepth, clamp_depth
 pub(crate) use samples::{SAMPLE_COUNT, SAMPLE_REACH};
 pub use samples::{SAMPLE_POSITIONS, Samples};
 pub use supersample::{downsample_rgb888, resolve_rgb888};
-pub use vertex_memory::{NoVertexMemory, SharedScreenVertices, VertexMemory, VertexSource};
+pub use vertex_memory::{FrameGeometry, NoVertexMemory, SharedScreenVertices, VertexMemory, VertexSource};
 
 use crate::math::Vec3;
 use crate::pipeline::DepthTest;
@@ -192,17 +192,6 @@ impl<C: ColorBuffer, D: DepthBuffer> Target<C, D> {
         let Self { color, depth, vertices: NoVertexMemory, width, height, rows, samples } = self;
         Target { color, depth, vertices: memory, width, height, rows, samples }
     }
-
-    /// The same target with the frame's screen vertices computed beforehand ([`SharedScreenVertices`]): a draw of
-    /// the mesh, matrix, frame size and sub-pixel bits they were computed for reads its vertices from them (the
-    /// same pixels, no position stage); any other draw uses the vertex cache.
-    pub fn with_shared_vertices<'v>(
-        self,
-        shared: SharedScreenVertices<'v>,
-    ) -> Target<C, D, Option<SharedScreenVertices<'v>>> {
-        let Self { color, depth, vertices: NoVertexMemory, width, height, rows, samples } = self;
-        Target { color, depth, vertices: Some(shared), width, height, rows, samples }
-    }
 }
 
 impl<C: ColorBuffer, D: DepthBuffer, V: VertexMemory> Target<C, D, V> {
@@ -210,6 +199,26 @@ impl<C: ColorBuffer, D: DepthBuffer, V: VertexMemory> Target<C, D, V> {
     pub fn clear(&mut self, color: Vec3) {
         self.color.fill(color);
         self.depth.clear();
+    }
+
+    /// This target's buffers lent to one draw with its geometry computed beforehand for the frame
+    /// ([`FrameGeometry`]): the draw it was made for reads its vertices from its [`SharedScreenVertices`] (no
+    /// position stage) and takes only the triangles its [`crate::pipeline::BandBins`] hold for the target's band; any
+    /// other draw uses the vertex cache and takes every triangle. The same pixels either way.
+    pub fn for_draw<'g>(
+        &mut self,
+        geometry: FrameGeometry<'g>,
+    ) -> Target<ColorView<'_>, DepthView<'_>, FrameGeometry<'g>> {
+        let Self { color, depth, width, height, rows, samples, .. } = self;
+        Target {
+            color: color.view(),
+            depth: depth.view(),
+            vertices: geometry,
+            width: *width,
+            height: *height,
+            rows: rows.clone(),
+            samples: *samples,
+        }
     }
 
     /// Width of the frame (and of the band) in pixels.
@@ -258,8 +267,12 @@ impl<C: ColorBuffer, D: DepthBuffer, V: VertexMemory> Target<C, D, V> {
     }
 
     /// The target as a draw with `depth_test` draws into it, one type whatever its buffers ([`ColorBuffer::view`],
-    /// [`DepthBuffer::view`]; [`DepthView::Off`] without the test), and what its draws find of screen vertices.
-    pub(crate) fn views(&mut self, depth_test: DepthTest) -> (TargetView<'_>, VertexSource<'_>) {
+    /// [`DepthBuffer::view`]; [`DepthView::Off`] without the test), and what its draws find of screen vertices and
+    /// bins.
+    pub(crate) fn views(
+        &mut self,
+        depth_test: DepthTest,
+    ) -> (TargetView<'_>, VertexSource<'_>, &[crate::pipeline::BandBins<'_>]) {
         let Self { color, depth, vertices, width, height, rows, samples } = self;
         let depth = match depth_test {
             DepthTest::Less => depth.view(),
@@ -274,7 +287,8 @@ impl<C: ColorBuffer, D: DepthBuffer, V: VertexMemory> Target<C, D, V> {
             rows: rows.clone(),
             samples: *samples,
         };
-        (view, vertices.source())
+        let (source, bins) = vertices.source();
+        (view, source, bins)
     }
 }
 

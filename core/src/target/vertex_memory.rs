@@ -1,4 +1,5 @@
-//! Memory a caller may lend a target for the screen positions of a draw's vertices.
+//! Memory a caller may lend a target for the geometry of a draw: the screen positions of its vertices, and, for a
+//! frame drawn in bands, the draw's triangles binned by band.
 //!
 //! Without it, a draw finds a triangle's vertices through a small cache on the stack
 //! ([`crate::pipeline`]'s vertex cache): each vertex's position is computed about once per triangle that
@@ -8,18 +9,20 @@
 //! culled or cover no pixel, and their cost is then little more than those reads. The pixels are the same either
 //! way (`core/tests/vertex_memory.rs`).
 //!
-//! A frame drawn in bands (on several threads) would run that pass over the whole mesh in every band. Instead its
-//! screen vertices can be computed once for the frame, in parts on any threads ([`SharedScreenVertices::compute`]),
-//! and lent read-only to every band's target ([`SharedScreenVertices`]).
+//! A frame drawn in bands (one after another, or on several threads) would run that pass over the whole mesh in
+//! every band, and take every triangle through set-up in every band. Instead, once for the frame, its screen vertices
+//! can be computed, in parts on any threads ([`SharedScreenVertices::compute`]), and its triangles binned by band
+//! ([`BandBins`], also in parts); both are lent read-only to every band's target as its [`FrameGeometry`].
 
 use crate::math::{Mat4, Vec3};
-use crate::pipeline::{DrawError, MAX_SUBPIXEL_BITS, ScreenVertex};
+use crate::pipeline::{BandBins, DrawError, MAX_SUBPIXEL_BITS, ScreenVertex};
 
-/// Where a target keeps vertex positions for its draws, if anywhere: [`NoVertexMemory`] (the default), a caller's
-/// `&mut [ScreenVertex]`, or the frame's [`SharedScreenVertices`].
+/// What a target lends its draws for their geometry: [`NoVertexMemory`] (the default), a caller's
+/// `&mut [ScreenVertex]`, or the frame's [`FrameGeometry`].
 pub trait VertexMemory: Default {
-    /// What a draw finds: memory to compute its screen vertices into, the frame's computed beforehand, or neither.
-    fn source(&mut self) -> VertexSource<'_>;
+    /// What a draw finds: memory to compute its screen vertices into, the frame's computed beforehand, or neither;
+    /// and the frame's bins of the draw's triangles, if any.
+    fn source(&mut self) -> (VertexSource<'_>, &[BandBins<'_>]);
 }
 
 /// What a draw finds of its screen vertices in its target ([`VertexMemory::source`]): one type whatever the
@@ -43,8 +46,8 @@ pub struct NoVertexMemory;
 
 impl VertexMemory for NoVertexMemory {
     #[inline(always)]
-    fn source(&mut self) -> VertexSource<'_> {
-        VertexSource::Cache
+    fn source(&mut self) -> (VertexSource<'_>, &[BandBins<'_>]) {
+        (VertexSource::Cache, &[])
     }
 }
 
@@ -52,13 +55,13 @@ impl VertexMemory for NoVertexMemory {
 /// mesh uses the vertex cache). Its contents between draws mean nothing.
 impl VertexMemory for &mut [ScreenVertex] {
     #[inline(always)]
-    fn source(&mut self) -> VertexSource<'_> {
-        VertexSource::Memory(self)
+    fn source(&mut self) -> (VertexSource<'_>, &[BandBins<'_>]) {
+        (VertexSource::Memory(self), &[])
     }
 }
 
 /// Screen vertices of one mesh under one matrix for one frame, computed beforehand and lent read-only to the targets
-/// of the frame's bands (`Target::with_shared_vertices`), on any threads: each band's draw reads its triangles'
+/// of the frame's bands (in a [`FrameGeometry`]), on any threads: each band's draw reads its triangles'
 /// vertices from them instead of running the position stage itself.
 ///
 /// They record what they were computed for: the mesh's positions (the slice itself, not a copy), the matrix, the
@@ -148,10 +151,21 @@ impl<'a> SharedScreenVertices<'a> {
     }
 }
 
-/// Shared screen vertices, lent by `Target::with_shared_vertices`.
-impl VertexMemory for Option<SharedScreenVertices<'_>> {
+/// One draw's geometry computed once for a frame drawn in bands, lent read-only to each band's target
+/// (`Target::for_draw`), on any threads: its screen vertices, its triangles binned by band, or both. A draw
+/// uses each only when it was made for that draw (see [`SharedScreenVertices`] and [`BandBins`]); otherwise it
+/// computes its own vertices, or takes every triangle: the same pixels.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct FrameGeometry<'a> {
+    /// The screen vertices of the draw's mesh.
+    pub vertices: Option<SharedScreenVertices<'a>>,
+    /// The draw's triangles binned by band, in parts that cover the mesh in order (empty: none).
+    pub bins: &'a [BandBins<'a>],
+}
+
+impl VertexMemory for FrameGeometry<'_> {
     #[inline(always)]
-    fn source(&mut self) -> VertexSource<'_> {
-        self.map_or(VertexSource::Cache, VertexSource::Shared)
+    fn source(&mut self) -> (VertexSource<'_>, &[BandBins<'_>]) {
+        (self.vertices.map_or(VertexSource::Cache, VertexSource::Shared), self.bins)
     }
 }

@@ -3,7 +3,7 @@
 //! One module per family; `docs/stability.md` lists every case with its construction, the expected result and the
 //! test's name. Related families live in their own test files: `clipping.rs` (vertices behind the camera, w = 0,
 //! near and far planes), `robustness.rs` (NaN and infinite input, bad indices), `depth.rs` (z-fighting), `math.rs`
-//! (look-at, normal matrix, rotation drift), `texture.rs` (wrap cases), `strips.rs` (bands), `fill_rule.rs`
+//! (look-at, normal matrix, rotation drift), `texture.rs` (wrap cases), `bands.rs` (bands), `fill_rule.rs`
 //! (degenerate triangles, the fill rule itself).
 
 use crate::common;

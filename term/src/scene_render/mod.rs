@@ -70,12 +70,12 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-mod bins;
 mod bounds;
 mod camera;
 mod camera_options;
 mod error;
 mod explain;
+mod frame_geometry;
 mod image;
 mod interleaved;
 mod lights;

@@ -7,8 +7,8 @@ use std::thread;
 use std::time::{Duration, Instant};
 
 use rastty_core::math::Vec3;
-use rastty_core::mesh::{Indices, Mesh};
-use rastty_core::pipeline::{DrawStats, LineStyle, draw_wireframe};
+use rastty_core::mesh::Mesh;
+use rastty_core::pipeline::{Bands, DrawStats, LineStyle, MAX_BINNED_BANDS, draw_wireframe};
 use rastty_core::shading::{Light, Lighting, Object, ShadingError, Variant, draw_mesh};
 use rastty_core::shadow::{
     ShadowBias, ShadowError, ShadowMap, ShadowView, WindowRanges, clear_shadow_depth, draw_shadow_caster_band,
@@ -16,7 +16,7 @@ use rastty_core::shadow::{
 };
 use rastty_core::target::{Rgb888, Samples, Target, resolve_rgb888};
 
-use super::bins::TriangleBins;
+use super::frame_geometry::{DrawGeometry, GeometryMemory};
 use super::material::part_material;
 use super::plan::{PlannedDraw, ShadowPass, tangents_for};
 use super::workers::Workers;
@@ -43,9 +43,8 @@ pub struct ShadowPassReport {
 pub struct FrameReport {
     /// The shadow passes, in the plan's order.
     pub shadow_passes: Vec<ShadowPassReport>,
-    /// The forward pass's counts, wireframe lines' fragments included, summed over the bands: a triangle counts
-    /// once in each band whose rows it may reach (with a margin), as rasterized with no fragment in those it then
-    /// misses (the bands share the frame's screen vertices, whose outcodes are the whole frame's).
+    /// The forward pass's counts: each triangle once, as binning the frame's triangles by band found it, and the
+    /// fragments of every band, wireframe lines' included.
     pub forward: DrawStats,
     /// How many bands of rows the frame was split into (see [`SceneRenderer`]).
     pub bands: usize,
@@ -108,28 +107,28 @@ pub const BAND_PIXELS: usize = 65_536;
 /// only its memory until shadows are switched back on.
 ///
 /// The shadow passes split their map into one band of rows per thread; the forward pass and the ambient
-/// occlusion step split the frame into one band per [`BAND_PIXELS`] pixels, at least one and at most
-/// [`BANDS_PER_THREAD`] per thread, which the threads take in turn (the forward pass's with the most triangles
-/// first, so that the threads finish together). Each band runs the whole draw list into its own
-/// rows, each draw with the triangles sorted into the band (conservatively, by their screen rows; the core clips
-/// every triangle to the band), so maps and pixels are the same for any number of threads. The screen vertices of
-/// each draw are computed once a frame, on the threads, and shared by the bands: only the varyings of vertices
-/// of triangles that reach several bands are computed again.
+/// occlusion step cut the frame into the core's [`Bands`]: about one per [`BAND_PIXELS`] pixels, at least one and
+/// at most [`BANDS_PER_THREAD`] per thread, which the threads take in turn (the forward pass's with the most
+/// triangles first, so that the threads finish together). Each band runs the whole draw list into its own rows, so
+/// maps and pixels are the same for any number of threads. Each draw's screen vertices are computed, and its
+/// triangles binned by band, once a frame on the threads (`frame_geometry.rs`, the core's binning): a band's draw
+/// runs no position stage and meets only the triangles that can reach its rows; only the varyings of vertices of
+/// triangles that reach several bands are computed again.
 ///
 /// A plan with several [`ScenePlan::samples`] per pixel draws its forward pass into colour and depth samples the
 /// renderer keeps, band by band as above; each band then averages its samples into its pixels
 /// ([`resolve_rgb888`], in the plan's shading space) and stores each pixel's nearest sample depth, which the
 /// ambient occlusion step reads as it reads a single-sampled frame's depth.
 ///
-/// The threads are started with the renderer and kept (`workers.rs`), and so are the screen vertices and the lists
-/// the triangles are sorted into (`bins.rs`): a frame starts no thread and, once those have grown to the meshes,
+/// The threads are started with the renderer and kept (`workers.rs`), and so is the memory of each draw's screen
+/// vertices and bins (`frame_geometry.rs`): a frame starts no thread and, once those have grown to the meshes,
 /// allocates nothing in proportion to them.
 #[derive(Debug)]
 pub struct SceneRenderer {
     slots: Vec<ShadowSlot>,
     workers: Workers,
-    /// The forward pass's triangles sorted into bands, one entry per draw of the last plan.
-    bins: Vec<TriangleBins>,
+    /// The memory of the forward pass's geometry, one entry per draw of the last plan.
+    geometry: Vec<GeometryMemory>,
     /// A multisampled forward pass's samples (empty until a plan asks for them).
     samples: SampleBuffers,
 }
@@ -147,14 +146,14 @@ type BandSamples<'a> = Option<(&'a mut [u32], &'a mut [f32])>;
 
 impl SampleBuffers {
     /// The buffers grown to `rows` of a frame `width` pixels wide and split as [`split_rows`] splits those rows
-    /// into `band_count` bands, top first, then `None` for every further band; `None` for every band when
+    /// into bands of `band_rows`, top first, then `None` for every further band; `None` for every band when
     /// `samples` is one.
     fn bands(
         &mut self,
         samples: Samples,
         width: u32,
         rows: Range<u32>,
-        band_count: usize,
+        band_rows: u32,
     ) -> impl Iterator<Item = BandSamples<'_>> {
         let none = std::iter::repeat_with(|| None);
         if samples == Samples::One {
@@ -166,8 +165,8 @@ impl SampleBuffers {
             // Every value is cleared by its band before it is drawn, on the band's thread.
             (self.colors, self.depths) = (vec![0; values], vec![0.0; values]);
         }
-        let colors = split_rows(&mut self.colors, row, rows.clone(), band_count);
-        let depths = split_rows(&mut self.depths, row, rows, band_count);
+        let colors = split_rows(&mut self.colors, row, rows.clone(), band_rows);
+        let depths = split_rows(&mut self.depths, row, rows, band_rows);
         let bands: Vec<BandSamples<'_>> = colors.into_iter().zip(depths).map(|((_, c), (_, d))| Some((c, d))).collect();
         bands.into_iter().chain(none)
     }
@@ -181,7 +180,7 @@ impl Default for SceneRenderer {
 
 /// The rows and buffers of one band of the frame.
 struct Band<'a> {
-    /// The band's place, top first.
+    /// The band's place in the frame's [`Bands`], top first.
     index: usize,
     rows: Range<u32>,
     pixels: &'a mut [u32],
@@ -191,7 +190,8 @@ struct Band<'a> {
 
 /// What the forward pass did in one band.
 struct BandResult {
-    stats: DrawStats,
+    /// The fragments of its draws and lines.
+    fragments: u64,
     variants: Vec<Variant>,
 }
 
@@ -206,7 +206,7 @@ impl SceneRenderer {
     /// same frames on the calling thread alone.
     pub fn with_threads(threads: usize) -> Self {
         let workers = Workers::new(threads);
-        Self { slots: Vec::new(), workers, bins: Vec::new(), samples: SampleBuffers::default() }
+        Self { slots: Vec::new(), workers, geometry: Vec::new(), samples: SampleBuffers::default() }
     }
 
     /// The number of threads frames are drawn on.
@@ -214,10 +214,14 @@ impl SceneRenderer {
         self.workers.threads()
     }
 
-    /// The number of bands of rows a frame is split into (fewer for a frame with fewer rows).
-    fn bands(&self, pixels: usize) -> usize {
+    /// How a `width x height` frame drawn with `samples` a pixel is cut into bands of rows: about one per
+    /// [`BAND_PIXELS`] pixels, at least one per thread and at most [`BANDS_PER_THREAD`] per thread (and
+    /// [`MAX_BINNED_BANDS`]), of equal rows but the last.
+    fn bands(&self, width: u32, height: u32, samples: Samples) -> Result<Bands, SceneRenderError> {
         let threads = self.threads();
-        (pixels / BAND_PIXELS).clamp(threads, threads * BANDS_PER_THREAD)
+        let count = (width as usize * height as usize / BAND_PIXELS).clamp(threads, threads * BANDS_PER_THREAD);
+        let rows = height.div_ceil(count as u32).max(height.div_ceil(MAX_BINNED_BANDS));
+        Bands::new(width, height, rows, samples).map_err(|e| SceneRenderError::Target(e.to_string()))
     }
 
     /// Runs `plan` (made for `scene`) into `target`, a frame of the plan's size or a band of its rows: the shadow
@@ -249,8 +253,11 @@ impl SceneRenderer {
                 rows.start, rows.end
             )));
         }
-        let band_count = self.bands(width as usize * rows.len());
-        let mut report = FrameReport { bands: band_count.clamp(1, rows.len()), ..FrameReport::default() };
+        let grid = self.bands(width, height, plan.samples())?;
+        let band_rows = grid.rows(0).len() as u32;
+        let first_band = rows.start / band_rows;
+        let band_count = (rows.end.div_ceil(band_rows) - first_band) as usize;
+        let mut report = FrameReport { bands: band_count, ..FrameReport::default() };
         let start = Instant::now();
         self.shadow_passes(scene, plan, &mut report)?;
         report.shadow_time = start.elapsed();
@@ -260,31 +267,40 @@ impl SceneRenderer {
         let lights = Lighting { ambient: plan.ambient, lights: &sources, space: plan.space };
         let (color, depth) = target.buffers_mut();
         let (pixels, depth) = (&mut *color.0, &mut **depth);
-        let samples = self.samples.bands(plan.samples(), width, rows.clone(), band_count);
-        let bands = split_rows(pixels, width, rows.clone(), band_count);
-        let bands = bands.into_iter().zip(split_rows(depth, width, rows.clone(), band_count)).zip(samples).enumerate();
+        let samples = self.samples.bands(plan.samples(), width, rows.clone(), band_rows);
+        let bands = split_rows(pixels, width, rows.clone(), band_rows);
+        let bands = bands.into_iter().zip(split_rows(depth, width, rows.clone(), band_rows)).zip(samples);
         let mut bands: Vec<_> = bands
-            .map(|(index, (((rows, pixels), (_, depth)), samples))| Band { index, rows, pixels, depth, samples })
+            .map(|(((rows, pixels), (_, depth)), samples)| {
+                let index = (rows.start / band_rows) as usize;
+                Band { index, rows, pixels, depth, samples }
+            })
             .collect();
-        let rows: Vec<_> = bands.iter().map(|band| band.rows.clone()).collect();
-        if self.bins.len() < plan.draws.len() {
-            self.bins.resize_with(plan.draws.len(), TriangleBins::default);
+        if self.geometry.len() < plan.draws.len() {
+            self.geometry.resize_with(plan.draws.len(), GeometryMemory::default);
         }
-        let bins = &mut self.bins[..plan.draws.len()];
-        for (draw, bins) in plan.draws.iter().zip(bins.iter_mut()) {
+        let mut geometry = Vec::with_capacity(plan.draws.len());
+        for (draw, memory) in plan.draws.iter().zip(&mut self.geometry) {
             let (_, mesh) = planned_mesh(scene, draw)?;
-            bins.sort(&mesh, &draw.transforms.clip_from_object, (width, height), &rows, &self.workers).map_err(
-                |error| SceneRenderError::Draw { draw: draw.label.clone(), error: ShadingError::Draw(error) },
-            )?;
+            let computed =
+                memory.compute(&mesh, &draw.transforms.clip_from_object, &draw.variant.state, grid, &self.workers);
+            let computed = computed.map_err(|error| SceneRenderError::Draw {
+                draw: draw.label.clone(),
+                error: ShadingError::Draw(error),
+            })?;
+            report.forward += computed.stats();
+            geometry.push(computed);
         }
-        let bins = &*bins;
         // Threads take the bands with the most triangles first, so that the last ones taken are short and the
         // threads finish together.
-        bands.sort_by_key(|band| std::cmp::Reverse(bins.iter().map(|b| b.band_triangles(band.index)).sum::<usize>()));
-        let results = self.workers.run(bands, |band| forward_band(scene, plan, bins, &lights, band, width, height));
+        let mut counts = vec![0; grid.count() as usize];
+        geometry.iter().for_each(|draw| draw.count_by_band(&mut counts));
+        bands.sort_by_key(|band| std::cmp::Reverse(counts[band.index]));
+        let geometry = &geometry;
+        let results = self.workers.run(bands, |band| forward_band(scene, plan, geometry, &lights, band, width, height));
         for result in results {
             let result = result?;
-            report.forward += result.stats;
+            report.forward.fragments += result.fragments;
             // Every band resolves the same variants; keep the first band's.
             if report.variants.is_empty() {
                 report.variants = result.variants;
@@ -297,7 +313,7 @@ impl SceneRenderer {
             let projection = plan.camera.projection;
             let whole_depth: &[f32] = depth;
             let margin = occlusion.margin_rows(&projection, width, height);
-            let bands = split_rows(pixels, width, 0..height, band_count);
+            let bands = split_rows(pixels, width, 0..height, band_rows);
             let results = self.workers.run(bands, |(rows, pixels)| {
                 // The band's rows of depth and `margin` more on each side: exactly the whole frame's result.
                 let depth_rows = rows.start.saturating_sub(margin)..(rows.end + margin).min(height);
@@ -371,7 +387,8 @@ impl SceneRenderer {
             }
             // One band per thread: casters are few fragments for their vertex work, which every band repeats. A
             // cube map's six faces are one tall map of rows to the bands.
-            let bands = split_rows(&mut slot.depth, pass.view.size(), 0..pass.view.rows(), workers.threads());
+            let band_rows = pass.view.rows().div_ceil(workers.threads() as u32);
+            let bands = split_rows(&mut slot.depth, pass.view.size(), 0..pass.view.rows(), band_rows);
             let results = workers.run(bands, |(rows, depth)| {
                 clear_shadow_depth(depth);
                 let mut stats = DrawStats::default();
@@ -396,7 +413,7 @@ impl ShadowSlot {
     /// Works out the depth ranges of the filter windows of the map in `depth`, in one band of rows per thread
     /// (every band reads the whole map, so the depth pass must be done).
     fn window_ranges(&mut self, pass: &ShadowPass, workers: &Workers) -> Result<(), ShadowError> {
-        let threads = workers.threads();
+        let band_rows = pass.view.rows().div_ceil(workers.threads() as u32);
         let texels = self.depth.len();
         for buffer in [&mut self.near, &mut self.far] {
             if buffer.len() != texels {
@@ -405,8 +422,8 @@ impl ShadowSlot {
             }
         }
         let depth = &self.depth;
-        let near = split_rows(&mut self.near, pass.view.size(), 0..pass.view.rows(), threads);
-        let far = split_rows(&mut self.far, pass.view.size(), 0..pass.view.rows(), threads);
+        let near = split_rows(&mut self.near, pass.view.size(), 0..pass.view.rows(), band_rows);
+        let far = split_rows(&mut self.far, pass.view.size(), 0..pass.view.rows(), band_rows);
         let bands: Vec<_> = near.into_iter().zip(far).collect();
         let results = workers.run(bands, |((rows, near), (_, far))| {
             window_ranges_band(depth, pass.view.size(), pass.pcf_radius, rows, near, far)
@@ -415,17 +432,18 @@ impl ShadowSlot {
     }
 }
 
-/// Splits `buffer`, the values of the frame rows `rows`, `width` a row, into at most `count` bands of nearly equal
-/// rows (at least one row each), top first, each with its rows.
-fn split_rows<T>(mut buffer: &mut [T], width: u32, rows: Range<u32>, count: usize) -> Vec<(Range<u32>, &mut [T])> {
-    let (first, height) = (rows.start, rows.end - rows.start);
-    let count = count.clamp(1, height.max(1) as usize) as u32;
-    let mut bands = Vec::with_capacity(count as usize);
-    for i in 0..count {
-        let rows = first + height * i / count..first + height * (i + 1) / count;
-        let (band, rest) = std::mem::take(&mut buffer).split_at_mut(rows.len() * width as usize);
+/// Splits `buffer`, the values of the frame rows `rows`, `width` a row, into bands at every multiple of `band_rows`
+/// (at least 1) of the frame's rows, top first, each with its rows.
+fn split_rows<T>(mut buffer: &mut [T], width: u32, rows: Range<u32>, band_rows: u32) -> Vec<(Range<u32>, &mut [T])> {
+    let band_rows = band_rows.max(1);
+    let mut bands = Vec::with_capacity(rows.len().div_ceil(band_rows as usize) + 1);
+    let mut start = rows.start;
+    while start < rows.end {
+        let end = ((start / band_rows + 1) * band_rows).min(rows.end);
+        let (band, rest) = std::mem::take(&mut buffer).split_at_mut((end - start) as usize * width as usize);
         buffer = rest;
-        bands.push((rows, band));
+        bands.push((start..end, band));
+        start = end;
     }
     bands
 }
@@ -441,24 +459,24 @@ fn planned_mesh<'a>(
     Ok((object, mesh))
 }
 
-/// The forward pass over one band: clears it to the background and draws every planned part into it, each with
-/// the triangles that `bins` sorted into the band; into its samples when the plan multisamples, then averaged into
-/// its pixels, each pixel's depth its nearest sample's.
+/// The forward pass over one band: clears it to the background and draws every planned part into it, each lent its
+/// geometry for the frame (so with the triangles binned into the band); into its samples when the plan multisamples,
+/// then averaged into its pixels, each pixel's depth its nearest sample's.
 fn forward_band(
     scene: &PreparedScene,
     plan: &ScenePlan,
-    bins: &[TriangleBins],
+    geometry: &[DrawGeometry<'_>],
     lights: &Lighting<'_>,
     band: Band<'_>,
     width: u32,
     height: u32,
 ) -> Result<BandResult, SceneRenderError> {
-    let Band { index, rows, pixels, depth, samples } = band;
+    let Band { rows, pixels, depth, samples, .. } = band;
     let Some((sample_colors, sample_depths)) = samples else {
-        return draw_band(scene, plan, bins, lights, (index, rows, Samples::One), (pixels, depth), (width, height));
+        return draw_band(scene, plan, geometry, lights, (rows, Samples::One), (pixels, depth), (width, height));
     };
-    let place = (index, rows, plan.samples());
-    let result = draw_band(scene, plan, bins, lights, place, (sample_colors, sample_depths), (width, height))?;
+    let place = (rows, plan.samples());
+    let result = draw_band(scene, plan, geometry, lights, place, (sample_colors, sample_depths), (width, height))?;
     resolve_rgb888(sample_colors, plan.samples(), plan.space, pixels)?;
     for (pixel, samples) in depth.iter_mut().zip(sample_depths.chunks_exact(plan.samples().count())) {
         *pixel = samples.iter().fold(1.0, |nearest, &d| d.min(nearest));
@@ -466,55 +484,36 @@ fn forward_band(
     Ok(result)
 }
 
-/// [`forward_band`]'s draws into band `index` (frame rows `rows`) with `samples` a pixel, into `colors` and
-/// `depths`.
+/// [`forward_band`]'s draws into frame rows `rows` with `samples` a pixel, into `colors` and `depths`.
 fn draw_band(
     scene: &PreparedScene,
     plan: &ScenePlan,
-    bins: &[TriangleBins],
+    geometry: &[DrawGeometry<'_>],
     lights: &Lighting<'_>,
-    (index, rows, samples): (usize, Range<u32>, Samples),
+    (rows, samples): (Range<u32>, Samples),
     (colors, depths): (&mut [u32], &mut [f32]),
     (width, height): (u32, u32),
 ) -> Result<BandResult, SceneRenderError> {
-    Target::multisampled(Rgb888(&mut *colors), &mut *depths, width, height, rows.clone(), samples)?
-        .clear(plan.background);
-    let mut result = BandResult { stats: DrawStats::default(), variants: Vec::with_capacity(plan.draws.len()) };
-    for (draw, bins) in plan.draws.iter().zip(bins) {
+    let mut band = Target::multisampled(Rgb888(colors), depths, width, height, rows, samples)?;
+    band.clear(plan.background);
+    let mut result = BandResult { fragments: 0, variants: Vec::with_capacity(plan.draws.len()) };
+    for (draw, geometry) in plan.draws.iter().zip(geometry) {
         let (object, mesh) = planned_mesh(scene, draw)?;
         let maps = scene.part_maps(draw.object, draw.part);
         let material = part_material(object, maps, draw.part, plan.space, &plan.options)
             .map_err(|error| SceneRenderError::Texture { draw: draw.label.clone(), error })?;
         let tangents = tangents_for(scene, draw.object, &material);
-        // The frame's screen vertices of the mesh, computed once for every band.
-        let clip = &draw.transforms.clip_from_object;
-        let shared = bins.shared(&mesh, clip, (width, height));
-        let target = Target::multisampled(Rgb888(&mut *colors), &mut *depths, width, height, rows.clone(), samples)?;
-        let mut target = target.with_shared_vertices(shared);
-        let mut variant = draw.variant;
-        // The band's triangles come in pieces of the mesh (at least one), in its order: drawn one after the other,
-        // the pieces give the pixels of one draw of them all.
-        for list in bins.band(index) {
-            let triangles = mesh.with_indices(Indices::U32(list));
-            let triangles = triangles.map_err(|error| SceneRenderError::Target(format!("{}: {error}", draw.label)))?;
-            let surface = Object {
-                mesh: triangles,
-                tangents,
-                transforms: draw.transforms,
-                shading: draw.variant.shading,
-                material,
-            };
-            let (drawn, stats) = draw_mesh(&mut target, &surface, lights, &draw.state)
-                .map_err(|error| SceneRenderError::Draw { draw: draw.label.clone(), error })?;
-            result.stats += stats;
-            if plan.wireframe {
-                // The lines' pixels count as fragments; their triangles are the ones counted above.
-                let lines = draw_wireframe(&mut target, &triangles, clip, &WIREFRAME, &drawn.state);
-                result.stats.fragments += lines.fragments;
-            }
-            variant = drawn;
+        let surface = Object { mesh, tangents, transforms: draw.transforms, shading: draw.variant.shading, material };
+        let mut target = band.for_draw(geometry.lend());
+        let (drawn, stats) = draw_mesh(&mut target, &surface, lights, &draw.state)
+            .map_err(|error| SceneRenderError::Draw { draw: draw.label.clone(), error })?;
+        result.fragments += stats.fragments;
+        if plan.wireframe {
+            // Every triangle's lines, clipped to the band.
+            let clip = &draw.transforms.clip_from_object;
+            result.fragments += draw_wireframe(&mut target, &mesh, clip, &WIREFRAME, &drawn.state).fragments;
         }
-        result.variants.push(variant);
+        result.variants.push(drawn);
     }
     Ok(result)
 }

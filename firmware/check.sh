@@ -8,8 +8,8 @@
 #
 # Installs nothing: needs qemu-system-arm, and the thumbv7em-none-eabihf target (rustup target add).
 set -euo pipefail
-root=$(cd "$(dirname "$0")/../.." && pwd)
-firmware=$root/core/firmware
+root=$(cd "$(dirname "$0")/.." && pwd)
+firmware=$root/firmware
 elf=$firmware/target/thumbv7em-none-eabihf/release/rastty-firmware
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
@@ -39,7 +39,7 @@ if [ "$status" -ne 0 ]; then
     exit 1
 fi
 
-line='frame [0-9]+ in [0-9]+ KiB: checksum 0x[0-9a-f]{8}, [0-9]+ strips, [0-9]+ fragments'
+line='frame [0-9]+ in [0-9]+ KiB: checksum 0x[0-9a-f]{8}, [0-9]+ bands, [0-9]+ fragments'
 grep -oE "$line" "$out/firmware.txt" >"$out/firmware.lines" || true
 grep -oE "$line" "$out/host.txt" >"$out/host.lines" || true
 sed 's/^/  host     | /' "$out/host.lines"

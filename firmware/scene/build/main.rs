@@ -15,7 +15,7 @@ use std::{env, fs};
 mod vertex_order;
 
 /// The model, from this crate's directory.
-const OBJ: &str = "../../../assets/spot/spot.obj";
+const OBJ: &str = "../../assets/spot/spot.obj";
 /// This script's files, from this crate's directory.
 const SCRIPT: [&str; 2] = ["build/main.rs", "build/vertex_order.rs"];
 

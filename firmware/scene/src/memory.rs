@@ -1,4 +1,4 @@
-//! The frame memory: one strip's colour and depth, and the triangle bins; and the layouts that share it out.
+//! The frame memory: one band's colour and depth, and the triangle bins; and the layouts that share it out.
 
 #[cfg(doc)]
 use rastty_core::pipeline::BIN_BLOCK;
@@ -8,52 +8,52 @@ use crate::frame::WIDTH;
 
 /// Entries the bins hold: Spot's kept triangles (those facing the camera that cover a pixel centre: 2,158 and
 /// 2,142 in the two frames) and one entry for each [`BIN_BLOCK`] of them, with 26% to spare. Triangles beyond it
-/// would be drawn in every strip, and without room for the blocks each strip would scan every entry (slower, the
+/// would be drawn in every band, and without room for the blocks each band would scan every entry (slower, the
 /// same pixels).
 pub const BIN_ENTRIES: usize = 2_816;
 
-/// How the frame memory is shared out: rows per strip, within a budget of RAM for every buffer together.
+/// How the frame memory is shared out: rows per band, within a budget of RAM for every buffer together.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Layout {
     /// The budget in KiB: colour, depth and bins together fit in it.
     pub budget_kib: usize,
-    /// Rows per strip (the last strip is shorter when this does not divide the height).
+    /// Rows per band (the last band is shorter when this does not divide the height).
     pub band_rows: u32,
 }
 
 impl Layout {
-    /// The most rows per strip that fit `budget_kib` KiB with the bins.
+    /// The most rows per band that fit `budget_kib` KiB with the bins.
     #[must_use]
     pub const fn for_budget(budget_kib: usize) -> Self {
         let band_bytes = budget_kib * 1024 - BIN_ENTRIES * size_of::<BinnedTriangle>();
         Self { budget_kib, band_rows: (band_bytes / (2 * 2 * WIDTH as usize)) as u32 }
     }
 
-    /// Pixels of one strip.
+    /// Pixels of one band.
     #[must_use]
     pub const fn band_pixels(&self) -> usize {
         (WIDTH * self.band_rows) as usize
     }
 
-    /// Bytes the layout uses: RGB565 colour and `u16` depth for one strip, and [`BIN_ENTRIES`] bins.
+    /// Bytes the layout uses: RGB565 colour and `u16` depth for one band, and [`BIN_ENTRIES`] bins.
     #[must_use]
     pub const fn bytes(&self) -> usize {
         2 * 2 * self.band_pixels() + BIN_ENTRIES * size_of::<BinnedTriangle>()
     }
 }
 
-/// The layouts measured, smallest first, each with the most rows per strip that fit its budget. The firmware's
+/// The layouts measured, smallest first, each with the most rows per band that fit its budget. The firmware's
 /// frames are checked in every one.
 pub const LAYOUTS: [Layout; 3] = [Layout::for_budget(16), Layout::for_budget(32), Layout::for_budget(64)];
 
-/// Pixels of the largest layout's strip: what [`FrameMemory`] holds.
+/// Pixels of the largest layout's band: what [`FrameMemory`] holds.
 pub const MAX_BAND_PIXELS: usize = LAYOUTS[LAYOUTS.len() - 1].band_pixels();
 
 /// Bytes of RAM [`FrameMemory`] takes: the largest layout's buffers, which every smaller one uses the start of.
 pub const FRAME_MEMORY_BYTES: usize = size_of::<FrameMemory>();
 const _: () = assert!(FRAME_MEMORY_BYTES <= 64 * 1024, "the frame memory fits 64 KiB");
 
-/// RGB565 colour and `u16` depth for one strip, and the bins: reused for every strip of every frame in every
+/// RGB565 colour and `u16` depth for one band, and the bins: reused for every band of every frame in every
 /// layout (a layout of fewer rows uses the start of the band buffers).
 #[derive(Clone, Debug)]
 pub struct FrameMemory {
@@ -61,7 +61,7 @@ pub struct FrameMemory {
     pub color: [u16; MAX_BAND_PIXELS],
     /// Depth, row-major.
     pub depth: [u16; MAX_BAND_PIXELS],
-    /// The triangles binned by strip.
+    /// The triangles binned by band.
     pub bins: [BinnedTriangle; BIN_ENTRIES],
 }
 

@@ -19,7 +19,7 @@ pub enum SceneError {
     Target(TargetError),
     /// A draw failed.
     Draw(DrawError),
-    /// The strips have more than one sample a pixel, which a display cannot take.
+    /// The bands have more than one sample a pixel, which a display cannot take.
     Multisampled,
     /// The effects resolved to another shader variant than the one [`Scene::draw`](crate::Scene::draw) runs.
     Variant,
@@ -32,7 +32,7 @@ impl fmt::Display for SceneError {
             Self::Mesh(e) => write!(f, "mesh: {e}"),
             Self::Target(e) => write!(f, "target: {e}"),
             Self::Draw(e) => write!(f, "draw: {e}"),
-            Self::Multisampled => f.write_str("the strips have more than one sample a pixel"),
+            Self::Multisampled => f.write_str("the bands have more than one sample a pixel"),
             Self::Variant => f.write_str("the effects resolve to another shader variant than the scene draws"),
         }
     }

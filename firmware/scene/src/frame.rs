@@ -1,4 +1,4 @@
-//! A frame, rendered strip by strip through one pair of band buffers with its geometry binned once, and its
+//! A frame, rendered band by band through one pair of band buffers with its geometry binned once, and its
 //! checksum.
 
 use core::convert::Infallible;
@@ -6,9 +6,9 @@ use core::fmt;
 
 use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::pixelcolor::Rgb565;
-use rastty_core::pipeline::{DrawStats, Strips};
+use rastty_core::pipeline::{Bands, DrawStats};
 use rastty_core::target::Samples;
-use rastty_embedded_graphics::{FrameError, StripMemory, draw_frame};
+use rastty_embedded_graphics::{BandMemory, FrameError, draw_frame};
 
 use crate::{ChecksumDisplay, FrameMemory, Layout, Scene, SceneError};
 
@@ -17,9 +17,9 @@ pub const WIDTH: u32 = 320;
 /// Frame height in pixels.
 pub const HEIGHT: u32 = 240;
 
-/// Renders frame `frame` in the strips of `layout` through `memory` into `display`, strip by strip, top to bottom,
-/// through [`draw_frame`] (one `fill_contiguous` a strip): bins the triangles once, then draws each strip from the
-/// bins. Returns the number of strips and the draw counts: binning's, with the strips' fragments.
+/// Renders frame `frame` in the bands of `layout` through `memory` into `display`, band by band, top to bottom,
+/// through [`draw_frame`] (one `fill_contiguous` a band): bins the triangles once, then draws each band from the
+/// bins. Returns the number of bands and the draw counts: binning's, with the bands' fragments.
 ///
 /// # Panics
 /// If `frame >= FRAMES`.
@@ -33,13 +33,13 @@ pub fn render_frame(
     display: &mut impl DrawTarget<Color = Rgb565, Error = Infallible>,
 ) -> Result<(u32, DrawStats), SceneError> {
     let scene = Scene::new(frame)?;
-    let strips = Strips::new(WIDTH, HEIGHT, layout.band_rows, Samples::One).map_err(SceneError::Target)?;
+    let bands = Bands::new(WIDTH, HEIGHT, layout.band_rows, Samples::One).map_err(SceneError::Target)?;
     let FrameMemory { color, depth, bins } = memory;
-    let bins = scene.bin(bins, strips)?;
+    let bins = scene.bin(bins, bands)?;
     let mut stats = bins.stats();
-    let strip_memory = StripMemory::<Rgb565, u16> { color, depth };
-    draw_frame(display, strips, strip_memory, |band| {
-        stats.fragments += scene.draw_strip(band, &bins)?.fragments;
+    let band_memory = BandMemory::<Rgb565, u16> { color, depth };
+    draw_frame(display, bands, band_memory, |band| {
+        stats.fragments += scene.draw_band(band, &bins)?.fragments;
         Ok(())
     })
     .map_err(|e| match e {
@@ -48,10 +48,10 @@ pub fn render_frame(
         FrameError::Samples(_) => SceneError::Multisampled,
         FrameError::Display(never) => match never {},
     })?;
-    Ok((strips.count(), stats))
+    Ok((bands.count(), stats))
 }
 
-/// Renders frame `frame` into a [`ChecksumDisplay`], which folds every strip, as it is sent, into the frame's
+/// Renders frame `frame` into a [`ChecksumDisplay`], which folds every band, as it is sent, into the frame's
 /// [`crate::Fnv1a`] checksum: the checksum is the firmware's display.
 ///
 /// # Panics
@@ -61,8 +61,8 @@ pub fn render_frame(
 /// As [`render_frame`].
 pub fn checksum_frame(frame: usize, layout: Layout, memory: &mut FrameMemory) -> Result<FrameReport, SceneError> {
     let mut display = ChecksumDisplay::new();
-    let (strips, stats) = render_frame(frame, layout, memory, &mut display)?;
-    Ok(FrameReport { frame, layout, checksum: display.checksum(), strips, stats })
+    let (bands, stats) = render_frame(frame, layout, memory, &mut display)?;
+    Ok(FrameReport { frame, layout, checksum: display.checksum(), bands, stats })
 }
 
 /// What rendering a frame did.
@@ -74,20 +74,20 @@ pub struct FrameReport {
     pub layout: Layout,
     /// [`crate::Fnv1a`] of the frame's pixels.
     pub checksum: u32,
-    /// Strips rendered and checksummed.
-    pub strips: u32,
-    /// Triangle counts from binning, fragments summed over the strips.
+    /// Bands rendered and checksummed.
+    pub bands: u32,
+    /// Triangle counts from binning, fragments summed over the bands.
     pub stats: DrawStats,
 }
 
 impl fmt::Display for FrameReport {
     /// The line that the firmware and the host both print, and `check.sh` compares:
-    /// `frame 0 in 16 KiB: checksum 0x1234abcd, 60 strips, 24680 fragments`.
+    /// `frame 0 in 16 KiB: checksum 0x1234abcd, 60 bands, 24680 fragments`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "frame {} in {} KiB: checksum 0x{:08x}, {} strips, {} fragments",
-            self.frame, self.layout.budget_kib, self.checksum, self.strips, self.stats.fragments
+            "frame {} in {} KiB: checksum 0x{:08x}, {} bands, {} fragments",
+            self.frame, self.layout.budget_kib, self.checksum, self.bands, self.stats.fragments
         )
     }
 }

@@ -7,9 +7,9 @@
 //! (the host test checks it), but it picks the shader at run time, so a firmware calling it links every variant
 //! of the pipeline.
 
-use rastty_core::pipeline::{BinnedTriangle, StripBins, Strips, draw, draw_strip};
+use rastty_core::pipeline::{BandBins, Bands, BinnedTriangle, Shader, draw};
 use rastty_core::shading::{Absent, Layout, LightUse, SurfaceShader, Variant, capabilities};
-use rastty_core::target::{ColorBuffer, DepthBuffer};
+use rastty_core::target::{ColorBuffer, DepthBuffer, FrameGeometry};
 use rastty_core::{
     DrawState, DrawStats, Indices, Light, Lighting, Mat4, Material, Mesh, Object, Quat, ShadingError, ShadingModel,
     ShadingSpace, Target, Transforms, Vec3, draw_mesh, look_at, perspective,
@@ -55,7 +55,7 @@ const LAYOUT: Layout = Layout { first: true, second: true, uvs: false, tangents:
 /// carried.
 pub type SpotShader<'a> = SurfaceShader<'a, Vec3, Vec3, Absent, Absent, Absent, { capabilities::PER_PIXEL }>;
 
-/// One frame's scene: Spot, its place and the light, built once and drawn into each strip.
+/// One frame's scene: Spot, its place and the light, built once and drawn into each band.
 #[derive(Clone, Copy, Debug)]
 pub struct Scene {
     object: Object<'static>,
@@ -105,29 +105,32 @@ impl Scene {
         draw(target, &self.object.mesh, &shader, &STATE).map_err(SceneError::Draw)
     }
 
-    /// Bins Spot's triangles by the strips of `strips` into `memory`, once for the frame: what
-    /// [`Scene::draw_strip`] reads.
+    /// Bins Spot's triangles by the bands of `bands` into `memory`, once for the frame: what
+    /// [`Scene::draw_band`] reads.
     ///
     /// # Errors
     /// As [`Scene::draw`].
-    pub fn bin<'m>(&self, memory: &'m mut [BinnedTriangle], strips: Strips) -> Result<StripBins<'m>, SceneError> {
+    pub fn bin<'m>(&self, memory: &'m mut [BinnedTriangle], bands: Bands) -> Result<BandBins<'m>, SceneError> {
         let shader = self.shader()?;
-        StripBins::bin(memory, &self.object.mesh, &shader, &STATE, strips).map_err(SceneError::Draw)
+        let (mesh, matrix) = (&self.object.mesh, shader.clip_from_object());
+        let matrix = matrix.ok_or(SceneError::Variant)?;
+        BandBins::bin(memory, mesh, matrix, &STATE, bands, 0..mesh.triangle_count(), None).map_err(SceneError::Draw)
     }
 
-    /// Clears `target`, one strip of the frame, to [`BACKGROUND`] and draws the triangles of `bins` that meet it:
+    /// Clears `target`, one band of the frame, to [`BACKGROUND`] and draws the triangles of `bins` that meet it:
     /// the pixels of [`Scene::draw`] on the same target.
     ///
     /// # Errors
     /// As [`Scene::draw`].
-    pub fn draw_strip<C: ColorBuffer, D: DepthBuffer>(
+    pub fn draw_band<C: ColorBuffer, D: DepthBuffer>(
         &self,
         target: &mut Target<C, D>,
-        bins: &StripBins<'_>,
+        bins: &BandBins<'_>,
     ) -> Result<DrawStats, SceneError> {
         let shader = self.shader()?;
         target.clear(BACKGROUND);
-        draw_strip(target, &self.object.mesh, &shader, &STATE, bins).map_err(SceneError::Draw)
+        let mut target = target.for_draw(FrameGeometry { vertices: None, bins: core::slice::from_ref(bins) });
+        draw(&mut target, &self.object.mesh, &shader, &STATE).map_err(SceneError::Draw)
     }
 
     /// The one shader the scene's variant calls for.

@@ -9,7 +9,7 @@
 #   (-d in_asm,exec,nochain, read through a pipe by stages.py): the instructions of each pipeline stage.
 # Needs arm-none-eabi-size, -nm and -addr2line (Debian: binutils-arm-none-eabi), qemu-system-arm and, for --stages,
 # python3; check.sh, which CI runs, needs none of them but QEMU.
-# Usage: core/firmware/measure.sh [--no-build] [--stages]
+# Usage: firmware/measure.sh [--no-build] [--stages]
 set -euo pipefail
 cd "$(dirname "$0")"
 elf=target/thumbv7em-none-eabihf/release/rastty-firmware

@@ -1,4 +1,4 @@
-//! Strip rendering: a frame drawn as bands of rows equals the frame drawn whole, bit for bit: colours, depths and
+//! Band rendering: a frame drawn as bands of rows equals the frame drawn whole, bit for bit: colours, depths and
 //! fragment counts.
 //!
 //! Every band of every split is checked. The bands are drawn into buffers of the caller's own (`PlainDepth`,

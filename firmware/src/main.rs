@@ -1,6 +1,6 @@
 //! rastty-core on a Cortex-M4: renders the shared scene (`rastty-firmware-scene`: Spot the cow, Phong-lit,
-//! 320x240 RGB565, `u16` depth) in strips, its triangles binned once a frame, in each memory layout (16, 32 and
-//! 64 KiB for the band buffers and the bins together), folds every strip into an FNV-1a checksum, and prints,
+//! 320x240 RGB565, `u16` depth) in bands, its triangles binned once a frame, in each memory layout (16, 32 and
+//! 64 KiB for the band buffers and the bins together), folds every band into an FNV-1a checksum, and prints,
 //! through semihosting, one line per frame and layout that the host must reproduce exactly (`check.sh` compares
 //! them), then the instructions each took, the frame memory's RAM and the peak stack.
 //! It exits through semihosting: status 0, or 1 after a panic or a hard fault.
@@ -54,7 +54,7 @@ fn main() -> ! {
     for (layout, counts) in LAYOUTS.iter().zip(&instructions) {
         let _ = writeln!(
             out,
-            "layout {} KiB: strips of {} rows, {} bytes of buffers",
+            "layout {} KiB: bands of {} rows, {} bytes of buffers",
             layout.budget_kib,
             layout.band_rows,
             layout.bytes()

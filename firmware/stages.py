@@ -26,9 +26,9 @@ STAGES = [
      ["raster::fill_", "raster::shared_", "Covered::", "Fragments::push"]),
     ("shading: normals, light, highlight, RGB565",
      ["shade_batch", "::flush", "write_batch", "Triangles::", "Fragments::"]),
-    ("clearing the strip", ["Target::clear"]),
-    ("binning: the triangle loop, rejections, entries", ["StripBins::bin", "bin_triangles"]),
-    ("strip draws: the triangle loop, block and entry scan", ["draw::run", "draw_walk", "Walk"]),
+    ("clearing the band", ["Target::clear"]),
+    ("binning: the triangle loop, rejections, entries", ["BandBins::bin", "BinRun"]),
+    ("band draws: the triangle loop, block and entry scan", ["draw::run", "draw_walk", "Walk"]),
     ("display: colours sent, FNV-1a", ["draw_frame", "ChecksumDisplay", "Fnv1a"]),
     ("scene: shader variant, matrices", ["Scene::", "Variant::", "Transforms"]),
 ]
