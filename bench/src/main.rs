@@ -7,11 +7,11 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use clap::{Args, Parser};
-use rastty::escaped::{Escaped, path_text};
-use rastty::scene_file::SceneData;
-use rastty::scene_render::{PreparedScene, parse_size};
 use rastty_bench::report::terminal::{DEFAULT_FRAMES, TerminalReport};
 use rastty_bench::report::{effects, frames, peers};
+use rastty_scene::escaped::{Escaped, path_text};
+use rastty_scene::scene_file::SceneData;
+use rastty_scene::scene_render::{PreparedScene, parse_size};
 
 /// Measure rastty and print figures as Markdown (timings mean something only in a release build).
 #[derive(Parser, Debug)]
@@ -141,7 +141,7 @@ fn peers_report(args: &PeersReportArgs) -> Result<(), String> {
 
 /// Loads a scene file and prints its warnings and its meshes'.
 fn load_scene_file(path: &Path) -> Result<PreparedScene, String> {
-    let data: SceneData = rastty::scene_file::load(path).map_err(|e| e.to_string())?;
+    let data: SceneData = rastty_scene::scene_file::load(path).map_err(|e| e.to_string())?;
     let warnings = data.warnings.iter().chain(data.objects.iter().flat_map(|o| o.model.warnings.iter()));
     for warning in warnings {
         eprintln!("rastty-bench: warning: {}", Escaped(warning));

@@ -8,9 +8,6 @@
 
 use std::path::PathBuf;
 
-use rastty::model::{DEFAULT_DIFFUSE, Material as ModelMaterial, Model, Part, TextureImage};
-use rastty::scene_file::{SceneCamera, SceneData};
-use rastty::scene_render::{CameraOptions, PlanOptions, PreparedScene, ShadingMode, render_scene_image};
 use rastty_bench::reference::{
     Camera, Light, Lighting, Material, Object, Projection, ReferenceError, ReferenceImage, Renderer, SAMPLES_PER_AXIS,
     Scene, Shading, render, srgb,
@@ -20,6 +17,9 @@ use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Vec2, Vec3};
 use rastty_core::pipeline::Cull;
 use rastty_core::texture::{MipFilter, WrapMode};
+use rastty_scene::model::{DEFAULT_DIFFUSE, Material as ModelMaterial, Model, Part, TextureImage};
+use rastty_scene::scene_file::{SceneCamera, SceneData};
+use rastty_scene::scene_render::{CameraOptions, PlanOptions, PreparedScene, ShadingMode, render_scene_image};
 
 // ---------------------------------------------------------------------------------------------------------------
 // Helpers
@@ -653,7 +653,7 @@ fn from_scene_draws_what_rastty_draws() {
 
 #[test]
 fn from_scene_draws_the_builtin_model_as_rastty_does() {
-    let scene = model_scene(rastty::builtin::builtin_model().unwrap());
+    let scene = model_scene(rastty_scene::builtin::builtin_model().unwrap());
     // Within 1.5 levels, as the quad: rastty decodes texels before blending them, within and between its levels
     // of detail, as the reference does.
     let (compared, worst) = agree(&scene, (40, 30), &scene.camera(), &PlanOptions::default(), 1.5);
@@ -699,7 +699,7 @@ wrap = "clamp"
 "#;
 
 fn scene_file(text: &str) -> PreparedScene {
-    PreparedScene::new(rastty::scene_file::parse(text, "test.toml").unwrap().load().unwrap()).unwrap()
+    PreparedScene::new(rastty_scene::scene_file::parse(text, "test.toml").unwrap().load().unwrap()).unwrap()
 }
 
 #[test]
@@ -734,7 +734,7 @@ fn from_scene_draws_a_scene_file_as_rastty_does() {
 #[test]
 #[ignore = "slow in debug builds: run with --release -- --ignored"]
 fn builtin_model_320x240() {
-    let scene = model_scene(rastty::builtin::builtin_model().unwrap());
+    let scene = model_scene(rastty_scene::builtin::builtin_model().unwrap());
     let (camera, options, size) = (scene.camera(), PlanOptions::default(), (320, 240));
     let (compared, worst) = agree(&scene, size, &camera, &options, 2.0);
     println!("single samples at pixel centres: {compared} within {worst:.2} levels of rastty");
@@ -766,7 +766,8 @@ fn builtin_model_320x240() {
         elapsed.as_secs_f64(),
         inside.len(),
     );
-    rastty::png_file::write_png(std::path::Path::new("/tmp/reference.png"), 320, 240, &reference.to_rgb888()).unwrap();
-    rastty::png_file::write_png(std::path::Path::new("/tmp/rastty_default.png"), 320, 240, &pixels).unwrap();
+    rastty_scene::png_file::write_png(std::path::Path::new("/tmp/reference.png"), 320, 240, &reference.to_rgb888())
+        .unwrap();
+    rastty_scene::png_file::write_png(std::path::Path::new("/tmp/rastty_default.png"), 320, 240, &pixels).unwrap();
     assert!(psnr > 25.0, "{psnr}");
 }

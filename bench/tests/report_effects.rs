@@ -5,8 +5,8 @@ use crate::common;
 
 use std::path::PathBuf;
 
-use rastty::scene_render::{EffectToggles, PreparedScene, SceneEffect};
 use rastty_bench::report::effects::{self, EffectsReport, ShadowMaps, configurations};
+use rastty_scene::scene_render::{EffectToggles, PreparedScene, SceneEffect};
 
 const ROWS: [&str; 9] = [
     "none",
@@ -22,7 +22,7 @@ const ROWS: [&str; 9] = [
 
 fn spot_lamp() -> (PathBuf, PreparedScene) {
     let path = common::root().join(effects::DEFAULT_SCENE);
-    let data = rastty::scene_file::load(&path).unwrap_or_else(|e| panic!("{e}"));
+    let data = rastty_scene::scene_file::load(&path).unwrap_or_else(|e| panic!("{e}"));
     (path, PreparedScene::new(data).unwrap())
 }
 
@@ -56,7 +56,7 @@ fn the_report_has_every_row_and_every_number() {
         let results = effects::run(&report, &scene, &mut out).unwrap();
         let text = String::from_utf8(out).unwrap();
 
-        let expected_threads = threads.unwrap_or_else(|| rastty::scene_render::SceneRenderer::new().threads());
+        let expected_threads = threads.unwrap_or_else(|| rastty_scene::scene_render::SceneRenderer::new().threads());
         assert_eq!(results.threads, expected_threads);
         assert!(text.contains(&format!("- threads: {expected_threads} ")), "{text}");
         assert!(text.contains(&format!("- command: `{}`", report.command_line())), "{text}");

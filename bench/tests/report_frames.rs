@@ -5,14 +5,14 @@ use crate::common;
 
 use std::path::PathBuf;
 
-use rastty::scene_render::{EffectToggles, PreparedScene, SceneEffect};
 use rastty_bench::report::effects::ShadowMaps;
 use rastty_bench::report::frames::{self, FramesReport, rows};
+use rastty_scene::scene_render::{EffectToggles, PreparedScene, SceneEffect};
 
 fn load(path: &PathBuf, text: Option<String>) -> PreparedScene {
     let data = match text {
-        Some(text) => rastty::scene_file::parse(text, path).and_then(|file| file.load()),
-        None => rastty::scene_file::load(path),
+        Some(text) => rastty_scene::scene_file::parse(text, path).and_then(|file| file.load()),
+        None => rastty_scene::scene_file::load(path),
     };
     PreparedScene::new(data.unwrap_or_else(|e| panic!("{e}"))).unwrap()
 }
@@ -59,7 +59,7 @@ fn the_report_has_every_row_and_every_number() {
         let mut out = Vec::new();
         let results = frames::run(&report, &scene, &mut out).unwrap();
         let text = String::from_utf8(out).unwrap();
-        let expected_threads = threads.unwrap_or_else(|| rastty::scene_render::SceneRenderer::new().threads());
+        let expected_threads = threads.unwrap_or_else(|| rastty_scene::scene_render::SceneRenderer::new().threads());
         assert!(text.contains(&format!("- threads: {expected_threads}\n")), "{text}");
         assert!(text.contains(&format!("- command: `{}`", report.command_line())), "{text}");
         assert!(text.contains("at 40x30"), "{text}");

@@ -1,5 +1,5 @@
 //! The `gltf_load` target: arbitrary bytes as a glTF file (JSON or binary), through the model type detection
-//! (`rastty::model::ModelFormat::detect`) and `rastty::model::load_gltf_bytes`, with no files beside it (a URI
+//! (`rastty_scene::model::ModelFormat::detect`) and `rastty_scene::model::load_gltf_bytes`, with no files beside it (a URI
 //! that is not a `data:` URI is missing); a model that loads is checked and rendered once
 //! ([`crate::model_checks`]).
 //!
@@ -7,7 +7,7 @@
 
 use std::path::Path;
 
-use rastty::model::{ModelFormat, NoFiles, load_gltf_bytes};
+use rastty_scene::model::{ModelFormat, NoFiles, load_gltf_bytes};
 
 use crate::model_checks::{check_model, has_control, render_once};
 

@@ -1,8 +1,8 @@
 //! The checks every model loader's target makes: the model is what `Model`'s documentation promises, and it draws.
 
-use rastty::model::{COORDINATE_LIMIT, MAX_TEXTURE_SIDE, Model};
-use rastty::scene_file::SceneData;
-use rastty::scene_render::{CameraOptions, PlanOptions, PreparedScene, ScenePlan, SceneRenderer, ShadingMode};
+use rastty_scene::model::{COORDINATE_LIMIT, MAX_TEXTURE_SIDE, Model};
+use rastty_scene::scene_file::SceneData;
+use rastty_scene::scene_render::{CameraOptions, PlanOptions, PreparedScene, ScenePlan, SceneRenderer, ShadingMode};
 use rastty_core::target::{Rgb888, Target};
 
 const WIDTH: u32 = 32;

@@ -1,4 +1,4 @@
-//! The `obj_load` target: arbitrary bytes as OBJ text through `rastty::model::load_obj_bytes`, with an
+//! The `obj_load` target: arbitrary bytes as OBJ text through `rastty_scene::model::load_obj_bytes`, with an
 //! `Embedded` resolver offering an MTL library and textures cut from the same input; a model that loads is checked
 //! for consistency and rendered once.
 //!
@@ -16,7 +16,7 @@
 //!
 //! The config byte is [`render_once`]'s: the shading mode, the wireframe, textures and the lens.
 
-use rastty::model::{Embedded, load_obj_bytes};
+use rastty_scene::model::{Embedded, load_obj_bytes};
 
 use crate::model_checks::{check_model, has_control, render_once};
 

@@ -1,10 +1,10 @@
-//! The `scene_parse` target: arbitrary bytes as a scene file, through `rastty::scene_file::parse` (TOML, the schema
+//! The `scene_parse` target: arbitrary bytes as a scene file, through `rastty_scene::scene_file::parse` (TOML, the schema
 //! and every range check). A scene that parses and names no file (its meshes built in, no images) is loaded,
 //! prepared, planned and drawn once into a small frame; scenes that name files are not loaded, so that a run does not
 //! depend on the machine's files.
 
-use rastty::scene_file::parse;
-use rastty::scene_render::{CameraOptions, PlanOptions, PreparedScene, ScenePlan, SceneRenderer};
+use rastty_scene::scene_file::parse;
+use rastty_scene::scene_render::{CameraOptions, PlanOptions, PreparedScene, ScenePlan, SceneRenderer};
 use rastty_core::target::{Rgb888, Target};
 
 use crate::model_checks::has_control;

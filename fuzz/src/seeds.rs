@@ -349,7 +349,7 @@ fn gltf_squares() -> Vec<u8> {
     bin.extend([255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255]); // 192: 16 colours
     bin.extend([0u16, 1, 2, 0, 2, 3].iter().flat_map(|i| i.to_le_bytes())); // 208: 12 indices
     let mut png = Vec::new();
-    rastty::png_file::encode_png(&mut png, 2, 2, &[0xFF0000, 0x00FF00, 0x8080FF, 0xFFFFFF]).expect("a PNG");
+    rastty_scene::png_file::encode_png(&mut png, 2, 2, &[0xFF0000, 0x00FF00, 0x8080FF, 0xFFFFFF]).expect("a PNG");
     let png_at = bin.len().next_multiple_of(4); // 220
     bin.resize(png_at, 0);
     bin.extend_from_slice(&png);
@@ -417,7 +417,7 @@ fn gltf_seeds(dir: &Path) -> usize {
     ];
     for (name, config, gltf) in &seeds {
         let data = crate::gltf_load::encode(*config, gltf);
-        if let Err(e) = rastty::model::load_gltf_bytes(*name, gltf, &rastty::model::NoFiles) {
+        if let Err(e) = rastty_scene::model::load_gltf_bytes(*name, gltf, &rastty_scene::model::NoFiles) {
             panic!("seed {name} does not load: {e}");
         }
         assert!(crate::gltf_load::run(&data), "seed {name} does not load");

@@ -1,5 +1,5 @@
 //! The `stl_load` target: arbitrary bytes as an STL file, through the model type detection
-//! (`rastty::model::ModelFormat::detect`) and `rastty::model::load_stl_bytes`; a model that loads is checked and
+//! (`rastty_scene::model::ModelFormat::detect`) and `rastty_scene::model::load_stl_bytes`; a model that loads is checked and
 //! rendered once ([`crate::model_checks`]).
 //!
 //! Input layout: `[config: u8] [STL bytes: the rest]`. The config's top bit asks for smooth normals, at an angle of
@@ -7,7 +7,7 @@
 
 use std::path::Path;
 
-use rastty::model::{ModelFormat, load_stl_bytes};
+use rastty_scene::model::{ModelFormat, load_stl_bytes};
 
 use crate::model_checks::{check_model, has_control, render_once};
 

@@ -1,30 +1,16 @@
-//! rastty: load models and scene files, render them with `rastty-core`, and show them in a terminal or write PNG
-//! files.
+//! The terminal side of rastty: frames shown in a terminal, and the viewer that shows a scene and follows the keys.
 //!
-//! One road from a file to the terminal, the same for a model and a scene file:
+//! The road from a file to a frame is [`rastty_scene`]'s; this crate takes the frame on to the terminal:
 //!
 //! | step | module | what happens |
 //! |---|---|---|
-//! | file | [`model`], [`scene_file`] | a model (OBJ with its MTL and textures, STL or glTF) or a TOML scene file, read by [`input_file`], checked and loaded; [`scene_file::open`] takes either |
-//! | scene | [`scene_file`], [`scene_render`] | a [`scene_file::SceneData`] (a model alone is one fitted object under the viewer's camera and lights), prepared once ([`scene_render::PreparedScene`]) |
-//! | frame | [`scene_render`] | a plan of passes (shadow maps, forward draws, ambient occlusion) for a camera ([`scene_render::Orbit`]) and the look asked for, run in bands of rows on threads |
-//! | cells | [`screen`], [`viewer`] | the frame as terminal cells, diffed against the last one and written; or a PNG file ([`png_file`]) |
-//! | files | [`png_file`], [`turntable_export`], [`render_stats`] | `rastty render`: the frame as a PNG file, or a turn of frames ([`turntable_export::Turntable`]) as an animated GIF, an APNG or numbered PNG files, written as they are rendered; `--stats`, the counts and times |
+//! | cells | [`screen`] | the frame as terminal cells (half blocks, quadrants, sextants, Braille, ASCII) in true colour, 256 or 16 colours, diffed against the last frame and written |
+//! | images | [`graphics`] | the frame as one image in the kitty, Sixel or iTerm2 protocol, for terminals that show pixels |
+//! | viewer | [`viewer`] | the interactive loop: terminal set-up and restore, keys, the camera's orbit, pacing over slow links |
 //!
-//! Beside them: [`builtin`] (the model compiled into the binary), [`input_file`] (the one reader of every file the
-//! program is given: regular files only, size-capped), [`escaped`] (text from input files made safe for a
-//! terminal) and [`graphics`] (the frame as one image in the kitty, Sixel or iTerm2 protocol instead of
-//! cells, for terminals that show pixels).
+//! The `rastty` program (`src/main.rs`) adds the command line and `rastty render`'s files (a PNG, or a turntable as
+//! GIF, APNG or numbered PNGs, and `--stats`).
 
-pub mod builtin;
-pub mod escaped;
 pub mod graphics;
-pub mod input_file;
-pub mod model;
-pub mod png_file;
-pub mod render_stats;
-pub mod scene_file;
-pub mod scene_render;
 pub mod screen;
-pub mod turntable_export;
 pub mod viewer;

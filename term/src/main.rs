@@ -1,29 +1,33 @@
 //! The `rastty` command: a terminal viewer (`rastty [MODEL.obj | SCENE.toml]`) and a headless renderer
 //! (`rastty render`).
 //!
-//! Argument parsing only; the work is in the `rastty` library.
+//! Argument parsing, and `rastty render`'s files; the scene and the frame are `rastty_scene`'s, the terminal the
+//! `rastty` library's.
+
+mod render_stats;
+mod turntable_export;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::str::FromStr;
 
+use crate::render_stats::{FrameStats, PassCounts, SceneCounts, TurntableFrameTimes, TurntableSummary};
+use crate::turntable_export::{DEFAULT_FPS, MAX_FPS, MAX_FRAMES, Turntable, TurntableError, TurntableOutput};
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
-use rastty::escaped::Escaped;
 use rastty::graphics::GraphicsProtocol;
 use rastty::graphics::frame_palette::Dither;
-use rastty::input_file::{parse_byte_size, set_max_file_bytes};
-use rastty::model::ModelOptions;
-use rastty::png_file::write_png;
-use rastty::render_stats::{FrameStats, PassCounts, SceneCounts, TurntableFrameTimes, TurntableSummary};
-use rastty::scene_file::{open, parse_hex_color};
-use rastty::scene_render::{
+use rastty::screen::{CellMode, ColorMode};
+use rastty::viewer::{ColorChoice, GraphicsChoice, ViewerExit, ViewerOptions};
+use rastty_core::math::Vec3;
+use rastty_scene::escaped::Escaped;
+use rastty_scene::input_file::{parse_byte_size, set_max_file_bytes};
+use rastty_scene::model::ModelOptions;
+use rastty_scene::png_file::write_png;
+use rastty_scene::scene_file::{open, parse_hex_color};
+use rastty_scene::scene_render::{
     CameraOptions, EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, ShadingMode, parse_size,
     render_scene_image,
 };
-use rastty::screen::{CellMode, ColorMode};
-use rastty::turntable_export::{DEFAULT_FPS, MAX_FPS, MAX_FRAMES, Turntable, TurntableError, TurntableOutput};
-use rastty::viewer::{ColorChoice, GraphicsChoice, ViewerExit, ViewerOptions};
-use rastty_core::math::Vec3;
 
 /// Render 3D models in the terminal, or to PNG files.
 #[derive(Parser, Debug)]
@@ -332,7 +336,7 @@ fn render(args: &RenderArgs) -> Result<(), String> {
     };
     let (scene, name, options) = args.scene.load(args.model.as_deref())?;
     let camera = args.scene.camera().orbit(&scene).camera;
-    let in_scene = |e: rastty::scene_render::SceneRenderError| format!("{}: {e}", Escaped(&name));
+    let in_scene = |e: rastty_scene::scene_render::SceneRenderError| format!("{}: {e}", Escaped(&name));
     let Some(output) = &args.output else {
         if args.stats {
             return Err("--stats needs -o OUT.png: --explain alone plans the frame without rendering it".into());

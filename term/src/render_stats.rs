@@ -9,9 +9,9 @@
 use std::fmt;
 use std::time::Duration;
 
-use crate::escaped::{Escaped, path_text};
-use crate::scene_render::{PreparedScene, SceneImage};
 use crate::turntable_export::{ExportedFrame, TurntableReport};
+use rastty_scene::escaped::{Escaped, path_text};
+use rastty_scene::scene_render::{PreparedScene, SceneImage};
 
 /// The scene's line: its name, and how many objects and triangles it has.
 #[derive(Clone, Copy, Debug)]

@@ -2,7 +2,7 @@
 //! rendered to a looping animated GIF, a looping animated PNG (APNG), or a numbered sequence of PNG files.
 //!
 //! Frame `k` is the camera of the options given (`--yaw`, `--pitch`, `--distance`, ...) with its yaw
-//! `start + 360 k / N` degrees ([`Orbit`](crate::scene_render::Orbit): yaw about the camera's `up` through its
+//! `start + 360 k / N` degrees ([`Orbit`](rastty_scene::scene_render::Orbit): yaw about the camera's `up` through its
 //! target, for a model and a scene file alike), drawn by [`render_scene_image_with`], the one road of
 //! `rastty render`, with one renderer for every frame (its threads started once; a shadow map whose light does not
 //! follow the camera drawn once). Each frame is encoded and written as soon as it is drawn: the frames are never
@@ -24,14 +24,14 @@ use std::io::{self, BufWriter};
 use std::path::{Path, PathBuf};
 use std::time::{Duration, Instant};
 
-use crate::escaped::path_text;
-use crate::graphics::frame_palette::{Dither, Learning, MAX_COLORS, reduce};
-use crate::png_file::{PendingFile, encode_png, rgb8, write_atomically};
-use crate::scene_file::SceneCamera;
-use crate::scene_render::{
+use rastty::graphics::frame_palette::{Dither, Learning, MAX_COLORS, reduce};
+use rastty::screen::PixelFrame;
+use rastty_scene::escaped::path_text;
+use rastty_scene::png_file::{PendingFile, encode_png, rgb8, write_atomically};
+use rastty_scene::scene_file::SceneCamera;
+use rastty_scene::scene_render::{
     CameraOptions, PlanOptions, PreparedScene, SceneImage, SceneRenderError, SceneRenderer, render_scene_image_with,
 };
-use crate::screen::PixelFrame;
 
 /// The most frames a turntable has (`--turntable`): a turn in steps of a tenth of a degree.
 pub const MAX_FRAMES: u32 = 3600;

@@ -7,9 +7,9 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
 
-use rastty::model::{LoadError, Model, ModelOptions, load_model};
 use rastty_core::color::{linear_to_srgb, srgb_to_linear};
 use rastty_core::math::{Vec2, Vec3};
+use rastty_scene::model::{LoadError, Model, ModelOptions, load_model};
 
 use crate::common::gltf_writer::GltfWriter;
 

@@ -6,8 +6,8 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
-use rastty::model::{Model, ModelOptions, load_model};
 use rastty_core::math::Vec3;
+use rastty_scene::model::{Model, ModelOptions, load_model};
 
 /// Spot's OBJ file in the repository.
 fn spot_obj() -> PathBuf {

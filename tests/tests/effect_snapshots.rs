@@ -17,8 +17,8 @@ use crate::snapshot;
 use std::path::Path;
 use std::sync::LazyLock;
 
-use rastty::scene_file::load;
-use rastty::scene_render::{EffectToggles, PlanOptions, PreparedScene, SceneEffect, render_scene_image};
+use rastty_scene::scene_file::load;
+use rastty_scene::scene_render::{EffectToggles, PlanOptions, PreparedScene, SceneEffect, render_scene_image};
 
 use snapshot::{Image, Mode, Snapshot, TOLERANCE, compare, golden_dir};
 

@@ -172,7 +172,7 @@ fn the_model_arrays_are_spot() {
     // The build script computes the normals with its own copy of the viewer's welding and area weighting (a
     // build script cannot cheaply depend on `rastty`): the two must agree bit for bit.
     let indices: Vec<u32> = spot::INDICES.iter().map(|&i| u32::from(i)).collect();
-    assert!(rastty::model::smooth_normals(&spot::POSITIONS, &indices) == spot::NORMALS, "the viewer's normals");
+    assert!(rastty_scene::model::smooth_normals(&spot::POSITIONS, &indices) == spot::NORMALS, "the viewer's normals");
 }
 
 /// Counts the vertex stage's position runs; the position is Spot's, scaled into the view volume.

@@ -13,10 +13,10 @@ use crate::snapshot;
 
 use std::sync::LazyLock;
 
-use rastty::builtin::builtin_model;
-use rastty::scene_file::SceneData;
-use rastty::scene_render::{CameraOptions, PlanOptions, PreparedScene, ScenePlan, SceneRenderer, ShadingMode};
 use rastty_core::target::{Rgb888, Target};
+use rastty_scene::builtin::builtin_model;
+use rastty_scene::scene_file::SceneData;
+use rastty_scene::scene_render::{CameraOptions, PlanOptions, PreparedScene, ScenePlan, SceneRenderer, ShadingMode};
 
 use snapshot::{Comparison, Failure, Image, Mode, Passed, Snapshot, TOLERANCE, compare, golden_dir};
 

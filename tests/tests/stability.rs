@@ -4,16 +4,16 @@
 
 use std::sync::LazyLock;
 
-use rastty::builtin::builtin_model;
-use rastty::model::{Model, NoFiles, load_obj_bytes};
-use rastty::scene_file::{Projection, SceneCamera, SceneData, defaults};
-use rastty::scene_render::{
-    CameraOptions, Orbit, PlanOptions, PreparedScene, ScenePlan, SceneRenderError, SceneRenderer, ShadingMode,
-};
 use rastty_core::camera::CameraError;
 use rastty_core::color::pack_rgb888;
 use rastty_core::math::Vec3;
 use rastty_core::target::{Rgb888, Target};
+use rastty_scene::builtin::builtin_model;
+use rastty_scene::model::{Model, NoFiles, load_obj_bytes};
+use rastty_scene::scene_file::{Projection, SceneCamera, SceneData, defaults};
+use rastty_scene::scene_render::{
+    CameraOptions, Orbit, PlanOptions, PreparedScene, ScenePlan, SceneRenderError, SceneRenderer, ShadingMode,
+};
 
 static SPOT: LazyLock<PreparedScene> = LazyLock::new(|| scene(builtin_model().expect("the built-in model loads")));
 

@@ -1,14 +1,14 @@
 //! The reference scene of a rastty scene, camera and plan options: the picture
-//! [`rastty::scene_render::SceneRenderer::render`] draws for a [`ScenePlan`] of them.
+//! [`rastty_scene::scene_render::SceneRenderer::render`] draws for a [`ScenePlan`] of them.
 
 use rastty_core::pipeline::Cull;
 use rastty_core::texture::FilterMode;
 
 use super::math::{self, Mat4, V3};
 use super::{Camera, Light, Lighting, Material, Object, Projection, ReferenceError, Scene, Shading};
-use rastty::model::Model;
-use rastty::scene_file::{LightKind, LightSpace, Projection as Lens, SceneCamera, SceneLight};
-use rastty::scene_render::{PlanOptions, PreparedScene, ScenePlan, SceneRenderError, ShadingMode, part_material};
+use rastty_scene::model::Model;
+use rastty_scene::scene_file::{LightKind, LightSpace, Projection as Lens, SceneCamera, SceneLight};
+use rastty_scene::scene_render::{PlanOptions, PreparedScene, ScenePlan, SceneRenderError, ShadingMode, part_material};
 
 fn widen(v: rastty_core::math::Vec3) -> [f64; 3] {
     [f64::from(v.x), f64::from(v.y), f64::from(v.z)]

@@ -31,7 +31,7 @@ impl ReferenceImage {
     }
 
     /// The image as `0x00RRGGBB` pixels, each channel rounded to the nearest of 256 levels (what
-    /// [`rastty::png_file::write_png`] takes).
+    /// [`rastty_scene::png_file::write_png`] takes).
     pub fn to_rgb888(&self) -> Vec<u32> {
         let q = |v: f64| (v.clamp(0.0, 1.0) * 255.0).round() as u32;
         self.rgb.iter().map(|c| (q(c[0]) << 16) | (q(c[1]) << 8) | q(c[2])).collect()

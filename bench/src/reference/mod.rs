@@ -41,8 +41,8 @@
 //! # Use
 //!
 //! Build a [`Scene`] by hand, or from a rastty scene, camera and plan options with [`Scene::from_scene`] (the
-//! same picture as rastty's scene renderer, [`rastty::scene_render::SceneRenderer`], draws: a model shown without
-//! a scene file is a scene too, [`rastty::scene_file::SceneData::from_model`]), then call [`render`] for a
+//! same picture as rastty's scene renderer, [`rastty_scene::scene_render::SceneRenderer`], draws: a model shown without
+//! a scene file is a scene too, [`rastty_scene::scene_file::SceneData::from_model`]), then call [`render`] for a
 //! [`ReferenceImage`], or make a [`Renderer`] to render and also [`Renderer::probe`] single points.
 //!
 //! ```
@@ -86,8 +86,8 @@ pub use render::{Probe, Renderer, SAMPLES_PER_AXIS, render};
 pub use texture::sample_bilinear;
 
 use math::Mat4;
-use rastty::model::TextureImage;
-use rastty::scene_render::SceneRenderError;
+use rastty_scene::model::TextureImage;
+use rastty_scene::scene_render::SceneRenderError;
 
 /// Everything the reference renderer draws: image size, camera, lights, background and objects.
 #[derive(Clone, Debug, PartialEq)]

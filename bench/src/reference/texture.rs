@@ -5,7 +5,7 @@ use rastty_core::texture::WrapMode;
 
 use super::math::V3;
 use super::srgb;
-use rastty::model::TextureImage;
+use rastty_scene::model::TextureImage;
 
 /// A texel's channels in `[0, 1]` (`0x00RRGGBB`, the top byte ignored), decoded to linear light in
 /// [`ShadingSpace::Linear`].

@@ -13,8 +13,8 @@ use super::median;
 use super::terminal::{ReportError, Turntable, TurntableFrame, mean};
 use rastty::graphics::GraphicsProtocol;
 use rastty::graphics::frame_palette::Dither;
-use rastty::scene_render::PreparedScene;
 use rastty::screen::{CellMode, ColorMode, Encoder};
+use rastty_scene::scene_render::PreparedScene;
 
 /// The terminal size of the table, in cells.
 pub const SIZE: (u16, u16) = (120, 40);

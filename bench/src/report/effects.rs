@@ -26,8 +26,8 @@ use std::time::{Duration, Instant};
 use rastty_core::target::{Rgb888, Target};
 
 use super::median;
-use rastty::escaped::path_text;
-use rastty::scene_render::{
+use rastty_scene::escaped::path_text;
+use rastty_scene::scene_render::{
     BAND_PIXELS, BANDS_PER_THREAD, EffectToggles, FrameReport, PlanOptions, PreparedScene, SceneEffect, ScenePlan,
     SceneRenderError, SceneRenderer,
 };

@@ -17,8 +17,8 @@ use std::time::Duration;
 
 use super::effects::{EffectsError, Samples, ShadowMaps, TimedFrames, check_maps, plan};
 use super::median;
-use rastty::escaped::path_text;
-use rastty::scene_render::{
+use rastty_scene::escaped::path_text;
+use rastty_scene::scene_render::{
     EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError, SceneRenderer,
 };
 

@@ -36,7 +36,7 @@ pub fn machine_description() -> String {
 
 /// The threads a timing report draws each frame on: `threads`, else this machine's logical CPUs (at least 1).
 pub fn thread_count(threads: Option<usize>) -> usize {
-    use rastty::scene_render::SceneRenderer;
+    use rastty_scene::scene_render::SceneRenderer;
     SceneRenderer::with_threads(threads.unwrap_or_else(|| SceneRenderer::new().threads())).threads()
 }
 

@@ -18,12 +18,12 @@ use std::time::{Duration, Instant};
 use rastty_core::target::{Rgb888, Target};
 
 use super::median;
-use rastty::builtin::BUILTIN_NAME;
 use rastty::graphics::{FrameImage, GraphicsProtocol, Passthrough};
-use rastty::scene_file::{FramedCamera, OpenError, Projection, open};
-use rastty::scene_render::{Orbit, PlanOptions, PreparedScene, ScenePlan, SceneRenderError, SceneRenderer};
 use rastty::screen::{CellGrid, CellMode, ColorMode, Encoder, PixelFrame, naive_full_frame};
 use rastty::viewer::{MAX_IMAGE_PIXELS, image_size};
+use rastty_scene::builtin::BUILTIN_NAME;
+use rastty_scene::scene_file::{FramedCamera, OpenError, Projection, open};
+use rastty_scene::scene_render::{Orbit, PlanOptions, PreparedScene, ScenePlan, SceneRenderError, SceneRenderer};
 
 /// Terminal sizes measured, in cells (columns, rows).
 pub const SIZES: [(u16, u16); 3] = [(80, 24), (120, 40), (200, 60)];
@@ -421,7 +421,7 @@ pub fn table_row(m: &Measurement) -> String {
 /// # Errors
 /// [`ReportError::Load`], [`ReportError::Render`] (a model without a finite vertex).
 pub fn builtin_scene() -> Result<PreparedScene, ReportError> {
-    let opened = open(None, &rastty::model::ModelOptions::default()).map_err(ReportError::Load)?;
+    let opened = open(None, &rastty_scene::model::ModelOptions::default()).map_err(ReportError::Load)?;
     PreparedScene::new(opened.data).map_err(ReportError::Render)
 }
 

@@ -9,8 +9,8 @@ use std::io::Write;
 use base64::Engine;
 use base64::engine::general_purpose::STANDARD as BASE64;
 
-use crate::png_file::encode_png;
 use crate::screen::PixelFrame;
+use rastty_scene::png_file::encode_png;
 
 /// Appends `frame` as an inline image covering `columns` x `rows` cells from the cursor. An empty frame sends
 /// nothing.

@@ -2,7 +2,7 @@
 
 use super::input_decoder::{Input, Key, MouseKind};
 
-use crate::scene_render::SceneEffect;
+use rastty_scene::scene_render::SceneEffect;
 
 /// Something the user asked for.
 #[derive(Clone, Copy, Debug, PartialEq)]

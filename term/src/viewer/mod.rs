@@ -5,7 +5,7 @@
 //! HUD and help as cells); a [`FrameWriter`] thread encodes the newest frame (cells as a delta) and writes it.
 //! Idle, the viewer sleeps in `poll`: no frames, no bytes, no CPU.
 //!
-//! A model and a scene file are both a scene ([`crate::scene_file::open`]) drawn by [`crate::scene_render`]: each
+//! A model and a scene file are both a scene ([`rastty_scene::scene_file::open`]) drawn by [`rastty_scene::scene_render`]: each
 //! frame is planned from the orbited camera, the shading mode (key `m`) and the effects switched on (keys `1` to
 //! `5`), so a switched-off effect is not computed, and the shadow maps are kept from frame to frame (they do not
 //! depend on the camera).
@@ -40,13 +40,13 @@ use rastty_core::math::Vec3;
 use rastty_core::pipeline::DrawStats;
 use rastty_core::target::{Rgb888, Target};
 
-use crate::escaped::Escaped;
 use crate::graphics::frame_palette::Dither;
 use crate::graphics::{FrameImage, GraphicsProtocol, Passthrough};
-use crate::scene_render::{
+use crate::screen::{CellGrid, CellMode, ColorMode, PixelFrame};
+use rastty_scene::escaped::Escaped;
+use rastty_scene::scene_render::{
     FrameReport, Orbit, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError, SceneRenderer,
 };
-use crate::screen::{CellGrid, CellMode, ColorMode, PixelFrame};
 
 /// Smallest terminal the viewer draws in; below it shows a notice.
 pub const MIN_COLUMNS: u16 = 16;

@@ -1,6 +1,6 @@
 //! What the viewer shows and how input changes it.
 
-use crate::scene_render::{Orbit, PlanOptions};
+use rastty_scene::scene_render::{Orbit, PlanOptions};
 
 use super::controls::Action;
 
@@ -119,8 +119,8 @@ mod tests {
     use rastty_core::math::Vec3;
 
     use super::*;
-    use crate::scene_file::{Projection, SceneCamera};
-    use crate::scene_render::{SceneEffect, ShadingMode};
+    use rastty_scene::scene_file::{Projection, SceneCamera};
+    use rastty_scene::scene_render::{SceneEffect, ShadingMode};
 
     fn state() -> ViewerState {
         let camera = SceneCamera {

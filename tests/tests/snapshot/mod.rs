@@ -10,7 +10,7 @@ use std::fmt;
 use std::fs;
 use std::path::{Path, PathBuf};
 
-use rastty::png_file::write_png;
+use rastty_scene::png_file::write_png;
 
 /// The environment variable that turns on blessing.
 pub const UPDATE_VARIABLE: &str = "UPDATE_SNAPSHOTS";

@@ -21,9 +21,9 @@ pub use core_render::{CoreRenderError, CoreScene, Frames, Rendered};
 pub use metrics::{Score, score};
 
 use crate::reference;
-use rastty::escaped::path_text;
-use rastty::png_file::{write_atomically, write_png};
 use rastty_core::target::Samples;
+use rastty_scene::escaped::path_text;
+use rastty_scene::png_file::{write_atomically, write_png};
 
 /// What to measure and where to write.
 #[derive(Clone, Debug)]

@@ -5,9 +5,9 @@ use rastty_core::pipeline::Cull;
 use rastty_core::texture::WrapMode;
 
 use crate::reference::{Camera, Light, Lighting, Object, Projection, Scene, Shading, math};
-use rastty::model::TextureImage;
-use rastty::scene_file::open;
-use rastty::scene_render::{CameraOptions, PlanOptions, PreparedScene};
+use rastty_scene::model::TextureImage;
+use rastty_scene::scene_file::open;
+use rastty_scene::scene_render::{CameraOptions, PlanOptions, PreparedScene};
 
 /// A named scene and what it is for.
 pub struct AccuracyScene {
@@ -81,7 +81,7 @@ fn floor(w: u32, h: u32) -> AccuracyScene {
 /// and 40-degree lens).
 fn model(w: u32, h: u32) -> Result<AccuracyScene, String> {
     let failed = |e: &dyn std::fmt::Display| format!("model: {e}");
-    let opened = open(None, &rastty::model::ModelOptions::default()).map_err(|e| failed(&e))?;
+    let opened = open(None, &rastty_scene::model::ModelOptions::default()).map_err(|e| failed(&e))?;
     let scene = PreparedScene::new(opened.data).map_err(|e| failed(&e))?;
     let camera = CameraOptions {
         yaw_degrees: Some(65.0),

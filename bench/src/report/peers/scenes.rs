@@ -6,9 +6,9 @@
 
 use std::path::{Path, PathBuf};
 
-use rastty::model::{ModelOptions, TextureImage, load_model};
 use rastty_core::camera::{look_at, perspective};
 use rastty_core::math::{Mat4, Vec2, Vec3};
+use rastty_scene::model::{ModelOptions, TextureImage, load_model};
 
 /// The albedo of the untextured scenes, `(235, 205, 170)`.
 pub const ALBEDO: [u8; 3] = [235, 205, 170];

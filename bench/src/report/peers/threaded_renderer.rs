@@ -8,15 +8,17 @@
 use std::path::PathBuf;
 use std::sync::Arc;
 
-use rastty::model::{Material, Model, Part};
-use rastty::scene_file::{
-    CameraPlacement, LightKind, LightSpace, ObjectMaterial, Projection, SceneCamera, SceneData, SceneLight, SceneObject,
-};
-use rastty::scene_render::{EffectToggles, PlanOptions, PreparedScene, ScenePlan, SceneRenderError, SceneRenderer};
 use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::target::{Rgb888, Target};
 use rastty_core::texture::{FilterMode, MipFilter, WrapMode};
+use rastty_scene::model::{Material, Model, Part};
+use rastty_scene::scene_file::{
+    CameraPlacement, LightKind, LightSpace, ObjectMaterial, Projection, SceneCamera, SceneData, SceneLight, SceneObject,
+};
+use rastty_scene::scene_render::{
+    EffectToggles, PlanOptions, PreparedScene, ScenePlan, SceneRenderError, SceneRenderer,
+};
 
 use super::scenes::{AMBIENT, DIFFUSE, Scene, to_light};
 

@@ -9,13 +9,13 @@ use std::fs;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use rastty::model::TextureImage;
-use rastty::scene_file::{
+use rastty_core::math::{Mat4, Vec3};
+use rastty_core::texture::{Anisotropy, FilterMode, MipFilter, WrapMode};
+use rastty_scene::model::TextureImage;
+use rastty_scene::scene_file::{
     CameraPlacement, FramedCamera, LightKind, LightSpace, NormalSpace, Projection, SceneCamera, SceneData,
     SceneFileError, SceneFileErrorKind, defaults, load, object_transform, parse,
 };
-use rastty_core::math::{Mat4, Vec3};
-use rastty_core::texture::{Anisotropy, FilterMode, MipFilter, WrapMode};
 
 // ---------------------------------------------------------------------------------------------------------------
 // Helpers
@@ -162,7 +162,7 @@ fn the_docs_scenes_load_the_tinyrenderer_models() {
 fn the_format_documents_example_parses_with_every_key() {
     let doc = fs::read_to_string(root().join("docs/scene-format.md")).unwrap();
     let example = doc.split("```toml\n").nth(1).and_then(|rest| rest.split("```").next()).expect("a toml example");
-    let parsed = rastty::scene_file::parse(example, "scene-format.md");
+    let parsed = rastty_scene::scene_file::parse(example, "scene-format.md");
     assert!(parsed.is_ok(), "{}", parsed.unwrap_err());
     // Every key of the table appears in the example.
     let table_keys = doc.lines().filter_map(|l| l.strip_prefix("| `")).filter_map(|l| l.split('`').next());
@@ -729,7 +729,7 @@ fn scene_material_keys_override_the_mtl_and_absent_keys_fall_back_to_it() {
     let from_scene: &TextureImage = dressed.material.diffuse_over(mtl).unwrap();
     assert!(std::ptr::eq(from_scene, &**dressed.material.diffuse.as_ref().unwrap()));
     // A part without an MTL material and no scene colour: the default.
-    assert_eq!(plain.material.color_over(None), rastty::model::DEFAULT_DIFFUSE);
+    assert_eq!(plain.material.color_over(None), rastty_scene::model::DEFAULT_DIFFUSE);
 }
 
 // ---------------------------------------------------------------------------------------------------------------

@@ -13,7 +13,7 @@
 //!
 //! # Example
 //! ```
-//! use rastty::scene_file::{CameraPlacement, LightKind, Projection, parse};
+//! use rastty_scene::scene_file::{CameraPlacement, LightKind, Projection, parse};
 //!
 //! let text = r#"
 //! [camera]

@@ -7,11 +7,11 @@ use std::path::{Path, PathBuf};
 
 use image::{DynamicImage, ImageFormat};
 use proptest::prelude::*;
-use rastty::model::{
+use rastty_core::math::{Vec2, Vec3};
+use rastty_scene::model::{
     COORDINATE_LIMIT, DEFAULT_DIFFUSE, Element, Embedded, FALLBACK_NORMAL, LoadError, LoadErrorKind, Model,
     ModelOptions, NoFiles, TextureImage, load_model, load_obj_bytes,
 };
-use rastty_core::math::{Vec2, Vec3};
 
 // ---------------------------------------------------------------------------------------------------------------
 // Helpers

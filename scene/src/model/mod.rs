@@ -14,7 +14,7 @@
 //!
 //! # Example
 //! ```
-//! use rastty::model::{Embedded, load_obj_bytes};
+//! use rastty_scene::model::{Embedded, load_obj_bytes};
 //!
 //! let obj = b"mtllib cube.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nusemtl red\nf 1 2 3 4\n";
 //! let files: &[(&str, &[u8])] = &[("cube.mtl", b"newmtl red\nKd 1 0 0\n")];

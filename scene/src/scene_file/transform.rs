@@ -13,7 +13,7 @@ use rastty_core::math::{Mat4, Vec3};
 ///
 /// # Examples
 /// ```
-/// use rastty::scene_file::object_transform;
+/// use rastty_scene::scene_file::object_transform;
 /// use rastty_core::math::Vec3;
 ///
 /// // Scaled by 2, turned a quarter about Z, moved up by 1: +x lands on (0, 3, 0).

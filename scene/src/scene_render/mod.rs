@@ -42,8 +42,8 @@
 //!
 //! # Example
 //! ```
-//! use rastty::scene_file::parse;
-//! use rastty::scene_render::{PlanOptions, PreparedScene, ScenePlan, render_scene_image};
+//! use rastty_scene::scene_file::parse;
+//! use rastty_scene::scene_render::{PlanOptions, PreparedScene, ScenePlan, render_scene_image};
 //!
 //! let text = r#"
 //! [camera]

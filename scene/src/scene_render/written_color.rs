@@ -8,7 +8,7 @@ use rastty_core::math::Vec3;
 ///
 /// # Examples
 /// ```
-/// use rastty::scene_render::lit_color;
+/// use rastty_scene::scene_render::lit_color;
 /// use rastty_core::{color::ShadingSpace, math::Vec3};
 /// assert_eq!(lit_color(Vec3::new(1.0, 0.0, 0.5), ShadingSpace::Encoded), Vec3::new(1.0, 0.0, 0.5));
 /// let linear = lit_color(Vec3::new(1.0, 0.0, 0.5), ShadingSpace::Linear);

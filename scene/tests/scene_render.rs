@@ -7,13 +7,13 @@ use common::{root, scenes_in};
 use std::fs;
 use std::path::Path;
 
-use rastty::scene_file::{load, parse};
-use rastty::scene_render::{
+use rastty_core::math::Vec3;
+use rastty_core::target::{Rgb888, Target};
+use rastty_scene::scene_file::{load, parse};
+use rastty_scene::scene_render::{
     AMBIENT_OCCLUSION, EffectToggles, MAX_CUBE_FACE, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderer,
     ShadingMode, render_scene_image,
 };
-use rastty_core::math::Vec3;
-use rastty_core::target::{Rgb888, Target};
 
 fn prepared(path: &Path) -> PreparedScene {
     PreparedScene::new(load(path).unwrap_or_else(|e| panic!("{e}"))).unwrap_or_else(|e| panic!("{e}"))
@@ -343,7 +343,7 @@ fn shadow_maps_are_kept_while_only_the_camera_moves() {
     let (w, h) = (160u32, 120u32);
     let (mut color, mut depth) = (vec![0u32; (w * h) as usize], vec![0f32; (w * h) as usize]);
     let mut renderer = SceneRenderer::new();
-    let mut frame = |camera: &rastty::scene_file::SceneCamera| {
+    let mut frame = |camera: &rastty_scene::scene_file::SceneCamera| {
         let plan = ScenePlan::new(&scene, camera, (w, h), &PlanOptions::default()).unwrap();
         let mut target = Target::new(Rgb888(&mut color), &mut depth[..], w, h).unwrap();
         let report = renderer.render(&scene, &plan, &mut target).unwrap();
