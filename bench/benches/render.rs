@@ -260,9 +260,10 @@ enum Maps {
 }
 
 fn surface(bencher: Bencher, maps: Maps) {
+    use rastty_core::math::BoundingSphere;
     use rastty_core::math::Vec4;
     use rastty_core::shading::{NormalMap, NormalSpace};
-    use rastty_core::shadow::{Bounds, ShadowBias, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster};
+    use rastty_core::shadow::{ShadowBias, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster};
     let sphere = Sphere::new(35, 36);
     let mesh = sphere.mesh();
     let mut tangents = vec![Vec4::ZERO; sphere.positions.len()];
@@ -285,7 +286,7 @@ fn surface(bencher: Bencher, maps: Maps) {
     };
     let object = Object { mesh, tangents: Some(&tangents), transforms: t, shading: ShadingModel::Phong, material };
     let shadowed = matches!(maps, Maps::DiffuseNormalSpecularShadow);
-    let view = ShadowView::fit(light.kind, Bounds { centre: Vec3::ZERO, radius: 1.0 }, 2048).unwrap();
+    let view = ShadowView::fit(light.kind, BoundingSphere { centre: Vec3::ZERO, radius: 1.0 }, 2048).unwrap();
     let mut shadow_depth = vec![0.0; 2048 * 2048];
     bencher.bench_local(|| {
         let mut light = light;

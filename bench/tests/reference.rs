@@ -9,15 +9,15 @@
 use std::path::PathBuf;
 
 use rastty_bench::reference::{
-    Camera, Light, Lighting, Material, Object, Projection, ReferenceError, ReferenceImage, Renderer, SAMPLES_PER_AXIS,
-    Scene, Shading, render, srgb,
+    Camera, ReferenceError, ReferenceImage, ReferenceLight, ReferenceLighting, ReferenceMaterial, ReferenceObject,
+    ReferenceProjection, ReferenceScene, Renderer, SAMPLES_PER_AXIS, Shading, render, srgb,
 };
 use rastty_core::camera::CameraError;
 use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Vec2, Vec3};
 use rastty_core::pipeline::Cull;
 use rastty_core::texture::{MipFilter, WrapMode};
-use rastty_scene::model::{DEFAULT_DIFFUSE, Material as ModelMaterial, Model, Part, TextureImage};
+use rastty_scene::model::{DEFAULT_DIFFUSE, Model, ModelMaterial, Part, TextureImage};
 use rastty_scene::scene_file::{SceneCamera, SceneData};
 use rastty_scene::scene_render::{CameraOptions, PlanOptions, PreparedScene, ShadingMode, render_scene_image};
 
@@ -30,8 +30,8 @@ const N: u32 = SAMPLES_PER_AXIS;
 /// at view depth 1 (depth = 1 - z).
 /// An empty scene lit on the stored values: the tests below state the maths of coverage, depth and shading, and
 /// [`light_averages_in_linear_light`] what linear light changes.
-fn stored_scene(width: u32, height: u32, camera: Camera) -> Scene {
-    Scene { space: ShadingSpace::Encoded, ..Scene::new(width, height, camera) }
+fn stored_scene(width: u32, height: u32, camera: Camera) -> ReferenceScene {
+    ReferenceScene { space: ShadingSpace::Encoded, ..ReferenceScene::new(width, height, camera) }
 }
 
 fn pixel_camera(width: u32, height: u32) -> Camera {
@@ -39,7 +39,7 @@ fn pixel_camera(width: u32, height: u32) -> Camera {
         eye: [0.0, 0.0, 1.0],
         target: [0.0; 3],
         up: [0.0, 1.0, 0.0],
-        projection: Projection::Orthographic {
+        projection: ReferenceProjection::Orthographic {
             left: 0.0,
             right: f64::from(width),
             bottom: -f64::from(height),
@@ -56,7 +56,7 @@ fn eye_camera(aspect: f64, near: f64, far: f64) -> Camera {
         eye: [0.0; 3],
         target: [0.0, 0.0, -1.0],
         up: [0.0, 1.0, 0.0],
-        projection: Projection::Perspective { fovy: std::f64::consts::FRAC_PI_2, aspect, near, far },
+        projection: ReferenceProjection::Perspective { fovy: std::f64::consts::FRAC_PI_2, aspect, near, far },
     }
 }
 
@@ -73,8 +73,8 @@ fn sample_point(i: u32, j: u32, k: u32, l: u32) -> (f64, f64) {
 }
 
 /// An unlit object of one colour, both faces drawn.
-fn flat(positions: Vec<[f64; 3]>, indices: Vec<u32>, color: [f64; 3]) -> Object {
-    let mut o = Object::new(positions, indices);
+fn flat(positions: Vec<[f64; 3]>, indices: Vec<u32>, color: [f64; 3]) -> ReferenceObject {
+    let mut o = ReferenceObject::new(positions, indices);
     o.material.color = color;
     o.shading = Shading::Unlit;
     o.cull = Cull::None;
@@ -82,7 +82,7 @@ fn flat(positions: Vec<[f64; 3]>, indices: Vec<u32>, color: [f64; 3]) -> Object 
 }
 
 /// A rectangle `[x0, x1] x [y0, y1]` at height `z` in world space (counter-clockwise seen from `+z`).
-fn rectangle(x0: f64, x1: f64, y0: f64, y1: f64, z: f64, color: [f64; 3]) -> Object {
+fn rectangle(x0: f64, x1: f64, y0: f64, y1: f64, z: f64, color: [f64; 3]) -> ReferenceObject {
     flat(vec![[x0, y0, z], [x1, y0, z], [x1, y1, z], [x0, y1, z]], vec![0, 1, 2, 0, 2, 3], color)
 }
 
@@ -106,7 +106,7 @@ fn an_edge_through_the_middle_of_a_pixel_column_covers_half_of_it() {
     let (w, h) = (8, 4);
     // Covers screen x <= 3.5 (world y runs from -100 to 100, so the whole height).
     let tri = flat(vec![[3.5, -100.0, 0.0], [3.5, 100.0, 0.0], [-100.0, 0.0, 0.0]], vec![0, 1, 2], RED);
-    let scene = Scene { background: GREY, objects: vec![tri], ..stored_scene(w, h, pixel_camera(w, h)) };
+    let scene = ReferenceScene { background: GREY, objects: vec![tri], ..stored_scene(w, h, pixel_camera(w, h)) };
     let image = render(&scene).unwrap();
     for y in 0..h {
         for x in 0..w {
@@ -134,7 +134,8 @@ fn an_edge_through_the_middle_of_a_pixel_column_covers_half_of_it() {
 fn light_averages_in_linear_light() {
     let (w, h) = (8, 4);
     let tri = flat(vec![[3.5, -100.0, 0.0], [3.5, 100.0, 0.0], [-100.0, 0.0, 0.0]], vec![0, 1, 2], RED);
-    let scene = Scene { background: GREY, objects: vec![tri], ..Scene::new(w, h, pixel_camera(w, h)) };
+    let scene =
+        ReferenceScene { background: GREY, objects: vec![tri], ..ReferenceScene::new(w, h, pixel_camera(w, h)) };
     assert_eq!(scene.space, ShadingSpace::Linear);
     let image = render(&scene).unwrap();
     let half = |a: f64, b: f64| srgb::encode((srgb::decode(a) + srgb::decode(b)) / 2.0);
@@ -150,7 +151,8 @@ fn an_edge_through_the_middle_of_a_pixel_column_in_perspective() {
     // Five columns: the middle of column 2 is the view axis, and the triangle's edge lies in the plane x = 0.
     let (w, h) = (5, 3);
     let tri = flat(vec![[0.0, -10.0, -2.0], [0.0, 10.0, -2.0], [-10.0, 0.0, -2.0]], vec![0, 1, 2], BLUE);
-    let scene = Scene { background: GREY, objects: vec![tri], ..stored_scene(w, h, eye_camera(1.0, 0.5, 10.0)) };
+    let scene =
+        ReferenceScene { background: GREY, objects: vec![tri], ..stored_scene(w, h, eye_camera(1.0, 0.5, 10.0)) };
     let image = render(&scene).unwrap();
     for y in 0..h {
         let row: Vec<f64> = (0..w).map(|x| image.coverage[image.index(x, y)]).collect();
@@ -166,7 +168,7 @@ fn a_diagonal_edge_covers_the_samples_below_it() {
     // The line y = x (screen) through a 4x4 image: the samples strictly below it and those on it are covered.
     let (w, h) = (4, 4);
     let tri = flat(vec![[-1.0, 1.0, 0.0], [9.0, -9.0, 0.0], [-1.0, -9.0, 0.0]], vec![0, 1, 2], RED);
-    let scene = Scene { objects: vec![tri], ..stored_scene(w, h, pixel_camera(w, h)) };
+    let scene = ReferenceScene { objects: vec![tri], ..stored_scene(w, h, pixel_camera(w, h)) };
     let image = render(&scene).unwrap();
     for y in 0..h {
         for x in 0..w {
@@ -193,7 +195,7 @@ fn shared_edges_leave_no_gap() {
     // A square of two triangles: samples exactly on their shared diagonal (x + y = 6) are covered too.
     let (w, h) = (6, 6);
     let square = rectangle(0.5, 5.5, -5.5, -0.5, 0.0, RED);
-    let scene = Scene { background: GREY, objects: vec![square], ..stored_scene(w, h, pixel_camera(w, h)) };
+    let scene = ReferenceScene { background: GREY, objects: vec![square], ..stored_scene(w, h, pixel_camera(w, h)) };
     let image = render(&scene).unwrap();
     for y in 1..5 {
         for x in 1..5 {
@@ -216,7 +218,7 @@ fn the_nearer_triangle_wins_in_either_order() {
     let far = rectangle(0.0, 4.0, -6.0, 0.0, 0.0, RED);
     let near = rectangle(2.0, 6.0, -6.0, 0.0, 0.5, BLUE);
     for objects in [vec![far.clone(), near.clone()], vec![near.clone(), far.clone()]] {
-        let scene = Scene { background: GREY, objects, ..stored_scene(w, h, pixel_camera(w, h)) };
+        let scene = ReferenceScene { background: GREY, objects, ..stored_scene(w, h, pixel_camera(w, h)) };
         let image = render(&scene).unwrap();
         for y in 0..h {
             assert_eq!(image.pixel(1, y), RED);
@@ -230,7 +232,7 @@ fn the_nearer_triangle_wins_in_either_order() {
     let far = flat(vec![[-9.0, -9.0, -4.0], [9.0, -9.0, -4.0], [0.0, 9.0, -4.0]], vec![0, 1, 2], RED);
     let near = flat(vec![[-2.0, -2.0, -3.0], [2.0, -2.0, -3.0], [0.0, 2.0, -3.0]], vec![0, 1, 2], BLUE);
     for objects in [vec![far.clone(), near.clone()], vec![near, far]] {
-        let scene = Scene { objects, ..stored_scene(w, h, eye_camera(1.0, 0.1, 10.0)) };
+        let scene = ReferenceScene { objects, ..stored_scene(w, h, eye_camera(1.0, 0.1, 10.0)) };
         let renderer = Renderer::new(&scene).unwrap();
         assert_eq!(renderer.render().pixel(4, 4), BLUE);
         let hit = renderer.probe(4.0, 4.0).unwrap();
@@ -245,9 +247,10 @@ fn an_exact_depth_tie_goes_to_the_first_drawn() {
     let (w, h) = (2, 2);
     let a = rectangle(0.0, 2.0, -2.0, 0.0, 0.0, RED);
     let b = rectangle(0.0, 2.0, -2.0, 0.0, 0.0, BLUE);
-    let image = render(&Scene { objects: vec![a.clone(), b.clone()], ..stored_scene(w, h, pixel_camera(w, h)) });
+    let image =
+        render(&ReferenceScene { objects: vec![a.clone(), b.clone()], ..stored_scene(w, h, pixel_camera(w, h)) });
     assert_eq!(image.unwrap().pixel(1, 1), RED);
-    let image = render(&Scene { objects: vec![b, a], ..stored_scene(w, h, pixel_camera(w, h)) });
+    let image = render(&ReferenceScene { objects: vec![b, a], ..stored_scene(w, h, pixel_camera(w, h)) });
     assert_eq!(image.unwrap().pixel(1, 1), BLUE);
 }
 
@@ -262,7 +265,8 @@ fn a_triangle_crossing_the_near_plane_is_cut_exactly_at_it() {
         vec![0, 1, 2, 0, 2, 3],
         RED,
     );
-    let scene = Scene { background: GREY, objects: vec![plane], ..stored_scene(w, h, eye_camera(aspect, near, far)) };
+    let scene =
+        ReferenceScene { background: GREY, objects: vec![plane], ..stored_scene(w, h, eye_camera(aspect, near, far)) };
     let renderer = Renderer::new(&scene).unwrap();
     let image = renderer.render();
     // Closed form per sample: visible when the hit depth is within [near, far] and the hit within the quad.
@@ -312,18 +316,20 @@ fn culling_follows_the_screen_winding_and_mirroring() {
     let (w, h) = (2, 2);
     // Counter-clockwise seen from the camera (+z): front-facing.
     let ccw = rectangle(0.0, 2.0, -2.0, 0.0, 0.0, RED);
-    let drawn = |o: &Object| render(&Scene { objects: vec![o.clone()], ..stored_scene(w, h, pixel_camera(w, h)) });
+    let drawn = |o: &ReferenceObject| {
+        render(&ReferenceScene { objects: vec![o.clone()], ..stored_scene(w, h, pixel_camera(w, h)) })
+    };
     for (cull, want) in [(Cull::None, true), (Cull::Back, true), (Cull::Front, false)] {
-        let o = Object { cull, ..ccw.clone() };
+        let o = ReferenceObject { cull, ..ccw.clone() };
         assert_eq!(drawn(&o).unwrap().coverage[0] == 1.0, want, "{cull:?}");
     }
     // Mirrored in x (and moved back into view): the winding on screen flips, and so does which side is the front,
     // as in rastty.
-    let mut mirrored = Object { cull: Cull::Back, ..ccw.clone() };
+    let mut mirrored = ReferenceObject { cull: Cull::Back, ..ccw.clone() };
     mirrored.model = [[-1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [2.0, 0.0, 0.0, 1.0]];
     assert_eq!(drawn(&mirrored).unwrap().coverage[0], 1.0);
     // A genuinely back-facing triangle (clockwise on screen) is culled.
-    let mut cw = Object { cull: Cull::Back, ..ccw };
+    let mut cw = ReferenceObject { cull: Cull::Back, ..ccw };
     cw.indices = vec![0, 2, 1, 0, 3, 2];
     assert_eq!(drawn(&cw).unwrap().coverage[0], 0.0);
 }
@@ -349,7 +355,7 @@ fn texture_coordinates_are_perspective_correct() {
     );
     floor.uvs = Some(vec![[0.1, 0.5], [0.1, 0.5], [0.9, 0.5], [0.9, 0.5]]);
     floor.texture = Some(ramp());
-    let scene = Scene { objects: vec![floor], ..stored_scene(w, h, eye_camera(aspect, 0.5, 20.0)) };
+    let scene = ReferenceScene { objects: vec![floor], ..stored_scene(w, h, eye_camera(aspect, 0.5, 20.0)) };
     let renderer = Renderer::new(&scene).unwrap();
     let image = renderer.render();
     // The closed form at a screen point: (u, red) if the ray hits the floor.
@@ -405,7 +411,7 @@ fn bilinear_sampling_is_exact_at_texel_centres_and_half_way() {
     quad.uvs = Some(vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]);
     quad.texture = Some(TextureImage::new(2, 1, vec![0x010203, 0x020304]));
     quad.wrap = WrapMode::Clamp;
-    let scene = Scene { objects: vec![quad], ..stored_scene(w, h, pixel_camera(w, h)) };
+    let scene = ReferenceScene { objects: vec![quad], ..stored_scene(w, h, pixel_camera(w, h)) };
     let renderer = Renderer::new(&scene).unwrap();
     let at = |x: f64| renderer.probe(x, 0.5).unwrap().color;
     let c = |v: [f64; 3]| v.map(|x| x / 255.0);
@@ -418,20 +424,20 @@ fn bilinear_sampling_is_exact_at_texel_centres_and_half_way() {
 }
 
 // ---------------------------------------------------------------------------------------------------------------
-// Lighting
+// ReferenceLighting
 
 #[test]
 fn a_flat_quad_facing_the_light_is_lit_exactly() {
     let (w, h) = (4, 4);
     let albedo = [0.8, 0.5, 0.25];
     let ambient = [0.1, 0.2, 0.05];
-    let light = Light { to_light: [0.0, 0.0, 1.0], color: [0.5, 0.6, 0.7] };
-    let behind = Light { to_light: [0.0, 0.0, -1.0], color: [1.0; 3] };
+    let light = ReferenceLight { to_light: [0.0, 0.0, 1.0], color: [0.5, 0.6, 0.7] };
+    let behind = ReferenceLight { to_light: [0.0, 0.0, -1.0], color: [1.0; 3] };
     let mut quad = rectangle(-1.0, 5.0, -5.0, 1.0, 0.0, albedo);
     quad.shading = Shading::Lit;
     quad.normals = Some(vec![[0.0, 0.0, 1.0]; 4]);
-    let lighting = Lighting { ambient, lights: vec![light, behind] };
-    let scene = Scene { lighting, objects: vec![quad.clone()], ..stored_scene(w, h, pixel_camera(w, h)) };
+    let lighting = ReferenceLighting { ambient, lights: vec![light, behind] };
+    let scene = ReferenceScene { lighting, objects: vec![quad.clone()], ..stored_scene(w, h, pixel_camera(w, h)) };
     let want = [0, 1, 2].map(|i| albedo[i] * (ambient[i] + light.color[i]));
     let image = render(&scene).unwrap();
     for y in 0..h {
@@ -440,13 +446,13 @@ fn a_flat_quad_facing_the_light_is_lit_exactly() {
         }
     }
     // Without normals the face normal is used: the same.
-    let bare = Object { normals: None, ..quad.clone() };
-    assert_eq!(render(&Scene { objects: vec![bare], ..scene.clone() }).unwrap().pixel(2, 1), want);
+    let bare = ReferenceObject { normals: None, ..quad.clone() };
+    assert_eq!(render(&ReferenceScene { objects: vec![bare], ..scene.clone() }).unwrap().pixel(2, 1), want);
 
     // With a highlight, at each pixel centre: h = normalize(l + v), v toward the eye at (0, 0, 1).
     let specular = [0.3, 0.2, 0.1];
-    let lit = Object { material: Material { color: albedo, specular, shininess: 20.0 }, ..quad };
-    let scene = Scene { objects: vec![lit], ..scene };
+    let lit = ReferenceObject { material: ReferenceMaterial { color: albedo, specular, shininess: 20.0 }, ..quad };
+    let scene = ReferenceScene { objects: vec![lit], ..scene };
     let renderer = Renderer::new(&scene).unwrap();
     for (x, y) in [(0.5, 0.5), (2.5, 1.5), (3.5, 3.5)] {
         let p = [x, -y, 0.0];
@@ -475,8 +481,9 @@ fn normals_are_interpolated_and_renormalised() {
     let mut quad = rectangle(0.0, 4.0, -1.0, 0.0, 0.0, [1.0; 3]);
     quad.shading = Shading::Lit;
     quad.normals = Some(vec![[-s, 0.0, s], [s, 0.0, s], [s, 0.0, s], [-s, 0.0, s]]);
-    let lighting = Lighting { ambient: [0.0; 3], lights: vec![Light::directional([0.0, 0.0, 2.0], [1.0; 3])] };
-    let scene = Scene { lighting, objects: vec![quad], ..stored_scene(w, h, pixel_camera(w, h)) };
+    let lighting =
+        ReferenceLighting { ambient: [0.0; 3], lights: vec![ReferenceLight::directional([0.0, 0.0, 2.0], [1.0; 3])] };
+    let scene = ReferenceScene { lighting, objects: vec![quad], ..stored_scene(w, h, pixel_camera(w, h)) };
     let renderer = Renderer::new(&scene).unwrap();
     let middle = renderer.probe(2.0, 0.5).unwrap();
     assert!(close(middle.normal.unwrap(), [0.0, 0.0, 1.0], 1e-15));
@@ -495,10 +502,13 @@ fn bad_scenes_are_errors() {
     assert_eq!(render(&stored_scene(0, 2, camera)).unwrap_err(), ReferenceError::Size { width: 0, height: 2 });
     let same = Camera { eye: [0.0; 3], ..camera };
     assert_eq!(render(&stored_scene(2, 2, same)).unwrap_err(), ReferenceError::Camera(CameraError::EyeAtTarget));
-    let fov = Camera { projection: Projection::Perspective { fovy: 4.0, aspect: 1.0, near: 1.0, far: 2.0 }, ..camera };
+    let fov = Camera {
+        projection: ReferenceProjection::Perspective { fovy: 4.0, aspect: 1.0, near: 1.0, far: 2.0 },
+        ..camera
+    };
     assert_eq!(render(&stored_scene(2, 2, fov)).unwrap_err(), ReferenceError::Camera(CameraError::FieldOfView));
-    let bad = Object::new(vec![[0.0; 3]], vec![0, 0, 1]);
-    let e = render(&Scene { objects: vec![bad], ..stored_scene(2, 2, camera) }).unwrap_err();
+    let bad = ReferenceObject::new(vec![[0.0; 3]], vec![0, 0, 1]);
+    let e = render(&ReferenceScene { objects: vec![bad], ..stored_scene(2, 2, camera) }).unwrap_err();
     assert!(matches!(&e, ReferenceError::Object { object: 0, .. }), "{e}");
     assert_eq!(e.to_string(), "object 0: index 1 is out of range for 1 vertices");
     let scene = model_scene(one_quad_model());
@@ -506,7 +516,7 @@ fn bad_scenes_are_errors() {
     let wireframe = PlanOptions { wireframe: true, ..PlanOptions::default() };
     for options in [depth, wireframe] {
         assert!(matches!(
-            Scene::from_scene(&scene, &scene.camera(), &options, (4, 4), 1.0),
+            ReferenceScene::from_scene(&scene, &scene.camera(), &options, (4, 4), 1.0),
             Err(ReferenceError::Unsupported(_))
         ));
     }
@@ -587,7 +597,7 @@ fn both(
     camera: &SceneCamera,
     options: &PlanOptions,
 ) -> (Vec<u32>, ReferenceImage) {
-    let reference = Scene::from_scene(scene, camera, options, size, f64::from(size.0) / f64::from(size.1));
+    let reference = ReferenceScene::from_scene(scene, camera, options, size, f64::from(size.0) / f64::from(size.1));
     let reference = render(&reference.unwrap()).unwrap();
     (rastty_pixels(scene, size, camera, options).0, reference)
 }
@@ -603,7 +613,8 @@ fn agree(
     options: &PlanOptions,
     centre_levels: f64,
 ) -> (usize, f64) {
-    let reference = Scene::from_scene(scene, camera, options, size, f64::from(size.0) / f64::from(size.1)).unwrap();
+    let reference =
+        ReferenceScene::from_scene(scene, camera, options, size, f64::from(size.0) / f64::from(size.1)).unwrap();
     let renderer = Renderer::new(&reference).unwrap();
     let image = renderer.render();
     let (pixels, background) = rastty_pixels(scene, size, camera, options);
@@ -713,7 +724,7 @@ fn from_scene_draws_a_scene_file_as_rastty_does() {
     let options = PlanOptions { textures: false, ..PlanOptions::default() };
     // Landscape and portrait (the field of view, or height, spans the shorter side), perspective and orthographic.
     for (camera, size) in [(scene.camera(), (40, 30)), (scene.camera(), (24, 36)), (orbited, (36, 24))] {
-        let reference = Scene::from_scene(&scene, &camera, &options, size, 1.0).unwrap();
+        let reference = ReferenceScene::from_scene(&scene, &camera, &options, size, 1.0).unwrap();
         assert_eq!(reference.objects.len(), 2);
         assert_eq!(reference.lighting.lights.len(), 3);
         let (compared, worst) = agree(&scene, size, &camera, &options, 2.0);
@@ -726,7 +737,7 @@ fn from_scene_draws_a_scene_file_as_rastty_does() {
     let shadows = TWO_SPOTS.replace("intensity = 0.8", "intensity = 0.8\nshadows = true");
     for (text, what) in [(point, "point lights"), (shadows, "shadows")] {
         let scene = scene_file(&text);
-        let refused = Scene::from_scene(&scene, &scene.camera(), &PlanOptions::default(), (8, 8), 1.0);
+        let refused = ReferenceScene::from_scene(&scene, &scene.camera(), &PlanOptions::default(), (8, 8), 1.0);
         assert_eq!(refused.unwrap_err(), ReferenceError::Unsupported(what));
     }
 }
@@ -738,7 +749,7 @@ fn builtin_model_320x240() {
     let (camera, options, size) = (scene.camera(), PlanOptions::default(), (320, 240));
     let (compared, worst) = agree(&scene, size, &camera, &options, 2.0);
     println!("single samples at pixel centres: {compared} within {worst:.2} levels of rastty");
-    let reference_scene = Scene::from_scene(&scene, &camera, &options, size, 320.0 / 240.0).unwrap();
+    let reference_scene = ReferenceScene::from_scene(&scene, &camera, &options, size, 320.0 / 240.0).unwrap();
     let triangles: usize = reference_scene.objects.iter().map(|o| o.indices.len() / 3).sum();
     let start = std::time::Instant::now();
     let reference = render(&reference_scene).unwrap();

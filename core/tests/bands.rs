@@ -14,6 +14,7 @@ use crate::common;
 use common::{ExactColor, Frame, PlainDepth, PlainDepth16, Torus, Transformed, assert_same_depths, checker_texels};
 use rastty_core::camera::{look_at, perspective};
 use rastty_core::color::ShadingSpace;
+use rastty_core::math::BoundingSphere;
 use rastty_core::math::{Mat4, Vec3, Vec4};
 use rastty_core::mesh::{Mesh, compute_tangents};
 use rastty_core::pipeline::{
@@ -22,7 +23,7 @@ use rastty_core::pipeline::{
 use rastty_core::shading::{
     Light, Lighting, Material, NormalMap, NormalSpace, Object, ShadingModel, Transforms, draw_mesh,
 };
-use rastty_core::shadow::{Bounds, ShadowBias, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster};
+use rastty_core::shadow::{ShadowBias, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster};
 use rastty_core::target::{NoColor, Rgb565, Target};
 use rastty_core::testing::draw_mesh_general;
 use rastty_core::texture::{FilterMode, Texture, WrapMode};
@@ -218,7 +219,7 @@ fn every_band_of_a_mapped_surface_with_shadows_equals_the_frame() {
 
     // The torus casts its own shadow from the sun.
     let mut sun = Light::directional(Vec3::new(0.5, 1.0, 0.8), Vec3::new(0.9, 0.85, 0.8));
-    let view = ShadowView::fit(sun.kind, Bounds { centre: Vec3::ZERO, radius: 1.5 }, 64).unwrap();
+    let view = ShadowView::fit(sun.kind, BoundingSphere { centre: Vec3::ZERO, radius: 1.5 }, 64).unwrap();
     let mut map = vec![0.0; 64 * 64];
     clear_shadow_depth(&mut map);
     let cast = draw_shadow_caster(&view, &mut map, &object.mesh, &object.transforms.model).unwrap();

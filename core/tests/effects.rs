@@ -8,6 +8,7 @@ use crate::common;
 use common::{ExactColor, PlainDepth, Torus, assert_same_depths, checker_texels};
 use rastty_core::camera::{look_at, perspective};
 use rastty_core::color::ShadingSpace;
+use rastty_core::math::BoundingSphere;
 use rastty_core::math::{Mat4, Vec3, Vec4};
 use rastty_core::mesh::{Indices, Mesh, compute_tangents};
 use rastty_core::pipeline::{DrawState, DrawStats};
@@ -15,7 +16,7 @@ use rastty_core::shading::{
     Light, Lighting, Material, NormalMap, NormalSource, NormalSpace, Object, ShadingError, ShadingModel,
     SpecularSource, Transforms, Variant, draw_mesh,
 };
-use rastty_core::shadow::{Bounds, ShadowBias, ShadowMap, ShadowView, clear_shadow_depth};
+use rastty_core::shadow::{ShadowBias, ShadowMap, ShadowView, clear_shadow_depth};
 use rastty_core::testing::draw_mesh_general;
 use rastty_core::texture::{FilterMode, Texture};
 
@@ -212,7 +213,7 @@ fn a_zero_strength_point_light_changes_nothing() {
 fn an_empty_shadow_map_changes_nothing() {
     let f = Fixture::new();
     let mut sun_with_shadow = sun();
-    let bounds = Bounds { centre: Vec3::ZERO, radius: 1.5 };
+    let bounds = BoundingSphere { centre: Vec3::ZERO, radius: 1.5 };
     let view = ShadowView::fit(sun_with_shadow.kind, bounds, 64).unwrap();
     let mut depth = vec![0.0; 64 * 64];
     clear_shadow_depth(&mut depth);
@@ -232,7 +233,7 @@ fn every_effect_off_by_data_equals_none_through_the_general_path_too() {
     let mut depth = vec![0.0; 64 * 64];
     clear_shadow_depth(&mut depth);
     let mut shadowed_sun = sun();
-    let view = ShadowView::fit(shadowed_sun.kind, Bounds { centre: Vec3::ZERO, radius: 1.5 }, 64).unwrap();
+    let view = ShadowView::fit(shadowed_sun.kind, BoundingSphere { centre: Vec3::ZERO, radius: 1.5 }, 64).unwrap();
     shadowed_sun.shadow = Some(ShadowMap::new(view, &depth, ShadowBias::DEFAULT, 1).unwrap());
     let dark_point = Light::point(Vec3::new(0.0, 2.0, 1.0), Vec3::ZERO);
     let everything = Material {
@@ -275,7 +276,7 @@ fn the_explanation_lists_only_what_is_used() {
     let mut depth = vec![1.0; 16 * 16];
     clear_shadow_depth(&mut depth);
     let mut shadowed = sun();
-    let view = ShadowView::fit(shadowed.kind, Bounds { centre: Vec3::ZERO, radius: 1.5 }, 16).unwrap();
+    let view = ShadowView::fit(shadowed.kind, BoundingSphere { centre: Vec3::ZERO, radius: 1.5 }, 16).unwrap();
     shadowed.shadow = Some(ShadowMap::new(view, &depth, ShadowBias::DEFAULT, 1).unwrap());
     let lamp = Light::point(Vec3::new(0.0, 3.0, 0.0), Vec3::ONE);
     let (_, full, _) = render(&f, material, &[shadowed, lamp], false);

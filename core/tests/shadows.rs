@@ -7,13 +7,13 @@
 
 use rastty_core::camera::{look_at, orthographic};
 use rastty_core::color::ShadingSpace;
+use rastty_core::math::BoundingSphere;
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::{Cull, DrawState, draw};
 use rastty_core::shading::{Light, Lighting, Material, Object, ShadingModel, Transforms, draw_mesh};
 use rastty_core::shadow::{
-    Bounds, ShadowBias, ShadowError, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster,
-    draw_shadow_caster_band,
+    ShadowBias, ShadowError, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster, draw_shadow_caster_band,
 };
 use rastty_core::target::{NoColor, Rgb888, Target};
 
@@ -76,7 +76,7 @@ fn camera() -> (Mat4, Mat4) {
 }
 
 /// The bounds every shadow map is fitted to: the ground and the cube lie inside.
-const BOUNDS: Bounds = Bounds { centre: Vec3::new(0.0, 0.5, 0.0), radius: 3.0 };
+const BOUNDS: BoundingSphere = BoundingSphere { centre: Vec3::new(0.0, 0.5, 0.0), radius: 3.0 };
 
 /// Renders the objects lit by one directional light shining from `to_light`, with a shadow map of the given
 /// bias and PCF radius, or without shadows. Returns the pixels (row 0 at `z = -2`, column 0 at `x = -2`).

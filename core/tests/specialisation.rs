@@ -11,6 +11,7 @@ use crate::common;
 use common::{ExactColor, PlainDepth, Torus, assert_same_depths, checker_texels};
 use rastty_core::camera::{look_at, orthographic, perspective};
 use rastty_core::color::ShadingSpace;
+use rastty_core::math::BoundingSphere;
 use rastty_core::math::{Mat4, Vec3, Vec4};
 use rastty_core::mesh::{Indices, Mesh, compute_tangents};
 use rastty_core::pipeline::{Cull, DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation, Winding};
@@ -18,7 +19,7 @@ use rastty_core::shading::{
     Cutout, Light, Lighting, Material, NormalMap, NormalSource, NormalSpace, Object, ShadingModel, SpecularSource,
     Transforms, Variant, draw_mesh,
 };
-use rastty_core::shadow::{Bounds, ShadowBias, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster};
+use rastty_core::shadow::{ShadowBias, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster};
 use rastty_core::target::Samples;
 use rastty_core::testing::draw_mesh_general;
 use rastty_core::texture::{
@@ -108,7 +109,7 @@ fn every_choice_of_a_variant_equals_the_general_path() {
     let sun = Light::directional(Vec3::new(0.5, 1.0, 0.8), Vec3::new(0.9, 0.85, 0.8));
     let lamp = Light::point(Vec3::new(-1.2, 2.5, 2.0), Vec3::new(0.5, 0.45, 0.3));
     let fill = Light::directional(Vec3::new(-1.0, -0.2, 0.3), Vec3::new(0.2, 0.25, 0.4));
-    let bounds = Bounds { centre: Vec3::ZERO, radius: 1.5 };
+    let bounds = BoundingSphere { centre: Vec3::ZERO, radius: 1.5 };
     let map_of = |light: &Light<'_>| {
         let view = ShadowView::fit(light.kind, bounds, 96).unwrap();
         let mut depth = vec![0.0; 96 * 96];

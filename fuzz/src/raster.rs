@@ -24,9 +24,8 @@ use rastty_core::shading::{
     Light, LightKind, Lighting, Material, NormalMap, NormalSpace, Object, ShadingError, ShadingModel, Transforms,
     Variant, draw_mesh,
 };
-use rastty_core::shadow::{
-    Bounds, ShadowBias, ShadowMap, ShadowView, WindowRanges, clear_shadow_depth, draw_shadow_caster, window_ranges_band,
-};
+use rastty_core::math::BoundingSphere;
+use rastty_core::shadow::{ShadowBias, ShadowMap, ShadowView, WindowRanges, clear_shadow_depth, draw_shadow_caster, window_ranges_band};
 use rastty_core::target::{ColorBuffer, DEPTH_LANES, DepthBuffer, NoColor, Rgb888, Samples, Target};
 use rastty_core::testing::{draw_mesh_general, draw_unspecialised};
 use rastty_core::texture::{
@@ -624,12 +623,12 @@ fn shadow_buffers(
     let size = 1 + u32::from(input.size) % MAX_SHADOW_SIZE;
     let pcf = u32::from(input.pcf % 4);
     let bounds = match input.bounds {
-        Some((centre, radius)) => Bounds { centre: centre.get(), radius: radius.0 },
+        Some((centre, radius)) => BoundingSphere { centre: centre.get(), radius: radius.0 },
         None => {
             let world: Vec<Vec3> = mesh.positions().iter().map(|&p| model.transform_point(p)).collect();
             let centre = world.iter().fold(Vec3::ZERO, |sum, &p| sum + p) / world.len() as f32;
             let radius = world.iter().fold(0f32, |r, &p| r.max((p - centre).length()));
-            Bounds { centre, radius: radius * 1.01 }
+            BoundingSphere { centre, radius: radius * 1.01 }
         }
     };
     let view = ShadowView::fit(light.kind, bounds, size).ok()?;

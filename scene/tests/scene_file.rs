@@ -13,8 +13,8 @@ use rastty_core::math::{Mat4, Vec3};
 use rastty_core::texture::{Anisotropy, FilterMode, MipFilter, WrapMode};
 use rastty_scene::model::TextureImage;
 use rastty_scene::scene_file::{
-    CameraPlacement, FramedCamera, LightKind, LightSpace, NormalSpace, Projection, SceneCamera, SceneData,
-    SceneFileError, SceneFileErrorKind, defaults, load, object_transform, parse,
+    CameraPlacement, FramedCamera, LightSpace, NormalSpaceSpec, SceneCamera, SceneData, SceneFileError,
+    SceneFileErrorKind, SceneLightKind, SceneProjection, defaults, load, object_transform, parse,
 };
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -101,19 +101,19 @@ fn every_example_scene_loads() {
 fn the_example_scenes_show_what_they_say() {
     let dir = root().join("assets/scenes");
     let sun = load(dir.join("spot_sun.toml")).unwrap();
-    assert!(matches!(placed(&sun).projection, Projection::Perspective { .. }));
-    assert!(sun.lights.iter().any(|l| l.shadows && matches!(l.kind, LightKind::Directional { .. })));
+    assert!(matches!(placed(&sun).projection, SceneProjection::Perspective { .. }));
+    assert!(sun.lights.iter().any(|l| l.shadows && matches!(l.kind, SceneLightKind::Directional { .. })));
     assert!(!sun.ambient_occlusion);
 
     let lamp = load(dir.join("spot_lamp.toml")).unwrap();
     assert!(lamp.ambient_occlusion);
-    assert!(lamp.lights.iter().any(|l| l.shadows && matches!(l.kind, LightKind::Point { .. })));
+    assert!(lamp.lights.iter().any(|l| l.shadows && matches!(l.kind, SceneLightKind::Point { .. })));
     let ground = &lamp.objects.iter().find(|o| o.mesh_path.ends_with("ground.obj")).unwrap().material;
     assert!(ground.diffuse.is_some() && ground.specular_map.is_some() && ground.glow_map.is_some());
-    assert_eq!(ground.normal_map.as_ref().unwrap().space, NormalSpace::Tangent);
+    assert_eq!(ground.normal_map.as_ref().unwrap().space, NormalSpaceSpec::Tangent);
 
     let herd = load(dir.join("spot_herd.toml")).unwrap();
-    assert!(matches!(placed(&herd).projection, Projection::Orthographic { .. }));
+    assert!(matches!(placed(&herd).projection, SceneProjection::Orthographic { .. }));
     // Three cows from one OBJ file, loaded once; the texture named by two of them, loaded once.
     let cows: Vec<_> = herd.objects.iter().filter(|o| o.mesh_path.ends_with("spot.obj")).collect();
     assert_eq!(cows.len(), 3);
@@ -142,7 +142,7 @@ fn the_docs_scenes_load_the_tinyrenderer_models() {
         for object in &scene.objects {
             let m = &object.material;
             assert!(m.diffuse.is_some() && m.specular_map.is_some(), "{}", object.mesh_path.display());
-            assert_eq!(m.normal_map.as_ref().map(|n| n.space), Some(NormalSpace::Tangent));
+            assert_eq!(m.normal_map.as_ref().map(|n| n.space), Some(NormalSpaceSpec::Tangent));
             assert!(object.mesh_path.starts_with(path.parent().unwrap()));
         }
         scene
@@ -634,14 +634,14 @@ fn a_framed_camera_and_the_viewer_lights_arrive_as_written() {
         yaw_degrees: -20.0,
         pitch_degrees: 40.0,
         distance: 4.0,
-        projection: Projection::Orthographic { height: 2.5 },
+        projection: SceneProjection::Orthographic { height: 2.5 },
         near: None,
         far: Some(9.0),
     };
     assert_eq!(scene.camera, CameraPlacement::Framed(framed));
     assert_eq!(scene.lights.len(), 3, "the file's light, then the viewer's two");
     assert_eq!(scene.lights[0].space, LightSpace::Camera);
-    assert_eq!(scene.lights[0].kind, LightKind::Point { position: Vec3::Z });
+    assert_eq!(scene.lights[0].kind, SceneLightKind::Point { position: Vec3::Z });
     assert_eq!(scene.lights[1..], defaults::VIEWER_LIGHTS);
 }
 
@@ -654,10 +654,10 @@ fn defaults_and_values_arrive_as_written() {
     );
     let scene = parse(text, "scene.toml").unwrap().load().unwrap();
     let camera = placed(&scene);
-    assert_eq!(camera.projection, Projection::Orthographic { height: 3.0 });
+    assert_eq!(camera.projection, SceneProjection::Orthographic { height: 3.0 });
     assert_eq!((camera.near, camera.far), (Some(0.5), Some(20.0)));
     assert_eq!(camera.up, Vec3::Y);
-    assert_eq!(scene.lights[0].kind, LightKind::Directional { direction: -Vec3::Y });
+    assert_eq!(scene.lights[0].kind, SceneLightKind::Directional { direction: -Vec3::Y });
     // Directions too long (or too short) for f32 squares still have one.
     let text = format!(
         "[camera]\nposition = [0, 1, 4]\ntarget = [0, 0, 0]\nfov = 40\nup = [0, 3e38, 0]\n\
@@ -665,9 +665,9 @@ fn defaults_and_values_arrive_as_written() {
     );
     let huge = parse(text, "scene.toml").unwrap().load().unwrap();
     assert_eq!(placed(&huge).up, Vec3::Y);
-    assert_eq!(huge.lights[0].kind, LightKind::Directional { direction: Vec3::X });
+    assert_eq!(huge.lights[0].kind, SceneLightKind::Directional { direction: Vec3::X });
     assert_eq!((scene.lights[0].color, scene.lights[0].intensity, scene.lights[0].shadows), (Vec3::ONE, 1.0, false));
-    assert_eq!(scene.lights[1].kind, LightKind::Point { position: Vec3::new(1.0, 2.0, 3.0) });
+    assert_eq!(scene.lights[1].kind, SceneLightKind::Point { position: Vec3::new(1.0, 2.0, 3.0) });
     assert_eq!((scene.lights[1].color, scene.lights[1].intensity), (Vec3::new(1.0, 0.5, 0.0), 2.0));
     assert!(scene.lights[1].shadows);
     assert_eq!(scene.background, defaults::BACKGROUND);

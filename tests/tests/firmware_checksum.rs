@@ -14,12 +14,12 @@ use rastty_core::mesh::{Attributes, Indices, Mesh};
 use rastty_core::pipeline::{Cull, DrawState, DrawStats, Fragment, Shader, Slopes, draw};
 use rastty_core::target::{NoColor, NoDepth, Rgb565, Target};
 use rastty_firmware_scene::{
-    BACKGROUND, BIN_ENTRIES, FRAME_MEMORY_BYTES, FRAMES, Fnv1a, FrameMemory, FrameReport, HEIGHT, LAYOUTS, Scene,
+    BACKGROUND, BIN_ENTRIES, FRAME_MEMORY_BYTES, FRAMES, Fnv1a, FrameChecksum, FrameMemory, HEIGHT, LAYOUTS, Scene,
     WIDTH, checksum_frame, render_frame, spot,
 };
 
 /// Every frame's report in every layout, rendered in bands as the firmware renders them, in its order.
-fn reports() -> Vec<FrameReport> {
+fn reports() -> Vec<FrameChecksum> {
     let mut memory = Box::new(FrameMemory::new());
     LAYOUTS
         .iter()

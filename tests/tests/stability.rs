@@ -10,7 +10,7 @@ use rastty_core::math::Vec3;
 use rastty_core::target::{Rgb888, Target};
 use rastty_scene::builtin::builtin_model;
 use rastty_scene::model::{Model, NoFiles, load_obj_bytes};
-use rastty_scene::scene_file::{Projection, SceneCamera, SceneData, defaults};
+use rastty_scene::scene_file::{SceneCamera, SceneData, SceneProjection, defaults};
 use rastty_scene::scene_render::{
     CameraOptions, Orbit, PlanOptions, PreparedScene, ScenePlan, SceneRenderError, SceneRenderer, ShadingMode,
 };
@@ -128,13 +128,13 @@ fn degenerate_cameras_are_errors() {
         bad.push((SceneCamera { position, ..good }, CameraError::NotFinite));
     }
     for fov_degrees in [0.0, 180.0, -5.0] {
-        let projection = Projection::Perspective { fov_degrees };
+        let projection = SceneProjection::Perspective { fov_degrees };
         bad.push((SceneCamera { projection, ..good }, CameraError::FieldOfView));
     }
-    let projection = Projection::Perspective { fov_degrees: f32::NAN };
+    let projection = SceneProjection::Perspective { fov_degrees: f32::NAN };
     bad.push((SceneCamera { projection, ..good }, CameraError::NotFinite));
     for height in [0.0, -1.0] {
-        let projection = Projection::Orthographic { height };
+        let projection = SceneProjection::Orthographic { height };
         bad.push((SceneCamera { projection, ..good }, CameraError::EmptyBox));
     }
     bad.push((SceneCamera { near: Some(5.0), far: Some(1.0), ..good }, CameraError::DepthRange));

@@ -4,10 +4,13 @@
 use rastty_core::pipeline::Cull;
 use rastty_core::texture::FilterMode;
 
-use super::math::{self, Mat4, V3};
-use super::{Camera, Light, Lighting, Material, Object, Projection, ReferenceError, Scene, Shading};
+use super::math::{self, DMat4, V3};
+use super::{
+    Camera, ReferenceError, ReferenceLight, ReferenceLighting, ReferenceMaterial, ReferenceObject, ReferenceProjection,
+    ReferenceScene, Shading,
+};
 use rastty_scene::model::Model;
-use rastty_scene::scene_file::{LightKind, LightSpace, Projection as Lens, SceneCamera, SceneLight};
+use rastty_scene::scene_file::{LightSpace, SceneCamera, SceneLight, SceneLightKind, SceneProjection as Lens};
 use rastty_scene::scene_render::{PlanOptions, PreparedScene, ScenePlan, SceneRenderError, ShadingMode, part_material};
 
 fn widen(v: rastty_core::math::Vec3) -> [f64; 3] {
@@ -15,7 +18,7 @@ fn widen(v: rastty_core::math::Vec3) -> [f64; 3] {
 }
 
 /// [`Model::fit`] in `f64`: centre the bounding box at the origin, scale its half-diagonal to 1.
-fn fit(model: &Model) -> Mat4 {
+fn fit(model: &Model) -> DMat4 {
     let Some(b) = model.bounds() else { return math::IDENTITY };
     let (min, max) = (widen(b.min), widen(b.max));
     let centre = [0, 1, 2].map(|i| min[i] * 0.5 + max[i] * 0.5);
@@ -25,15 +28,15 @@ fn fit(model: &Model) -> Mat4 {
 }
 
 /// An `f32` matrix widened, column by column.
-fn widen_matrix(m: &rastty_core::math::Mat4) -> Mat4 {
+fn widen_matrix(m: &rastty_core::math::Mat4) -> DMat4 {
     m.cols.map(|c| [c.x, c.y, c.z, c.w].map(f64::from))
 }
 
 /// The direction toward a directional light as rastty's `core_light` gives it, in `f64`: the file's direction of
 /// travel reversed, and for a light in camera space turned into the world by the transpose of `view`'s rotation
 /// and renormalised. `None` for a point light.
-fn to_light(light: &SceneLight, view: &Mat4) -> Option<[f64; 3]> {
-    let LightKind::Directional { direction } = light.kind else { return None };
+fn to_light(light: &SceneLight, view: &DMat4) -> Option<[f64; 3]> {
+    let SceneLightKind::Directional { direction } = light.kind else { return None };
     let toward = widen(-direction);
     Some(match light.space {
         LightSpace::World => toward,
@@ -46,13 +49,13 @@ fn to_light(light: &SceneLight, view: &Mat4) -> Option<[f64; 3]> {
     })
 }
 
-impl Scene {
+impl ReferenceScene {
     /// The reference scene of what rastty's scene renderer draws for `scene` seen by `camera` with `options`, in a
     /// `width x height` image of physical aspect `aspect` (width over height, as passed to
     /// [`ScenePlan::with_aspect`]; `width / height` for a PNG, as [`ScenePlan::new`] takes it).
     ///
     /// rastty's plan of the frame decides what is drawn and with what: every draw of the plan (each part with
-    /// triangles of each object, in order) becomes one [`Object`] with back faces culled, its material as
+    /// triangles of each object, in order) becomes one [`ReferenceObject`] with back faces culled, its material as
     /// [`part_material`] resolves it (colour, specular colour, shininess, diffuse texture and its wrap mode), lit
     /// by the plan's lights and ambient light, over the plan's background, and clipped by the near and far planes
     /// the plan's camera chose (the file's, or derived around the scene's bounds). Everything rastty computes from
@@ -115,7 +118,7 @@ impl Scene {
             let to_light =
                 to_light(&planned.source, &view_matrix).ok_or(ReferenceError::Unsupported("point lights"))?;
             // The colour as rastty lights with it: decoded in linear light, times the intensity.
-            lights.push(Light { to_light, color: widen(planned.color) });
+            lights.push(ReferenceLight { to_light, color: widen(planned.color) });
         }
 
         let objects_data = &scene.data().objects;
@@ -163,13 +166,13 @@ impl Scene {
                     *slot
                 })
                 .collect();
-            objects.push(Object {
+            objects.push(ReferenceObject {
                 positions: used.iter().map(|&i| widen(model.positions[i])).collect(),
                 normals: Some(used.iter().map(|&i| widen(model.normals[i])).collect()),
                 uvs: model.uvs.as_ref().map(|uvs| used.iter().map(|&i| [uvs[i].x, uvs[i].y].map(f64::from)).collect()),
                 indices,
                 model: model_matrix,
-                material: Material {
+                material: ReferenceMaterial {
                     color: widen(material.color),
                     specular: widen(material.specular),
                     shininess: f64::from(material.shininess),
@@ -184,7 +187,7 @@ impl Scene {
             width,
             height,
             camera: view,
-            lighting: Lighting { ambient: widen(plan.ambient), lights },
+            lighting: ReferenceLighting { ambient: widen(plan.ambient), lights },
             background: widen(plan.background),
             objects,
             space: plan.space,
@@ -192,21 +195,21 @@ impl Scene {
     }
 }
 
-/// rastty's projection of `lens` (`FrameCamera::new`) in `f64`: the field of view, or the orthographic height,
+/// rastty's projection of `lens` (`PlannedCamera::new`) in `f64`: the field of view, or the orthographic height,
 /// spans the frame's shorter side (vertically in a landscape frame, horizontally in a portrait one).
-fn projection(lens: Lens, aspect: f64, near: f64, far: f64) -> Projection {
+fn projection(lens: Lens, aspect: f64, near: f64, far: f64) -> ReferenceProjection {
     // The share of the shorter side the frame's height is: 1 in landscape, the aspect in portrait.
     let portrait = aspect.min(1.0);
     match lens {
         Lens::Perspective { fov_degrees } => {
             let fov = f64::from(fov_degrees).to_radians();
             let fovy = if aspect >= 1.0 { fov } else { 2.0 * ((fov * 0.5).tan() / portrait).atan() };
-            Projection::Perspective { fovy, aspect, near, far }
+            ReferenceProjection::Perspective { fovy, aspect, near, far }
         }
         Lens::Orthographic { height } => {
             let half_height = f64::from(height) * 0.5 / portrait;
             let half_width = half_height * aspect;
-            Projection::Orthographic {
+            ReferenceProjection::Orthographic {
                 left: -half_width,
                 right: half_width,
                 bottom: -half_height,

@@ -3,10 +3,10 @@
 use std::ops::{Add, AddAssign, Mul, Neg, Sub};
 
 /// A column-major 4x4 matrix acting on column vectors: `m[c][r]` is row `r` of column `c`.
-pub type Mat4 = [[f64; 4]; 4];
+pub type DMat4 = [[f64; 4]; 4];
 
 /// The identity matrix.
-pub const IDENTITY: Mat4 = [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]];
+pub const IDENTITY: DMat4 = [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]];
 
 /// An `f64` 3-vector (positions, directions, colours).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -100,7 +100,7 @@ impl Mul<f64> for V3 {
 }
 
 /// `a * b`: applies `b` first.
-pub fn mul(a: &Mat4, b: &Mat4) -> Mat4 {
+pub fn mul(a: &DMat4, b: &DMat4) -> DMat4 {
     let mut m = [[0.0; 4]; 4];
     for (c, col) in m.iter_mut().enumerate() {
         for (r, v) in col.iter_mut().enumerate() {
@@ -111,7 +111,7 @@ pub fn mul(a: &Mat4, b: &Mat4) -> Mat4 {
 }
 
 /// Transforms a point (`w = 1`) by an affine matrix (the bottom row is ignored).
-pub(crate) fn transform_point(m: &Mat4, p: V3) -> V3 {
+pub(crate) fn transform_point(m: &DMat4, p: V3) -> V3 {
     V3::new(
         m[0][0] * p.x + m[1][0] * p.y + m[2][0] * p.z + m[3][0],
         m[0][1] * p.x + m[1][1] * p.y + m[2][1] * p.z + m[3][1],
@@ -120,19 +120,19 @@ pub(crate) fn transform_point(m: &Mat4, p: V3) -> V3 {
 }
 
 /// The columns of the upper-left 3x3 block.
-fn columns3(m: &Mat4) -> [V3; 3] {
+fn columns3(m: &DMat4) -> [V3; 3] {
     [0, 1, 2].map(|c| V3::new(m[c][0], m[c][1], m[c][2]))
 }
 
 /// Determinant of the upper-left 3x3 block.
-pub(crate) fn determinant3(m: &Mat4) -> f64 {
+pub(crate) fn determinant3(m: &DMat4) -> f64 {
     let [a, b, c] = columns3(m);
     a.dot(b.cross(c))
 }
 
 /// The normal matrix of the upper-left 3x3 block `M`, as the core defines it: the cofactor matrix (which maps
 /// cross products as `M` maps surfaces), negated when `M` mirrors. Returned as its three columns.
-pub(crate) fn normal_matrix(m: &Mat4) -> [V3; 3] {
+pub(crate) fn normal_matrix(m: &DMat4) -> [V3; 3] {
     let [a, b, c] = columns3(m);
     let cof = [b.cross(c), c.cross(a), a.cross(b)];
     if determinant3(m) < 0.0 { cof.map(|v| -v) } else { cof }
@@ -144,13 +144,13 @@ pub(crate) fn apply3(cols: &[V3; 3], v: V3) -> V3 {
 }
 
 /// True when every element is finite.
-pub(crate) fn is_finite(m: &Mat4) -> bool {
+pub(crate) fn is_finite(m: &DMat4) -> bool {
     m.iter().flatten().all(|v| v.is_finite())
 }
 
 /// The view matrix of a camera at `eye` looking at `target`: the core's [`rastty_core::camera::look_at`] in
 /// `f64`, with the same fallback when `up` is (nearly) parallel to the view direction. `None` when `eye == target`.
-pub(crate) fn look_at(eye: V3, target: V3, up: V3) -> Option<Mat4> {
+pub(crate) fn look_at(eye: V3, target: V3, up: V3) -> Option<DMat4> {
     let forward = (target - eye).normalize_or_zero();
     if forward == V3::ZERO {
         return None;
@@ -181,7 +181,7 @@ pub(crate) fn look_at(eye: V3, target: V3, up: V3) -> Option<Mat4> {
 
 /// The rotation matrix of the quaternion `(x, y, z, w)` after normalising it in `f64` (the core's
 /// `Quat::to_mat3`, same formula).
-pub fn quaternion_matrix([x, y, z, w]: [f64; 4]) -> Mat4 {
+pub fn quaternion_matrix([x, y, z, w]: [f64; 4]) -> DMat4 {
     let n = (x * x + y * y + z * z + w * w).sqrt();
     if !(n > 0.0 && n.is_finite()) {
         return IDENTITY;
@@ -200,12 +200,12 @@ pub fn quaternion_matrix([x, y, z, w]: [f64; 4]) -> Mat4 {
 }
 
 /// A uniform scaling.
-pub fn scale(s: f64) -> Mat4 {
+pub fn scale(s: f64) -> DMat4 {
     [[s, 0.0, 0.0, 0.0], [0.0, s, 0.0, 0.0], [0.0, 0.0, s, 0.0], [0.0, 0.0, 0.0, 1.0]]
 }
 
 /// A translation.
-pub fn translation([x, y, z]: [f64; 3]) -> Mat4 {
+pub fn translation([x, y, z]: [f64; 3]) -> DMat4 {
     [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [x, y, z, 1.0]]
 }
 
@@ -214,7 +214,7 @@ mod tests {
     use super::*;
 
     /// A core matrix widened, and the largest difference from `ours`.
-    fn max_difference(core: &rastty_core::math::Mat4, ours: &Mat4) -> f64 {
+    fn max_difference(core: &rastty_core::math::Mat4, ours: &DMat4) -> f64 {
         let widened = core.cols.map(|c| [c.x, c.y, c.z, c.w].map(f64::from));
         widened.iter().flatten().zip(ours.iter().flatten()).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max)
     }

@@ -4,7 +4,7 @@
 //! pixel is sampled on a regular [`SAMPLES_PER_AXIS`]² grid (sample `(k, l)` of pixel `(i, j)` at
 //! `(i + (k + 0.5) / 16, j + (l + 0.5) / 16)` in screen space); every sample is shaded, clamped to `[0, 1]`, and
 //! the samples are averaged with equal weights (a box filter). Samples that hit nothing take the background colour.
-//! In linear light ([`Scene::space`], the default) the samples are light, the texels and the background decoded
+//! In linear light ([`ReferenceScene::space`], the default) the samples are light, the texels and the background decoded
 //! from sRGB ([`srgb`]), and each pixel's average is encoded back; on the stored values nothing is converted.
 //!
 //! # How a sample is decided
@@ -25,13 +25,13 @@
 //! - **Order**: the nearest hit wins; on an exact depth tie the triangle drawn first (the earlier object, then the
 //!   earlier triangle) wins, as rastty's `less` depth test does.
 //! - **Facing**: counter-clockwise on screen is the front, flipped for a mirroring model matrix, and
-//!   [`Object::cull`] discards faces as rastty's [`Cull`] does. Edge-on triangles cover nothing.
+//!   [`ReferenceObject::cull`] discards faces as rastty's [`Cull`] does. Edge-on triangles cover nothing.
 //! - **Attributes**: the barycentric coordinates of the 3D hit point, which makes interpolation
 //!   perspective-correct by construction.
 //!
 //! # Shading
 //!
-//! The albedo is [`Material::color`] times the bilinearly sampled texture ([`sample_bilinear`], in the scene's
+//! The albedo is [`ReferenceMaterial::color`] times the bilinearly sampled texture ([`sample_bilinear`], in the scene's
 //! space) when the object has one and has texture coordinates. [`Shading::Unlit`] draws the albedo; [`Shading::Lit`] is rastty's
 //! per-pixel Blinn-Phong (`ShadingModel::Phong` of [`rastty_core::draw_mesh`]) in `f64`, with the interpolated vertex normal
 //! renormalised:
@@ -40,13 +40,13 @@
 //!
 //! # Use
 //!
-//! Build a [`Scene`] by hand, or from a rastty scene, camera and plan options with [`Scene::from_scene`] (the
+//! Build a [`ReferenceScene`] by hand, or from a rastty scene, camera and plan options with [`ReferenceScene::from_scene`] (the
 //! same picture as rastty's scene renderer, [`rastty_scene::scene_render::SceneRenderer`], draws: a model shown without
 //! a scene file is a scene too, [`rastty_scene::scene_file::SceneData::from_model`]), then call [`render`] for a
 //! [`ReferenceImage`], or make a [`Renderer`] to render and also [`Renderer::probe`] single points.
 //!
 //! ```
-//! use rastty_bench::reference::{Camera, Object, Projection, Scene, Shading, render};
+//! use rastty_bench::reference::{Camera, ReferenceObject, ReferenceProjection, ReferenceScene, Shading, render};
 //!
 //! // An orthographic camera whose view box is the 4x4 image itself (view y = -screen y), and a triangle whose
 //! // right edge is the line x = 2.
@@ -54,12 +54,12 @@
 //!     eye: [0.0, 0.0, 1.0],
 //!     target: [0.0, 0.0, 0.0],
 //!     up: [0.0, 1.0, 0.0],
-//!     projection: Projection::Orthographic { left: 0.0, right: 4.0, bottom: -4.0, top: 0.0, near: 0.0, far: 2.0 },
+//!     projection: ReferenceProjection::Orthographic { left: 0.0, right: 4.0, bottom: -4.0, top: 0.0, near: 0.0, far: 2.0 },
 //! };
-//! let mut triangle = Object::new(vec![[2.0, -20.0, 0.0], [2.0, 10.0, 0.0], [-20.0, -2.0, 0.0]], vec![0, 1, 2]);
+//! let mut triangle = ReferenceObject::new(vec![[2.0, -20.0, 0.0], [2.0, 10.0, 0.0], [-20.0, -2.0, 0.0]], vec![0, 1, 2]);
 //! triangle.material.color = [1.0, 0.0, 0.0];
 //! triangle.shading = Shading::Unlit;
-//! let scene = Scene { objects: vec![triangle], ..Scene::new(4, 4, camera) };
+//! let scene = ReferenceScene { objects: vec![triangle], ..ReferenceScene::new(4, 4, camera) };
 //! let image = render(&scene).unwrap();
 //! assert_eq!(image.rgb[1], [1.0, 0.0, 0.0]); // pixel (1, 0): inside
 //! assert_eq!(image.coverage[1], 1.0);
@@ -85,13 +85,13 @@ pub use image::ReferenceImage;
 pub use render::{Probe, Renderer, SAMPLES_PER_AXIS, render};
 pub use texture::sample_bilinear;
 
-use math::Mat4;
+use math::DMat4;
 use rastty_scene::model::TextureImage;
 use rastty_scene::scene_render::SceneRenderError;
 
 /// Everything the reference renderer draws: image size, camera, lights, background and objects.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Scene {
+pub struct ReferenceScene {
     /// Image width in pixels.
     pub width: u32,
     /// Image height in pixels.
@@ -99,24 +99,24 @@ pub struct Scene {
     /// The camera.
     pub camera: Camera,
     /// The lights (used by [`Shading::Lit`] objects).
-    pub lighting: Lighting,
+    pub lighting: ReferenceLighting,
     /// The colour of samples that hit nothing, channels in `[0, 1]`, as stored (sRGB-encoded).
     pub background: [f64; 3],
     /// The objects, in drawing order (which only matters for exact depth ties).
-    pub objects: Vec<Object>,
+    pub objects: Vec<ReferenceObject>,
     /// How the truth is lit, as rastty's [`ShadingSpace`]: in linear light (texels decoded before filtering,
     /// light added up, the samples' light averaged and encoded) or on the stored values.
     pub space: ShadingSpace,
 }
 
-impl Scene {
+impl ReferenceScene {
     /// An empty `width x height` scene seen by `camera`: black background, no lights, no objects, linear light.
     pub fn new(width: u32, height: u32, camera: Camera) -> Self {
         Self {
             width,
             height,
             camera,
-            lighting: Lighting::default(),
+            lighting: ReferenceLighting::default(),
             background: [0.0; 3],
             objects: Vec::new(),
             space: ShadingSpace::Linear,
@@ -134,12 +134,12 @@ pub struct Camera {
     /// Roughly up on screen; replaced as [`rastty_core::camera::look_at`] does when parallel to the view.
     pub up: [f64; 3],
     /// The projection.
-    pub projection: Projection,
+    pub projection: ReferenceProjection,
 }
 
 /// How the camera projects (the same parameters as [`rastty_core::camera::Projection`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Projection {
+pub enum ReferenceProjection {
     /// Perspective.
     Perspective {
         /// Vertical field of view in radians, in `(0, pi)`.
@@ -168,7 +168,7 @@ pub enum Projection {
     },
 }
 
-impl Projection {
+impl ReferenceProjection {
     /// The near and far view depths.
     pub fn depth_range(&self) -> (f64, f64) {
         match *self {
@@ -179,23 +179,23 @@ impl Projection {
 
 /// The lights of a scene.
 #[derive(Clone, Debug, Default, PartialEq)]
-pub struct Lighting {
-    /// Light reaching every surface from every direction.
+pub struct ReferenceLighting {
+    /// ReferenceLight reaching every surface from every direction.
     pub ambient: [f64; 3],
     /// Directional lights.
-    pub lights: Vec<Light>,
+    pub lights: Vec<ReferenceLight>,
 }
 
 /// A directional light.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Light {
+pub struct ReferenceLight {
     /// Unit vector from the surface toward the light, in world space (used as given).
     pub to_light: [f64; 3],
     /// Colour and intensity.
     pub color: [f64; 3],
 }
 
-impl Light {
+impl ReferenceLight {
     /// A light shining from `to_light`, normalised here (a zero vector gives a light that adds nothing).
     pub fn directional(to_light: [f64; 3], color: [f64; 3]) -> Self {
         Self { to_light: math::V3::from_array(to_light).normalize_or_zero().to_array(), color }
@@ -204,7 +204,7 @@ impl Light {
 
 /// How a surface reflects light.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Material {
+pub struct ReferenceMaterial {
     /// Base (diffuse) colour; multiplied by the texture when there is one.
     pub color: [f64; 3],
     /// Specular colour; zero for no highlights.
@@ -213,7 +213,7 @@ pub struct Material {
     pub shininess: f64,
 }
 
-impl Default for Material {
+impl Default for ReferenceMaterial {
     /// The core's default material: grey 0.8, no highlights, shininess 32.
     fn default() -> Self {
         Self { color: [0.8; 3], specular: [0.0; 3], shininess: 32.0 }
@@ -233,7 +233,7 @@ pub enum Shading {
 
 /// A triangle mesh with its transform, material and texture.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Object {
+pub struct ReferenceObject {
     /// Vertex positions in object space.
     pub positions: Vec<[f64; 3]>,
     /// Vertex normals in object space, one per position (need not be unit length), or `None`.
@@ -242,10 +242,10 @@ pub struct Object {
     pub uvs: Option<Vec<[f64; 2]>>,
     /// Three vertex indices per triangle.
     pub indices: Vec<u32>,
-    /// Object space to world space: column-major (`model[c][r]`), acting on column vectors; must be affine.
-    pub model: Mat4,
+    /// ReferenceObject space to world space: column-major (`model[c][r]`), acting on column vectors; must be affine.
+    pub model: DMat4,
     /// The material.
-    pub material: Material,
+    pub material: ReferenceMaterial,
     /// The diffuse texture (used only with [`Self::uvs`]): `0x00RRGGBB` texels, row 0 at the top.
     pub texture: Option<TextureImage>,
     /// How texture coordinates outside `[0, 1]` wrap.
@@ -256,7 +256,7 @@ pub struct Object {
     pub cull: Cull,
 }
 
-impl Object {
+impl ReferenceObject {
     /// An object of the given triangles: identity transform, default material, no normals, texture coordinates
     /// or texture, repeat wrap, lit, back faces culled (rastty's defaults).
     pub fn new(positions: Vec<[f64; 3]>, indices: Vec<u32>) -> Self {
@@ -266,7 +266,7 @@ impl Object {
             uvs: None,
             indices,
             model: math::IDENTITY,
-            material: Material::default(),
+            material: ReferenceMaterial::default(),
             texture: None,
             wrap: WrapMode::Repeat,
             shading: Shading::Lit,
@@ -289,14 +289,14 @@ pub enum ReferenceError {
     Camera(CameraError),
     /// An object is inconsistent.
     Object {
-        /// Index into [`Scene::objects`].
+        /// Index into [`ReferenceScene::objects`].
         object: usize,
         /// What is wrong.
         reason: String,
     },
-    /// [`Scene::from_scene`] was asked for something the reference does not draw.
+    /// [`ReferenceScene::from_scene`] was asked for something the reference does not draw.
     Unsupported(&'static str),
-    /// rastty refuses to plan the frame [`Scene::from_scene`] was asked for (other than for its camera).
+    /// rastty refuses to plan the frame [`ReferenceScene::from_scene`] was asked for (other than for its camera).
     Plan(SceneRenderError),
 }
 

@@ -10,7 +10,7 @@ use rastty_core::target::MAX_DIMENSION;
 use super::math::{self, V3};
 use super::srgb;
 use super::texture::sample_bilinear;
-use super::{Camera, Projection, ReferenceError, ReferenceImage, Scene, Shading};
+use super::{Camera, ReferenceError, ReferenceImage, ReferenceProjection, ReferenceScene, Shading};
 
 /// Samples per pixel along each axis: a regular 16x16 grid, 256 samples per pixel.
 pub const SAMPLES_PER_AXIS: u32 = 16;
@@ -93,7 +93,7 @@ struct Vertex {
 /// What a ray through one point hits.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Probe {
-    /// Index of the object in [`Scene::objects`].
+    /// Index of the object in [`ReferenceScene::objects`].
     pub object: usize,
     /// Index of the triangle in the object (indices `3 * triangle .. 3 * triangle + 3`).
     pub triangle: usize,
@@ -116,7 +116,7 @@ pub struct Probe {
 /// Make one to render and then [`Self::probe`] single points of the same scene; [`render`] does both steps.
 #[derive(Debug)]
 pub struct Renderer<'a> {
-    scene: &'a Scene,
+    scene: &'a ReferenceScene,
     rays: Rays,
     near: f64,
     far: f64,
@@ -132,12 +132,12 @@ pub struct Renderer<'a> {
 ///
 /// # Errors
 /// [`ReferenceError`] for an empty or oversized image, a degenerate camera or an inconsistent object.
-pub fn render(scene: &Scene) -> Result<ReferenceImage, ReferenceError> {
+pub fn render(scene: &ReferenceScene) -> Result<ReferenceImage, ReferenceError> {
     Ok(Renderer::new(scene)?.render())
 }
 
 /// Checks the camera; returns the view matrix, the rays and the depth range.
-fn camera_setup(camera: &Camera) -> Result<(math::Mat4, Rays, f64, f64), CameraError> {
+fn camera_setup(camera: &Camera) -> Result<(math::DMat4, Rays, f64, f64), CameraError> {
     let finite = |v: &[f64]| v.iter().all(|x| x.is_finite());
     if !(finite(&camera.eye) && finite(&camera.target) && finite(&camera.up)) {
         return Err(CameraError::NotFinite);
@@ -145,7 +145,7 @@ fn camera_setup(camera: &Camera) -> Result<(math::Mat4, Rays, f64, f64), CameraE
     let view = math::look_at(V3::from_array(camera.eye), V3::from_array(camera.target), V3::from_array(camera.up))
         .ok_or(CameraError::EyeAtTarget)?;
     match camera.projection {
-        Projection::Perspective { fovy, aspect, near, far } => {
+        ReferenceProjection::Perspective { fovy, aspect, near, far } => {
             if !finite(&[fovy, aspect, near, far]) {
                 return Err(CameraError::NotFinite);
             }
@@ -161,7 +161,7 @@ fn camera_setup(camera: &Camera) -> Result<(math::Mat4, Rays, f64, f64), CameraE
             let ky = (fovy * 0.5).tan();
             Ok((view, Rays::Perspective { kx: ky * aspect, ky }, near, far))
         }
-        Projection::Orthographic { left, right, bottom, top, near, far } => {
+        ReferenceProjection::Orthographic { left, right, bottom, top, near, far } => {
             if !finite(&[left, right, bottom, top, near, far]) {
                 return Err(CameraError::NotFinite);
             }
@@ -177,7 +177,7 @@ fn camera_setup(camera: &Camera) -> Result<(math::Mat4, Rays, f64, f64), CameraE
 }
 
 /// Checks that an object's arrays fit together.
-fn check_object(o: &super::Object) -> Result<(), String> {
+fn check_object(o: &super::ReferenceObject) -> Result<(), String> {
     if o.indices.len() % 3 != 0 {
         return Err(format!("{} indices is not a whole number of triangles", o.indices.len()));
     }
@@ -254,7 +254,7 @@ impl<'a> Renderer<'a> {
     ///
     /// # Errors
     /// As [`render`].
-    pub fn new(scene: &'a Scene) -> Result<Self, ReferenceError> {
+    pub fn new(scene: &'a ReferenceScene) -> Result<Self, ReferenceError> {
         let (width, height) = (scene.width, scene.height);
         if !(1..=MAX_DIMENSION).contains(&width) || !(1..=MAX_DIMENSION).contains(&height) {
             return Err(ReferenceError::Size { width, height });
@@ -316,7 +316,7 @@ impl<'a> Renderer<'a> {
     }
 
     /// Transforms an object's vertices and sets up and bins its triangles.
-    fn add_object(&mut self, object: usize, o: &super::Object, view: &math::Mat4) {
+    fn add_object(&mut self, object: usize, o: &super::ReferenceObject, view: &math::DMat4) {
         let base = self.vertices.len() as u32;
         let normal_matrix = math::normal_matrix(&o.model);
         let mirrors = math::determinant3(&o.model) < 0.0;
@@ -578,8 +578,8 @@ impl<'a> Renderer<'a> {
         }
     }
 
-    /// Blinn-Phong at a point with unit normal `n` (the core's `Lighting::diffuse` and `Lighting::specular`).
-    fn light(&self, albedo: V3, n: V3, world: V3, material: &super::Material) -> V3 {
+    /// Blinn-Phong at a point with unit normal `n` (the core's `ReferenceLighting::diffuse` and `ReferenceLighting::specular`).
+    fn light(&self, albedo: V3, n: V3, world: V3, material: &super::ReferenceMaterial) -> V3 {
         let lighting = &self.scene.lighting;
         let mut diffuse = V3::from_array(lighting.ambient);
         for light in &lighting.lights {

@@ -181,7 +181,7 @@ impl From<SceneRenderError> for EffectsError {
 
 /// The measured frames of one configuration at one size, one sample per frame.
 #[derive(Clone, Debug, Default, PartialEq)]
-pub struct Samples {
+pub struct ConfigurationTimes {
     /// Wall time of [`SceneRenderer::render`].
     pub frame: Vec<Duration>,
     /// [`FrameReport::shadow_time`].
@@ -198,7 +198,7 @@ pub struct Samples {
     pub fragments: u64,
 }
 
-impl Samples {
+impl ConfigurationTimes {
     /// No samples yet, for `plan`.
     pub(super) fn for_plan(plan: &ScenePlan) -> Self {
         Self {
@@ -290,7 +290,7 @@ pub struct EffectsResults {
     /// The threads each frame was drawn on.
     pub threads: usize,
     /// The samples of each configuration (outer) at each size (inner).
-    pub samples: Vec<Vec<Samples>>,
+    pub samples: Vec<Vec<ConfigurationTimes>>,
 }
 
 impl EffectsResults {
@@ -329,12 +329,12 @@ fn measure_size(
     (width, height): (u32, u32),
     threads: usize,
     frames: usize,
-) -> Result<Vec<Samples>, EffectsError> {
+) -> Result<Vec<ConfigurationTimes>, EffectsError> {
     let plans =
         configurations.iter().map(|c| plan(scene, (width, height), c.effects)).collect::<Result<Vec<_>, _>>()?;
     let mut renderers: Vec<SceneRenderer> =
         configurations.iter().map(|_| SceneRenderer::with_threads(threads)).collect();
-    let mut samples: Vec<Samples> = plans.iter().map(Samples::for_plan).collect();
+    let mut samples: Vec<ConfigurationTimes> = plans.iter().map(ConfigurationTimes::for_plan).collect();
     let mut frames_drawn = TimedFrames::new(scene, (width, height), threads);
     let mut frame = |row: usize, warm_up: bool| -> Result<(), EffectsError> {
         let configuration = &configurations[row];

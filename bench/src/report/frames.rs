@@ -15,7 +15,7 @@ use std::io::Write;
 use std::path::PathBuf;
 use std::time::Duration;
 
-use super::effects::{EffectsError, Samples, ShadowMaps, TimedFrames, check_maps, plan};
+use super::effects::{EffectsError, ConfigurationTimes, ShadowMaps, TimedFrames, check_maps, plan};
 use super::median;
 use rastty_scene::escaped::path_text;
 use rastty_scene::scene_render::{
@@ -82,7 +82,7 @@ impl FramesReport {
 
 /// One row: the effects allowed and how the shadow maps are had.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Row {
+pub struct FramesRow {
     /// The row's label.
     pub label: &'static str,
     /// The effects allowed (the scene's own materials and lights decide where they apply).
@@ -93,7 +93,7 @@ pub struct Row {
     pub multisample: bool,
 }
 
-impl Row {
+impl FramesRow {
     /// The row's plan of `scene`'s frame at `size` with its own camera.
     fn plan(&self, scene: &PreparedScene, size: (u32, u32)) -> Result<ScenePlan, SceneRenderError> {
         let options = PlanOptions { effects: self.effects, multisample: self.multisample, ..PlanOptions::default() };
@@ -103,10 +103,10 @@ impl Row {
 
 /// The rows for a scene: with shadow passes, every effect with the maps kept and drawn every frame and every
 /// effect but shadows; without, every effect alone; then the first row again with four samples per pixel.
-pub fn rows(has_shadows: bool) -> Vec<Row> {
+pub fn rows(has_shadows: bool) -> Vec<FramesRow> {
     let all = EffectToggles::ALL_ON;
-    let row = |label, effects, maps| Row { label, effects, maps, multisample: false };
-    let msaa = |label| Row { label, effects: all, maps: ShadowMaps::Kept, multisample: true };
+    let row = |label, effects, maps| FramesRow { label, effects, maps, multisample: false };
+    let msaa = |label| FramesRow { label, effects: all, maps: ShadowMaps::Kept, multisample: true };
     if !has_shadows {
         return vec![row("every effect", all, ShadowMaps::Kept), msaa("every effect, 4x MSAA")];
     }
@@ -124,11 +124,11 @@ pub fn rows(has_shadows: bool) -> Vec<Row> {
 #[derive(Clone, Debug, PartialEq)]
 pub struct FramesResults {
     /// The rows, as [`rows`] gives them for the scene.
-    pub rows: Vec<Row>,
+    pub rows: Vec<FramesRow>,
     /// The threads each frame was drawn on.
     pub threads: usize,
     /// Each row's samples.
-    pub samples: Vec<Samples>,
+    pub samples: Vec<ConfigurationTimes>,
 }
 
 /// Measures every row of `report` on `scene`.
@@ -145,7 +145,7 @@ pub fn measure(scene: &PreparedScene, report: &FramesReport) -> Result<FramesRes
     let plans = rows.iter().map(|row| row.plan(scene, report.size)).collect::<Result<Vec<_>, _>>()?;
     let threads = report.thread_count();
     let mut renderers: Vec<SceneRenderer> = rows.iter().map(|_| SceneRenderer::with_threads(threads)).collect();
-    let mut samples: Vec<Samples> = plans.iter().map(Samples::for_plan).collect();
+    let mut samples: Vec<ConfigurationTimes> = plans.iter().map(ConfigurationTimes::for_plan).collect();
     let mut frames = TimedFrames::new(scene, report.size, threads);
     // Two frames first: a kept map is drawn in the first and its filter windows' ranges worked out in the second.
     for (r, row) in rows.iter().enumerate() {

@@ -22,7 +22,7 @@ use rastty::graphics::{FrameImage, GraphicsProtocol, Passthrough};
 use rastty::screen::{CellGrid, CellMode, ColorMode, Encoder, PixelFrame, naive_full_frame};
 use rastty::viewer::{MAX_IMAGE_PIXELS, image_size};
 use rastty_scene::builtin::BUILTIN_NAME;
-use rastty_scene::scene_file::{FramedCamera, OpenError, Projection, open};
+use rastty_scene::scene_file::{FramedCamera, OpenError, SceneProjection, open};
 use rastty_scene::scene_render::{Orbit, PlanOptions, PreparedScene, ScenePlan, SceneRenderError, SceneRenderer};
 
 /// Terminal sizes measured, in cells (columns, rows).
@@ -370,8 +370,8 @@ pub fn header(report: &TerminalReport, machine: &str) -> String {
             camera.pitch_degrees,
             camera.distance,
             match camera.projection {
-                Projection::Perspective { fov_degrees } => format!("{fov_degrees}° lens"),
-                Projection::Orthographic { height } => format!("orthographic, {height} radii high"),
+                SceneProjection::Perspective { fov_degrees } => format!("{fov_degrees}° lens"),
+                SceneProjection::Orthographic { height } => format!("orthographic, {height} radii high"),
             },
             SceneRenderer::new().threads(),
         ),

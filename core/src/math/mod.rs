@@ -9,6 +9,7 @@
 
 #![warn(clippy::must_use_candidate)]
 
+mod bounding_sphere;
 pub mod exact;
 pub mod float;
 mod mat3;
@@ -18,6 +19,7 @@ mod vec2;
 mod vec3;
 mod vec4;
 
+pub use bounding_sphere::BoundingSphere;
 pub use mat3::Mat3;
 pub use mat4::Mat4;
 pub use quat::Quat;

@@ -14,7 +14,7 @@
 use core::ops::Range;
 
 use crate::camera::{CameraError, look_at, orthographic, perspective};
-use crate::math::{Mat4, Vec3, float};
+use crate::math::{BoundingSphere, Mat4, Vec3, float};
 use crate::mesh::Mesh;
 use crate::pipeline::{BATCH_SIZE, ClipVolume, Cull, DrawState, DrawStats, PositionShader, draw, lanes};
 use crate::shading::LightKind;
@@ -116,15 +116,6 @@ impl Default for ShadowBias {
     }
 }
 
-/// A sphere that holds everything a shadow map must see.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Bounds {
-    /// Its centre, in world space.
-    pub centre: Vec3,
-    /// Its radius (positive).
-    pub radius: f32,
-}
-
 /// World size of one shadow-map texel.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum TexelSize {
@@ -164,8 +155,8 @@ impl ShadowView {
     /// [`ShadowError::Bounds`] for empty or non-finite bounds, [`ShadowError::Size`] for a side of 0 or above
     /// [`MAX_DIMENSION`] (and for a cube not above `2 *` [`CUBE_BORDER`]), [`ShadowError::Camera`] if the light's
     /// direction or position is not usable.
-    pub fn fit(kind: LightKind, bounds: Bounds, size: u32) -> Result<Self, ShadowError> {
-        let Bounds { centre, radius: r } = bounds;
+    pub fn fit(kind: LightKind, bounds: BoundingSphere, size: u32) -> Result<Self, ShadowError> {
+        let BoundingSphere { centre, radius: r } = bounds;
         if !(r > 0.0 && r.is_finite() && centre.is_finite()) {
             return Err(ShadowError::Bounds);
         }
@@ -646,7 +637,7 @@ mod tests {
 
     /// The view of a `size x size` map of the unit sphere from a light straight above it.
     fn overhead_view(size: u32) -> ShadowView {
-        let bounds = Bounds { centre: Vec3::ZERO, radius: 1.0 };
+        let bounds = BoundingSphere { centre: Vec3::ZERO, radius: 1.0 };
         ShadowView::fit(LightKind::Directional { to_light: Vec3::Y }, bounds, size).unwrap()
     }
 
@@ -732,7 +723,7 @@ mod tests {
     /// affine.
     #[test]
     fn orthographic_lookups_need_no_division() {
-        let bounds = Bounds { centre: Vec3::new(0.2, -0.1, 0.3), radius: 1.5 };
+        let bounds = BoundingSphere { centre: Vec3::new(0.2, -0.1, 0.3), radius: 1.5 };
         let depth = [0.5; 64 * 64];
         let to_light = Vec3::new(-0.4, 0.8, 0.45).normalize_or_zero();
         let view = ShadowView::fit(LightKind::Directional { to_light }, bounds, 64).unwrap();
@@ -769,7 +760,7 @@ mod tests {
     fn lanes_look_up_what_the_scalar_lookup_does() {
         const SIZE: u32 = 16;
         const CUBE: usize = (6 * SIZE * SIZE) as usize;
-        let bounds = Bounds { centre: Vec3::ZERO, radius: 1.0 };
+        let bounds = BoundingSphere { centre: Vec3::ZERO, radius: 1.0 };
         let all: [f32; CUBE] = core::array::from_fn(|i| 0.3 + ((i * 37) % 97) as f32 / 200.0);
         let kinds = [
             LightKind::Directional { to_light: Vec3::new(0.3, 0.9, 0.2).normalize_or_zero() },
@@ -832,7 +823,7 @@ mod tests {
     /// and too wide a filter are refused.
     #[test]
     fn point_lights_inside_the_bounds_get_a_cube() {
-        let bounds = Bounds { centre: Vec3::ZERO, radius: 2.0 };
+        let bounds = BoundingSphere { centre: Vec3::ZERO, radius: 2.0 };
         let inside = LightKind::Point { position: Vec3::new(0.5, 1.0, -0.5) };
         let view = ShadowView::fit(inside, bounds, 32).unwrap();
         assert_eq!((view.faces(), view.rows(), view.size()), (6, 192, 32));

@@ -10,7 +10,7 @@ use rastty_core::pipeline::{Bands, DrawStats};
 use rastty_core::target::Samples;
 use rastty_embedded_graphics::{BandMemory, FrameError, draw_frame};
 
-use crate::{ChecksumDisplay, FrameMemory, Layout, Scene, SceneError};
+use crate::{ChecksumDisplay, FrameMemory, MemoryLayout, Scene, SceneError};
 
 /// Frame width in pixels.
 pub const WIDTH: u32 = 320;
@@ -28,7 +28,7 @@ pub const HEIGHT: u32 = 240;
 /// A [`SceneError`] if the mesh, the camera, a band or a draw fails (none does).
 pub fn render_frame(
     frame: usize,
-    layout: Layout,
+    layout: MemoryLayout,
     memory: &mut FrameMemory,
     display: &mut impl DrawTarget<Color = Rgb565, Error = Infallible>,
 ) -> Result<(u32, DrawStats), SceneError> {
@@ -59,19 +59,23 @@ pub fn render_frame(
 ///
 /// # Errors
 /// As [`render_frame`].
-pub fn checksum_frame(frame: usize, layout: Layout, memory: &mut FrameMemory) -> Result<FrameReport, SceneError> {
+pub fn checksum_frame(
+    frame: usize,
+    layout: MemoryLayout,
+    memory: &mut FrameMemory,
+) -> Result<FrameChecksum, SceneError> {
     let mut display = ChecksumDisplay::new();
     let (bands, stats) = render_frame(frame, layout, memory, &mut display)?;
-    Ok(FrameReport { frame, layout, checksum: display.checksum(), bands, stats })
+    Ok(FrameChecksum { frame, layout, checksum: display.checksum(), bands, stats })
 }
 
 /// What rendering a frame did.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct FrameReport {
+pub struct FrameChecksum {
     /// The frame's index.
     pub frame: usize,
     /// The memory layout it was rendered in.
-    pub layout: Layout,
+    pub layout: MemoryLayout,
     /// [`crate::Fnv1a`] of the frame's pixels.
     pub checksum: u32,
     /// Bands rendered and checksummed.
@@ -80,7 +84,7 @@ pub struct FrameReport {
     pub stats: DrawStats,
 }
 
-impl fmt::Display for FrameReport {
+impl fmt::Display for FrameChecksum {
     /// The line that the firmware and the host both print, and `check.sh` compares:
     /// `frame 0 in 16 KiB: checksum 0x1234abcd, 60 bands, 24680 fragments`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {

@@ -9,7 +9,7 @@
 //! ([`YAWS`]).
 //!
 //! The firmware (`firmware`, built for `thumbv7em-none-eabihf`) and the host test
-//! `tests/tests/firmware_checksum.rs` both call [`checksum_frame`] and print its [`FrameReport`]s;
+//! `tests/tests/firmware_checksum.rs` both call [`checksum_frame`] and print its [`FrameChecksum`]s;
 //! `firmware/check.sh` fails unless the lines are equal. Every parameter is a literal constant, and the
 //! matrices are built through the core's API, which routes every float function beyond `+ - * /` through `libm`:
 //! so both machines compute identical matrices and pixels.
@@ -27,6 +27,6 @@ pub mod spot;
 pub use display::ChecksumDisplay;
 pub use error::SceneError;
 pub use fnv1a::Fnv1a;
-pub use frame::{FrameReport, HEIGHT, WIDTH, checksum_frame, render_frame};
-pub use memory::{BIN_ENTRIES, FRAME_MEMORY_BYTES, FrameMemory, LAYOUTS, Layout, MAX_BAND_PIXELS};
+pub use frame::{FrameChecksum, HEIGHT, WIDTH, checksum_frame, render_frame};
+pub use memory::{BIN_ENTRIES, FRAME_MEMORY_BYTES, FrameMemory, LAYOUTS, MAX_BAND_PIXELS, MemoryLayout};
 pub use scene::{BACKGROUND, FRAMES, Scene, SpotShader, YAWS};

@@ -14,14 +14,14 @@ pub const BIN_ENTRIES: usize = 2_816;
 
 /// How the frame memory is shared out: rows per band, within a budget of RAM for every buffer together.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Layout {
+pub struct MemoryLayout {
     /// The budget in KiB: colour, depth and bins together fit in it.
     pub budget_kib: usize,
     /// Rows per band (the last band is shorter when this does not divide the height).
     pub band_rows: u32,
 }
 
-impl Layout {
+impl MemoryLayout {
     /// The most rows per band that fit `budget_kib` KiB with the bins.
     #[must_use]
     pub const fn for_budget(budget_kib: usize) -> Self {
@@ -44,7 +44,8 @@ impl Layout {
 
 /// The layouts measured, smallest first, each with the most rows per band that fit its budget. The firmware's
 /// frames are checked in every one.
-pub const LAYOUTS: [Layout; 3] = [Layout::for_budget(16), Layout::for_budget(32), Layout::for_budget(64)];
+pub const LAYOUTS: [MemoryLayout; 3] =
+    [MemoryLayout::for_budget(16), MemoryLayout::for_budget(32), MemoryLayout::for_budget(64)];
 
 /// Pixels of the largest layout's band: what [`FrameMemory`] holds.
 pub const MAX_BAND_PIXELS: usize = LAYOUTS[LAYOUTS.len() - 1].band_pixels();

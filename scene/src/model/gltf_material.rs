@@ -1,11 +1,11 @@
-//! glTF materials as the renderer's [`Material`]s: base colour, normal and emissive maps, double-sidedness, and
+//! glTF materials as the renderer's [`ModelMaterial`]s: base colour, normal and emissive maps, double-sidedness, and
 //! the metallic-roughness model approximated by a Blinn-Phong highlight.
 
 use gltf::texture::Info;
 use rastty_core::color::{SRGB_DECODE, linear_to_srgb, linear_to_srgb8};
 use rastty_core::math::{Vec2, Vec3};
 
-use super::material::Material;
+use super::material::ModelMaterial;
 use super::texture_image::TextureImage;
 
 /// The reflectance of a dielectric seen head-on, which metallic-roughness materials use for non-metals (glTF 2.0
@@ -60,7 +60,7 @@ pub(crate) fn convert(
     material: &gltf::Material<'_>,
     mut image: impl FnMut(usize) -> Option<TextureImage>,
     mut warn: impl FnMut(String),
-) -> (Material, UvTransform) {
+) -> (ModelMaterial, UvTransform) {
     let label = match material.name() {
         Some(name) => format!("material {:?}", crate::escaped::Escaped(name).to_string()),
         None => format!("material {}", material.index().map_or_else(|| "(default)".into(), |i| i.to_string())),
@@ -118,9 +118,9 @@ pub(crate) fn convert(
         warn(format!("{label}: its maps have different texture transforms; the base colour's is used for all"));
     }
     let (specular, shininess) = highlight(base, metallic, roughness);
-    let converted = Material {
+    let converted = ModelMaterial {
         name: material.name().unwrap_or_default().to_owned(),
-        // Linear in glTF; a `Material` holds every colour sRGB-encoded (decoded again for linear light).
+        // Linear in glTF; a `ModelMaterial` holds every colour sRGB-encoded (decoded again for linear light).
         diffuse: base.map(linear_to_srgb),
         texture,
         normal_map,

@@ -5,8 +5,8 @@ use std::ops::Range;
 use rastty_core::math::{Mat4, Vec2, Vec3, Vec4};
 use rastty_core::mesh::{Indices, Mesh};
 
-use super::bounds::Bounds;
-use super::material::Material;
+use super::bounding_box::BoundingBox;
+use super::material::ModelMaterial;
 use super::texture_image::TextureImage;
 
 /// An owned triangle model, ready for the core.
@@ -36,7 +36,7 @@ pub struct Model {
     pub parts: Vec<Part>,
     /// The materials of the file's MTL libraries, in file order (also those no part uses; their textures are not
     /// loaded).
-    pub materials: Vec<Material>,
+    pub materials: Vec<ModelMaterial>,
     /// Non-fatal problems met while loading, one line each (control characters escaped).
     pub warnings: Vec<String>,
 }
@@ -73,13 +73,13 @@ impl Model {
     }
 
     /// The material of part `part`, or `None` for the default material (or no such part).
-    pub fn part_material(&self, part: usize) -> Option<&Material> {
+    pub fn part_material(&self, part: usize) -> Option<&ModelMaterial> {
         self.materials.get(self.parts.get(part)?.material?)
     }
 
     /// The bounding box of the positions, or `None` when there are none (or one is not finite).
-    pub fn bounds(&self) -> Option<Bounds> {
-        Bounds::from_points(&self.positions)
+    pub fn bounds(&self) -> Option<BoundingBox> {
+        BoundingBox::from_points(&self.positions)
     }
 
     /// The auto-fit transform: centres the bounding box at the origin and scales uniformly so that the box's
@@ -100,7 +100,7 @@ impl Model {
                 Some(m) if m < textured.len() => textured[m] = true,
                 _ => {
                     let index = *default.get_or_insert_with(|| {
-                        self.materials.push(Material::default());
+                        self.materials.push(ModelMaterial::default());
                         self.materials.len() - 1
                     });
                     part.material = Some(index);
@@ -146,7 +146,7 @@ mod tests {
                 Part { name: "a".into(), indices: 0..3, material: None },
                 Part { name: "b".into(), indices: 3..6, material: Some(0) },
             ],
-            materials: vec![Material { name: "m".into(), ..Material::default() }],
+            materials: vec![ModelMaterial { name: "m".into(), ..ModelMaterial::default() }],
             warnings: Vec::new(),
         }
     }

@@ -11,7 +11,7 @@ pub const DEFAULT_DIFFUSE: Vec3 = Vec3::splat(0.8);
 /// entries give the colour and the diffuse texture; a glTF material can give every field (see
 /// `docs/models.md` for how glTF's metallic-roughness model is mapped to these).
 #[derive(Clone, Debug, PartialEq)]
-pub struct Material {
+pub struct ModelMaterial {
     /// The name given by `newmtl` or the glTF material, raw (it may hold control characters: sanitise before
     /// printing).
     pub name: String,
@@ -42,7 +42,7 @@ pub struct Material {
     pub alpha_cutoff: Option<f32>,
 }
 
-impl Default for Material {
+impl Default for ModelMaterial {
     /// An unnamed, untextured, one-sided material of [`DEFAULT_DIFFUSE`].
     fn default() -> Self {
         Self {

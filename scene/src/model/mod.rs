@@ -4,7 +4,7 @@
 //! in memory (a built-in model embedded with `include_bytes!`), with a [`Resolver`] such as [`Embedded`] for its
 //! MTL and texture files, [`load_stl_bytes`] STL data and [`load_gltf_bytes`] glTF data. Each gives a
 //! [`Model`]: one vertex array (positions, normals, optional texture coordinates), one `u32` index buffer cut into
-//! [`Part`]s by object, group and material, the [`Material`]s with their decoded [`TextureImage`]s, and the
+//! [`Part`]s by object, group and material, the [`ModelMaterial`]s with their decoded [`TextureImage`]s, and the
 //! warnings met on the way. [`Model::part_mesh`] hands a part to the core as a [`rastty_core::mesh::Mesh`], and
 //! [`Model::fit`] gives the transform that frames any model the same way.
 //!
@@ -26,7 +26,7 @@
 //! assert_eq!(mesh.triangle_count(), 2);
 //! ```
 
-mod bounds;
+mod bounding_box;
 mod crease_normals;
 mod error;
 mod gltf_accessor;
@@ -45,13 +45,13 @@ mod smooth_normals;
 mod stl_loader;
 mod texture_image;
 
-pub use bounds::Bounds;
+pub use bounding_box::BoundingBox;
 pub use crease_normals::{IndexedSoup, MAX_GROUPS_PER_VERTEX, crease_normals};
 pub use error::{COORDINATE_LIMIT, Element, LoadError, LoadErrorKind};
 pub use gltf_accessor::MAX_VIEWLESS_ELEMENTS;
 pub use gltf_loader::{READ_EXTENSIONS, load_gltf_bytes};
 pub use loaded_model::{Model, Part};
-pub use material::{DEFAULT_DIFFUSE, Material};
+pub use material::{DEFAULT_DIFFUSE, ModelMaterial};
 pub use model_file::{ModelFormat, ModelOptions, SUPPORTED_MODELS, load_model};
 pub use obj_loader::load_obj_bytes;
 pub use resolver::{Directory, Embedded, NoFiles, Resolver};

@@ -9,7 +9,7 @@ use rastty_core::math::{Vec2, Vec3};
 use super::error::{LoadError, LoadErrorKind};
 use super::loaded_model::{Model, Part};
 use super::map_path::map_file;
-use super::material::{DEFAULT_DIFFUSE, Material, diffuse_from_kd};
+use super::material::{DEFAULT_DIFFUSE, ModelMaterial, diffuse_from_kd};
 use super::mtl_check::check_mtl;
 use super::obj_check::check_obj;
 use super::resolver::Resolver;
@@ -216,7 +216,7 @@ fn build_materials(
     sources: &[Source],
     model: &Model,
     resolver: &dyn Resolver,
-) -> (Vec<Material>, Vec<String>) {
+) -> (Vec<ModelMaterial>, Vec<String>) {
     let mut used = vec![false; materials.len()];
     for part in &model.parts {
         if let Some(u) = part.material.and_then(|m| used.get_mut(m)) {
@@ -257,7 +257,7 @@ fn build_materials(
                     }
                 }
             }
-            Material { name: m.name, diffuse, texture, ..Material::default() }
+            ModelMaterial { name: m.name, diffuse, texture, ..ModelMaterial::default() }
         })
         .collect();
     (result, warnings)

@@ -2,7 +2,7 @@
 
 use rastty_core::math::Vec3;
 
-use super::loaded::{LightKind, SceneLight};
+use super::loaded::{SceneLight, SceneLightKind};
 use super::schema::LightSpace;
 
 /// The background, a dark blue-grey (`#16191f`).
@@ -21,7 +21,7 @@ pub const VIEWER_LIGHTS: [SceneLight; 2] = [
     SceneLight {
         // Travelling from the upper left, in front of the model, toward it: toward the light is
         // (-0.445435, 0.668153, 0.596559), a unit vector.
-        kind: LightKind::Directional { direction: Vec3::new(0.445_435, -0.668_153, -0.596_559) },
+        kind: SceneLightKind::Directional { direction: Vec3::new(0.445_435, -0.668_153, -0.596_559) },
         color: Vec3::new(0.9, 0.87, 0.8),
         intensity: 1.0,
         shadows: false,
@@ -29,7 +29,7 @@ pub const VIEWER_LIGHTS: [SceneLight; 2] = [
     },
     SceneLight {
         // From the right, in front: toward the light is (0.882353, 0, 0.470588), a unit vector.
-        kind: LightKind::Directional { direction: Vec3::new(-0.882_353, 0.0, -0.470_588) },
+        kind: SceneLightKind::Directional { direction: Vec3::new(-0.882_353, 0.0, -0.470_588) },
         color: Vec3::new(0.18, 0.2, 0.26),
         intensity: 1.0,
         shadows: false,

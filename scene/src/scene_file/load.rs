@@ -15,10 +15,12 @@ use super::defaults;
 use super::error::{SceneFileError, SceneFileErrorKind};
 use super::hex_color::parse_hex_color;
 use super::loaded::{
-    CameraPlacement, FramedCamera, LightKind, NormalMap, ObjectMaterial, Projection, SceneCamera, SceneData,
-    SceneLight, SceneObject,
+    CameraPlacement, FramedCamera, ObjectMaterial, ObjectNormalMap, SceneCamera, SceneData, SceneLight, SceneLightKind,
+    SceneObject, SceneProjection,
 };
-use super::schema::{CameraSpec, Filter, LightSpec, LightType, MaterialSpec, Mipmaps, ObjectSpec, Triple, Wrap};
+use super::schema::{
+    CameraSpec, FilterSpec, LightSpec, LightType, MaterialSpec, Mipmaps, ObjectSpec, Triple, WrapSpec,
+};
 use super::transform::object_transform;
 use super::validate::{BUILTIN_PREFIX, Checker, unit};
 use crate::builtin::builtin_model;
@@ -71,8 +73,8 @@ pub(crate) fn load_scene_file(file: &SceneFile) -> Result<SceneData, SceneFileEr
 
 fn camera(c: &CameraSpec) -> CameraPlacement {
     let projection = match (&c.fov, &c.orthographic) {
-        (_, Some(height)) if c.fov.is_none() => Projection::Orthographic { height: *height.get_ref() },
-        (Some(fov), _) => Projection::Perspective { fov_degrees: *fov.get_ref() },
+        (_, Some(height)) if c.fov.is_none() => SceneProjection::Orthographic { height: *height.get_ref() },
+        (Some(fov), _) => SceneProjection::Perspective { fov_degrees: *fov.get_ref() },
         _ => FramedCamera::DEFAULT.projection,
     };
     let (near, far) = (c.near.as_ref().map(|v| *v.get_ref()), c.far.as_ref().map(|v| *v.get_ref()));
@@ -102,10 +104,10 @@ fn camera(c: &CameraSpec) -> CameraPlacement {
 
 fn light(l: &LightSpec) -> SceneLight {
     let kind = match l.kind.get_ref() {
-        LightType::Directional => LightKind::Directional {
+        LightType::Directional => SceneLightKind::Directional {
             direction: l.direction.as_ref().and_then(|d| unit(*d.get_ref())).unwrap_or(-Vec3::Y),
         },
-        LightType::Point => LightKind::Point { position: vec3_or(&l.position, Vec3::ZERO) },
+        LightType::Point => SceneLightKind::Point { position: vec3_or(&l.position, Vec3::ZERO) },
     };
     SceneLight {
         kind,
@@ -184,18 +186,18 @@ impl Loader<'_> {
         Ok(ObjectMaterial {
             color: m.color.as_ref().map(|c| vec3(*c.get_ref())),
             diffuse,
-            normal_map: normal_map.map(|image| NormalMap { image, space }),
+            normal_map: normal_map.map(|image| ObjectNormalMap { image, space }),
             specular: m.specular.as_ref().map(|s| vec3(s.get_ref().triple())),
             shininess: m.shininess.as_ref().map(|s| *s.get_ref()),
             specular_map,
             glow_map,
             filter: match m.filter {
-                Filter::Nearest => FilterMode::Nearest,
-                Filter::Bilinear => FilterMode::Bilinear,
+                FilterSpec::Nearest => FilterMode::Nearest,
+                FilterSpec::Bilinear => FilterMode::Bilinear,
             },
             wrap: match m.wrap {
-                Wrap::Repeat => WrapMode::Repeat,
-                Wrap::Clamp => WrapMode::Clamp,
+                WrapSpec::Repeat => WrapMode::Repeat,
+                WrapSpec::Clamp => WrapMode::Clamp,
             },
             mip_filter: match m.mipmaps {
                 Mipmaps::Off => MipFilter::Off,

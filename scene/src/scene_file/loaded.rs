@@ -8,7 +8,7 @@ use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::texture::{FilterMode, MipFilter, WrapMode};
 
-use super::schema::{LightSpace, NormalSpace};
+use super::schema::{LightSpace, NormalSpaceSpec};
 use crate::model::{self, Model, TextureImage};
 
 /// Everything a scene file describes, loaded and checked, ready for a renderer.
@@ -61,7 +61,7 @@ pub struct FramedCamera {
     /// The eye's distance from the centre, in radii.
     pub distance: f32,
     /// The lens (an orthographic height in radii).
-    pub projection: Projection,
+    pub projection: SceneProjection,
     /// The near plane's distance in radii, if given.
     pub near: Option<f32>,
     /// The far plane's distance in radii, if given.
@@ -75,7 +75,7 @@ impl FramedCamera {
         yaw_degrees: 30.0,
         pitch_degrees: 15.0,
         distance: 2.8,
-        projection: Projection::Perspective { fov_degrees: 40.0 },
+        projection: SceneProjection::Perspective { fov_degrees: 40.0 },
         near: None,
         far: None,
     };
@@ -98,7 +98,7 @@ pub struct SceneCamera {
     /// Which way is up in the image, unit length.
     pub up: Vec3,
     /// The lens.
-    pub projection: Projection,
+    pub projection: SceneProjection,
     /// The near plane's distance, when the file gives one (positive).
     pub near: Option<f32>,
     /// The far plane's distance, when the file gives one (positive, beyond `near` when both are given).
@@ -118,7 +118,7 @@ impl SceneCamera {
 
 /// A camera's lens.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Projection {
+pub enum SceneProjection {
     /// Perspective.
     Perspective {
         /// The field of view across the frame's shorter side in degrees, strictly between 0 and 180.
@@ -135,7 +135,7 @@ pub enum Projection {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SceneLight {
     /// Where the light comes from.
-    pub kind: LightKind,
+    pub kind: SceneLightKind,
     /// Its colour (components not negative), not yet multiplied by `intensity`.
     pub color: Vec3,
     /// Multiplies `color` (not negative).
@@ -148,7 +148,7 @@ pub struct SceneLight {
 
 /// The kind of a light and where it is.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum LightKind {
+pub enum SceneLightKind {
     /// Parallel rays.
     Directional {
         /// The unit direction the light travels, from the light toward the scene (the opposite of the core's
@@ -190,7 +190,7 @@ pub struct ObjectMaterial {
     /// The diffuse texture.
     pub diffuse: Option<Arc<TextureImage>>,
     /// The normal map and how to read it.
-    pub normal_map: Option<NormalMap>,
+    pub normal_map: Option<ObjectNormalMap>,
     /// The specular colour (components from 0 to 1).
     pub specular: Option<Vec3>,
     /// The Blinn-Phong exponent (positive).
@@ -215,49 +215,52 @@ impl ObjectMaterial {
 
     /// The diffuse colour of a part whose MTL material is `mtl` (`None` for a part without one): the scene's
     /// `color` if given, else the MTL's `Kd`, else [`model::DEFAULT_DIFFUSE`].
-    pub fn color_over(&self, mtl: Option<&model::Material>) -> Vec3 {
+    pub fn color_over(&self, mtl: Option<&model::ModelMaterial>) -> Vec3 {
         self.color.or(mtl.map(|m| m.diffuse)).unwrap_or(model::DEFAULT_DIFFUSE)
     }
 
     /// The diffuse texture of a part whose MTL material is `mtl`: the scene's `diffuse` if given, else the MTL's
     /// `map_Kd` (when it loaded), else none.
-    pub fn diffuse_over<'a>(&'a self, mtl: Option<&'a model::Material>) -> Option<&'a TextureImage> {
+    pub fn diffuse_over<'a>(&'a self, mtl: Option<&'a model::ModelMaterial>) -> Option<&'a TextureImage> {
         self.diffuse.as_deref().or(mtl.and_then(|m| m.texture.as_ref()))
     }
 
     /// The normal map of a part whose material is `mtl`: the scene's `normal_map` if given, else the model's own
     /// (tangent space), else none.
-    pub fn normal_over<'a>(&'a self, mtl: Option<&'a model::Material>) -> Option<(&'a TextureImage, NormalSpace)> {
+    pub fn normal_over<'a>(
+        &'a self,
+        mtl: Option<&'a model::ModelMaterial>,
+    ) -> Option<(&'a TextureImage, NormalSpaceSpec)> {
         match &self.normal_map {
             Some(map) => Some((&map.image, map.space)),
-            None => mtl.and_then(|m| m.normal_map.as_ref()).map(|image| (image, NormalSpace::Tangent)),
+            None => mtl.and_then(|m| m.normal_map.as_ref()).map(|image| (image, NormalSpaceSpec::Tangent)),
         }
     }
 
     /// The glow map of a part whose material is `mtl`: the scene's `glow_map` if given, else the model's own
     /// (glTF emission), else none.
-    pub fn glow_over<'a>(&'a self, mtl: Option<&'a model::Material>) -> Option<&'a TextureImage> {
+    pub fn glow_over<'a>(&'a self, mtl: Option<&'a model::ModelMaterial>) -> Option<&'a TextureImage> {
         self.glow_map.as_deref().or(mtl.and_then(|m| m.glow_map.as_ref()))
     }
 
     /// The specular colour of a part whose material is `mtl`: the scene's, else the model's own, else `None` (the
     /// renderer's default).
-    pub fn specular_over(&self, mtl: Option<&model::Material>) -> Option<Vec3> {
+    pub fn specular_over(&self, mtl: Option<&model::ModelMaterial>) -> Option<Vec3> {
         self.specular.or(mtl.and_then(|m| m.specular))
     }
 
     /// The Blinn-Phong exponent of a part whose material is `mtl`: the scene's, else the model's own, else `None`
     /// (the renderer's default).
-    pub fn shininess_over(&self, mtl: Option<&model::Material>) -> Option<f32> {
+    pub fn shininess_over(&self, mtl: Option<&model::ModelMaterial>) -> Option<f32> {
         self.shininess.or(mtl.and_then(|m| m.shininess))
     }
 }
 
 /// A normal map with the space its texels are in.
 #[derive(Clone, Debug, PartialEq)]
-pub struct NormalMap {
+pub struct ObjectNormalMap {
     /// The image, as RGB (`rgb = normal * 0.5 + 0.5`).
     pub image: Arc<TextureImage>,
     /// Tangent or object space.
-    pub space: NormalSpace,
+    pub space: NormalSpaceSpec,
 }

@@ -13,7 +13,7 @@
 //!
 //! # Example
 //! ```
-//! use rastty_scene::scene_file::{CameraPlacement, LightKind, Projection, parse};
+//! use rastty_scene::scene_file::{CameraPlacement, SceneLightKind, SceneProjection, parse};
 //!
 //! let text = r#"
 //! [camera]
@@ -32,8 +32,8 @@
 //! "#;
 //! let scene = parse(text, "example.toml").unwrap().load().unwrap();
 //! let CameraPlacement::Placed(camera) = scene.camera else { panic!("a placed camera") };
-//! assert_eq!(camera.projection, Projection::Perspective { fov_degrees: 40.0 });
-//! assert!(matches!(scene.lights[0].kind, LightKind::Directional { .. }));
+//! assert_eq!(camera.projection, SceneProjection::Perspective { fov_degrees: 40.0 });
+//! assert!(matches!(scene.lights[0].kind, SceneLightKind::Directional { .. }));
 //! assert!(scene.lights[0].shadows);
 //! assert!(scene.objects[0].model.triangle_count() > 0);
 //!
@@ -58,12 +58,12 @@ mod validate;
 pub use error::{SceneFileError, SceneFileErrorKind};
 pub use hex_color::parse_hex_color;
 pub use loaded::{
-    CameraPlacement, FramedCamera, LightKind, NormalMap, ObjectMaterial, Projection, SceneCamera, SceneData,
-    SceneLight, SceneObject,
+    CameraPlacement, FramedCamera, ObjectMaterial, ObjectNormalMap, SceneCamera, SceneData, SceneLight, SceneLightKind,
+    SceneObject, SceneProjection,
 };
 pub use location::Location;
 pub use open::{OpenError, OpenedScene, is_scene_file, open};
-pub use schema::{LightSpace, NormalSpace, SceneSpec};
+pub use schema::{LightSpace, NormalSpaceSpec, SceneSpec};
 pub use transform::object_transform;
 pub use validate::{BUILTIN_MODELS, BUILTIN_PREFIX};
 

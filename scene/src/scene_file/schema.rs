@@ -193,7 +193,7 @@ pub struct MaterialSpec {
     /// `normal_space = "tangent" | "object"`: how `normal_map` is read: relative to the surface (tangent space:
     /// `[0.5, 0.5, 1]` is the unperturbed normal), or as normals in the mesh's own coordinates (object space).
     /// Default `"tangent"`; an error without `normal_map`.
-    pub normal_space: Option<Spanned<NormalSpace>>,
+    pub normal_space: Option<Spanned<NormalSpaceSpec>>,
     /// `specular = [r, g, b]` or `specular = NUMBER` (grey): the colour of highlights, components from 0 to 1;
     /// 0 turns highlights off.
     pub specular: Option<Spanned<NumberOrTriple>>,
@@ -206,10 +206,10 @@ pub struct MaterialSpec {
     pub glow_map: Option<Spanned<String>>,
     /// `filter = "nearest" | "bilinear"`: how the images are sampled. Default `"bilinear"`.
     #[serde(default)]
-    pub filter: Filter,
+    pub filter: FilterSpec,
     /// `wrap = "repeat" | "clamp"`: what texture coordinates outside `[0, 1]` read. Default `"repeat"`.
     #[serde(default)]
-    pub wrap: Wrap,
+    pub wrap: WrapSpec,
     /// `mipmaps = "off" | "nearest" | "linear" | "anisotropicN"` (N 2, 4, 8, 16): how the images' levels of
     /// detail are read where a pixel spans several texels: not at all, the nearest level, the two nearest blended,
     /// or that at up to N places along the pixel's footprint. Default `"linear"`.
@@ -220,7 +220,7 @@ pub struct MaterialSpec {
 /// How a normal map's texels are to be read (`normal_space = "..."`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize)]
 #[serde(rename_all = "lowercase", expecting = "\"tangent\" or \"object\"")]
-pub enum NormalSpace {
+pub enum NormalSpaceSpec {
     /// `"tangent"`: relative to the surface, along its tangent, bitangent and normal.
     #[default]
     Tangent,
@@ -231,7 +231,7 @@ pub enum NormalSpace {
 /// How images are sampled (`filter = "..."`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize)]
 #[serde(rename_all = "lowercase", expecting = "\"nearest\" or \"bilinear\"")]
-pub enum Filter {
+pub enum FilterSpec {
     /// `"nearest"`: the nearest texel.
     Nearest,
     /// `"bilinear"`: a blend of the four nearest texels.
@@ -266,7 +266,7 @@ pub enum Mipmaps {
 /// What texture coordinates outside `[0, 1]` read (`wrap = "..."`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Deserialize)]
 #[serde(rename_all = "lowercase", expecting = "\"repeat\" or \"clamp\"")]
-pub enum Wrap {
+pub enum WrapSpec {
     /// `"repeat"`: the image tiles.
     #[default]
     Repeat,

@@ -1,8 +1,8 @@
 //! The scene's extent in world space: the sphere that shadow maps are fitted to and that derived clipping planes
 //! keep inside the view.
 
+use rastty_core::math::BoundingSphere;
 use rastty_core::math::Vec3;
-use rastty_core::shadow::Bounds;
 
 use crate::model;
 use crate::scene_file::SceneObject;
@@ -12,7 +12,7 @@ use crate::scene_file::SceneObject;
 /// joined box with half its diagonal as radius. `None` when no object has a finite vertex.
 ///
 /// The radius is never zero (a scene of one point gets a small sphere), so it always makes a shadow view.
-pub fn scene_bounds(objects: &[SceneObject]) -> Option<Bounds> {
+pub fn scene_bounds(objects: &[SceneObject]) -> Option<BoundingSphere> {
     let mut corners = Vec::with_capacity(objects.len() * 8);
     for object in objects {
         let Some(b) = object.model.bounds() else { continue };
@@ -22,13 +22,13 @@ pub fn scene_bounds(objects: &[SceneObject]) -> Option<Bounds> {
             corners.push(object.transform.transform_point(corner));
         }
     }
-    let world = model::Bounds::from_points(&corners)?;
+    let world = model::BoundingBox::from_points(&corners)?;
     let centre = world.center();
     let radius = world.radius();
     // A point (or a scene too small for f32) still needs a sphere of some size.
     let floor = 1e-4 * (1.0 + centre.length());
     let radius = if radius > floor { radius } else { floor };
-    (centre.is_finite() && radius.is_finite()).then_some(Bounds { centre, radius })
+    (centre.is_finite() && radius.is_finite()).then_some(BoundingSphere { centre, radius })
 }
 
 #[cfg(test)]

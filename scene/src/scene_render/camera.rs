@@ -2,10 +2,10 @@
 //! clipping planes from the file or around the scene.
 
 use rastty_core::camera::{CameraError, orthographic, perspective};
+use rastty_core::math::BoundingSphere;
 use rastty_core::math::{Mat4, float};
-use rastty_core::shadow::Bounds;
 
-use crate::scene_file::{Projection, SceneCamera};
+use crate::scene_file::{SceneCamera, SceneProjection};
 
 /// How much the derived clipping planes stand off the scene's bounding sphere, as a fraction of its radius.
 const PLANE_MARGIN: f32 = 0.01;
@@ -24,13 +24,13 @@ pub enum PlaneSource {
 
 /// The view and projection of one frame.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct FrameCamera {
+pub struct PlannedCamera {
     /// World to view space.
     pub view: Mat4,
     /// View to clip space.
     pub projection: Mat4,
     /// The lens.
-    pub lens: Projection,
+    pub lens: SceneProjection,
     /// The near plane's distance along the view direction (negative for an orthographic lens whose box starts
     /// behind the eye).
     pub near: f32,
@@ -42,7 +42,7 @@ pub struct FrameCamera {
     pub far_source: PlaneSource,
 }
 
-impl FrameCamera {
+impl PlannedCamera {
     /// The camera of `camera` for a frame whose width over height is `aspect`, with the clipping planes the file
     /// gives and the others fitted around `bounds` (with a margin of 1% of the radius):
     ///
@@ -56,13 +56,13 @@ impl FrameCamera {
     ///
     /// # Errors
     /// [`CameraError`] for a camera the core refuses (the eye at the target, a non-positive aspect).
-    pub fn new(camera: &SceneCamera, bounds: &Bounds, aspect: f32) -> Result<Self, CameraError> {
+    pub fn new(camera: &SceneCamera, bounds: &BoundingSphere, aspect: f32) -> Result<Self, CameraError> {
         let view = camera.view()?;
         let forward = (camera.target - camera.position).try_normalize().ok_or(CameraError::EyeAtTarget)?;
         let centre_depth = (bounds.centre - camera.position).dot(forward);
         let r = bounds.radius * (1.0 + PLANE_MARGIN);
         let (near_fit, far_fit) = match camera.projection {
-            Projection::Perspective { .. } => {
+            SceneProjection::Perspective { .. } => {
                 let far = centre_depth + r;
                 if far > 0.0 {
                     (float::max(centre_depth - r, far * MIN_NEAR_RATIO), far)
@@ -71,7 +71,7 @@ impl FrameCamera {
                     (bounds.radius * MIN_NEAR_RATIO, bounds.radius)
                 }
             }
-            Projection::Orthographic { .. } => (centre_depth - r, centre_depth + r),
+            SceneProjection::Orthographic { .. } => (centre_depth - r, centre_depth + r),
         };
         let (near, far, near_source, far_source) = match (camera.near, camera.far) {
             (Some(n), Some(f)) => (n, f, PlaneSource::Given, PlaneSource::Given),
@@ -86,12 +86,12 @@ impl FrameCamera {
         // The share of the shorter side the frame's height is: 1 in landscape, the aspect in portrait.
         let portrait = float::min(aspect, 1.0);
         let projection = match camera.projection {
-            Projection::Perspective { fov_degrees } => {
+            SceneProjection::Perspective { fov_degrees } => {
                 let fov = fov_degrees.to_radians();
                 let fovy = if aspect >= 1.0 { fov } else { 2.0 * float::atan(float::tan(fov * 0.5) / portrait) };
                 perspective(fovy, aspect, near, far)?
             }
-            Projection::Orthographic { height } => {
+            SceneProjection::Orthographic { height } => {
                 if aspect.is_nan() || aspect <= 0.0 {
                     return Err(CameraError::Aspect);
                 }
@@ -117,16 +117,16 @@ mod tests {
 
     use super::*;
 
-    fn camera(projection: Projection, near: Option<f32>, far: Option<f32>) -> SceneCamera {
+    fn camera(projection: SceneProjection, near: Option<f32>, far: Option<f32>) -> SceneCamera {
         SceneCamera { position: Vec3::new(0.0, 0.0, 10.0), target: Vec3::ZERO, up: Vec3::Y, projection, near, far }
     }
 
-    const SPHERE: Bounds = Bounds { centre: Vec3::ZERO, radius: 2.0 };
-    const LENS: Projection = Projection::Perspective { fov_degrees: 40.0 };
+    const SPHERE: BoundingSphere = BoundingSphere { centre: Vec3::ZERO, radius: 2.0 };
+    const LENS: SceneProjection = SceneProjection::Perspective { fov_degrees: 40.0 };
 
     #[test]
     fn derived_planes_hold_the_sphere() {
-        let c = FrameCamera::new(&camera(LENS, None, None), &SPHERE, 1.5).unwrap();
+        let c = PlannedCamera::new(&camera(LENS, None, None), &SPHERE, 1.5).unwrap();
         assert!(c.near < 8.0 && c.near > 7.9, "{}", c.near);
         assert!(c.far > 12.0 && c.far < 12.1, "{}", c.far);
         assert_eq!((c.near_source, c.far_source), (PlaneSource::Derived, PlaneSource::Derived));
@@ -134,21 +134,21 @@ mod tests {
 
     #[test]
     fn the_files_planes_are_kept_and_the_other_gives_way() {
-        let c = FrameCamera::new(&camera(LENS, Some(0.5), Some(100.0)), &SPHERE, 1.0).unwrap();
+        let c = PlannedCamera::new(&camera(LENS, Some(0.5), Some(100.0)), &SPHERE, 1.0).unwrap();
         assert_eq!((c.near, c.far), (0.5, 100.0));
-        let c = FrameCamera::new(&camera(LENS, Some(20.0), None), &SPHERE, 1.0).unwrap();
+        let c = PlannedCamera::new(&camera(LENS, Some(20.0), None), &SPHERE, 1.0).unwrap();
         assert_eq!((c.near, c.far, c.far_source), (20.0, 40.0, PlaneSource::Derived));
-        let c = FrameCamera::new(&camera(LENS, None, Some(5.0)), &SPHERE, 1.0).unwrap();
+        let c = PlannedCamera::new(&camera(LENS, None, Some(5.0)), &SPHERE, 1.0).unwrap();
         assert!(c.near < 5.0 && c.near > 0.0);
     }
 
     #[test]
     fn an_eye_inside_the_scene_keeps_a_positive_near_plane() {
-        let inside = Bounds { centre: Vec3::ZERO, radius: 50.0 };
-        let c = FrameCamera::new(&camera(LENS, None, None), &inside, 1.0).unwrap();
+        let inside = BoundingSphere { centre: Vec3::ZERO, radius: 50.0 };
+        let c = PlannedCamera::new(&camera(LENS, None, None), &inside, 1.0).unwrap();
         assert!(c.near > 0.0 && c.near < c.far);
-        let ortho = Projection::Orthographic { height: 4.0 };
-        let c = FrameCamera::new(&camera(ortho, None, None), &inside, 1.0).unwrap();
+        let ortho = SceneProjection::Orthographic { height: 4.0 };
+        let c = PlannedCamera::new(&camera(ortho, None, None), &inside, 1.0).unwrap();
         assert!(c.near < 0.0 && c.far > 50.0);
     }
 }

@@ -2,7 +2,7 @@
 //! applied to a scene's camera: the same for a model and for a scene file.
 
 use super::{Orbit, PreparedScene};
-use crate::scene_file::Projection;
+use crate::scene_file::SceneProjection;
 
 /// Camera settings given on the command line; each left out keeps the scene's own. Lengths are in radii of the
 /// scene's bounding sphere (a model is fitted into the unit sphere, so for a model they are world units).
@@ -40,7 +40,7 @@ impl CameraOptions {
             orbit.set_distance(distance * radius);
         }
         if let Some(fov_degrees) = self.fov_degrees {
-            orbit.camera.projection = Projection::Perspective { fov_degrees };
+            orbit.camera.projection = SceneProjection::Perspective { fov_degrees };
         }
         if self.orthographic && !orbit.is_orthographic() {
             orbit.toggle_projection();

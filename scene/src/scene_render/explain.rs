@@ -6,9 +6,9 @@ use rastty_core::color::{ShadingSpace, pack_rgb888};
 
 use super::ScenePlan;
 use super::camera::PlaneSource;
-use super::lights::{LightName, Number, Triple};
+use super::lights::{LightName, ShortNumber, ShortTriple};
 use crate::escaped::Escaped;
-use crate::scene_file::Projection;
+use crate::scene_file::SceneProjection;
 
 impl fmt::Display for ScenePlan {
     /// The frame (with the space it is lit in, in which the ambient and light colours are given), the lights, then
@@ -19,8 +19,10 @@ impl fmt::Display for ScenePlan {
         let (width, height) = self.size;
         let c = &self.camera;
         let lens = match c.lens {
-            Projection::Perspective { fov_degrees } => format!("perspective, fov {} degrees", Number(fov_degrees)),
-            Projection::Orthographic { height } => format!("orthographic, {} units high", Number(height)),
+            SceneProjection::Perspective { fov_degrees } => {
+                format!("perspective, fov {} degrees", ShortNumber(fov_degrees))
+            }
+            SceneProjection::Orthographic { height } => format!("orthographic, {} units high", ShortNumber(height)),
         };
         let source = |s: PlaneSource| match s {
             PlaneSource::Given => "given",
@@ -29,16 +31,16 @@ impl fmt::Display for ScenePlan {
         writeln!(
             f,
             "frame {width}x{height}: {lens}; near {} ({}), far {} ({}); background #{:06x}; {}; ambient {}",
-            Number(c.near),
+            ShortNumber(c.near),
             source(c.near_source),
-            Number(c.far),
+            ShortNumber(c.far),
             source(c.far_source),
             pack_rgb888(self.background),
             match self.space {
                 ShadingSpace::Linear => "linear light",
                 ShadingSpace::Encoded => "light on sRGB codes",
             },
-            Triple(self.ambient)
+            ShortTriple(self.ambient)
         )?;
         if self.lights.is_empty() && self.dropped_lights.is_empty() {
             writeln!(f, "lights: none (ambient light only)")?;
@@ -47,7 +49,7 @@ impl fmt::Display for ScenePlan {
         }
         for light in &self.lights {
             let shadows = if light.shadow_pass.is_some() { ", casts shadows" } else { "" };
-            writeln!(f, "  {}: colour {}{shadows}", self.light_name(light), Triple(light.color))?;
+            writeln!(f, "  {}: colour {}{shadows}", self.light_name(light), ShortTriple(light.color))?;
         }
         for light in &self.dropped_lights {
             let why = if light.source.intensity == 0.0 { "intensity 0" } else { "black colour" };
@@ -91,8 +93,8 @@ impl fmt::Display for ScenePlan {
                 next(),
                 o.directions,
                 o.steps,
-                Number(o.radius),
-                Number(o.strength)
+                ShortNumber(o.radius),
+                ShortNumber(o.strength)
             )?;
         }
         Ok(())

@@ -9,7 +9,7 @@ use rastty_core::math::{Mat4, Vec3};
 use rastty_core::shading::LightKind as CoreLightKind;
 
 use super::lit_color;
-use crate::scene_file::{LightKind, LightSpace, SceneLight};
+use crate::scene_file::{LightSpace, SceneLight, SceneLightKind};
 
 /// A light the frame uses.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -50,14 +50,14 @@ pub fn core_light(light: &SceneLight, view: &Mat4, eye: Vec3, space: ShadingSpac
     let to_world = view.to_mat3().transpose();
     let kind = match (light.kind, light.space) {
         // The file gives the way the light travels; the core wants the way toward it.
-        (LightKind::Directional { direction }, LightSpace::World) => {
+        (SceneLightKind::Directional { direction }, LightSpace::World) => {
             CoreLightKind::Directional { to_light: -direction }
         }
-        (LightKind::Directional { direction }, LightSpace::Camera) => {
+        (SceneLightKind::Directional { direction }, LightSpace::Camera) => {
             CoreLightKind::Directional { to_light: (to_world * -direction).normalize_or_zero() }
         }
-        (LightKind::Point { position }, LightSpace::World) => CoreLightKind::Point { position },
-        (LightKind::Point { position }, LightSpace::Camera) => {
+        (SceneLightKind::Point { position }, LightSpace::World) => CoreLightKind::Point { position },
+        (SceneLightKind::Point { position }, LightSpace::Camera) => {
             CoreLightKind::Point { position: eye + to_world * position }
         }
     };
@@ -77,19 +77,21 @@ pub struct LightName<'a> {
 impl fmt::Display for LightName<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self.light.kind {
-            LightKind::Directional { direction } => {
-                write!(f, "light {} (directional, travelling {})", self.number, Triple(direction))
+            SceneLightKind::Directional { direction } => {
+                write!(f, "light {} (directional, travelling {})", self.number, ShortTriple(direction))
             }
-            LightKind::Point { position } => write!(f, "light {} (point at {})", self.number, Triple(position)),
+            SceneLightKind::Point { position } => {
+                write!(f, "light {} (point at {})", self.number, ShortTriple(position))
+            }
         }
     }
 }
 
 /// A number in messages: at most three decimals, without trailing zeros (`1.2`, `0.737`, `-1`).
 #[derive(Clone, Copy, Debug)]
-pub struct Number(pub f32);
+pub struct ShortNumber(pub f32);
 
-impl fmt::Display for Number {
+impl fmt::Display for ShortNumber {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let text = format!("{:.3}", self.0);
         let text = if text.contains('.') { text.trim_end_matches('0').trim_end_matches('.') } else { &text };
@@ -97,14 +99,14 @@ impl fmt::Display for Number {
     }
 }
 
-/// A vector in messages: `[x, y, z]`, each a [`Number`].
+/// A vector in messages: `[x, y, z]`, each a [`ShortNumber`].
 #[derive(Clone, Copy, Debug)]
-pub struct Triple(pub Vec3);
+pub struct ShortTriple(pub Vec3);
 
-impl fmt::Display for Triple {
+impl fmt::Display for ShortTriple {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let v = self.0;
-        write!(f, "[{}, {}, {}]", Number(v.x), Number(v.y), Number(v.z))
+        write!(f, "[{}, {}, {}]", ShortNumber(v.x), ShortNumber(v.y), ShortNumber(v.z))
     }
 }
 
@@ -113,13 +115,13 @@ mod tests {
     use super::*;
     use rastty_core::color::srgb_to_linear;
 
-    fn light(kind: LightKind, intensity: f32) -> SceneLight {
+    fn light(kind: SceneLightKind, intensity: f32) -> SceneLight {
         SceneLight { kind, color: Vec3::new(1.0, 0.5, 0.25), intensity, shadows: false, space: LightSpace::World }
     }
 
     #[test]
     fn colour_times_intensity_and_the_direction_reversed() {
-        let l = light(LightKind::Directional { direction: -Vec3::Y }, 2.0);
+        let l = light(SceneLightKind::Directional { direction: -Vec3::Y }, 2.0);
         let (kind, color) = core_light(&l, &Mat4::IDENTITY, Vec3::ZERO, ShadingSpace::Encoded).unwrap();
         assert_eq!(kind, CoreLightKind::Directional { to_light: Vec3::Y });
         assert_eq!(color, Vec3::new(2.0, 1.0, 0.5));
@@ -138,7 +140,7 @@ mod tests {
         let close = |a: Vec3, b: Vec3| (a - b).length() < 1e-6;
         let toward_viewer = SceneLight {
             space: LightSpace::Camera,
-            ..light(LightKind::Directional { direction: Vec3::new(0.0, 0.0, -1.0) }, 1.0)
+            ..light(SceneLightKind::Directional { direction: Vec3::new(0.0, 0.0, -1.0) }, 1.0)
         };
         let Some((CoreLightKind::Directional { to_light }, _)) =
             core_light(&toward_viewer, &view, eye, ShadingSpace::Encoded)
@@ -146,7 +148,7 @@ mod tests {
             panic!("a directional light")
         };
         assert!(close(to_light, Vec3::X), "{to_light:?}");
-        let right = SceneLight { space: LightSpace::Camera, ..light(LightKind::Point { position: Vec3::X }, 1.0) };
+        let right = SceneLight { space: LightSpace::Camera, ..light(SceneLightKind::Point { position: Vec3::X }, 1.0) };
         let Some((CoreLightKind::Point { position }, _)) = core_light(&right, &view, eye, ShadingSpace::Encoded) else {
             panic!("a point light")
         };
@@ -157,19 +159,19 @@ mod tests {
     fn dark_lights_are_left_out() {
         let (view, eye) = (Mat4::IDENTITY, Vec3::ZERO);
         assert!(
-            core_light(&light(LightKind::Point { position: Vec3::ONE }, 0.0), &view, eye, ShadingSpace::Encoded)
+            core_light(&light(SceneLightKind::Point { position: Vec3::ONE }, 0.0), &view, eye, ShadingSpace::Encoded)
                 .is_none()
         );
-        let black = SceneLight { color: Vec3::ZERO, ..light(LightKind::Point { position: Vec3::ONE }, 1.0) };
+        let black = SceneLight { color: Vec3::ZERO, ..light(SceneLightKind::Point { position: Vec3::ONE }, 1.0) };
         assert!(core_light(&black, &view, eye, ShadingSpace::Encoded).is_none());
     }
 
     #[test]
     fn names_give_the_place_and_the_kind() {
-        let l = light(LightKind::Point { position: Vec3::new(1.2, 2.2, 1.0) }, 1.0);
+        let l = light(SceneLightKind::Point { position: Vec3::new(1.2, 2.2, 1.0) }, 1.0);
         assert_eq!(LightName { number: 2, light: &l }.to_string(), "light 2 (point at [1.2, 2.2, 1])");
-        assert_eq!(Number(-0.0001).to_string(), "0");
-        assert_eq!(Number(0.73751).to_string(), "0.738");
-        assert_eq!(Number(100.0).to_string(), "100");
+        assert_eq!(ShortNumber(-0.0001).to_string(), "0");
+        assert_eq!(ShortNumber(0.73751).to_string(), "0.738");
+        assert_eq!(ShortNumber(100.0).to_string(), "100");
     }
 }

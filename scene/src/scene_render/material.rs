@@ -11,7 +11,7 @@ use super::interleaved::{MapRole, PartMaps};
 use super::{PlanOptions, lit_color};
 use crate::model::TextureImage;
 use crate::scene_file::defaults::{SHININESS, SPECULAR};
-use crate::scene_file::{NormalSpace, SceneObject};
+use crate::scene_file::{NormalSpaceSpec, SceneObject};
 
 /// The material of part `part` of `object`:
 ///
@@ -52,8 +52,8 @@ pub fn part_material<'a>(
     let normal_map = match m.normal_over(mtl) {
         Some((image, space)) if effects.normal_maps => {
             let space = match space {
-                NormalSpace::Tangent => CoreNormalSpace::Tangent,
-                NormalSpace::Object => CoreNormalSpace::Object,
+                NormalSpaceSpec::Tangent => CoreNormalSpace::Tangent,
+                NormalSpaceSpec::Object => CoreNormalSpace::Object,
             };
             Some(NormalMap { texture: texture(MapRole::Normal, image)?, space })
         }

@@ -37,7 +37,7 @@
 //!
 //! Policies, each documented where it is decided: shadow map size ([`shadow_map_size`]: the frame's longer side
 //! rounded up to a power of two, 512 to 2048), shadow bounds ([`scene_bounds`]: the sphere around every object's
-//! world-space box), clipping planes ([`FrameCamera::new`]: the file's, else around those bounds), materials
+//! world-space box), clipping planes ([`PlannedCamera::new`]: the file's, else around those bounds), materials
 //! ([`part_material`]: scene keys over MTL values, maps of switched-off effects left out).
 //!
 //! # Example
@@ -90,14 +90,14 @@ mod workers;
 mod written_color;
 
 pub use bounds::scene_bounds;
-pub use camera::{FrameCamera, PlaneSource};
+pub use camera::{PlaneSource, PlannedCamera};
 pub use camera_options::CameraOptions;
 pub use error::SceneRenderError;
 pub use image::{
     SampledFrame, SceneImage, parse_size, render_scene_image, render_scene_image_with, render_supersampled,
 };
 pub use interleaved::{InterleavedBuffers, MapRole, PartMaps};
-pub use lights::{DroppedLight, LightName, Number, PlannedLight, Triple, core_light};
+pub use lights::{DroppedLight, LightName, PlannedLight, ShortNumber, ShortTriple, core_light};
 pub use material::{part_material, part_state};
 pub use orbit::Orbit;
 pub use plan::{

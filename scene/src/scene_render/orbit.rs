@@ -1,10 +1,10 @@
 //! The one camera of the viewer and of `rastty render`: a scene's camera orbited about its target, zoomed, its
 //! lens switched, and set from the command line's `--yaw`, `--pitch` and `--distance`.
 
+use rastty_core::math::BoundingSphere;
 use rastty_core::math::{Quat, Vec3, float};
-use rastty_core::shadow::Bounds;
 
-use crate::scene_file::{FramedCamera, Projection, SceneCamera};
+use crate::scene_file::{FramedCamera, SceneCamera, SceneProjection};
 
 /// How close to straight above or below the target the eye may orbit: the cosine of the smallest angle between
 /// the view direction and `up` (about 2.6 degrees). Beyond it, "up" on screen would flip.
@@ -38,8 +38,8 @@ impl Orbit {
     /// Starts at `camera`.
     pub fn new(camera: SceneCamera) -> Self {
         let start_height = match camera.projection {
-            Projection::Orthographic { height } => Some(height),
-            Projection::Perspective { .. } => None,
+            SceneProjection::Orthographic { height } => Some(height),
+            SceneProjection::Perspective { .. } => None,
         };
         let distance = camera_distance(&camera);
         let mut orbit = Self { camera, distance, pitch: 0.0, start_distance: distance, start_height };
@@ -49,11 +49,11 @@ impl Orbit {
 
     /// Starts at `framed` around `bounds`: looking at the centre with `up` along `+y`, every length of `framed`
     /// (in radii) times the radius.
-    pub fn framed(framed: &FramedCamera, bounds: &Bounds) -> Self {
+    pub fn framed(framed: &FramedCamera, bounds: &BoundingSphere) -> Self {
         let r = bounds.radius;
         let projection = match framed.projection {
-            Projection::Orthographic { height } => Projection::Orthographic { height: height * r },
-            lens @ Projection::Perspective { .. } => lens,
+            SceneProjection::Orthographic { height } => SceneProjection::Orthographic { height: height * r },
+            lens @ SceneProjection::Perspective { .. } => lens,
         };
         let camera = SceneCamera {
             position: bounds.centre + Vec3::Z * (framed.distance * r),
@@ -153,7 +153,7 @@ impl Orbit {
         }
         let c = &mut self.camera;
         match &mut c.projection {
-            Projection::Perspective { .. } => {
+            SceneProjection::Perspective { .. } => {
                 let offset = c.position - c.target;
                 let before = offset.length();
                 let lo = self.start_distance / ZOOM_RANGE;
@@ -172,7 +172,7 @@ impl Orbit {
                 });
                 c.near = near;
             }
-            Projection::Orthographic { height } => {
+            SceneProjection::Orthographic { height } => {
                 let start = self.start_height.unwrap_or(*height);
                 *height = (*height * factor).clamp(start / ZOOM_RANGE, start * ZOOM_RANGE);
             }
@@ -184,21 +184,21 @@ impl Orbit {
     pub fn toggle_projection(&mut self) {
         let d = camera_distance(&self.camera);
         self.camera.projection = match self.camera.projection {
-            Projection::Perspective { fov_degrees } => {
+            SceneProjection::Perspective { fov_degrees } => {
                 let height = 2.0 * d * float::tan(fov_degrees.to_radians() * 0.5);
                 self.start_height.get_or_insert(height);
-                Projection::Orthographic { height }
+                SceneProjection::Orthographic { height }
             }
-            Projection::Orthographic { height } => {
+            SceneProjection::Orthographic { height } => {
                 let fov = 2.0 * float::atan(height / (2.0 * d));
-                Projection::Perspective { fov_degrees: fov.to_degrees().clamp(1.0, 179.0) }
+                SceneProjection::Perspective { fov_degrees: fov.to_degrees().clamp(1.0, 179.0) }
             }
         };
     }
 
     /// True for an orthographic lens.
     pub fn is_orthographic(&self) -> bool {
-        matches!(self.camera.projection, Projection::Orthographic { .. })
+        matches!(self.camera.projection, SceneProjection::Orthographic { .. })
     }
 }
 
@@ -217,7 +217,7 @@ mod tests {
             position: Vec3::new(0.0, 0.0, 5.0),
             target: Vec3::ZERO,
             up: Vec3::Y,
-            projection: Projection::Perspective { fov_degrees: 40.0 },
+            projection: SceneProjection::Perspective { fov_degrees: 40.0 },
             near: Some(1.0),
             far: Some(10.0),
         })
@@ -276,7 +276,7 @@ mod tests {
 
     #[test]
     fn a_framed_camera_measures_in_radii() {
-        let bounds = Bounds { centre: Vec3::new(1.0, 2.0, 3.0), radius: 10.0 };
+        let bounds = BoundingSphere { centre: Vec3::new(1.0, 2.0, 3.0), radius: 10.0 };
         let framed = FramedCamera { yaw_degrees: 0.0, pitch_degrees: 0.0, near: Some(1.0), ..FramedCamera::DEFAULT };
         let o = Orbit::framed(&framed, &bounds);
         assert!(close(o.camera.position, Vec3::new(1.0, 2.0, 31.0)));
@@ -288,10 +288,10 @@ mod tests {
     fn the_lens_switches_keeping_the_size_at_the_target() {
         let mut o = orbit();
         o.toggle_projection();
-        let Projection::Orthographic { height } = o.camera.projection else { panic!() };
+        let SceneProjection::Orthographic { height } = o.camera.projection else { panic!() };
         assert!((height - 10.0 * 20f32.to_radians().tan()).abs() < 1e-4);
         o.toggle_projection();
-        let Projection::Perspective { fov_degrees } = o.camera.projection else { panic!() };
+        let SceneProjection::Perspective { fov_degrees } = o.camera.projection else { panic!() };
         assert!((fov_degrees - 40.0).abs() < 1e-3);
     }
 }

@@ -1,15 +1,16 @@
 //! The plan of one frame: which passes run, with which lights, and what each draw computes.
 
 use rastty_core::color::ShadingSpace;
+use rastty_core::math::BoundingSphere;
 use rastty_core::math::{Vec3, float};
 use rastty_core::occlusion::AmbientOcclusion;
 use rastty_core::pipeline::DrawState;
 use rastty_core::shading::Transforms;
 use rastty_core::shading::{LightKind, LightUse, Material, Object, Variant};
-use rastty_core::shadow::{Bounds, ShadowView};
+use rastty_core::shadow::ShadowView;
 use rastty_core::target::Samples;
 
-use super::camera::FrameCamera;
+use super::camera::PlannedCamera;
 use super::lights::{DroppedLight, LightName, PlannedLight, core_light};
 use super::material::{part_material, part_state};
 use super::{PlanOptions, PreparedScene, SceneRenderError, lit_color};
@@ -91,7 +92,7 @@ pub struct ScenePlan {
     /// The frame's size in pixels.
     pub size: (u32, u32),
     /// The camera's matrices for this frame.
-    pub camera: FrameCamera,
+    pub camera: PlannedCamera,
     /// The colour the frame is cleared to.
     pub background: Vec3,
     /// How surfaces are lit (the scene's [`crate::scene_file::SceneData::space`]).
@@ -103,7 +104,7 @@ pub struct ScenePlan {
     /// The lights left out because they shed nothing.
     pub dropped_lights: Vec<DroppedLight>,
     /// The scene's bounds, which shadow maps are fitted to.
-    pub bounds: Bounds,
+    pub bounds: BoundingSphere,
     /// The shadow passes, one per light casting shadows, in the lights' order.
     pub shadow_passes: Vec<ShadowPass>,
     /// The forward pass's draws, in file order of objects and then parts.
@@ -166,7 +167,7 @@ impl ScenePlan {
     ) -> Result<Self, SceneRenderError> {
         let data = scene.data();
         let bounds = scene.bounds();
-        let frame_camera = FrameCamera::new(camera, &bounds, aspect)?;
+        let frame_camera = PlannedCamera::new(camera, &bounds, aspect)?;
         let map_size = shadow_map_size(width, height);
         let mut lights = Vec::new();
         let mut dropped_lights = Vec::new();

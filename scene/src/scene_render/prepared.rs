@@ -5,15 +5,15 @@ use std::collections::HashMap;
 use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 
+use rastty_core::math::BoundingSphere;
 use rastty_core::math::Vec4;
 use rastty_core::mesh::{TangentError, compute_tangents};
-use rastty_core::shadow::Bounds;
 
 use super::bounds::scene_bounds;
 use super::interleaved::{InterleavedBuffers, PartMaps};
 use super::{Orbit, SceneRenderError};
 use crate::model::Model;
-use crate::scene_file::{CameraPlacement, NormalSpace, SceneCamera, SceneData, SceneObject};
+use crate::scene_file::{CameraPlacement, NormalSpaceSpec, SceneCamera, SceneData, SceneObject};
 
 /// Gives each prepared scene its own number, so that cached shadow maps are never taken for another scene's.
 static NEXT_ID: AtomicU64 = AtomicU64::new(0);
@@ -26,7 +26,7 @@ static NEXT_ID: AtomicU64 = AtomicU64::new(0);
 #[derive(Debug)]
 pub struct PreparedScene {
     data: SceneData,
-    bounds: Bounds,
+    bounds: BoundingSphere,
     /// The scene's camera, framed around `bounds` when the scene asks for that.
     camera: SceneCamera,
     /// Per object: the tangents of its mesh, when it has a tangent-space normal map and texture coordinates.
@@ -53,7 +53,7 @@ impl PreparedScene {
             let model = &object.model;
             let tangent_map = |part| object.material.normal_over(model.part_material(part));
             let wanted = (0..model.parts.len())
-                .any(|part| tangent_map(part).is_some_and(|(_, s)| s == NormalSpace::Tangent))
+                .any(|part| tangent_map(part).is_some_and(|(_, s)| s == NormalSpaceSpec::Tangent))
                 && model.uvs.is_some();
             if !wanted {
                 tangents.push(None);
@@ -97,7 +97,7 @@ impl PreparedScene {
     }
 
     /// The sphere around every object in world space ([`scene_bounds`]).
-    pub fn bounds(&self) -> Bounds {
+    pub fn bounds(&self) -> BoundingSphere {
         self.bounds
     }
 

@@ -119,7 +119,7 @@ mod tests {
     use rastty_core::math::Vec3;
 
     use super::*;
-    use rastty_scene::scene_file::{Projection, SceneCamera};
+    use rastty_scene::scene_file::{SceneCamera, SceneProjection};
     use rastty_scene::scene_render::{SceneEffect, ShadingMode};
 
     fn state() -> ViewerState {
@@ -127,7 +127,7 @@ mod tests {
             position: Vec3::new(0.0, 1.0, 4.0),
             target: Vec3::ZERO,
             up: Vec3::Y,
-            projection: Projection::Perspective { fov_degrees: 40.0 },
+            projection: SceneProjection::Perspective { fov_degrees: 40.0 },
             near: None,
             far: None,
         };

@@ -17,7 +17,7 @@ use rastty_core::target::{
 use rastty_core::texture::{MipContent, MipFilter};
 
 use super::settings::{DepthFormat, LitShading, Setting};
-use crate::reference::{self, Projection, Scene, Shading};
+use crate::reference::{self, ReferenceProjection, ReferenceScene, Shading};
 
 /// Why a scene could not be drawn.
 #[derive(Debug)]
@@ -50,12 +50,12 @@ struct CoreObject<'a> {
     positions: Vec<Vec3>,
     normals: Option<Vec<Vec3>>,
     uvs: Option<Vec<Vec2>>,
-    source: &'a reference::Object,
+    source: &'a reference::ReferenceObject,
 }
 
 /// A reference scene converted once: meshes in `f32`, matrices from the core's own camera functions.
 pub struct CoreScene<'a> {
-    scene: &'a Scene,
+    scene: &'a ReferenceScene,
     objects: Vec<CoreObject<'a>>,
     view: Mat4,
     projection: Mat4,
@@ -78,7 +78,7 @@ fn narrow(v: [f64; 3]) -> Vec3 {
     Vec3::new(v[0] as f32, v[1] as f32, v[2] as f32)
 }
 
-fn matrix(m: &reference::math::Mat4) -> Mat4 {
+fn matrix(m: &reference::math::DMat4) -> Mat4 {
     let col = |c: [f64; 4]| Vec4::new(c[0] as f32, c[1] as f32, c[2] as f32, c[3] as f32);
     Mat4::from_cols(col(m[0]), col(m[1]), col(m[2]), col(m[3]))
 }
@@ -88,14 +88,14 @@ impl<'a> CoreScene<'a> {
     ///
     /// # Errors
     /// [`CoreRenderError::Camera`] for a camera the core refuses.
-    pub fn new(scene: &'a Scene) -> Result<Self, CoreRenderError> {
+    pub fn new(scene: &'a ReferenceScene) -> Result<Self, CoreRenderError> {
         let c = &scene.camera;
         let view = look_at(narrow(c.eye), narrow(c.target), narrow(c.up)).map_err(CoreRenderError::Camera)?;
         let projection = match c.projection {
-            Projection::Perspective { fovy, aspect, near, far } => {
+            ReferenceProjection::Perspective { fovy, aspect, near, far } => {
                 perspective(fovy as f32, aspect as f32, near as f32, far as f32)
             }
-            Projection::Orthographic { left, right, bottom, top, near, far } => {
+            ReferenceProjection::Orthographic { left, right, bottom, top, near, far } => {
                 orthographic(left as f32, right as f32, bottom as f32, top as f32, near as f32, far as f32)
             }
         }

@@ -51,7 +51,7 @@ impl AccuracyOptions {
 }
 
 /// One measured setting.
-pub struct Row {
+pub struct AccuracyRow {
     /// The setting.
     pub setting: settings::Setting,
     /// Median frame time.
@@ -76,7 +76,7 @@ pub struct SceneResult {
     /// What it stresses.
     pub purpose: &'static str,
     /// One row per setting, the default first.
-    pub rows: Vec<Row>,
+    pub rows: Vec<AccuracyRow>,
     /// Time the reference took.
     pub reference_time: Duration,
 }
@@ -85,9 +85,9 @@ impl SceneResult {
     /// The settings on the frontier: no other setting is at least as fast and at least as accurate (PSNR) and
     /// clearly better in one of the two (beyond the noise margins). Settings that give the default's very pixels
     /// are left out: they are the default under another name.
-    pub fn frontier(&self) -> Vec<&Row> {
-        let candidates: Vec<&Row> = self.rows.iter().filter(|r| !r.same_as_default).collect();
-        let beats = |o: &Row, r: &Row| {
+    pub fn frontier(&self) -> Vec<&AccuracyRow> {
+        let candidates: Vec<&AccuracyRow> = self.rows.iter().filter(|r| !r.same_as_default).collect();
+        let beats = |o: &AccuracyRow, r: &AccuracyRow| {
             let (to, tr) = (o.time.as_secs_f64(), r.time.as_secs_f64());
             let (po, pr) = (o.score.psnr, r.score.psnr);
             let no_worse = to <= tr * (1.0 + TIME_NOISE) && po >= pr - PSNR_NOISE;
@@ -138,7 +138,7 @@ pub fn measure(options: &AccuracyOptions) -> Result<AccuracyReport, String> {
             } else {
                 rendered.pixels == default_pixels
             };
-            rows.push(Row { setting, time: rendered.median, relative: 0.0, score, same_as_default });
+            rows.push(AccuracyRow { setting, time: rendered.median, relative: 0.0, score, same_as_default });
         }
         let base = rows[0].time.as_secs_f64().max(1e-9);
         for row in &mut rows {

@@ -4,7 +4,9 @@
 use rastty_core::pipeline::Cull;
 use rastty_core::texture::WrapMode;
 
-use crate::reference::{Camera, Light, Lighting, Object, Projection, Scene, Shading, math};
+use crate::reference::{
+    Camera, ReferenceLight, ReferenceLighting, ReferenceObject, ReferenceProjection, ReferenceScene, Shading, math,
+};
 use rastty_scene::model::TextureImage;
 use rastty_scene::scene_file::open;
 use rastty_scene::scene_render::{CameraOptions, PlanOptions, PreparedScene};
@@ -16,7 +18,7 @@ pub struct AccuracyScene {
     /// What the scene stresses.
     pub purpose: &'static str,
     /// The scene.
-    pub scene: Scene,
+    pub scene: ReferenceScene,
 }
 
 /// All scenes at `width x height`.
@@ -32,7 +34,7 @@ fn perspective(eye: [f64; 3], target: [f64; 3], fovy_degrees: f64, (w, h): (u32,
         eye,
         target,
         up: [0.0, 1.0, 0.0],
-        projection: Projection::Perspective {
+        projection: ReferenceProjection::Perspective {
             fovy: fovy_degrees.to_radians(),
             aspect: f64::from(w) / f64::from(h),
             near,
@@ -42,8 +44,8 @@ fn perspective(eye: [f64; 3], target: [f64; 3], fovy_degrees: f64, (w, h): (u32,
 }
 
 /// An unlit quad of two triangles.
-fn quad(corners: [[f64; 3]; 4], color: [f64; 3]) -> Object {
-    let mut o = Object::new(corners.to_vec(), vec![0, 1, 2, 0, 2, 3]);
+fn quad(corners: [[f64; 3]; 4], color: [f64; 3]) -> ReferenceObject {
+    let mut o = ReferenceObject::new(corners.to_vec(), vec![0, 1, 2, 0, 2, 3]);
     o.material.color = color;
     o.shading = Shading::Unlit;
     o.cull = Cull::None;
@@ -66,7 +68,8 @@ fn floor(w: u32, h: u32) -> AccuracyScene {
     floor.uvs = Some(vec![[-x / 4.0, near / 4.0], [x / 4.0, near / 4.0], [x / 4.0, far / 4.0], [-x / 4.0, far / 4.0]]);
     floor.texture = Some(checkerboard());
     floor.wrap = WrapMode::Repeat;
-    let mut scene = Scene::new(w, h, perspective([0.0, 1.2, 0.0], [0.0, 0.75, -10.0], 60.0, (w, h), 0.1, 200.0));
+    let mut scene =
+        ReferenceScene::new(w, h, perspective([0.0, 1.2, 0.0], [0.0, 0.75, -10.0], 60.0, (w, h), 0.1, 200.0));
     scene.background = [0.55, 0.7, 0.9];
     scene.objects = vec![floor];
     AccuracyScene {
@@ -92,8 +95,8 @@ fn model(w: u32, h: u32) -> Result<AccuracyScene, String> {
     .orbit(&scene)
     .camera;
     let options = PlanOptions::default();
-    let scene =
-        Scene::from_scene(&scene, &camera, &options, (w, h), f64::from(w) / f64::from(h)).map_err(|e| failed(&e))?;
+    let scene = ReferenceScene::from_scene(&scene, &camera, &options, (w, h), f64::from(w) / f64::from(h))
+        .map_err(|e| failed(&e))?;
     Ok(AccuracyScene {
         name: "model",
         purpose: "the built-in model, textured and lit, seen obliquely: shading and texture filtering",
@@ -119,7 +122,7 @@ fn slivers(w: u32, h: u32) -> AccuracyScene {
             positions.push([cx + r * a1.cos(), cy + r * a1.sin(), 0.0]);
             indices.extend([base, base + 1, base + 2]);
         }
-        let mut o = Object::new(positions, indices);
+        let mut o = ReferenceObject::new(positions, indices);
         o.material.color = color;
         o.shading = Shading::Unlit;
         o.cull = Cull::None;
@@ -130,7 +133,7 @@ fn slivers(w: u32, h: u32) -> AccuracyScene {
         eye: [0.0, 0.0, 1.0],
         target: [0.0, 0.0, 0.0],
         up: [0.0, 1.0, 0.0],
-        projection: Projection::Orthographic {
+        projection: ReferenceProjection::Orthographic {
             left: -aspect,
             right: aspect,
             bottom: -1.0,
@@ -139,7 +142,7 @@ fn slivers(w: u32, h: u32) -> AccuracyScene {
             far: 1.5,
         },
     };
-    let mut scene = Scene::new(w, h, camera);
+    let mut scene = ReferenceScene::new(w, h, camera);
     scene.background = [0.08, 0.08, 0.1];
     scene.objects = objects;
     AccuracyScene { name: "slivers", purpose: "a fan of 360 thin triangles: coverage of sub-pixel geometry", scene }
@@ -152,9 +155,11 @@ fn far_surfaces(w: u32, h: u32) -> AccuracyScene {
     let back = square(500.5, 180.0, [0.2, 0.35, 0.9]);
     let mut front = square(500.0, 120.0, [0.95, 0.6, 0.15]);
     front.model = math::translation([20.0, -15.0, 0.0]);
-    let mut scene = Scene::new(w, h, perspective([0.0, 0.0, 0.0], [0.0, 0.0, -1.0], 50.0, (w, h), 0.1, 1000.0));
+    let mut scene =
+        ReferenceScene::new(w, h, perspective([0.0, 0.0, 0.0], [0.0, 0.0, -1.0], 50.0, (w, h), 0.1, 1000.0));
     scene.background = [0.1, 0.1, 0.1];
-    scene.lighting = Lighting { ambient: [1.0; 3], lights: vec![Light::directional([0.0, 0.0, 1.0], [0.0; 3])] };
+    scene.lighting =
+        ReferenceLighting { ambient: [1.0; 3], lights: vec![ReferenceLight::directional([0.0, 0.0, 1.0], [0.0; 3])] };
     scene.objects = vec![back, front];
     AccuracyScene { name: "far surfaces", purpose: "two surfaces 500 units away and 0.5 apart: depth precision", scene }
 }

@@ -9,7 +9,7 @@ use rastty_core::shading::{Light, Lighting, Material, Object, ShadingModel, Tran
 use rastty_core::target::{Rgb888, Target};
 use rastty_core::texture::{FilterMode, Texture, WrapMode};
 
-use super::scenes::{AMBIENT, DIFFUSE, Scene, to_light};
+use super::scenes::{AMBIENT, DIFFUSE, PeerScene, to_light};
 
 /// The frame's buffers and the memory for the mesh's screen positions, kept between frames.
 pub struct CoreRenderer {
@@ -20,7 +20,7 @@ pub struct CoreRenderer {
 
 impl CoreRenderer {
     /// Buffers for `scene`'s frame size.
-    pub fn new(scene: &Scene) -> Self {
+    pub fn new(scene: &PeerScene) -> Self {
         let n = (scene.width * scene.height) as usize;
         Self { color: vec![0; n], depth: vec![1.0; n], vertices: vec![ScreenVertex::UNSET; scene.positions.len()] }
     }
@@ -29,7 +29,7 @@ impl CoreRenderer {
     ///
     /// # Panics
     /// When the core refuses the draw (it cannot for the scenes made in [`super::scenes`]).
-    pub fn render(&mut self, scene: &Scene) {
+    pub fn render(&mut self, scene: &PeerScene) {
         let mut mesh = Mesh::new(&scene.positions, Indices::U32(&scene.indices))
             .and_then(|m| m.with_normals(&scene.normals))
             .expect("a valid mesh");

@@ -7,7 +7,7 @@ use euc::{Pipeline, Target};
 use rastty_core::math::{Mat4, Vec2, Vec3};
 
 use super::pack;
-use super::scenes::{AMBIENT, DIFFUSE, Scene, to_light};
+use super::scenes::{AMBIENT, DIFFUSE, PeerScene, to_light};
 
 /// The frame's buffers, kept between frames.
 pub struct EucRenderer {
@@ -17,7 +17,7 @@ pub struct EucRenderer {
 
 /// The shading of the comparison, for euc.
 struct Shading<'a> {
-    scene: &'a Scene,
+    scene: &'a PeerScene,
     clip_from_world: Mat4,
     to_light: vek::Vec3<f32>,
 }
@@ -80,13 +80,13 @@ impl Pipeline for Textured<'_> {
 
 impl EucRenderer {
     /// Buffers for `scene`'s frame size.
-    pub fn new(scene: &Scene) -> Self {
+    pub fn new(scene: &PeerScene) -> Self {
         let size = [scene.width as usize, scene.height as usize];
         Self { color: Buffer2d::new(size, 0), depth: Buffer2d::new(size, 1.0) }
     }
 
     /// Clears the buffers and draws `scene`.
-    pub fn render(&mut self, scene: &Scene) {
+    pub fn render(&mut self, scene: &PeerScene) {
         self.color.clear(0);
         self.depth.clear(1.0);
         let l = to_light();

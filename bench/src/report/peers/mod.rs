@@ -28,7 +28,7 @@ use rastty_core::math::Vec3;
 use self::core_renderer::CoreRenderer;
 use self::euc_renderer::EucRenderer;
 use self::retrofire_renderer::RetrofireRenderer;
-use self::scenes::{Scene, SceneError};
+use self::scenes::{PeerScene, PeerSceneError};
 use self::threaded_renderer::ThreadedRenderer;
 use super::median;
 
@@ -67,12 +67,12 @@ struct Contenders {
 }
 
 impl Contenders {
-    fn new(scene: &Scene) -> Self {
+    fn new(scene: &PeerScene) -> Self {
         Self { euc: EucRenderer::new(scene), retrofire: RetrofireRenderer::new(scene), core: CoreRenderer::new(scene) }
     }
 
     /// Draws a frame with renderer `which` (an index into [`RENDERERS`]) and returns how long it took.
-    fn time(&mut self, which: usize, scene: &Scene) -> Duration {
+    fn time(&mut self, which: usize, scene: &PeerScene) -> Duration {
         let start = Instant::now();
         match which {
             0 => self.euc.render(scene),
@@ -112,7 +112,7 @@ pub fn pack(color: Vec3) -> u32 {
 /// When a model cannot be read, a scene name is unknown, or `out` cannot be written.
 pub fn run(report: &PeersReport, out: &mut dyn Write) -> Result<(), Box<dyn std::error::Error>> {
     if let Some(unknown) = report.only.iter().find(|name| !SCENES.contains(&name.as_str())) {
-        return Err(SceneError(format!("no scene named {unknown:?}: the scenes are {}", SCENES.join(", "))).into());
+        return Err(PeerSceneError(format!("no scene named {unknown:?}: the scenes are {}", SCENES.join(", "))).into());
     }
     let scenes = scenes::scenes(&report.models, report.quick, &report.only)?;
     let mut text = String::new();
@@ -180,7 +180,11 @@ pub fn run(report: &PeersReport, out: &mut dyn Write) -> Result<(), Box<dyn std:
 
 /// The second table: each scene through the threaded frame on one thread and on `report.threads`, the two taking
 /// turns frame by frame, and the pixels that differ from the core's own draw (none, when the frame is right).
-fn threaded_table(report: &PeersReport, scenes: &[Scene], text: &mut String) -> Result<(), Box<dyn std::error::Error>> {
+fn threaded_table(
+    report: &PeersReport,
+    scenes: &[PeerScene],
+    text: &mut String,
+) -> Result<(), Box<dyn std::error::Error>> {
     let threads = report.threads.max(2);
     writeln!(text)?;
     writeln!(text, "### The same scenes through the threaded frame, 1 and {threads} threads")?;

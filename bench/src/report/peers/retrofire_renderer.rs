@@ -12,7 +12,7 @@ use retrofire_core::util::pixfmt::Xrgb8888;
 use retrofire_core::util::{Buf2, Dims};
 
 use super::pack;
-use super::scenes::{AMBIENT, DIFFUSE, Scene, to_light};
+use super::scenes::{AMBIENT, DIFFUSE, PeerScene, to_light};
 
 /// The vertices with their varyings: the normal, and the texture coordinates when the scene is textured.
 enum Vertices {
@@ -31,7 +31,7 @@ pub struct RetrofireRenderer {
 
 impl RetrofireRenderer {
     /// `scene` in retrofire's types, and buffers of its frame size.
-    pub fn new(scene: &Scene) -> Self {
+    pub fn new(scene: &PeerScene) -> Self {
         let triangles =
             scene.indices.chunks_exact(3).map(|t| tri(t[0] as usize, t[1] as usize, t[2] as usize)).collect();
         let normal = |i: usize| vec3(scene.normals[i].x, scene.normals[i].y, scene.normals[i].z);
@@ -62,7 +62,7 @@ impl RetrofireRenderer {
     }
 
     /// Clears the buffers and draws `scene`.
-    pub fn render(&mut self, scene: &Scene) {
+    pub fn render(&mut self, scene: &PeerScene) {
         self.frame.color_buf.buf.fill(0);
         // Its z-buffer holds reciprocal depths: 0 is infinitely far.
         self.frame.depth_buf.fill(0.0);

@@ -23,7 +23,7 @@ pub fn to_light() -> Vec3 {
 }
 
 /// One picture: a mesh, what colours it and the frame size.
-pub struct Scene {
+pub struct PeerScene {
     /// Short name, the report's row.
     pub name: &'static str,
     /// What the picture is.
@@ -44,7 +44,7 @@ pub struct Scene {
     pub texture: Option<TextureImage>,
 }
 
-impl Scene {
+impl PeerScene {
     /// Triangles in the mesh.
     pub fn triangles(&self) -> usize {
         self.indices.len() / 3
@@ -80,15 +80,15 @@ impl Scene {
 
 /// Why a scene could not be made.
 #[derive(Debug)]
-pub struct SceneError(pub String);
+pub struct PeerSceneError(pub String);
 
-impl std::fmt::Display for SceneError {
+impl std::fmt::Display for PeerSceneError {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str(&self.0)
     }
 }
 
-impl std::error::Error for SceneError {}
+impl std::error::Error for PeerSceneError {}
 
 /// The scenes named in `only` (all five when it is empty), in the report's order, the models read from `models`
 /// (the shared models folder, never copied); with `quick`, the two spheres have a quarter of their rings and
@@ -96,7 +96,7 @@ impl std::error::Error for SceneError {}
 ///
 /// # Errors
 /// When a model or texture cannot be read.
-pub fn scenes(models: &Path, quick: bool, only: &[String]) -> Result<Vec<Scene>, SceneError> {
+pub fn scenes(models: &Path, quick: bool, only: &[String]) -> Result<Vec<PeerScene>, PeerSceneError> {
     let head_path = models.join("tinyrenderer/african_head/african_head.obj");
     let divide = if quick { 4 } else { 1 };
     let mut scenes = Vec::new();
@@ -107,9 +107,9 @@ pub fn scenes(models: &Path, quick: bool, only: &[String]) -> Result<Vec<Scene>,
                 let mut scene =
                     from_obj("head-tex", &head_path, 800, 800, "albedo the nearest texel of its diffuse map")?;
                 let texture_path = models.join("tinyrenderer/african_head/african_head_diffuse.tga");
-                scene.texture = Some(TextureImage::load(&texture_path).map_err(|e| SceneError(e.to_string()))?);
+                scene.texture = Some(TextureImage::load(&texture_path).map_err(|e| PeerSceneError(e.to_string()))?);
                 if scene.uvs.is_none() {
-                    return Err(SceneError(format!("{}: no texture coordinates", head_path.display())));
+                    return Err(PeerSceneError(format!("{}: no texture coordinates", head_path.display())));
                 }
                 scene
             }
@@ -121,11 +121,11 @@ pub fn scenes(models: &Path, quick: bool, only: &[String]) -> Result<Vec<Scene>,
     Ok(scenes)
 }
 
-fn from_obj(name: &'static str, path: &Path, width: u32, height: u32, what: &str) -> Result<Scene, SceneError> {
-    let model = load_model(path, &ModelOptions::default()).map_err(|e| SceneError(e.to_string()))?;
+fn from_obj(name: &'static str, path: &Path, width: u32, height: u32, what: &str) -> Result<PeerScene, PeerSceneError> {
+    let model = load_model(path, &ModelOptions::default()).map_err(|e| PeerSceneError(e.to_string()))?;
     let file = path.file_stem().map(PathBuf::from).unwrap_or_default();
     let triangles = model.triangle_count();
-    let mut scene = Scene {
+    let mut scene = PeerScene {
         name,
         description: format!("{}, {triangles} triangles, {what}, {width}x{height}", file.display()),
         width,
@@ -136,7 +136,7 @@ fn from_obj(name: &'static str, path: &Path, width: u32, height: u32, what: &str
         indices: model.indices,
         texture: None,
     };
-    centre(&mut scene.positions).ok_or_else(|| SceneError(format!("{}: no finite positions", path.display())))?;
+    centre(&mut scene.positions).ok_or_else(|| PeerSceneError(format!("{}: no finite positions", path.display())))?;
     Ok(scene)
 }
 
@@ -161,7 +161,7 @@ fn centre(positions: &mut [Vec3]) -> Option<()> {
 
 /// A UV sphere of radius 1: `rings` bands of latitude, `segments` of longitude; the bands at the poles are one
 /// triangle per segment, the others two: `2 * segments * (rings - 1)` triangles.
-pub fn sphere(name: &'static str, rings: u32, segments: u32, width: u32, height: u32) -> Scene {
+pub fn sphere(name: &'static str, rings: u32, segments: u32, width: u32, height: u32) -> PeerScene {
     let mut positions = Vec::with_capacity(((rings + 1) * (segments + 1)) as usize);
     for i in 0..=rings {
         let theta = std::f32::consts::PI * i as f32 / rings as f32;
@@ -190,7 +190,7 @@ pub fn sphere(name: &'static str, rings: u32, segments: u32, width: u32, height:
     }
     let normals = positions.iter().map(|p| p.normalize_or_zero()).collect();
     let triangles = indices.len() / 3;
-    Scene {
+    PeerScene {
         name,
         description: format!("UV sphere, {rings} rings x {segments} segments, {triangles} triangles, {width}x{height}"),
         width,

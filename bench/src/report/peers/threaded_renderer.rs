@@ -12,15 +12,16 @@ use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Mat4, Vec3};
 use rastty_core::target::{Rgb888, Target};
 use rastty_core::texture::{FilterMode, MipFilter, WrapMode};
-use rastty_scene::model::{Material, Model, Part};
+use rastty_scene::model::{Model, ModelMaterial, Part};
 use rastty_scene::scene_file::{
-    CameraPlacement, LightKind, LightSpace, ObjectMaterial, Projection, SceneCamera, SceneData, SceneLight, SceneObject,
+    CameraPlacement, LightSpace, ObjectMaterial, SceneCamera, SceneData, SceneLight, SceneLightKind, SceneObject,
+    SceneProjection,
 };
 use rastty_scene::scene_render::{
     EffectToggles, PlanOptions, PreparedScene, ScenePlan, SceneRenderError, SceneRenderer,
 };
 
-use super::scenes::{AMBIENT, DIFFUSE, Scene, to_light};
+use super::scenes::{AMBIENT, DIFFUSE, PeerScene, to_light};
 
 /// A scene prepared and planned once, drawn by a renderer of its own into buffers kept between frames.
 pub struct ThreadedRenderer {
@@ -36,7 +37,7 @@ impl ThreadedRenderer {
     ///
     /// # Errors
     /// When the scene renderer refuses the scene (it cannot for the scenes made in [`super::scenes`]).
-    pub fn new(scene: &Scene, threads: usize) -> Result<Self, SceneRenderError> {
+    pub fn new(scene: &PeerScene, threads: usize) -> Result<Self, SceneRenderError> {
         let mut model = Model {
             positions: scene.positions.clone(),
             normals: scene.normals.clone(),
@@ -45,7 +46,10 @@ impl ThreadedRenderer {
             tangents: None,
             indices: scene.indices.clone(),
             parts: vec![Part { name: scene.name.to_owned(), indices: 0..scene.indices.len(), material: Some(0) }],
-            materials: vec![Material { diffuse: scene.albedo(rastty_core::math::Vec2::ZERO), ..Material::default() }],
+            materials: vec![ModelMaterial {
+                diffuse: scene.albedo(rastty_core::math::Vec2::ZERO),
+                ..ModelMaterial::default()
+            }],
             warnings: Vec::new(),
         };
         if let Some(texture) = &scene.texture {
@@ -68,12 +72,12 @@ impl ThreadedRenderer {
             position: Vec3::new(0.0, 0.0, 3.0),
             target: Vec3::ZERO,
             up: Vec3::Y,
-            projection: Projection::Perspective { fov_degrees: 45.0 },
+            projection: SceneProjection::Perspective { fov_degrees: 45.0 },
             near: Some(0.1),
             far: Some(100.0),
         };
         let light = SceneLight {
-            kind: LightKind::Directional { direction: -to_light() },
+            kind: SceneLightKind::Directional { direction: -to_light() },
             color: Vec3::ONE,
             intensity: DIFFUSE,
             shadows: false,

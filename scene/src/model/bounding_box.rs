@@ -4,14 +4,14 @@ use rastty_core::math::{Mat4, Vec3};
 
 /// An axis-aligned bounding box.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Bounds {
+pub struct BoundingBox {
     /// The smallest coordinates.
     pub min: Vec3,
     /// The largest coordinates.
     pub max: Vec3,
 }
 
-impl Bounds {
+impl BoundingBox {
     /// The box around `points`, or `None` when there are none or any is not finite.
     pub fn from_points(points: &[Vec3]) -> Option<Self> {
         let (&first, rest) = points.split_first()?;
@@ -59,17 +59,17 @@ mod tests {
 
     #[test]
     fn box_of_points() {
-        let b = Bounds::from_points(&[Vec3::new(1.0, -2.0, 3.0), Vec3::new(-1.0, 4.0, 0.0)]).unwrap();
+        let b = BoundingBox::from_points(&[Vec3::new(1.0, -2.0, 3.0), Vec3::new(-1.0, 4.0, 0.0)]).unwrap();
         assert_eq!(b.min, Vec3::new(-1.0, -2.0, 0.0));
         assert_eq!(b.max, Vec3::new(1.0, 4.0, 3.0));
         assert_eq!(b.center(), Vec3::new(0.0, 1.0, 1.5));
-        assert!(Bounds::from_points(&[]).is_none());
-        assert!(Bounds::from_points(&[Vec3::ZERO, Vec3::splat(f32::NAN)]).is_none());
+        assert!(BoundingBox::from_points(&[]).is_none());
+        assert!(BoundingBox::from_points(&[Vec3::ZERO, Vec3::splat(f32::NAN)]).is_none());
     }
 
     #[test]
     fn fit_maps_the_box_corners_onto_the_unit_sphere() {
-        let b = Bounds { min: Vec3::new(-250.0, 0.0, 100.0), max: Vec3::new(250.0, 500.0, 300.0) };
+        let b = BoundingBox { min: Vec3::new(-250.0, 0.0, 100.0), max: Vec3::new(250.0, 500.0, 300.0) };
         let m = b.fit();
         let lo = m.transform_point(b.min);
         let hi = m.transform_point(b.max);
@@ -80,14 +80,14 @@ mod tests {
 
     #[test]
     fn a_point_is_only_centred() {
-        let b = Bounds { min: Vec3::ONE, max: Vec3::ONE };
+        let b = BoundingBox { min: Vec3::ONE, max: Vec3::ONE };
         assert_eq!(b.fit().transform_point(Vec3::ONE), Vec3::ZERO);
         assert_eq!(b.fit().transform_vector(Vec3::X), Vec3::X);
     }
 
     #[test]
     fn extreme_boxes_stay_finite() {
-        let b = Bounds { min: Vec3::splat(-1e15), max: Vec3::splat(1e15) };
+        let b = BoundingBox { min: Vec3::splat(-1e15), max: Vec3::splat(1e15) };
         assert!(b.fit().is_finite());
         assert!((b.fit().transform_point(b.max).length() - 1.0).abs() < 1e-5);
     }
