@@ -6,6 +6,7 @@
 
 mod render_stats;
 mod turntable_export;
+mod viewer;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -13,11 +14,11 @@ use std::str::FromStr;
 
 use crate::render_stats::{FrameStats, PassCounts, SceneCounts, TurntableFrameTimes, TurntableSummary};
 use crate::turntable_export::{DEFAULT_FPS, MAX_FPS, MAX_FRAMES, Turntable, TurntableError, TurntableOutput};
+use crate::viewer::{ColorChoice, GraphicsChoice, ViewerExit, ViewerOptions};
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 use rastty::graphics::GraphicsProtocol;
 use rastty::graphics::frame_palette::Dither;
 use rastty::screen::{CellMode, ColorMode};
-use rastty::viewer::{ColorChoice, GraphicsChoice, ViewerExit, ViewerOptions};
 use rastty_core::math::Vec3;
 use rastty_scene::escaped::Escaped;
 use rastty_scene::input_file::{parse_byte_size, set_max_file_bytes};
@@ -409,7 +410,7 @@ fn render_turntable(
 
 fn view(args: &ViewerArgs) -> Result<ExitCode, String> {
     // Before loading: a large model need not be read to learn that there is no terminal to show it in.
-    rastty::viewer::ensure_terminal().map_err(|e| e.to_string())?;
+    crate::viewer::ensure_terminal().map_err(|e| e.to_string())?;
     let (scene, name, plan) = args.scene.load(args.model.as_deref())?;
     let options = ViewerOptions {
         orbit: args.scene.camera().orbit(&scene),
@@ -421,7 +422,7 @@ fn view(args: &ViewerArgs) -> Result<ExitCode, String> {
         cell_aspect: args.cell_aspect,
         pacing: !args.no_pacing,
     };
-    match rastty::viewer::run(&scene, &name, &options).map_err(|e| e.to_string())? {
+    match crate::viewer::run(&scene, &name, &options).map_err(|e| e.to_string())? {
         // Killed by a signal: exit as the shell expects, 128 + the signal number.
         ViewerExit::Signal(signal) => Ok(ExitCode::from(128u8.saturating_add(u8::try_from(signal).unwrap_or(0)))),
         ViewerExit::Quit | ViewerExit::TerminalGone => Ok(ExitCode::SUCCESS),

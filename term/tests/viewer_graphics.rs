@@ -3,14 +3,19 @@
 //! for kitty's payload, the `png` crate for iTerm2's.
 
 use std::io::Read;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use base64::Engine;
-use rastty::graphics::GraphicsProtocol;
-use rastty::viewer::{MAX_IMAGE_PIXELS, MIN_IMAGE_PIXELS, PROBE, PROBE_TIMEOUT, image_size, moving_image_cap};
+use rastty::graphics::{GraphicsProtocol, MAX_IMAGE_PIXELS, MIN_IMAGE_PIXELS, image_size, moving_image_cap};
 
 use crate::common::pty::{Pty, Screen, Viewer};
 use crate::common::tmux::{SESSION, Tmux, tmux_wanted};
+
+/// What the viewer asks a terminal before choosing how to draw (`term/src/viewer/graphics_probe.rs`): a kitty
+/// graphics query, the window's size in pixels, the primary device attributes.
+const PROBE: &[u8] = b"\x1b_Gi=31,s=1,v=1,a=q,t=d,f=24;AAAA\x1b\\\x1b[16t\x1b[c";
+/// How long the viewer waits for the answers.
+const PROBE_TIMEOUT: Duration = Duration::from_millis(500);
 
 /// The viewer with `--graphics protocol` on an 80 x 24 terminal of `pixels`, until its first whole image is on
 /// the screen; returns the screen and the viewer.

@@ -191,12 +191,12 @@ mod tests {
             let (cols, lines) = (usize::from(SIZE.0), usize::from(SIZE.1));
             let pixels = match row.graphics {
                 GraphicsProtocol::Cells => row.cell_mode.pixel_size(cols, lines),
-                protocol => rastty::viewer::image_size(
+                protocol => rastty::graphics::image_size(
                     protocol,
                     SIZE,
                     None,
                     crate::report::terminal::CELL_ASPECT,
-                    rastty::viewer::MAX_IMAGE_PIXELS,
+                    rastty::graphics::MAX_IMAGE_PIXELS,
                 ),
             };
             assert_eq!(row.pixels, pixels, "{}", row.name());

@@ -15,7 +15,7 @@ use std::io::Write;
 use std::path::PathBuf;
 use std::time::Duration;
 
-use super::effects::{EffectsError, ConfigurationTimes, ShadowMaps, TimedFrames, check_maps, plan};
+use super::effects::{ConfigurationTimes, EffectsError, ShadowMaps, TimedFrames, check_maps, plan};
 use super::median;
 use rastty_scene::escaped::path_text;
 use rastty_scene::scene_render::{

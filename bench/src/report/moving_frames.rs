@@ -11,9 +11,9 @@
 use std::io::Write;
 
 use super::terminal::{ReportError, Turntable};
+use rastty::screen::TOLERANCES;
 use rastty::screen::tolerance::color_distance;
 use rastty::screen::{CellGrid, CellMode, ColorMode, Encoder, Tolerance};
-use rastty::viewer::TOLERANCES;
 use rastty_scene::scene_render::PreparedScene;
 
 /// The terminal size measured: the SSH test's (docs/terminal.md).

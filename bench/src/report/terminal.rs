@@ -19,8 +19,8 @@ use rastty_core::target::{Rgb888, Target};
 
 use super::median;
 use rastty::graphics::{FrameImage, GraphicsProtocol, Passthrough};
+use rastty::graphics::{MAX_IMAGE_PIXELS, image_size};
 use rastty::screen::{CellGrid, CellMode, ColorMode, Encoder, PixelFrame, naive_full_frame};
-use rastty::viewer::{MAX_IMAGE_PIXELS, image_size};
 use rastty_scene::builtin::BUILTIN_NAME;
 use rastty_scene::scene_file::{FramedCamera, OpenError, SceneProjection, open};
 use rastty_scene::scene_render::{Orbit, PlanOptions, PreparedScene, ScenePlan, SceneRenderError, SceneRenderer};

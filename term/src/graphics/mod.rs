@@ -13,10 +13,14 @@
 
 pub mod frame_palette;
 pub mod graphics_protocol;
+mod image_size;
 pub mod iterm2;
 pub mod kitty;
 pub mod passthrough;
 pub mod sixel;
 
 pub use graphics_protocol::{FrameImage, GraphicsProtocol};
+pub use image_size::{
+    ASSUMED_CELL_WIDTH, DEFAULT_CELL_ASPECT, MAX_IMAGE_PIXELS, MIN_IMAGE_PIXELS, image_size, moving_image_cap,
+};
 pub use passthrough::Passthrough;

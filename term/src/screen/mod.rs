@@ -38,4 +38,4 @@ pub use encoder::Encoder;
 pub use naive_frame::naive_full_frame;
 pub use pixel_frame::PixelFrame;
 pub use symbol_glyphs::SymbolSet;
-pub use tolerance::Tolerance;
+pub use tolerance::{TOLERANCES, Tolerance};

@@ -13,6 +13,10 @@ use super::oklab::Oklab;
 use super::palette::xterm256_rgb;
 use super::palette_lut::nearest_xterm256;
 
+/// The tolerances (Oklab ΔE) a moving frame may be sent with, tried in order until one fits the budget; the
+/// bytes each gives on a turntable are in docs/terminal.md.
+pub const TOLERANCES: [f32; 10] = [0.0, 0.01, 0.02, 0.035, 0.05, 0.08, 0.12, 0.2, 0.3, 0.5];
+
 /// The largest Oklab distance (ΔE) at which a shown colour may stand for the wanted one.
 #[derive(Clone, Copy, Debug, Default, PartialEq, PartialOrd)]
 pub struct Tolerance(f32);

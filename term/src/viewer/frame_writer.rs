@@ -28,13 +28,10 @@ use std::time::{Duration, Instant};
 
 use super::link_meter::{LinkMeter, STATUS_REQUEST};
 use super::tty::write_while;
-use crate::graphics::frame_palette::Dither;
-use crate::graphics::{FrameImage, GraphicsProtocol};
-use crate::screen::{CellGrid, Encoder, Tolerance};
+use rastty::graphics::frame_palette::Dither;
+use rastty::graphics::{FrameImage, GraphicsProtocol};
+use rastty::screen::{CellGrid, Encoder, TOLERANCES, Tolerance};
 
-/// The tolerances (Oklab ΔE) a moving frame may be sent with, tried in order until one fits the budget; the
-/// bytes each gives on a turntable are in docs/terminal.md.
-pub const TOLERANCES: [f32; 10] = [0.0, 0.01, 0.02, 0.035, 0.05, 0.08, 0.12, 0.2, 0.3, 0.5];
 /// How long no new frame must come before an inexact picture is made exact.
 pub const REFINE_AFTER: Duration = Duration::from_millis(100);
 /// The link time an image frame may take while the picture moves: past it, images are rendered smaller.

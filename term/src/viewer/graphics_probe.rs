@@ -20,7 +20,7 @@ use super::input_decoder::{Input, InputDecoder};
 use super::terminal_session::TerminalSession;
 use super::tmux_client::TmuxClient;
 use super::tty::{Gone, Woken, write_until};
-use crate::graphics::{GraphicsProtocol, Passthrough};
+use rastty::graphics::{GraphicsProtocol, Passthrough};
 
 /// The queries, in the order the answers come back.
 pub const PROBE: &[u8] = b"\x1b_Gi=31,s=1,v=1,a=q,t=d,f=24;AAAA\x1b\\\x1b[16t\x1b[c";
@@ -219,7 +219,7 @@ fn probe(
 ) -> Result<ProbeAnswers, Gone> {
     let deadline = Instant::now() + PROBE_TIMEOUT;
     let mut answers = ProbeAnswers::default();
-    if write_until(output, queries, deadline).map_err(|e| Gone(e.to_string()))? < queries.len() {
+    if write_until(output, queries, deadline).map_err(|_| Gone)? < queries.len() {
         return Ok(answers);
     }
     let (mut decoder, mut events, mut buffer) = (InputDecoder::new(), Vec::new(), [0u8; 1024]);
@@ -340,7 +340,7 @@ mod tests {
     #[test]
     fn keys_are_not_answers() {
         let mut answers = ProbeAnswers::default();
-        assert!(!answers.take(&Input::Key(super::super::Key::Char('q'))));
+        assert!(!answers.take(&Input::Key(super::super::input_decoder::Key::Char('q'))));
         assert_eq!(answers, ProbeAnswers::default());
     }
 }

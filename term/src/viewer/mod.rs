@@ -21,15 +21,13 @@ mod terminal_session;
 mod tmux_client;
 mod tty;
 
-pub use controls::{Action, HELP, action_for};
-pub use frame_writer::{Frame, FrameWriter, IMAGE_LINK_TIME, REFINE_AFTER, TOLERANCES, WriterStats};
-pub use graphics_probe::{GraphicsEnv, MULTIPLEXER_PROBE, PROBE, PROBE_TIMEOUT, ProbeAnswers, choose};
-pub use input_decoder::{ESCAPE_WAIT, Input, InputDecoder, Key, MouseKind};
-pub use link_meter::{ANSWER_TIMEOUT, FRAME_LINK_TIME, LinkMeter, MAX_IN_FLIGHT, MIN_LINK_TIME, STATUS_REQUEST};
-pub use state::{Effect, ViewerState};
-pub use terminal_session::{TerminalSession, restore};
-pub use tmux_client::{TMUX_FORMAT, TMUX_QUERY_TIMEOUT, TmuxClient};
-pub use tty::{Gone, Tty, Woken, write_until, write_while};
+use controls::{Action, HELP, action_for};
+use frame_writer::{Frame, FrameWriter, REFINE_AFTER, WriterStats};
+use graphics_probe::ProbeAnswers;
+use input_decoder::{ESCAPE_WAIT, Input, InputDecoder};
+use state::{Effect, ViewerState};
+use terminal_session::TerminalSession;
+use tty::{Gone, Tty, Woken, write_until};
 
 use std::fmt;
 use std::io::{self, IsTerminal};
@@ -40,9 +38,10 @@ use rastty_core::math::Vec3;
 use rastty_core::pipeline::DrawStats;
 use rastty_core::target::{Rgb888, Target};
 
-use crate::graphics::frame_palette::Dither;
-use crate::graphics::{FrameImage, GraphicsProtocol, Passthrough};
-use crate::screen::{CellGrid, CellMode, ColorMode, PixelFrame};
+use rastty::graphics::frame_palette::Dither;
+use rastty::graphics::{DEFAULT_CELL_ASPECT, image_size};
+use rastty::graphics::{FrameImage, GraphicsProtocol, MAX_IMAGE_PIXELS, Passthrough, moving_image_cap};
+use rastty::screen::{CellGrid, CellMode, ColorMode, PixelFrame};
 use rastty_scene::escaped::Escaped;
 use rastty_scene::scene_render::{
     FrameReport, Orbit, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError, SceneRenderer,
@@ -58,16 +57,6 @@ const TURNTABLE_FRAME: Duration = Duration::from_millis(33);
 const IDLE_POLL: Duration = Duration::from_millis(500);
 /// How long the writer may go on with the frame it is writing once the viewer is leaving.
 const FINISH_TIME: Duration = Duration::from_millis(250);
-/// The most pixels of an image frame: past it the image is rendered smaller and the terminal scales it up
-/// (kitty, iTerm2) or shows it smaller (Sixel), so that a large window keeps its frame rate.
-pub const MAX_IMAGE_PIXELS: usize = 640 * 480;
-/// The fewest pixels of a moving image on a slow link (160x120 in a 4:3 window).
-pub const MIN_IMAGE_PIXELS: usize = MAX_IMAGE_PIXELS / 16;
-/// Cell height over width when neither `--cell-aspect` nor the terminal says: most monospace fonts.
-pub const DEFAULT_CELL_ASPECT: f32 = 2.0;
-/// The cell width in pixels assumed when the terminal does not give its size in pixels; the height is this times
-/// the cell aspect.
-pub const ASSUMED_CELL_WIDTH: f32 = 8.0;
 
 /// Colours: detected or chosen.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -187,7 +176,7 @@ pub fn run(scene: &PreparedScene, name: &str, options: &ViewerOptions) -> Result
         Some((protocol, passthrough)) => (protocol, passthrough, ProbeAnswers::default()),
         None => match graphics_probe::detect(&session, &output, &mut typed) {
             Ok(found) => found,
-            Err(Gone(_)) => return Ok(ViewerExit::TerminalGone),
+            Err(Gone) => return Ok(ViewerExit::TerminalGone),
         },
     };
     let writer =
@@ -361,10 +350,10 @@ impl Viewer<'_> {
                 timeout = timeout.min(ESCAPE_WAIT);
             }
             match session.tty.wait(timeout) {
-                Err(Gone(_)) => return Ok(ViewerExit::TerminalGone),
+                Err(Gone) => return Ok(ViewerExit::TerminalGone),
                 Ok(Woken::Input) => match session.tty.read(&mut buffer) {
                     Ok(n) => decoder.push(&buffer[..n], &mut inputs),
-                    Err(Gone(_)) => return Ok(ViewerExit::TerminalGone),
+                    Err(Gone) => return Ok(ViewerExit::TerminalGone),
                 },
                 // A lone Escape that nothing followed within the wait is the key.
                 Ok(Woken::Timeout) if decoder.is_waiting() => decoder.flush(&mut inputs),
@@ -535,48 +524,4 @@ impl Viewer<'_> {
         }
         lines
     }
-}
-
-/// The most pixels of a moving image when the link carries `link_pixels` in [`IMAGE_LINK_TIME`]
-/// ([`WriterStats::image_pixels`]): the largest of [`MAX_IMAGE_PIXELS`] halved 0 to 4 times that fits, and at
-/// least [`MIN_IMAGE_PIXELS`]. In steps, so that the picture's sharpness does not flicker with each frame's bytes;
-/// only for protocols the terminal scales ([`GraphicsProtocol::scaled_by_terminal`]): a smaller Sixel image would
-/// show a smaller picture, so Sixel keeps its size and only its frame rate falls.
-pub fn moving_image_cap(protocol: GraphicsProtocol, link_pixels: Option<usize>) -> usize {
-    let Some(link) = link_pixels.filter(|_| protocol.scaled_by_terminal()) else { return MAX_IMAGE_PIXELS };
-    let mut cap = MAX_IMAGE_PIXELS;
-    while cap > link && cap > MIN_IMAGE_PIXELS {
-        cap /= 2;
-    }
-    cap
-}
-
-/// The pixel size of an image frame for a terminal of `size` cells, `size_in_pixels` when it says: the pixels of
-/// the cells the image covers ([`GraphicsProtocol::image_rows`]), cells of [`ASSUMED_CELL_WIDTH`] by
-/// `cell_aspect` times that when it does not say; scaled down to at most `max_pixels` (at most
-/// [`MAX_IMAGE_PIXELS`], or less on a slow link: [`moving_image_cap`]); the height a whole number of
-/// [`GraphicsProtocol::row_multiple`]; at least one row of them.
-pub fn image_size(
-    protocol: GraphicsProtocol,
-    (cols, rows): (u16, u16),
-    size_in_pixels: Option<(u16, u16)>,
-    cell_aspect: f32,
-    max_pixels: usize,
-) -> (usize, usize) {
-    let (cell_width, cell_height) = match size_in_pixels {
-        Some((width, height)) => {
-            (f32::from(width) / f32::from(cols.max(1)), f32::from(height) / f32::from(rows.max(1)))
-        }
-        None => (ASSUMED_CELL_WIDTH, ASSUMED_CELL_WIDTH * cell_aspect),
-    };
-    let mut width = f32::from(cols) * cell_width;
-    let mut height = f32::from(protocol.image_rows(rows)) * cell_height;
-    let area = width * height;
-    if area > max_pixels as f32 {
-        let scale = (max_pixels as f32 / area).sqrt();
-        (width, height) = (width * scale, height * scale);
-    }
-    let multiple = protocol.row_multiple();
-    let height = ((height as usize) / multiple * multiple).max(multiple);
-    ((width as usize).max(1), height)
 }

@@ -3,7 +3,7 @@
 //! Every character drawn here is checked by [`Cell::is_safe_char`]; anything else (including whatever a model
 //! file's name holds) becomes `?`.
 
-use crate::screen::{Cell, CellGrid, Color};
+use rastty::screen::{Cell, CellGrid, Color};
 
 const TEXT: Color = Color::Rgb(235, 235, 235);
 const PANEL: Color = Color::Rgb(30, 34, 44);

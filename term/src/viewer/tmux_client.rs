@@ -10,7 +10,7 @@ use std::process::{Command, Stdio};
 use std::thread;
 use std::time::{Duration, Instant};
 
-use crate::graphics::Passthrough;
+use rastty::graphics::Passthrough;
 
 /// The longest wait for tmux's answer.
 pub const TMUX_QUERY_TIMEOUT: Duration = Duration::from_millis(500);

@@ -28,7 +28,7 @@ const WRITE_POLL: Duration = Duration::from_millis(20);
 
 /// The terminal has gone away: its input hung up, ended or failed, or a write to it failed.
 #[derive(Debug)]
-pub struct Gone(pub String);
+pub struct Gone;
 
 /// What ended a [`Tty::wait`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -107,11 +107,11 @@ impl Tty {
         match poll(&mut fds, Some(&timeout)) {
             Ok(_) => {}
             Err(rustix::io::Errno::INTR) => return Ok(Woken::Signal),
-            Err(e) => return Err(Gone(format!("waiting for input: {e}"))),
+            Err(_) => return Err(Gone),
         }
         let (input, wake) = (fds[0].revents(), fds[1].revents());
         if input.intersects(PollFlags::HUP | PollFlags::ERR | PollFlags::NVAL) {
-            return Err(Gone("the terminal hung up".into()));
+            return Err(Gone);
         }
         if wake.contains(PollFlags::IN) {
             // Empty the pipe before the caller looks at the flags (signal-hook's order: flag, then pipe).
@@ -129,11 +129,11 @@ impl Tty {
     pub fn read(&self, buffer: &mut [u8]) -> Result<usize, Gone> {
         loop {
             match rustix::io::read(self.input_fd(), &mut *buffer) {
-                Ok(0) => return Err(Gone("the terminal's input ended".into())),
+                Ok(0) => return Err(Gone),
                 Ok(n) => return Ok(n),
                 Err(rustix::io::Errno::INTR) => {}
                 Err(rustix::io::Errno::AGAIN) => return Ok(0),
-                Err(e) => return Err(Gone(format!("reading the terminal: {e}"))),
+                Err(_) => return Err(Gone),
             }
         }
     }
