@@ -59,6 +59,7 @@
 
 pub mod camera;
 pub mod color;
+mod light_kind;
 pub mod math;
 pub mod mesh;
 pub mod occlusion;

@@ -42,6 +42,7 @@
 mod batch;
 mod bins;
 mod clip;
+pub(crate) mod columns;
 pub(crate) mod draw;
 mod edges;
 mod fragment_stage;

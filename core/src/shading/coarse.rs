@@ -1,12 +1,12 @@
 //! Unlit, flat and Gouraud shading over a batch: the albedo (material or vertex colours, times the diffuse map)
 //! under light computed once per triangle or per vertex, plus the highlight and the glow map.
 
-use super::columns::Column3;
 use super::maps::{Coordinates, MapReader, Texels, modulated, stored};
 use super::{Material, SpecularSource, Variant};
 use crate::color::ShadingSpace;
 use crate::math::Vec3;
 use crate::pipeline::BATCH_SIZE;
+use crate::pipeline::columns::Column3;
 use crate::texture::{Filter, MipFilter, Wrap};
 
 /// The light a coarse model shades with.

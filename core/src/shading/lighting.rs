@@ -7,11 +7,11 @@
 //! lane-wise loops ([`super::columns`]), except the shadow lookups, which read the map fragment by fragment.
 
 use super::capabilities::{self, has};
-use super::columns::{self, Column, Column3};
 use super::scratch::Scratch;
 use super::{LightKind, Lighting};
 use crate::math::Vec3;
 use crate::math::float::{self, Exponent};
+use crate::pipeline::columns::{self, Column, Column3};
 use crate::pipeline::{BATCH_SIZE, lanes};
 
 /// Fills `s.diffuse` (and `s.specular` when `specular`) with the light arriving at each fragment: the ambient

@@ -2,10 +2,10 @@
 
 use core::marker::PhantomData;
 
-use super::columns::{Column2, Column3};
 use super::scratch::Scratch;
 use crate::color::{ShadingSpace, encode_srgb, unpack_rgb888};
 use crate::math::{Vec2, Vec3};
+use crate::pipeline::columns::{Column2, Column3};
 use crate::pipeline::{BATCH_SIZE, Slopes, lanes};
 use crate::texture::{Filter, Footprint, MipChain, MipFilter, Texture, Wrap, footprint, light_between};
 

@@ -25,7 +25,6 @@
 
 pub mod capabilities;
 mod coarse;
-pub(crate) mod columns;
 mod draw;
 pub(crate) mod general;
 mod light_terms;
@@ -43,9 +42,10 @@ mod variant;
 mod varyings;
 mod views;
 
+pub use crate::light_kind::LightKind;
 pub use draw::{Object, draw_mesh};
 pub use light_terms::LightTerms;
-pub use lights::{Light, LightKind, LightUse, Lighting};
+pub use lights::{Light, LightUse, Lighting};
 pub use material::{Material, NormalMap, NormalSpace};
 pub use shader::SurfaceShader;
 pub use shading_model::ShadingModel;

@@ -1,9 +1,9 @@
 //! The working set of one batch of fragments, as a structure of arrays: each stage reads and writes whole
 //! columns.
 
-use super::columns::{Column, Column3};
 use super::maps::Coordinates;
 use crate::pipeline::BATCH_SIZE;
+use crate::pipeline::columns::{Column, Column3};
 
 /// Per-fragment values of one batch. Only the first `len` lanes of each column are meaningful, and a column is
 /// filled only by a draw that uses it; the others hold finite values nobody reads (lane-wise loops run over every

@@ -3,7 +3,6 @@
 use core::marker::PhantomData;
 
 use super::capabilities::{self, has};
-use super::columns::{self, Column3};
 use super::light_terms::{face_light, vertex_light};
 use super::maps::Coordinates;
 use super::scratch::Scratch;
@@ -14,6 +13,7 @@ use crate::color::ShadingSpace;
 use crate::math::float::Exponent;
 use crate::math::{Mat4, Vec2, Vec3, Vec4};
 use crate::mesh::{Attributes, Mesh};
+use crate::pipeline::columns::{self, Column3};
 use crate::pipeline::{BATCH_SIZE, Fragment, FragmentBatch, OneFragment, Shader, Slopes};
 use crate::shading::{LightTerms, ShadingModel, TangentFrame, Transforms, world_normal};
 use crate::texture::MipFilter;

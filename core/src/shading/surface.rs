@@ -8,7 +8,6 @@
 
 use super::capabilities::{self, has};
 use super::coarse;
-use super::columns::Column3;
 use super::maps::{Coordinates, MapReader, Texels, albedo, glow, occluded_ambient, specular_color, stored};
 use super::normals::{self, object_map, tangent_map};
 use super::scratch::Scratch;
@@ -17,6 +16,7 @@ use crate::color::{ShadingSpace, texel_alpha};
 use crate::math::Vec3;
 use crate::math::float::Exponent;
 use crate::pipeline::BATCH_SIZE;
+use crate::pipeline::columns::Column3;
 use crate::shading::Transforms;
 use crate::texture::{Bilinear, Clamp, Filter, FilterMode, MipFilter, Nearest, Repeat, Wrap, WrapMode};
 

@@ -1,7 +1,7 @@
 //! The debugging views over a batch: the depth buffer as grey levels, world normals as colours.
 
-use super::columns::Column3;
 use crate::math::{Vec3, float};
+use crate::pipeline::columns::Column3;
 use crate::pipeline::{BATCH_SIZE, Lanes};
 
 /// Grey levels from the fragments' NDC depths: `near` white, `far` black, clamped between.

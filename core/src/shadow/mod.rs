@@ -14,11 +14,11 @@
 use core::ops::Range;
 
 use crate::camera::{CameraError, look_at, orthographic, perspective};
+use crate::light_kind::LightKind;
 use crate::math::{BoundingSphere, Mat4, Vec3, float};
 use crate::mesh::Mesh;
+use crate::pipeline::columns::{self, Column, Column3};
 use crate::pipeline::{BATCH_SIZE, ClipVolume, Cull, DrawState, DrawStats, PositionShader, draw, lanes};
-use crate::shading::LightKind;
-use crate::shading::columns::{self, Column, Column3};
 use crate::target::{MAX_DIMENSION, NoColor, Target};
 
 mod cube;
@@ -418,7 +418,7 @@ impl<'a> ShadowMap<'a> {
     }
 
     /// [`Self::light_reaching`] for the first `len` lanes of a batch, into `share`: the same values, bit for bit.
-    /// The projection into the map runs lane-wise ([`crate::shading::columns`]); only the taps read the map fragment by
+    /// The projection into the map runs lane-wise ([`crate::pipeline::columns`]); only the taps read the map fragment by
     /// fragment.
     pub(crate) fn light_reaching_lanes(
         &self,

@@ -12,9 +12,9 @@
 // Lane loops index every column they touch by the same lane, which iterators would hide.
 #![allow(clippy::needless_range_loop)]
 
+use super::{BATCH_SIZE, Lanes, lanes};
 use crate::math::float::{self, Exponent};
 use crate::math::{Vec2, Vec3};
-use crate::pipeline::{BATCH_SIZE, Lanes, lanes};
 
 /// One `f32` per fragment of a batch.
 pub(crate) type Column = Lanes;
