@@ -328,19 +328,11 @@ impl BinRun<'_, '_> {
                 return (kept, t, stats);
             }
             stats.triangles_in += 1;
-            let Some([ia, ib, ic]) = mesh.triangle(t) else {
+            let Some(indices) = mesh.triangle(t) else {
                 stats.invalid += 1;
                 continue;
             };
-            let (a, b, c) = match screen {
-                // In range: `Mesh::triangle` checks each index against the vertex count.
-                Some(screen) => (screen[ia], screen[ib], screen[ic]),
-                None => (
-                    cache.position(shader, mesh, ia, &volume, &raster),
-                    cache.position(shader, mesh, ib, &volume, &raster),
-                    cache.position(shader, mesh, ic, &volume, &raster),
-                ),
-            };
+            let (a, b, c) = cache.triangle(screen, shader, mesh, indices, &volume, &raster);
             let any = a.code | b.code | c.code;
             if any & NOT_FINITE != 0 {
                 stats.invalid += 1;

@@ -257,18 +257,7 @@ fn run<S: Shader, E: EdgeSetup>(
             stats.invalid += 1;
             continue;
         };
-        // Three lookups, not `indices.map`: the array map kept its results on the stack (`perf` on sphere1m: 17 % of
-        // the samples).
-        let [ia, ib, ic] = indices;
-        let (a, b, c) = match screen {
-            // In range: `Mesh::triangle` checks each index against the vertex count.
-            Some(screen) => (screen[ia], screen[ib], screen[ic]),
-            None => (
-                cache.position(shader, mesh, ia, &volume, &raster),
-                cache.position(shader, mesh, ib, &volume, &raster),
-                cache.position(shader, mesh, ic, &volume, &raster),
-            ),
-        };
+        let (a, b, c) = cache.triangle(screen, shader, mesh, indices, &volume, &raster);
         let any = a.code | b.code | c.code;
         if any & NOT_FINITE != 0 {
             stats.invalid += 1;
@@ -308,9 +297,9 @@ fn run<S: Shader, E: EdgeSetup>(
                 continue;
             }
             let tri = [
-                ClipVertex { pos: shader.position(mesh, ia), var: vars[0] },
-                ClipVertex { pos: shader.position(mesh, ib), var: vars[1] },
-                ClipVertex { pos: shader.position(mesh, ic), var: vars[2] },
+                ClipVertex { pos: shader.position(mesh, indices[0]), var: vars[0] },
+                ClipVertex { pos: shader.position(mesh, indices[1]), var: vars[1] },
+                ClipVertex { pos: shader.position(mesh, indices[2]), var: vars[2] },
             ];
             let polygon = volume.clip(&tri, clip_mask);
             let verts = polygon.vertices();

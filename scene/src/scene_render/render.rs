@@ -255,9 +255,7 @@ impl SceneRenderer {
         }
         let grid = self.bands(width, height, plan.samples())?;
         let band_rows = grid.rows(0).len() as u32;
-        let first_band = rows.start / band_rows;
-        let band_count = (rows.end.div_ceil(band_rows) - first_band) as usize;
-        let mut report = FrameReport { bands: band_count, ..FrameReport::default() };
+        let mut report = FrameReport::default();
         let start = Instant::now();
         self.shadow_passes(scene, plan, &mut report)?;
         report.shadow_time = start.elapsed();
@@ -276,6 +274,7 @@ impl SceneRenderer {
                 Band { index, rows, pixels, depth, samples }
             })
             .collect();
+        report.bands = bands.len();
         if self.geometry.len() < plan.draws.len() {
             self.geometry.resize_with(plan.draws.len(), GeometryMemory::default);
         }
