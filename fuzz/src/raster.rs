@@ -14,7 +14,7 @@
 use arbitrary::{Arbitrary, Result, Unstructured};
 use rastty_core::camera::{look_at, orthographic, perspective};
 use rastty_core::color::{ShadingSpace, pack_rgb888};
-use rastty_core::math::{Mat4, Vec2, Vec3, Vec4};
+use rastty_core::math::{Lanes, Mat4, Vec2, Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh, compute_tangents};
 use rastty_core::pipeline::{
     Cull, DepthTest, DrawError, DrawState, DrawStats, EdgeArithmetic, Fragment, Interpolation, LineStyle,
@@ -462,7 +462,7 @@ impl DepthBuffer for CheckedDepth<'_> {
             Depths::U16(d) => d.nearer(index, z),
         }
     }
-    fn test_and_set_lanes(&mut self, start: usize, z: &[f32; DEPTH_LANES], covered: &[bool; DEPTH_LANES]) -> u32 {
+    fn test_and_set_lanes(&mut self, start: usize, z: &Lanes<f32, DEPTH_LANES>, covered: &Lanes<bool, DEPTH_LANES>) -> u32 {
         for lane in (0..DEPTH_LANES).filter(|&lane| covered[lane]) {
             self.check(start + lane, z[lane]);
         }

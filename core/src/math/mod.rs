@@ -12,6 +12,7 @@
 mod bounding_sphere;
 pub mod exact;
 pub mod float;
+mod lanes;
 mod mat3;
 mod mat4;
 mod quat;
@@ -20,6 +21,7 @@ mod vec3;
 mod vec4;
 
 pub use bounding_sphere::BoundingSphere;
+pub use lanes::Lanes;
 pub use mat3::Mat3;
 pub use mat4::Mat4;
 pub use quat::Quat;

@@ -4,7 +4,8 @@
 use core::ops::Range;
 
 use super::around::Around;
-use super::lanes::{F4, LANES};
+use super::{F4, LANES};
+use crate::math::Lanes;
 use crate::math::{Mat4, Vec4};
 
 /// The depth of some rows of a frame, and how to bring a pixel back to view space.
@@ -127,7 +128,7 @@ impl<'a> DepthFrame<'a> {
         let (ix, iy) = (cx.small_to_i32(), stored.small_to_i32());
         // Below 2^26 (MAX_DIMENSION squared), so i32 holds it.
         let index: [i32; LANES] = core::array::from_fn(|k| window.at + iy[k] * self.width + ix[k]);
-        let depth = F4(index.map(|i| self.depth[i as usize]));
+        let depth = Lanes(index.map(|i| self.depth[i as usize]));
         let drawn = stored.equal(cy).where_less(depth, F4::splat(1.0));
         (cx, cy, depth, drawn)
     }

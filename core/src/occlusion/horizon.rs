@@ -3,8 +3,8 @@
 use super::around::Around;
 use super::frame::{DepthFrame, Window};
 use super::grid::Cell;
-use super::lanes::{F4, LANES};
 use super::{AmbientOcclusion, max_inv_w, max_reach};
+use super::{F4, LANES};
 use crate::math::{Mat4, Vec3, float};
 
 /// Sine of the elevation above its tangent plane a sample must exceed to occlude a point: keeps surfaces from
@@ -58,7 +58,7 @@ impl Kernel {
             let (mut dx, mut dy) = (F4::ZERO, F4::ZERO);
             for lane in 0..live {
                 let angle = ((f32::from(BAYER[k]) + 0.5) * 0.25 + lane as f32) * turn;
-                (dx.0[lane], dy.0[lane]) = (float::cos(angle), float::sin(angle));
+                (dx[lane], dy[lane]) = (float::cos(angle), float::sin(angle));
             }
             (dx, dy)
         });
@@ -67,7 +67,7 @@ impl Kernel {
         // distances between them.
         let jitter = core::array::from_fn(|k| {
             let first = usize::from(BAYER[(k % 2) * 2 + k / 2]);
-            F4(core::array::from_fn(|lane| ((first + 4 * lane) % 16) as f32 * (1.0 / 16.0) + 1.0 / 32.0))
+            F4::from_fn(|lane| ((first + 4 * lane) % 16) as f32 * (1.0 / 16.0) + 1.0 / 32.0)
         });
         let group = LANES as f32 * turn;
         Self {
@@ -130,7 +130,7 @@ impl Kernel {
             for i in 0..self.steps {
                 self.step(frame, &search, i as f32, &mut horizon);
             }
-            for h in &horizon.0[..live] {
+            for h in &horizon[..live] {
                 sum += h;
             }
             // The next group: these directions turned by LANES directions' spacing.

@@ -23,7 +23,6 @@ mod error;
 mod frame;
 mod grid;
 mod horizon;
-mod lanes;
 mod normal;
 
 use core::ops::Range;
@@ -34,8 +33,14 @@ use grid::Grid;
 use horizon::Kernel;
 
 use crate::color::{SRGB_DECODE, ShadingSpace, linear_to_srgb8};
-use crate::math::{Mat4, float};
+use crate::math::{Lanes, Mat4, float};
 use crate::target::MAX_DIMENSION;
+
+/// Directions the horizon search follows at once: four `f32`s, the width of an SSE or NEON register.
+const LANES: usize = 4;
+
+/// One `f32` per direction of a group.
+type F4 = Lanes<f32, LANES>;
 
 /// Screen-space ambient occlusion settings: how far to look, how dark to make it, and how many samples to take.
 #[derive(Clone, Copy, Debug, PartialEq)]

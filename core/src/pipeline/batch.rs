@@ -22,7 +22,7 @@
 
 use super::fragments::Fragments;
 use super::slopes::{FractionSteps, Slopes};
-use super::{Fragment, Varyings};
+use super::{Column, Fragment, Varyings};
 
 /// True where the target has SIMD registers (x86-64, AArch64, WebAssembly with `simd128`): lane loops then run
 /// over every lane, a constant count the compiler widens to SIMD instructions.
@@ -44,9 +44,6 @@ pub const BATCH_SIZE: usize = if SIMD { 32 } else { 1 };
 pub const fn lanes(len: usize) -> usize {
     if SIMD || len > BATCH_SIZE { BATCH_SIZE } else { len }
 }
-
-/// One `f32` per fragment of a batch: lanes past the batch's length hold finite values nobody should read.
-pub type Lanes = [f32; BATCH_SIZE];
 
 /// The varyings and faces of the triangles whose fragments a batch holds, slot by slot as
 /// [`Fragments`] names them, and the fragments' interpolated varyings (`V` and `F`: the shader's
@@ -164,7 +161,7 @@ impl<V: Varyings, F: Copy> FragmentBatch<'_, V, F> {
     /// Each fragment's depth (as the depth test saw it), one lane per fragment (all [`BATCH_SIZE`] lanes; those
     /// past [`Self::len`] are finite).
     #[inline(always)]
-    pub fn depths(&self) -> &Lanes {
+    pub fn depths(&self) -> &Column {
         self.fragments.depths()
     }
 }

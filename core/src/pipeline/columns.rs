@@ -12,17 +12,17 @@
 // Lane loops index every column they touch by the same lane, which iterators would hide.
 #![allow(clippy::needless_range_loop)]
 
-use super::{BATCH_SIZE, Lanes, lanes};
+use super::{BATCH_SIZE, lanes};
 use crate::math::float::{self, Exponent};
-use crate::math::{Vec2, Vec3};
+use crate::math::{Lanes, Vec2, Vec3};
 
-/// One `f32` per fragment of a batch.
-pub(crate) type Column = Lanes;
+/// One `f32` per fragment of a batch: lanes past the batch's length hold finite values nobody should read.
+pub type Column = Lanes<f32, BATCH_SIZE>;
 
 /// `lane(i)` in lane `i` of a batch of `len`: a column of one value of each fragment (zero past `len`).
 #[inline(always)]
 pub(crate) fn gather(len: usize, lane: impl Fn(usize) -> f32) -> Column {
-    let mut out = [0.0; BATCH_SIZE];
+    let mut out = Column::ZERO;
     for i in 0..len.min(BATCH_SIZE) {
         out[i] = lane(i);
     }
@@ -38,7 +38,7 @@ pub(crate) struct Column2 {
 
 impl Column2 {
     /// Every lane `(0, 0)`.
-    pub const ZERO: Self = Self { x: [0.0; BATCH_SIZE], y: [0.0; BATCH_SIZE] };
+    pub const ZERO: Self = Self { x: Column::ZERO, y: Column::ZERO };
 
     /// `lane(i)` in lane `i` of a batch of `len` (zero past `len`).
     #[inline(always)]
@@ -67,7 +67,7 @@ impl Column3 {
     /// Every lane `v`.
     #[inline(always)]
     pub const fn splat(v: Vec3) -> Self {
-        Self { x: [v.x; BATCH_SIZE], y: [v.y; BATCH_SIZE], z: [v.z; BATCH_SIZE] }
+        Self { x: Column::splat(v.x), y: Column::splat(v.y), z: Column::splat(v.z) }
     }
 
     /// `lane(i)` in lane `i` of a batch of `len` (zero past `len`).
@@ -125,11 +125,12 @@ impl Column3 {
         }
     }
 
-    /// Lane-wise [`Vec3::normalize_or_zero`], in place; `squared` is working space. Only the first `len` lanes
-    /// are normalised; the others are set to zero.
+    /// Lane-wise [`Vec3::normalize_or_zero`], in place. Only the first `len` lanes are normalised; the others are
+    /// set to zero.
     #[inline(always)]
-    pub fn normalize(&mut self, len: usize, squared: &mut Column) {
-        self.dot(&*self, squared, len);
+    pub fn normalize(&mut self, len: usize) {
+        let mut squared = Column::ZERO;
+        self.dot(&*self, &mut squared, len);
         for i in 0..lanes(len) {
             let d = squared[i];
             // `0 < d < inf`, as `Vec3::try_normalize` asks (NaN fails both); lanes past `len` fail. Non-short-circuit
@@ -159,7 +160,7 @@ pub(crate) fn sqrt_lanes(v: &mut Column, len: usize) {
 #[inline(always)]
 pub(crate) fn pow_lanes(x: &mut Column, y: Exponent, len: usize) {
     if let Exponent::Whole(mut n) = y {
-        let mut result = [1.0; BATCH_SIZE];
+        let mut result = Column::splat(1.0);
         while n > 0 {
             if n & 1 == 1 {
                 for i in 0..lanes(len) {
@@ -209,9 +210,9 @@ mod tests {
         for i in 0..BATCH_SIZE {
             c.set(i, samples[i % samples.len()] * (1.0 + i as f32 * 0.37));
         }
-        let (mut lengths, mut out) = ([0.0; BATCH_SIZE], c);
-        out.normalize(BATCH_SIZE, &mut lengths);
-        let mut d = [0.0; BATCH_SIZE];
+        let mut out = c;
+        out.normalize(BATCH_SIZE);
+        let mut d = Column::ZERO;
         let l = Vec3::new(0.25, -0.5, 0.75);
         c.dot(&Column3::splat(l), &mut d, BATCH_SIZE);
         let bits = |v: Vec3| [v.x, v.y, v.z].map(f32::to_bits);
@@ -221,7 +222,7 @@ mod tests {
             assert_eq!(d[i].to_bits(), v.dot(l).to_bits());
         }
         for y in [0.0, 1.0, 7.0, 32.0, 256.0, 12.5, 300.0] {
-            let mut x: Column = core::array::from_fn(|i| i as f32 / 31.0);
+            let mut x = Column::from_fn(|i| i as f32 / 31.0);
             let expected = x.map(|v| float::pow(v, y));
             pow_lanes(&mut x, Exponent::new(y), BATCH_SIZE);
             assert_eq!(x.map(f32::to_bits), expected.map(f32::to_bits), "exponent {y}");

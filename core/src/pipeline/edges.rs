@@ -46,10 +46,10 @@ pub(crate) trait Edges: CentreEdges {
     /// Whether values `at` (at a centre or a sample) fail an edge whose value never rises to the right: then the
     /// same point of every pixel further right in the row is uncovered too, as [`CentreEdges::step`] computes it.
     fn closed(&self, at: &Self::At) -> bool;
-    /// The functions as [`EdgeLanes`] over the pixel centres `x0..=x1` by `y0..=y1`, when that computes exactly
+    /// The functions as [`NarrowEdges`] over the pixel centres `x0..=x1` by `y0..=y1`, when that computes exactly
     /// what [`CentreEdges::at`], [`CentreEdges::step`], [`CentreEdges::covered`] and [`CentreEdges::weights`] do there; `None` otherwise.
     #[inline(always)]
-    fn lanes(&self, _x0: i32, _x1: i32, _y0: i32, _y1: i32) -> Option<EdgeLanes> {
+    fn narrow(&self, _x0: i32, _x1: i32, _y0: i32, _y1: i32) -> Option<NarrowEdges> {
         None
     }
 }
@@ -61,7 +61,7 @@ pub(crate) trait Edges: CentreEdges {
 /// products modulo 2^32), so only the box's values are checked, and a lane past the box's edge, which may wrap,
 /// must be masked off by the caller.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct EdgeLanes {
+pub(crate) struct NarrowEdges {
     /// The box's top-left pixel.
     pub x0: i32,
     pub y0: i32,
@@ -75,7 +75,7 @@ pub(crate) struct EdgeLanes {
 
 /// The values of [`FixedEdges`] inside the box, one pixel at a time: `i32` steps where a target has no 64-bit
 /// registers, the same values (outside the box they may wrap: the pixel loops do not leave it).
-impl CentreEdges for EdgeLanes {
+impl CentreEdges for NarrowEdges {
     type At = [i32; 3];
 
     #[inline(always)]
@@ -188,7 +188,7 @@ impl Edges for FixedEdges {
     /// maximum, so the unbiased value `v + 1` fits too), all do, and `i32` comparisons and conversions to `f32` give
     /// what the `i64` ones give.
     #[inline(always)]
-    fn lanes(&self, x0: i32, x1: i32, y0: i32, y1: i32) -> Option<EdgeLanes> {
+    fn narrow(&self, x0: i32, x1: i32, y0: i32, y1: i32) -> Option<NarrowEdges> {
         let fits = |v: i64| (i64::from(i32::MIN)..i64::from(i32::MAX)).contains(&v);
         let corners = [self.at(x0, y0), self.at(x1, y0), self.at(x0, y1), self.at(x1, y1)];
         if !corners.iter().all(|c| c.iter().all(|&v| fits(v))) {
@@ -196,7 +196,7 @@ impl Edges for FixedEdges {
         }
         // Truncating casts: modulo 2^32, which is all the wrapping arithmetic of the lanes needs.
         let wrap = |v: [i64; 3]| v.map(|v| v as i32);
-        Some(EdgeLanes {
+        Some(NarrowEdges {
             x0,
             y0,
             origin: wrap(corners[0]),
@@ -408,10 +408,10 @@ impl Edges for DynamicEdges {
     }
 
     #[inline(always)]
-    fn lanes(&self, x0: i32, x1: i32, y0: i32, y1: i32) -> Option<EdgeLanes> {
+    fn narrow(&self, x0: i32, x1: i32, y0: i32, y1: i32) -> Option<NarrowEdges> {
         match self {
-            Self::Fixed(e) => e.lanes(x0, x1, y0, y1),
-            Self::Float(e) => e.lanes(x0, x1, y0, y1),
+            Self::Fixed(e) => e.narrow(x0, x1, y0, y1),
+            Self::Float(e) => e.narrow(x0, x1, y0, y1),
         }
     }
 }
@@ -514,10 +514,10 @@ mod tests {
             };
             let (x0, y0) = (signed(&mut state, 300) as i32, signed(&mut state, 300) as i32);
             let (x1, y1) = (x0 + (next(&mut state) % 40) as i32, y0 + (next(&mut state) % 40) as i32);
-            let Some(lanes) = fixed.lanes(x0, x1, y0, y1) else {
+            let Some(lanes) = fixed.narrow(x0, x1, y0, y1) else {
                 let corners = [fixed.at(x0, y0), fixed.at(x1, y0), fixed.at(x0, y1), fixed.at(x1, y1)];
                 let fits = |v: i64| (i64::from(i32::MIN)..i64::from(i32::MAX)).contains(&v);
-                assert!(!corners.iter().flatten().all(|&v| fits(v)), "#{i}: every corner fits, no lanes");
+                assert!(!corners.iter().flatten().all(|&v| fits(v)), "#{i}: every corner fits, not narrowed");
                 wide += 1;
                 continue;
             };

@@ -11,7 +11,8 @@
 //! a fragment in the batch, so there are never more triangles than fragments; a triangle still being rasterized
 //! when its batch is shaded goes on in slot 0 of the emptied batch.
 
-use super::batch::{BATCH_SIZE, Lanes, lanes};
+use super::batch::{BATCH_SIZE, lanes};
+use super::columns::Column;
 use super::slopes::FractionSteps;
 use crate::target::SAMPLE_COUNT;
 
@@ -34,13 +35,13 @@ pub(crate) struct Fragments {
     triangle: [u8; BATCH_SIZE],
     /// The weights of each fragment's triangle's second and third vertex: numerators as pushed, then, once
     /// [`Self::resolve`] has run, the weights themselves.
-    w1: Lanes,
-    w2: Lanes,
+    w1: Column,
+    w2: Column,
     /// The weights' common denominator per fragment, until resolved; then its reciprocal.
-    denominator: Lanes,
+    denominator: Column,
     x: [u32; BATCH_SIZE],
     y: [u32; BATCH_SIZE],
-    depth: Lanes,
+    depth: Column,
     indices: [usize; BATCH_SIZE],
     /// On a multisampled target: each fragment's samples (bit `s` for sample `s`) and their depths.
     samples: [u8; BATCH_SIZE],
@@ -57,12 +58,12 @@ impl Fragments {
             front_facing: [true; BATCH_SIZE],
             steps: [FractionSteps::default(); BATCH_SIZE],
             triangle: [0; BATCH_SIZE],
-            w1: [0.0; BATCH_SIZE],
-            w2: [0.0; BATCH_SIZE],
-            denominator: [1.0; BATCH_SIZE],
+            w1: Column::ZERO,
+            w2: Column::ZERO,
+            denominator: Column::splat(1.0),
             x: [0; BATCH_SIZE],
             y: [0; BATCH_SIZE],
-            depth: [0.0; BATCH_SIZE],
+            depth: Column::ZERO,
             indices: [0; BATCH_SIZE],
             samples: [0; BATCH_SIZE],
             sample_depths: [[0.0; SAMPLE_COUNT]; BATCH_SIZE],
@@ -190,7 +191,7 @@ impl Fragments {
     /// Each fragment's depth (as the depth test saw it), one lane per fragment (all [`BATCH_SIZE`] lanes; those
     /// past [`Self::len`] are finite).
     #[inline(always)]
-    pub fn depths(&self) -> &Lanes {
+    pub fn depths(&self) -> &Column {
         &self.depth
     }
 

@@ -16,14 +16,14 @@
 
 mod multisample;
 
-use super::edges::{CentreEdges, DynamicEdges, EdgeLanes, Edges, FixedEdges, FloatEdges};
+use super::edges::{CentreEdges, DynamicEdges, Edges, FixedEdges, FloatEdges, NarrowEdges};
 use super::fragment_stage::{FragmentStage, Writes};
 use super::fragments::Fragments;
 use super::interpolator::{Affine, DynamicInterpolator, Interpolator, PerspectiveCorrect};
 use super::slopes::FractionSteps;
 use super::{Cull, Interpolation, Winding};
 use crate::camera::Viewport;
-use crate::math::{Vec4, float};
+use crate::math::{Lanes, Vec4, float};
 use crate::target::{
     ColorBuffer, DEPTH_LANES, DepthBuffer, DepthView, SAMPLE_REACH, Samples, Target, TargetView, VertexMemory,
     clamp_depth,
@@ -684,8 +684,8 @@ pub(super) fn fill_single<E: Edges, I: Interpolator, const CUTOUT: bool, St: Fra
     depth: &mut D,
 ) -> u64 {
     let f = c.frame;
-    if NARROW && let Some(lanes) = c.edges.lanes(f.x0, f.x1, f.y0, f.y1) {
-        return c.walk_batched::<_, I, CUTOUT, St, D>(&lanes, pass, depth);
+    if NARROW && let Some(narrow) = c.edges.narrow(f.x0, f.x1, f.y0, f.y1) {
+        return c.walk_batched::<_, I, CUTOUT, St, D>(&narrow, pass, depth);
     }
     c.walk_batched::<_, I, CUTOUT, St, D>(c.edges, pass, depth)
 }
@@ -702,8 +702,8 @@ pub(super) fn fill_depth_only<E: Edges, St: FragmentStage + ?Sized, D: DepthBuff
     let (f, edges) = (c.frame, c.edges);
     let width = pass.target.width() as usize;
     let row0 = pass.target.rows().start as i32;
-    if let Some(lanes) = edges.lanes(f.x0, f.x1, f.y0, f.y1) {
-        return c.fill_depth(lanes, width, row0, depth);
+    if let Some(narrow) = edges.narrow(f.x0, f.x1, f.y0, f.y1) {
+        return c.fill_depth(narrow, width, row0, depth);
     }
     let mut passed = 0u64;
     for y in f.y0..=f.y1 {
@@ -730,47 +730,47 @@ pub(super) fn fill_depth_only<E: Edges, St: FragmentStage + ?Sized, D: DepthBuff
 pub(super) use multisample::fill_multisample;
 
 impl<E: Edges> Covered<'_, E> {
-    /// [`fill_depth_only`] with the edge functions as `lanes`: the depth test alone, [`DEPTH_LANES`] pixels of a
+    /// [`fill_depth_only`] with the edge functions narrowed to `i32` (`edges`): the depth test alone, [`DEPTH_LANES`] pixels of a
     /// row at a time across the bounding box, with coverage, weights and depth worked out per lane exactly as the
     /// pixel walk works them out per pixel (the same depths reach the same pixels). The lanes are one branch-free
     /// loop, which the compiler widens to SIMD.
     #[inline(always)]
-    fn fill_depth<D: DepthBuffer>(self, lanes: EdgeLanes, width: usize, row0: i32, depth: &mut D) -> u64 {
+    fn fill_depth<D: DepthBuffer>(self, edges: NarrowEdges, width: usize, row0: i32, depth: &mut D) -> u64 {
         const N: usize = DEPTH_LANES;
         let f = self.frame;
         let count = f.x1 - f.x0 + 1;
         // Lane j of a group lies j pixels right of its first: its values are the first's plus j steps.
-        let offsets: [[i32; N]; 3] =
-            core::array::from_fn(|k| core::array::from_fn(|j| lanes.step_x[k].wrapping_mul(j as i32)));
-        let group_step = lanes.step_x.map(|s| s.wrapping_mul(N as i32));
-        let mut row = lanes.origin;
+        let offsets: [Lanes<i32, N>; 3] =
+            core::array::from_fn(|k| Lanes::from_fn(|j| edges.step_x[k].wrapping_mul(j as i32)));
+        let group_step = edges.step_x.map(|s| s.wrapping_mul(N as i32));
+        let mut row = edges.origin;
         let mut passed = 0u64;
         for y in f.y0..=f.y1 {
             let first = (y - row0) as usize * width + f.x0 as usize;
             let mut e = row;
             let mut x = 0;
             while x < count {
-                let (mut z, mut covered) = ([0.0; N], [false; N]);
+                let (mut z, mut covered) = (Lanes::<f32, N>::ZERO, Lanes::splat(false));
                 for j in 0..N {
                     let v0 = e[0].wrapping_add(offsets[0][j]);
                     let v1 = e[1].wrapping_add(offsets[1][j]);
                     let v2 = e[2].wrapping_add(offsets[2][j]);
-                    let [_, w1, w2] = lanes.weights(&[v0, v1, v2]);
+                    let [_, w1, w2] = edges.weights(&[v0, v1, v2]);
                     // Lanes past the box's last column may have wrapped: never covered.
-                    covered[j] = lanes.covered(&[v0, v1, v2]) & (x + (j as i32) < count);
+                    covered[j] = edges.covered(&[v0, v1, v2]) & (x + (j as i32) < count);
                     z[j] = f.depth(w1, w2);
                 }
                 passed += u64::from(depth.test_and_set_lanes(first + x as usize, &z, &covered));
                 e = [0, 1, 2].map(|k| e[k].wrapping_add(group_step[k]));
                 x += N as i32;
             }
-            row = [0, 1, 2].map(|k| row[k].wrapping_add(lanes.step_y[k]));
+            row = [0, 1, 2].map(|k| row[k].wrapping_add(edges.step_y[k]));
         }
         passed
     }
 
     /// [`fill_single`]'s walk with the triangle's edges as `edges` (in `i64`, or in `i32` where they fit,
-    /// [`EdgeLanes`]): the covered centres of each row in order, each depth-tested (in a cut-out draw, compared)
+    /// [`NarrowEdges`]): the covered centres of each row in order, each depth-tested (in a cut-out draw, compared)
     /// and pushed into the batch, which is handed to the fragment stage whenever it fills.
     ///
     /// Out of line where it has two kinds of edges ([`NARROW`]): inlined, each kind was copied into each of the

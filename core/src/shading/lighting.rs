@@ -12,7 +12,7 @@ use super::{LightKind, Lighting};
 use crate::math::Vec3;
 use crate::math::float::{self, Exponent};
 use crate::pipeline::columns::{self, Column, Column3};
-use crate::pipeline::{BATCH_SIZE, lanes};
+use crate::pipeline::lanes;
 
 /// Fills `s.diffuse` (and `s.specular` when `specular`) with the light arriving at each fragment: the ambient
 /// light (`s.ambient` when `occluded`, else the lights' own), then each light's.
@@ -36,29 +36,30 @@ pub(crate) fn light<const CAPS: u32>(
         s.specular = Column3::ZERO;
         // The direction to the eye, once for every light.
         s.view = Column3::toward(eye, &s.world, len);
-        s.view.normalize(len, &mut s.lane);
+        s.view.normalize(len);
     }
     for light in lights.lights {
         let to_light = match light.kind {
             LightKind::Directional { to_light } => Column3::splat(to_light),
             LightKind::Point { position } if has(CAPS, capabilities::POINT_LIGHTS) => {
                 let mut l = Column3::toward(position, &s.world, len);
-                l.normalize(len, &mut s.lane);
+                l.normalize(len);
                 l
             }
             LightKind::Point { .. } => Column3::ZERO,
         };
-        let mut n_dot_l = [0.0; BATCH_SIZE];
+        let mut n_dot_l = Column::ZERO;
         s.shading.dot(&to_light, &mut n_dot_l, len);
         // The share of the light its shadow map lets through, if it has one.
         let shares = light.shadow.as_ref().filter(|_| has(CAPS, capabilities::SHADOWS)).map(|map| {
-            s.geometric.dot(&to_light, &mut s.lane, len);
-            let mut shares = [0.0; BATCH_SIZE];
-            map.light_reaching_lanes(&s.world, &s.geometric, &s.lane, len, &mut shares);
+            let mut n_dot_geometric = Column::ZERO;
+            s.geometric.dot(&to_light, &mut n_dot_geometric, len);
+            let mut shares = Column::ZERO;
+            map.light_reaching_lanes(&s.world, &s.geometric, &n_dot_geometric, len, &mut shares);
             shares
         });
         // max(0, n . l) times the share: the diffuse factor.
-        let mut arriving: Column = [0.0; BATCH_SIZE];
+        let mut arriving = Column::ZERO;
         for i in 0..lanes(len) {
             arriving[i] = float::max(n_dot_l[i], 0.0);
         }
@@ -96,12 +97,12 @@ fn highlight(
         h.y[i] = l.y[i] + v.y[i];
         h.z[i] = l.z[i] + v.z[i];
     }
-    let mut n_dot_h = [0.0; BATCH_SIZE];
-    h.normalize(len, &mut n_dot_h);
+    h.normalize(len);
+    let mut n_dot_h = Column::ZERO;
     n.dot(&h, &mut n_dot_h, len);
     // Into a new column, not in place: `x = max(x, 0)` in place compiled to masked stores (`vmaskmovps`), slow on
     // some x86 processors.
-    let mut k = [0.0; BATCH_SIZE];
+    let mut k = Column::ZERO;
     for i in 0..lanes(len) {
         k[i] = float::max(n_dot_h[i], 0.0);
     }

@@ -318,6 +318,7 @@ pub(crate) fn stored(colors: &mut [Vec3], space: ShadingSpace) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::pipeline::columns::Column;
     use crate::texture::{Anisotropy, Bilinear, Clamp, MipContent, Nearest, Repeat, build_mip_levels};
 
     /// A reader gives each map's own samples, as stored and in light, when maps of different sizes take turns
@@ -331,8 +332,8 @@ mod tests {
         let large = Texture::new(&large, 5, 7).unwrap();
         let wide = Texture::new(&wide, 7, 5).unwrap();
         let uv = Column2 {
-            x: core::array::from_fn(|i| i as f32 * 0.0731 - 0.4),
-            y: core::array::from_fn(|i| 1.3 - i as f32 * 0.0517),
+            x: Column::from_fn(|i| i as f32 * 0.0731 - 0.4),
+            y: Column::from_fn(|i| 1.3 - i as f32 * 0.0517),
         };
         fn check<F: Filter, W: Wrap>(maps: [&Texture<'_>; 5], uv: &Column2) {
             let mut reader = MapReader::<F, W>::new(MipFilter::Off);
@@ -368,15 +369,13 @@ mod tests {
         let texture = Texture::new(&texels, 16, 16).unwrap();
         build_mip_levels(&texture, MipContent::Color, &mut levels).unwrap();
         let chain = texture.with_mip_levels(&levels).unwrap().mip_chain();
-        let uv = Column2 {
-            x: core::array::from_fn(|i| i as f32 * 0.0731 - 0.4),
-            y: core::array::from_fn(|i| 0.9 - i as f32 * 0.037),
-        };
+        let uv =
+            Column2 { x: Column::from_fn(|i| i as f32 * 0.0731 - 0.4), y: Column::from_fn(|i| 0.9 - i as f32 * 0.037) };
         // Footprints from `from` texels long, growing by `step` a lane, as wide as long.
         let at = |from: f32, step: f32| {
             let length = |i: usize| (from + i as f32 * step) / 16.0;
-            let dx = Column2 { x: core::array::from_fn(length), y: [0.0; BATCH_SIZE] };
-            let dy = Column2 { x: [0.0; BATCH_SIZE], y: core::array::from_fn(length) };
+            let dx = Column2 { x: Column::from_fn(length), y: Column::ZERO };
+            let dy = Column2 { x: Column::ZERO, y: Column::from_fn(length) };
             Coordinates { uv, slopes: Some(Slopes { dx, dy }) }
         };
         let read = |at: &Coordinates, mip, len| {
@@ -428,17 +427,14 @@ mod tests {
         // Slopes from magnified to beyond the last level: long and narrow footprints, and square ones (every third
         // lane).
         let slopes = Slopes {
-            dx: Column2 { x: core::array::from_fn(|i| i as f32 * 0.06), y: [0.002; BATCH_SIZE] },
+            dx: Column2 { x: Column::from_fn(|i| i as f32 * 0.06), y: Column::splat(0.002) },
             dy: Column2 {
-                x: [0.0; BATCH_SIZE],
-                y: core::array::from_fn(|i| if i % 3 == 0 { i as f32 * 0.06 } else { (i % 5) as f32 * 0.07 }),
+                x: Column::ZERO,
+                y: Column::from_fn(|i| if i % 3 == 0 { i as f32 * 0.06 } else { (i % 5) as f32 * 0.07 }),
             },
         };
         let at = Coordinates {
-            uv: Column2 {
-                x: core::array::from_fn(|i| i as f32 * 0.0731),
-                y: core::array::from_fn(|i| 0.9 - i as f32 * 0.05),
-            },
+            uv: Column2 { x: Column::from_fn(|i| i as f32 * 0.0731), y: Column::from_fn(|i| 0.9 - i as f32 * 0.05) },
             slopes: Some(slopes),
         };
         let lane = |i: usize| Slopes {

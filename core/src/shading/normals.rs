@@ -21,7 +21,7 @@ pub(crate) fn face_the_viewer(s: &mut Scratch) {
 /// The geometric normal (the interpolated one, normalised) and, without a normal map, the shading normal too.
 pub(crate) fn interpolated(s: &mut Scratch, shading_too: bool) {
     s.geometric = s.normal;
-    s.geometric.normalize(s.len, &mut s.lane);
+    s.geometric.normalize(s.len);
     if shading_too {
         s.shading = s.geometric;
     }
@@ -42,7 +42,7 @@ pub(crate) fn tangent_map<F: Filter, W: Wrap>(s: &mut Scratch, maps: &mut MapRea
         let m = decode_normal(texel);
         s.shading.set(i, t * m.x + b * m.y + n * m.z);
     }
-    s.shading.normalize(s.len, &mut s.lane);
+    s.shading.normalize(s.len);
 }
 
 /// Object-space normal map: the decoded texel through the normal matrix, normalised.
@@ -58,5 +58,5 @@ pub(crate) fn object_map<F: Filter, W: Wrap>(
         let m: Vec3 = decode_normal(texel);
         s.shading.set(i, *normal_matrix * m);
     }
-    s.shading.normalize(s.len, &mut s.lane);
+    s.shading.normalize(s.len);
 }

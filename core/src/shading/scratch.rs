@@ -2,7 +2,6 @@
 //! columns.
 
 use super::maps::Coordinates;
-use crate::pipeline::BATCH_SIZE;
 use crate::pipeline::columns::{Column, Column3};
 
 /// Per-fragment values of one batch. Only the first `len` lanes of each column are meaningful, and a column is
@@ -39,8 +38,6 @@ pub(crate) struct Scratch {
     pub specular_color: Column3,
     /// Emitted light (glow map).
     pub emission: Column3,
-    /// Working space for one value per fragment (lengths, dot products).
-    pub lane: Column,
 }
 
 impl Scratch {
@@ -55,8 +52,8 @@ impl Scratch {
             world: v3,
             at: Coordinates::ZERO,
             tangent: v3,
-            handedness: [0.0; BATCH_SIZE],
-            facing: [1.0; BATCH_SIZE],
+            handedness: Column::ZERO,
+            facing: Column::splat(1.0),
             view: v3,
             albedo: v3,
             ambient: v3,
@@ -64,7 +61,6 @@ impl Scratch {
             specular: v3,
             specular_color: v3,
             emission: v3,
-            lane: [0.0; BATCH_SIZE],
         }
     }
 }

@@ -429,17 +429,17 @@ impl<'a> ShadowMap<'a> {
         share: &mut Column,
     ) {
         let texel = match self.view.texel {
-            TexelSize::Constant(t) => [t; BATCH_SIZE],
+            TexelSize::Constant(t) => Column::splat(t),
             TexelSize::Perspective { eye, per_distance } => {
                 // `texel_at`, lane by lane: `|p - eye|`, which is `|eye - p|` bit for bit (squares lose the sign).
                 let d = Column3::toward(eye, p, len);
-                let mut length = [0.0; BATCH_SIZE];
+                let mut length = Column::ZERO;
                 d.dot(&d, &mut length, len);
                 columns::sqrt_lanes(&mut length, len);
                 length.map(|l| per_distance * l)
             }
         };
-        let (mut tx, mut ty, mut z) = ([0i32; BATCH_SIZE], [0i32; BATCH_SIZE], [0.0; BATCH_SIZE]);
+        let (mut tx, mut ty, mut z) = ([0i32; BATCH_SIZE], [0i32; BATCH_SIZE], Column::ZERO);
         let mut face = [0usize; BATCH_SIZE];
         let mut in_front = [false; BATCH_SIZE];
         // One decision per batch: an orthographic map (a directional light's) needs no division, a square one no
@@ -767,7 +767,7 @@ mod tests {
             LightKind::Point { position: Vec3::new(0.5, 4.0, 1.0) },
             LightKind::Point { position: Vec3::new(0.1, -0.2, 0.15) },
         ];
-        let (mut p, mut n, mut n_dot_l) = (Column3::ZERO, Column3::ZERO, [0.0; BATCH_SIZE]);
+        let (mut p, mut n, mut n_dot_l) = (Column3::ZERO, Column3::ZERO, Column::ZERO);
         for i in 0..BATCH_SIZE {
             let t = i as f32 / BATCH_SIZE as f32;
             // Across the map, and a few points behind the point light.
@@ -791,7 +791,7 @@ mod tests {
                 let ranged = plain.with_windows(WindowRanges::new(near, far, SIZE, radius).unwrap()).unwrap();
                 for (map, ranges) in [(plain, "without"), (ranged, "with")] {
                     let len = BATCH_SIZE - 3;
-                    let mut share = [-1.0; BATCH_SIZE];
+                    let mut share = Column::splat(-1.0);
                     map.light_reaching_lanes(&p, &n, &n_dot_l, len, &mut share);
                     for i in 0..len {
                         let expected = plain.light_reaching(p.get(i), n.get(i), n_dot_l[i]);

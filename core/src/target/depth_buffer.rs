@@ -8,7 +8,7 @@
 //! depth-only passes, bands and lane groups alike. A buffer only compares and stores; it never changes a depth, so
 //! a caller's own buffer stores exactly what the library's buffers store.
 
-use crate::math::float;
+use crate::math::{Lanes, float};
 
 /// Consecutive pixels of a row that [`DepthBuffer::test_and_set_lanes`] tests at once: eight `f32`s, one AVX
 /// register (two SSE ones).
@@ -35,7 +35,12 @@ pub trait DepthBuffer {
     /// many passed. The pixels need not be in one row (the depth-only pass lets a group reach past a row's end,
     /// uncovered).
     #[inline(always)]
-    fn test_and_set_lanes(&mut self, start: usize, z: &[f32; DEPTH_LANES], covered: &[bool; DEPTH_LANES]) -> u32 {
+    fn test_and_set_lanes(
+        &mut self,
+        start: usize,
+        z: &Lanes<f32, DEPTH_LANES>,
+        covered: &Lanes<bool, DEPTH_LANES>,
+    ) -> u32 {
         one_by_one(self, start, z, covered)
     }
     /// Resets every value to the far plane.
@@ -142,7 +147,12 @@ impl DepthBuffer for DepthView<'_> {
         }
     }
     #[inline(always)]
-    fn test_and_set_lanes(&mut self, start: usize, z: &[f32; DEPTH_LANES], covered: &[bool; DEPTH_LANES]) -> u32 {
+    fn test_and_set_lanes(
+        &mut self,
+        start: usize,
+        z: &Lanes<f32, DEPTH_LANES>,
+        covered: &Lanes<bool, DEPTH_LANES>,
+    ) -> u32 {
         match self {
             Self::F32(d) => d.test_and_set_lanes(start, z, covered),
             Self::U16(d) => d.test_and_set_lanes(start, z, covered),
@@ -196,14 +206,19 @@ impl DepthBuffer for &mut [f32] {
     /// depths that is exactly the test's result, and it compiles to plain stores. (Choosing between the new and the
     /// stored value compiled to masked stores, slow on some x86 processors.)
     #[inline(always)]
-    fn test_and_set_lanes(&mut self, start: usize, z: &[f32; DEPTH_LANES], covered: &[bool; DEPTH_LANES]) -> u32 {
+    fn test_and_set_lanes(
+        &mut self,
+        start: usize,
+        z: &Lanes<f32, DEPTH_LANES>,
+        covered: &Lanes<bool, DEPTH_LANES>,
+    ) -> u32 {
         let group = self.get_mut(start..start + DEPTH_LANES).and_then(|s| <&mut [f32; DEPTH_LANES]>::try_from(s).ok());
         let ordinary =
             |g: &[f32; DEPTH_LANES]| g.iter().fold(true, |a, d| a & (d.to_bits() <= f32::INFINITY.to_bits()));
         let Some(stored) = group.filter(|g| ordinary(g)) else {
             return one_by_one(self, start, z, covered);
         };
-        let mut candidate = [0.0; DEPTH_LANES];
+        let mut candidate = Lanes::<f32, DEPTH_LANES>::ZERO;
         let mut passed = 0;
         for i in 0..DEPTH_LANES {
             let pass = covered[i] & (z[i] < stored[i]);
@@ -245,8 +260,8 @@ pub fn clamp_depth(z: f32) -> f32 {
 fn one_by_one<D: DepthBuffer + ?Sized>(
     depth: &mut D,
     start: usize,
-    z: &[f32; DEPTH_LANES],
-    covered: &[bool; DEPTH_LANES],
+    z: &Lanes<f32, DEPTH_LANES>,
+    covered: &Lanes<bool, DEPTH_LANES>,
 ) -> u32 {
     let mut passed = 0;
     for i in 0..DEPTH_LANES {

@@ -1,7 +1,7 @@
 //! Helpers shared by the core's integration tests: screen-space triangles, a coverage-count target, ASCII art.
 #![allow(dead_code)]
 
-use rastty_core::math::{Vec3, Vec4};
+use rastty_core::math::{Lanes, Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh};
 use rastty_core::pipeline::{DrawState, DrawStats, Fragment, Shader, Slopes, draw};
 use rastty_core::target::{
@@ -448,7 +448,12 @@ impl DepthBuffer for AnyDepth<'_> {
             Self::Plain16(d) => d.test_and_set(index, z),
         }
     }
-    fn test_and_set_lanes(&mut self, start: usize, z: &[f32; DEPTH_LANES], covered: &[bool; DEPTH_LANES]) -> u32 {
+    fn test_and_set_lanes(
+        &mut self,
+        start: usize,
+        z: &Lanes<f32, DEPTH_LANES>,
+        covered: &Lanes<bool, DEPTH_LANES>,
+    ) -> u32 {
         match self {
             Self::F32(d) => d.test_and_set_lanes(start, z, covered),
             Self::U16(d) => d.test_and_set_lanes(start, z, covered),
