@@ -89,7 +89,7 @@ fn too_large(size: u64, limit: u64) -> io::Error {
 }
 
 /// `bytes` for people: `12 bytes`, `3.5 MiB`.
-pub fn byte_size(bytes: u64) -> String {
+pub(crate) fn byte_size(bytes: u64) -> String {
     const UNITS: [&str; 4] = ["KiB", "MiB", "GiB", "TiB"];
     if bytes < 1024 {
         return format!("{bytes} bytes");

@@ -13,7 +13,7 @@ pub struct BoundingBox {
 
 impl BoundingBox {
     /// The box around `points`, or `None` when there are none or any is not finite.
-    pub fn from_points(points: &[Vec3]) -> Option<Self> {
+    pub(crate) fn from_points(points: &[Vec3]) -> Option<Self> {
         let (&first, rest) = points.split_first()?;
         let mut b = Self { min: first, max: first };
         for &p in rest {

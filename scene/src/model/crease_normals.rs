@@ -9,11 +9,11 @@ use super::smooth_normals::FALLBACK_NORMAL;
 
 /// The most groups of faces with different normals kept at one vertex; faces past them keep their own normal
 /// (flat). It bounds the work at a vertex that thousands of faces with scattered normals share.
-pub const MAX_GROUPS_PER_VERTEX: usize = 64;
+pub(crate) const MAX_GROUPS_PER_VERTEX: usize = 64;
 
 /// An indexed mesh made from a triangle soup: one vertex per distinct position and normal.
 #[derive(Clone, Debug, Default, PartialEq)]
-pub struct IndexedSoup {
+pub(crate) struct IndexedSoup {
     /// Vertex positions.
     pub positions: Vec<Vec3>,
     /// One unit normal per position.
@@ -34,7 +34,7 @@ pub struct IndexedSoup {
 ///
 /// Vertices with the same position and normal are shared, so the renderer's vertex cache sees the mesh's sharing.
 /// `None` if the mesh has more vertices than `u32` indices address.
-pub fn crease_normals(corners: &[Vec3], smooth_angle: Option<f32>) -> Option<IndexedSoup> {
+pub(crate) fn crease_normals(corners: &[Vec3], smooth_angle: Option<f32>) -> Option<IndexedSoup> {
     let crosses: Vec<[f64; 3]> = corners.chunks_exact(3).map(|t| cross(t[0], t[1], t[2])).collect();
     let face_normals: Vec<Option<Vec3>> = crosses.iter().map(|&c| unit(c)).collect();
     let corner_normals: Vec<Vec3> = match smooth_angle {

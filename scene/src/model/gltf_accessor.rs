@@ -12,7 +12,7 @@ use gltf::buffer::View;
 
 /// The most elements an accessor without a buffer view may have (its elements are zeros, so the file's size does
 /// not bound them): 16,777,216.
-pub const MAX_VIEWLESS_ELEMENTS: usize = 1 << 24;
+pub(crate) const MAX_VIEWLESS_ELEMENTS: usize = 1 << 24;
 
 /// The bytes of each buffer of a file, by index.
 pub(crate) type Buffers<'a> = [std::borrow::Cow<'a, [u8]>];

@@ -46,9 +46,7 @@ mod stl_loader;
 mod texture_image;
 
 pub use bounding_box::BoundingBox;
-pub use crease_normals::{IndexedSoup, MAX_GROUPS_PER_VERTEX, crease_normals};
 pub use error::{COORDINATE_LIMIT, Element, LoadError, LoadErrorKind};
-pub use gltf_accessor::MAX_VIEWLESS_ELEMENTS;
 pub use gltf_loader::{READ_EXTENSIONS, load_gltf_bytes};
 pub use loaded_model::{Model, Part};
 pub use material::{DEFAULT_DIFFUSE, ModelMaterial};
@@ -56,5 +54,5 @@ pub use model_file::{ModelFormat, ModelOptions, SUPPORTED_MODELS, load_model};
 pub use obj_loader::load_obj_bytes;
 pub use resolver::{Directory, Embedded, NoFiles, Resolver};
 pub use smooth_normals::{FALLBACK_NORMAL, smooth_normals};
-pub use stl_loader::{is_ascii_stl, is_binary_stl, load_stl_bytes};
+pub use stl_loader::load_stl_bytes;
 pub use texture_image::{MAX_TEXTURE_SIDE, TextureImage};

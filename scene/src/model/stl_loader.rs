@@ -29,12 +29,12 @@ const BINARY_HEADER: u64 = 84;
 const BINARY_TRIANGLE: u64 = 50;
 
 /// Whether `bytes` has exactly the length of a binary STL file for the triangle count in its header.
-pub fn is_binary_stl(bytes: &[u8]) -> bool {
+pub(crate) fn is_binary_stl(bytes: &[u8]) -> bool {
     binary_count(bytes).is_some_and(|count| BINARY_HEADER + BINARY_TRIANGLE * count == bytes.len() as u64)
 }
 
 /// Whether `bytes` starts as an ASCII STL file does: `solid`, then white space or the end.
-pub fn is_ascii_stl(bytes: &[u8]) -> bool {
+pub(crate) fn is_ascii_stl(bytes: &[u8]) -> bool {
     let text = bytes.trim_ascii_start();
     text.len() >= 5 && text[..5].eq_ignore_ascii_case(b"solid") && text.get(5).is_none_or(|c| c.is_ascii_whitespace())
 }

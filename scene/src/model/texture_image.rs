@@ -105,7 +105,7 @@ impl TextureImage {
     ///
     /// # Errors
     /// [`TextureError`] when the fields are inconsistent (only possible if they were changed by hand).
-    pub fn mip_levels(&self, content: MipContent) -> Result<&[u32], TextureError> {
+    pub(crate) fn mip_levels(&self, content: MipContent) -> Result<&[u32], TextureError> {
         let texture = self.texture()?;
         let levels = self.levels.get_or_init(|| {
             let mut levels = vec![0; mip_chain_texels(self.width, self.height)];

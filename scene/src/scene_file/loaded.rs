@@ -209,7 +209,7 @@ pub struct ObjectMaterial {
 
 impl ObjectMaterial {
     /// Whether the images are read through their levels of detail (which are then built for them).
-    pub fn reads_mip_levels(&self) -> bool {
+    pub(crate) fn reads_mip_levels(&self) -> bool {
         self.mip_filter != MipFilter::Off
     }
 

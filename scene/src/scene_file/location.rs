@@ -18,7 +18,7 @@ impl Location {
 
     /// The location of byte `offset` of `text`. An offset past the end is the end of the text; one inside a
     /// multi-byte character is that character.
-    pub fn of_offset(text: &str, offset: usize) -> Self {
+    pub(crate) fn of_offset(text: &str, offset: usize) -> Self {
         let mut offset = offset.min(text.len());
         while !text.is_char_boundary(offset) {
             offset -= 1;
@@ -29,7 +29,7 @@ impl Location {
     }
 
     /// The location of the start of `span`.
-    pub fn of_span(text: &str, span: &Range<usize>) -> Self {
+    pub(crate) fn of_span(text: &str, span: &Range<usize>) -> Self {
         Self::of_offset(text, span.start)
     }
 }

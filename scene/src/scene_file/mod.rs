@@ -65,7 +65,7 @@ pub use location::Location;
 pub use open::{OpenError, OpenedScene, is_scene_file, open};
 pub use schema::{LightSpace, NormalSpaceSpec, SceneSpec};
 pub use transform::object_transform;
-pub use validate::{BUILTIN_MODELS, BUILTIN_PREFIX};
+pub(crate) use validate::BUILTIN_PREFIX;
 
 use std::path::{Path, PathBuf};
 

@@ -13,7 +13,7 @@ use toml::Spanned;
 
 /// Three numbers: a point, a vector, an RGB colour (components from 0 to 1 unless a key says otherwise) or
 /// angles.
-pub type Triple = [f32; 3];
+pub(crate) type Triple = [f32; 3];
 
 /// The whole file: the top-level keys and the `[camera]`, `[[lights]]` and `[[objects]]` tables.
 #[derive(Clone, Debug, Deserialize)]
@@ -285,7 +285,7 @@ pub enum NumberOrTriple {
 
 impl NumberOrTriple {
     /// The three components.
-    pub fn triple(self) -> Triple {
+    pub(crate) fn triple(self) -> Triple {
         match self {
             Self::Number(v) => [v; 3],
             Self::Triple(t) => t,

@@ -13,9 +13,9 @@ use super::location::Location;
 use super::schema::{CameraSpec, LightSpec, LightType, MaterialSpec, NumberOrTriple, ObjectSpec, SceneSpec, Triple};
 
 /// The prefix of a mesh naming a model built into `rastty`.
-pub const BUILTIN_PREFIX: &str = "builtin:";
+pub(crate) const BUILTIN_PREFIX: &str = "builtin:";
 /// The built-in models, by the name after [`BUILTIN_PREFIX`].
-pub const BUILTIN_MODELS: [&str; 1] = ["spot"];
+pub(crate) const BUILTIN_MODELS: [&str; 1] = ["spot"];
 
 /// Reports problems at places of one scene file.
 pub(crate) struct Checker<'a> {
@@ -37,7 +37,7 @@ impl Checker<'_> {
     }
 
     /// The location of `span`.
-    pub fn locate(&self, span: &Range<usize>) -> Location {
+    pub(crate) fn locate(&self, span: &Range<usize>) -> Location {
         Location::of_span(self.text, span)
     }
 }

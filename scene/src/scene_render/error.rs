@@ -22,7 +22,7 @@ pub enum SceneRenderError {
     Camera(CameraError),
     /// A light's shadow map could not be set up (a light the core cannot place a camera at).
     Shadow {
-        /// The light, as [`super::LightName`] gives it.
+        /// The light, by its place in the file and what it is (`light 2 (point at [1.2, 2.2, 1])`).
         light: String,
         /// What the core said.
         error: ShadowError,

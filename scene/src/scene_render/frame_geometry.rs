@@ -16,12 +16,12 @@ use super::workers::Workers;
 
 /// A mesh is computed in one part below this many triangles a thread: the threads' hand-over costs more than it
 /// saves.
-pub const TRIANGLES_PER_PART: usize = 16_384;
+pub(crate) const TRIANGLES_PER_PART: usize = 16_384;
 
 /// The memory of one draw's geometry, kept from frame to frame: computing it again reuses it, so that a frame
 /// allocates nothing in proportion to the mesh once it has grown to it.
 #[derive(Debug, Default)]
-pub struct GeometryMemory {
+pub(crate) struct GeometryMemory {
     /// The screen vertex of each vertex of the mesh.
     vertices: Vec<ScreenVertex>,
     /// The entries of each part's bins; only as many as the last computation's parts are in use.
@@ -30,7 +30,7 @@ pub struct GeometryMemory {
 
 /// One draw's geometry for one frame, in a [`GeometryMemory`]: see the module docs.
 #[derive(Debug)]
-pub struct DrawGeometry<'a> {
+pub(crate) struct DrawGeometry<'a> {
     vertices: SharedScreenVertices<'a>,
     /// The bins of each part of the mesh, in its order.
     bins: Vec<BandBins<'a>>,
@@ -90,12 +90,12 @@ impl GeometryMemory {
 
 impl<'a> DrawGeometry<'a> {
     /// The geometry as a band's target borrows it for the draw ([`rastty_core::target::Target::for_draw`]).
-    pub fn lend(&self) -> FrameGeometry<'_> {
+    pub(crate) fn lend(&self) -> FrameGeometry<'_> {
         FrameGeometry { vertices: Some(self.vertices), bins: &self.bins }
     }
 
     /// Adds to `counts[b]` the triangles band `b`'s draw takes.
-    pub fn count_by_band(&self, counts: &mut [usize]) {
+    pub(crate) fn count_by_band(&self, counts: &mut [usize]) {
         self.bins.iter().for_each(|part| part.count_by_band(counts));
     }
 

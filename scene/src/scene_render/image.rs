@@ -88,7 +88,7 @@ pub fn parse_size(text: &str) -> Result<(u32, u32), String> {
 
 /// A frame drawn at `k x k` times its size and averaged, with what the drawing returned.
 #[derive(Clone, Debug)]
-pub struct SampledFrame<T> {
+pub(crate) struct SampledFrame<T> {
     /// `0x00RRGGBB` pixels of the final size, top row first.
     pub pixels: Vec<u32>,
     /// What `draw` returned.
@@ -104,7 +104,7 @@ pub struct SampledFrame<T> {
 /// # Errors
 /// `size_error` with a message naming the sizes when the supersampled frame is outside `1..=MAX_DIMENSION`;
 /// whatever `draw` returns.
-pub fn render_supersampled<T, E>(
+pub(crate) fn render_supersampled<T, E>(
     (width, height): (u32, u32),
     supersample: u32,
     background: Vec3,

@@ -38,7 +38,7 @@ impl MapRole {
 
 /// Interleaved buffers already made, texels and levels of detail, by the addresses of their images in order:
 /// parts (of any object) with the same maps share them.
-pub type InterleavedBuffers = HashMap<Vec<usize>, Interleaved>;
+pub(crate) type InterleavedBuffers = HashMap<Vec<usize>, Interleaved>;
 
 /// The texels of maps of one size, interleaved, and their levels of detail, interleaved likewise.
 #[derive(Clone, Debug)]

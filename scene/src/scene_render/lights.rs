@@ -67,7 +67,7 @@ pub fn core_light(light: &SceneLight, view: &Mat4, eye: Vec3, space: ShadingSpac
 /// Names a light by its place in the file and what it is: `light 2 (point at [1.2, 2.2, 1])`,
 /// `light 1 (directional, travelling [-0.49, -0.81, -0.37])`.
 #[derive(Clone, Copy, Debug)]
-pub struct LightName<'a> {
+pub(crate) struct LightName<'a> {
     /// From 1.
     pub number: usize,
     /// The light.
@@ -89,7 +89,7 @@ impl fmt::Display for LightName<'_> {
 
 /// A number in messages: at most three decimals, without trailing zeros (`1.2`, `0.737`, `-1`).
 #[derive(Clone, Copy, Debug)]
-pub struct ShortNumber(pub f32);
+pub(crate) struct ShortNumber(pub f32);
 
 impl fmt::Display for ShortNumber {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -101,7 +101,7 @@ impl fmt::Display for ShortNumber {
 
 /// A vector in messages: `[x, y, z]`, each a [`ShortNumber`].
 #[derive(Clone, Copy, Debug)]
-pub struct ShortTriple(pub Vec3);
+pub(crate) struct ShortTriple(pub Vec3);
 
 impl fmt::Display for ShortTriple {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {

@@ -93,11 +93,9 @@ pub use bounds::scene_bounds;
 pub use camera::{PlaneSource, PlannedCamera};
 pub use camera_options::CameraOptions;
 pub use error::SceneRenderError;
-pub use image::{
-    SampledFrame, SceneImage, parse_size, render_scene_image, render_scene_image_with, render_supersampled,
-};
-pub use interleaved::{InterleavedBuffers, MapRole, PartMaps};
-pub use lights::{DroppedLight, LightName, PlannedLight, ShortNumber, ShortTriple, core_light};
+pub use image::{SceneImage, parse_size, render_scene_image, render_scene_image_with};
+pub use interleaved::PartMaps;
+pub use lights::{DroppedLight, PlannedLight, core_light};
 pub use material::{part_material, part_state};
 pub use orbit::Orbit;
 pub use plan::{
@@ -105,7 +103,7 @@ pub use plan::{
     shadow_map_size,
 };
 pub use prepared::PreparedScene;
-pub use render::{BAND_PIXELS, BANDS_PER_THREAD, FrameReport, SceneRenderer, ShadowPassReport, WIREFRAME};
+pub use render::{BAND_PIXELS, BANDS_PER_THREAD, FrameReport, SceneRenderer, ShadowPassReport};
 pub use shading_mode::ShadingMode;
 pub use toggles::{EffectToggles, PlanOptions, SceneEffect};
 pub use written_color::lit_color;

@@ -98,7 +98,7 @@ impl Orbit {
 
     /// Puts the eye at `yaw` and `pitch` radians (see [`Orbit`]) at its distance from the target; the pitch stops
     /// short of straight above or below.
-    pub fn set_angles(&mut self, yaw: f32, pitch: f32) {
+    pub(crate) fn set_angles(&mut self, yaw: f32, pitch: f32) {
         let (front, right) = self.frame();
         self.place(front * float::cos(yaw) - right * float::sin(yaw), pitch);
     }
@@ -118,7 +118,7 @@ impl Orbit {
 
     /// Moves the eye to `distance` from the target along the view direction, and makes that the distance zooming
     /// is limited around (`--distance`).
-    pub fn set_distance(&mut self, distance: f32) {
+    pub(crate) fn set_distance(&mut self, distance: f32) {
         let c = &mut self.camera;
         let offset = c.position - c.target;
         let before = offset.length();

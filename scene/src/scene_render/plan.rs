@@ -267,7 +267,7 @@ impl ScenePlan {
     }
 
     /// The name of a planned light in messages.
-    pub fn light_name(&self, light: &PlannedLight) -> String {
+    pub(crate) fn light_name(&self, light: &PlannedLight) -> String {
         LightName { number: light.number, light: &light.source }.to_string()
     }
 }

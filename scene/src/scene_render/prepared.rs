@@ -114,7 +114,7 @@ impl PreparedScene {
 
     /// `object N (FILE)`: the object's place among the file's `[[objects]]` (from 1) and its mesh's file name,
     /// raw (escape before printing).
-    pub fn object_label(&self, object: usize) -> &str {
+    pub(crate) fn object_label(&self, object: usize) -> &str {
         self.labels.get(object).map_or("", String::as_str)
     }
 

@@ -24,7 +24,7 @@ use super::{PreparedScene, ScenePlan, SceneRenderError};
 use crate::scene_file::SceneObject;
 
 /// Wireframe lines (`--wireframe`, the viewer's `x` key): a pale cyan drawn just in front of the surface.
-pub const WIREFRAME: LineStyle = LineStyle { color: Vec3::new(0.55, 0.9, 1.0), depth_bias: 2e-4 };
+pub(crate) const WIREFRAME: LineStyle = LineStyle { color: Vec3::new(0.55, 0.9, 1.0), depth_bias: 2e-4 };
 
 /// What one shadow pass did.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -10,7 +10,7 @@ use rayon_core::{ThreadPool, ThreadPoolBuilder};
 /// A pass's jobs are taken in turn: each thread takes the next job not yet taken until none is left, so a long job
 /// does not hold back the short ones queued after it.
 #[derive(Debug)]
-pub struct Workers {
+pub(crate) struct Workers {
     /// The threads beside the caller; `None` for one thread (or when the system would not start more).
     pool: Option<ThreadPool>,
     threads: usize,
