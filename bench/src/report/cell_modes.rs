@@ -10,7 +10,7 @@ use std::io::{self, Write};
 use std::time::Duration;
 
 use super::median;
-use super::terminal::{ReportError, Turntable, TurntableFrame, mean};
+use super::turntable::{ReportError, Turntable, TurntableFrame, mean};
 use rastty::graphics::GraphicsProtocol;
 use rastty::graphics::frame_palette::Dither;
 use rastty::screen::{CellMode, ColorMode, Encoder};
@@ -180,7 +180,7 @@ pub fn write_table(out: &mut dyn Write, rows: &[ModeRow], frames: usize) -> io::
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::report::terminal::builtin_scene;
+    use crate::report::turntable::builtin_scene;
 
     #[test]
     fn every_mode_is_measured_at_its_own_pixel_size() {
@@ -195,7 +195,7 @@ mod tests {
                     protocol,
                     SIZE,
                     None,
-                    crate::report::terminal::CELL_ASPECT,
+                    crate::report::turntable::CELL_ASPECT,
                     rastty::graphics::MAX_IMAGE_PIXELS,
                 ),
             };

@@ -17,6 +17,7 @@ pub mod frames;
 pub mod moving_frames;
 pub mod peers;
 pub mod terminal;
+pub mod turntable;
 
 use std::time::Duration;
 

@@ -10,7 +10,7 @@
 
 use std::io::Write;
 
-use super::terminal::{ReportError, Turntable};
+use super::turntable::{ReportError, Turntable};
 use rastty::screen::TOLERANCES;
 use rastty::screen::tolerance::color_distance;
 use rastty::screen::{CellGrid, CellMode, ColorMode, Encoder, Tolerance};
@@ -151,7 +151,7 @@ pub fn write_table(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::report::terminal::builtin_scene;
+    use crate::report::turntable::builtin_scene;
 
     /// Exact is exact and costs the most; every error stays within its tolerance; more tolerance never costs
     /// more bytes on these frames.

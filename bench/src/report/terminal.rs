@@ -1,8 +1,8 @@
 //! `rastty-bench terminal`: what the viewer's frames cost, for a turntable of the built-in model.
 //!
 //! For each terminal size and colour mode, the built-in model is turned once around (the viewer's camera for a
-//! model, [`FramedCamera::DEFAULT`], turned with [`Orbit::rotate`] in equal steps about the scene's vertical axis)
-//! and every frame goes through the viewer's pipeline: a [`ScenePlan`] for the terminal's physical aspect and a
+//! model, [`FramedCamera::DEFAULT`], turned with [`Orbit::rotate`](rastty_scene::scene_render::Orbit::rotate) in equal steps about the scene's vertical axis)
+//! and every frame goes through the viewer's pipeline: a [`ScenePlan`](rastty_scene::scene_render::ScenePlan) for the terminal's physical aspect and a
 //! [`SceneRenderer`] (as the viewer keeps one) into a pixel buffer of the terminal's pixel size, half-block cells
 //! ([`CellMode::HalfBlock`]), then the [`Encoder`] (a delta against the frame before) and, for comparison,
 //! [`naive_full_frame`].
@@ -11,19 +11,15 @@
 //! column of its own and left out of every mean and median: those are over the `frames` frames after it, which
 //! together make the full turn (the last one shows the model as the first did).
 
-use std::fmt;
-use std::io::{self, Write};
+use std::io::Write;
 use std::time::{Duration, Instant};
 
-use rastty_core::target::{Rgb888, Target};
-
 use super::median;
-use rastty::graphics::{FrameImage, GraphicsProtocol, Passthrough};
-use rastty::graphics::{MAX_IMAGE_PIXELS, image_size};
-use rastty::screen::{CellGrid, CellMode, ColorMode, Encoder, PixelFrame, naive_full_frame};
+use super::turntable::{CELL_ASPECT, ReportError, Turntable, TurntableFrame, builtin_scene, mean};
+use rastty::screen::{CellMode, ColorMode, Encoder, naive_full_frame};
 use rastty_scene::builtin::BUILTIN_NAME;
-use rastty_scene::scene_file::{FramedCamera, OpenError, SceneProjection, open};
-use rastty_scene::scene_render::{Orbit, PlanOptions, PreparedScene, ScenePlan, SceneRenderError, SceneRenderer};
+use rastty_scene::scene_file::{FramedCamera, SceneProjection};
+use rastty_scene::scene_render::{PreparedScene, SceneRenderer};
 
 /// Terminal sizes measured, in cells (columns, rows).
 pub const SIZES: [(u16, u16); 3] = [(80, 24), (120, 40), (200, 60)];
@@ -33,8 +29,6 @@ pub const COLOR_MODES: [ColorMode; 2] = [ColorMode::TrueColor, ColorMode::Ansi25
 pub const DEFAULT_FRAMES: usize = 120;
 /// Frames per turn with `--quick`.
 pub const QUICK_FRAMES: usize = 12;
-/// Cell height over cell width (the viewer's default).
-pub const CELL_ASPECT: f32 = 2.0;
 /// The goal for bytes: the mean delta frame at most this share of the mean naive frame.
 pub const GOAL_DELTA_SHARE: f64 = 0.35;
 /// The goal for encoding: the median encode time under this...
@@ -76,38 +70,6 @@ impl TerminalReport {
     }
 }
 
-/// Why a report could not be made.
-#[derive(Debug)]
-pub enum ReportError {
-    /// The built-in model did not load.
-    Load(OpenError),
-    /// A frame could not be planned or drawn.
-    Render(SceneRenderError),
-    /// The frame size is not one the renderer takes, or the frame count is zero.
-    Setup(String),
-    /// The report could not be written.
-    Write(io::Error),
-}
-
-impl fmt::Display for ReportError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Self::Load(e) => e.fmt(f),
-            Self::Render(e) => e.fmt(f),
-            Self::Setup(e) => f.write_str(e),
-            Self::Write(e) => write!(f, "cannot write the report: {e}"),
-        }
-    }
-}
-
-impl std::error::Error for ReportError {}
-
-impl From<io::Error> for ReportError {
-    fn from(e: io::Error) -> Self {
-        Self::Write(e)
-    }
-}
-
 /// The figures of one terminal size and colour mode.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Measurement {
@@ -123,7 +85,7 @@ pub struct Measurement {
     pub delta_bytes: Vec<usize>,
     /// [`naive_full_frame`] bytes of the same frames.
     pub naive_bytes: Vec<usize>,
-    /// Render time (the [`ScenePlan`] and [`SceneRenderer::render`], clearing included) of the same frames.
+    /// Render time (the [`ScenePlan`](rastty_scene::scene_render::ScenePlan) and [`SceneRenderer::render`], clearing included) of the same frames.
     pub render_times: Vec<Duration>,
     /// Encode time ([`Encoder::encode`]) of the same frames.
     pub encode_times: Vec<Duration>,
@@ -169,140 +131,6 @@ impl Measurement {
     /// Whether the median encode time is under [`GOAL_ENCODE_TIME`]; `None` except at [`GOAL_ENCODE_SIZE`].
     pub fn meets_encode_goal(&self) -> Option<bool> {
         ((self.cols, self.rows) == GOAL_ENCODE_SIZE).then(|| self.median_encode() < GOAL_ENCODE_TIME)
-    }
-}
-
-/// The mean of `values` (0 for none).
-pub(super) fn mean(values: &[usize]) -> f64 {
-    if values.is_empty() { 0.0 } else { values.iter().sum::<usize>() as f64 / values.len() as f64 }
-}
-
-/// One turntable frame: its cells, and what making them took.
-pub(super) struct TurntableFrame {
-    /// The cells.
-    pub grid: CellGrid,
-    /// The [`ScenePlan`] and [`SceneRenderer::render`], clearing included.
-    pub render: Duration,
-    /// Pixels to cells ([`CellMode::to_cells`]; zero for an image frame).
-    pub cells: Duration,
-    /// The picture as an image, when the turntable sends images.
-    pub image: Option<FrameImage>,
-}
-
-/// The turntable frames of one terminal size, cell mode and colour mode, as the viewer would make them.
-pub(super) struct Turntable<'a> {
-    scene: &'a PreparedScene,
-    orbit: Orbit,
-    options: PlanOptions,
-    /// Kept from frame to frame, as the viewer keeps its renderer.
-    renderer: SceneRenderer,
-    /// Radians turned between two frames.
-    step: f32,
-    cell_mode: CellMode,
-    colors: ColorMode,
-    /// Cells, or the protocol of the images it makes.
-    graphics: GraphicsProtocol,
-    /// The terminal's size in cells.
-    size: (u16, u16),
-    width: usize,
-    height: usize,
-    aspect: f32,
-    pixels: Vec<u32>,
-    depth: Vec<f32>,
-}
-
-impl<'a> Turntable<'a> {
-    /// `frames` frames per turn at `cols` x `rows` cells.
-    pub(super) fn new(
-        scene: &'a PreparedScene,
-        size: (u16, u16),
-        cell_mode: CellMode,
-        colors: ColorMode,
-        frames: usize,
-    ) -> Self {
-        Self::with_step(scene, size, cell_mode, colors, std::f32::consts::TAU / frames.max(1) as f32)
-    }
-
-    /// Frames `step` radians apart at `cols` x `rows` cells.
-    pub(super) fn with_step(
-        scene: &'a PreparedScene,
-        (cols, rows): (u16, u16),
-        cell_mode: CellMode,
-        colors: ColorMode,
-        step: f32,
-    ) -> Self {
-        let (width, height) = cell_mode.pixel_size(usize::from(cols), usize::from(rows));
-        Self {
-            scene,
-            orbit: Orbit::new(scene.camera()),
-            options: PlanOptions::default(),
-            renderer: SceneRenderer::new(),
-            step,
-            cell_mode,
-            colors,
-            graphics: GraphicsProtocol::Cells,
-            size: (cols, rows),
-            width,
-            height,
-            // As in the viewer: the physical aspect, a cell being CELL_ASPECT times taller than wide.
-            aspect: f32::from(cols) / (f32::from(rows) * CELL_ASPECT),
-            pixels: vec![0; width * height],
-            depth: vec![0.0; width * height],
-        }
-    }
-
-    /// `frames` frames per turn at `cols` x `rows` cells as images in `protocol`, sized as the viewer sizes them
-    /// for a terminal that does not give its size in pixels ([`image_size`]).
-    pub(super) fn images(
-        scene: &'a PreparedScene,
-        size: (u16, u16),
-        protocol: GraphicsProtocol,
-        frames: usize,
-    ) -> Self {
-        let (width, height) = image_size(protocol, size, None, CELL_ASPECT, MAX_IMAGE_PIXELS);
-        let mut turntable = Self::new(scene, size, CellMode::HalfBlock, ColorMode::TrueColor, frames);
-        turntable.graphics = protocol;
-        (turntable.width, turntable.height, turntable.aspect) = (width, height, width as f32 / height as f32);
-        (turntable.pixels, turntable.depth) = (vec![0; width * height], vec![0.0; width * height]);
-        turntable
-    }
-
-    /// The pixel size of the frames.
-    pub(super) fn pixel_size(&self) -> (usize, usize) {
-        (self.width, self.height)
-    }
-
-    /// Renders the current view into cells, then turns the camera one step.
-    pub(super) fn next_frame(&mut self) -> Result<TurntableFrame, ReportError> {
-        let too_big = |e: rastty_core::target::TargetError| ReportError::Setup(e.to_string());
-        let mut target =
-            Target::new(Rgb888(&mut self.pixels), &mut self.depth[..], self.width as u32, self.height as u32)
-                .map_err(too_big)?;
-        let size = (self.width as u32, self.height as u32);
-        let start = Instant::now();
-        let plan = ScenePlan::with_aspect(self.scene, &self.orbit.camera, size, self.aspect, &self.options)
-            .map_err(ReportError::Render)?;
-        self.renderer.render(self.scene, &plan, &mut target).map_err(ReportError::Render)?;
-        let render = start.elapsed();
-        self.orbit.rotate(self.step, 0.0);
-        if self.graphics != GraphicsProtocol::Cells {
-            let (columns, rows) = self.size;
-            let image = FrameImage {
-                pixels: self.pixels.clone(),
-                width: self.width,
-                height: self.height,
-                columns,
-                rows: self.graphics.image_rows(rows),
-                passthrough: Passthrough::Direct,
-            };
-            return Ok(TurntableFrame { grid: CellGrid::default(), render, cells: Duration::ZERO, image: Some(image) });
-        }
-        let background = rastty_core::color::pack_rgb888(plan.background);
-        let frame = PixelFrame::new(&self.pixels, self.width, self.height);
-        let start = Instant::now();
-        let grid = self.cell_mode.to_cells(frame, self.colors, background);
-        let cells = start.elapsed();
-        Ok(TurntableFrame { grid, render, cells, image: None })
     }
 }
 
@@ -414,15 +242,6 @@ pub fn table_row(m: &Measurement) -> String {
         yes_no(m.meets_byte_goal()),
         m.meets_encode_goal().map_or("–", yes_no),
     )
-}
-
-/// The built-in model as the viewer shows it without a scene file ([`open`]`(None)`).
-///
-/// # Errors
-/// [`ReportError::Load`], [`ReportError::Render`] (a model without a finite vertex).
-pub fn builtin_scene() -> Result<PreparedScene, ReportError> {
-    let opened = open(None, &rastty_scene::model::ModelOptions::default()).map_err(ReportError::Load)?;
-    PreparedScene::new(opened.data).map_err(ReportError::Render)
 }
 
 /// Measures everything `report` asks for and writes the Markdown report to `out`, a row as soon as it is

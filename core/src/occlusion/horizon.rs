@@ -1,8 +1,8 @@
 //! The horizon search at one pixel: how far the surfaces around it rise above its tangent plane.
 
 use super::around::Around;
+use super::cell::Cell;
 use super::frame::{DepthFrame, Window};
-use super::grid::Cell;
 use super::{AmbientOcclusion, max_inv_w, max_reach};
 use super::{F4, LANES};
 use crate::math::{Mat4, Vec3, float};

@@ -19,6 +19,7 @@
 //! allocated: the cells of a strip of columns live in a few kilobytes of stack.
 
 mod around;
+mod cell;
 mod error;
 mod frame;
 mod grid;

@@ -22,28 +22,7 @@
 
 use super::fragments::Fragments;
 use super::slopes::{FractionSteps, Slopes};
-use super::{Column, Fragment, Varyings};
-
-/// True where the target has SIMD registers (x86-64, AArch64, WebAssembly with `simd128`): lane loops then run
-/// over every lane, a constant count the compiler widens to SIMD instructions.
-const SIMD: bool = cfg!(any(target_feature = "sse2", target_feature = "neon", target_feature = "simd128"));
-
-/// The most fragments a [`FragmentBatch`] holds: 32 where the target has SIMD registers, 1 elsewhere.
-///
-/// A target without SIMD (a Cortex-M4) computes one lane at a time, so a larger batch saves no instruction per
-/// fragment and costs stack and code: on the firmware's frame (`firmware/measure.sh`, 2026-11-26), batches of
-/// 8 took 40,652 bytes of the core's code and 91.7 million instructions, batches of 1 25,084 bytes and 88.6
-/// million: the lane loops compile to the code of one fragment.
-pub const BATCH_SIZE: usize = if SIMD { 32 } else { 1 };
-
-/// The lanes a lane-wise loop over a batch of `len` fragments runs over: all [`BATCH_SIZE`] where the target has
-/// SIMD registers (a constant count, which the compiler widens; the lanes past `len` hold finite values nobody
-/// reads), the first `len` elsewhere. Either way lane `i < len` computes the same value.
-#[must_use]
-#[inline(always)]
-pub const fn lanes(len: usize) -> usize {
-    if SIMD || len > BATCH_SIZE { BATCH_SIZE } else { len }
-}
+use super::{BATCH_SIZE, Column, Fragment, Varyings};
 
 /// The varyings and faces of the triangles whose fragments a batch holds, slot by slot as
 /// [`Fragments`] names them, and the fragments' interpolated varyings (`V` and `F`: the shader's

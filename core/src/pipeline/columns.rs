@@ -1,20 +1,41 @@
-//! Per-fragment vectors of a batch stored as three columns (all x, all y, all z), and the lane-wise operations
-//! the fragment stages share.
+//! A batch's lanes: how many fragments a batch holds ([`BATCH_SIZE`]), which lanes a lane-wise loop runs over
+//! ([`lanes`]), one value per fragment ([`Column`]), per-fragment vectors as two or three columns (all x, all y,
+//! all z), and the lane-wise operations the fragment stages share.
 //!
 //! The arithmetic loops run over [`lanes`]`(len)` lanes: on a target with SIMD registers every lane of a batch, a
 //! constant count with no branch, so the compiler turns them into SIMD instructions (SSE or AVX on x86-64, four or
-//! eight lanes at a time; lanes past a batch's length hold values nobody reads); elsewhere only the filled ones. Normalising needs no square root ([`float::inv_sqrt`] is plain arithmetic), so it
-//! widens too; the one square root left, a length, runs in a scalar pass of its own: `libm`'s square root is one
-//! instruction the compiler cannot widen, and inside a loop it would keep the rest of the loop scalar too. Every
-//! lane computes exactly what the scalar [`Vec3`] operations compute, in the same order, so the pixels do not
-//! change with the layout.
+//! eight lanes at a time; lanes past a batch's length hold values nobody reads); elsewhere only the filled ones.
+//! Normalising needs no square root ([`float::inv_sqrt`] is plain arithmetic), so it widens too; the one square
+//! root left, a length, runs in a scalar pass of its own: `libm`'s square root is one instruction the compiler
+//! cannot widen, and inside a loop it would keep the rest of the loop scalar too. Every lane computes exactly what
+//! the scalar [`Vec3`] operations compute, in the same order, so the pixels do not change with the layout.
 
 // Lane loops index every column they touch by the same lane, which iterators would hide.
 #![allow(clippy::needless_range_loop)]
 
-use super::{BATCH_SIZE, lanes};
 use crate::math::float::{self, Exponent};
 use crate::math::{Lanes, Vec2, Vec3};
+
+/// True where the target has SIMD registers (x86-64, AArch64, WebAssembly with `simd128`): lane loops then run
+/// over every lane, a constant count the compiler widens to SIMD instructions.
+const SIMD: bool = cfg!(any(target_feature = "sse2", target_feature = "neon", target_feature = "simd128"));
+
+/// The most fragments a [`FragmentBatch`](super::FragmentBatch) holds: 32 where the target has SIMD registers, 1 elsewhere.
+///
+/// A target without SIMD (a Cortex-M4) computes one lane at a time, so a larger batch saves no instruction per
+/// fragment and costs stack and code: on the firmware's frame (`firmware/measure.sh`, 2026-11-26), batches of
+/// 8 took 40,652 bytes of the core's code and 91.7 million instructions, batches of 1 25,084 bytes and 88.6
+/// million: the lane loops compile to the code of one fragment.
+pub const BATCH_SIZE: usize = if SIMD { 32 } else { 1 };
+
+/// The lanes a lane-wise loop over a batch of `len` fragments runs over: all [`BATCH_SIZE`] where the target has
+/// SIMD registers (a constant count, which the compiler widens; the lanes past `len` hold finite values nobody
+/// reads), the first `len` elsewhere. Either way lane `i < len` computes the same value.
+#[must_use]
+#[inline(always)]
+pub const fn lanes(len: usize) -> usize {
+    if SIMD || len > BATCH_SIZE { BATCH_SIZE } else { len }
+}
 
 /// One `f32` per fragment of a batch: lanes past the batch's length hold finite values nobody should read.
 pub type Column = Lanes<f32, BATCH_SIZE>;

@@ -6,7 +6,8 @@
 //! [`Shader::shade_batch`] (and, in a draw that discards fragments, [`Shader::kept_batch`]), and writes the
 //! colours with [`write_batch`], which is compiled once for every shader.
 
-use super::batch::{BATCH_SIZE, Triangles};
+use super::BATCH_SIZE;
+use super::batch::Triangles;
 use super::fragments::Fragments;
 use super::{Shader, Varyings};
 use crate::math::Vec3;

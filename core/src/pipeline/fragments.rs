@@ -11,8 +11,7 @@
 //! a fragment in the batch, so there are never more triangles than fragments; a triangle still being rasterized
 //! when its batch is shaded goes on in slot 0 of the emptied batch.
 
-use super::batch::{BATCH_SIZE, lanes};
-use super::columns::Column;
+use super::columns::{BATCH_SIZE, Column, lanes};
 use super::slopes::FractionSteps;
 use crate::target::SAMPLE_COUNT;
 

@@ -58,11 +58,11 @@ mod stats;
 mod varyings;
 mod vertex_cache;
 
-pub use batch::{BATCH_SIZE, FragmentBatch, OneFragment, lanes};
+pub use batch::{FragmentBatch, OneFragment};
 pub use bins::{BIN_BLOCK, BandBins, Bands, BinnedTriangle, MAX_BINNED_BANDS, MAX_PART_TRIANGLES};
 pub(crate) use clip::ClipVolume;
 pub use clip::GUARD_BAND;
-pub use columns::Column;
+pub use columns::{BATCH_SIZE, Column, lanes};
 pub use draw::{DrawError, draw};
 pub use line::{LineStyle, draw_wireframe};
 pub use screen_vertex::ScreenVertex;

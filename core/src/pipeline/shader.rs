@@ -1,6 +1,7 @@
 //! The programmable stages: what a draw computes per vertex, per triangle and per pixel.
 
-use super::batch::{BATCH_SIZE, FragmentBatch};
+use super::BATCH_SIZE;
+use super::batch::FragmentBatch;
 use super::{Slopes, Varyings};
 use crate::math::{Mat4, Vec3, Vec4};
 use crate::mesh::{Attributes, Mesh};

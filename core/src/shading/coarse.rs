@@ -1,7 +1,8 @@
 //! Unlit, flat and Gouraud shading over a batch: the albedo (material or vertex colours, times the diffuse map)
 //! under light computed once per triangle or per vertex, plus the highlight and the glow map.
 
-use super::maps::{Coordinates, MapReader, Texels, modulated, stored};
+use super::maps::{MapReader, Texels, modulated, stored};
+use super::scratch::Coordinates;
 use super::{Material, SpecularSource, Variant};
 use crate::color::ShadingSpace;
 use crate::math::Vec3;

@@ -2,47 +2,12 @@
 
 use core::marker::PhantomData;
 
-use super::scratch::Scratch;
+use super::scratch::{Coordinates, Scratch};
 use crate::color::{ShadingSpace, encode_srgb, unpack_rgb888};
 use crate::math::{Vec2, Vec3};
-use crate::pipeline::columns::{Column2, Column3};
+use crate::pipeline::columns::Column3;
 use crate::pipeline::{BATCH_SIZE, Slopes, lanes};
 use crate::texture::{Filter, Footprint, MipChain, MipFilter, Texture, Wrap, footprint, light_between};
-
-/// A batch's texture coordinates and, in a draw that mipmaps, their screen-space slopes.
-#[derive(Clone, Copy)]
-pub(crate) struct Coordinates {
-    pub uv: Column2,
-    /// `None` in a draw that does not mipmap (so that its batches do not clear four more columns).
-    pub slopes: Option<Slopes<Column2>>,
-}
-
-impl Coordinates {
-    /// Every lane at `(0, 0)`, no slopes.
-    pub const ZERO: Self = Self { uv: Column2::ZERO, slopes: None };
-
-    /// The coordinates `uv(i)` of the lanes of a batch of `len` and, when `slopes` is set, their slopes
-    /// `slopes_of(i)`.
-    #[inline(always)]
-    pub fn gather(
-        len: usize,
-        uv: impl Fn(usize) -> Vec2,
-        slopes: bool,
-        slopes_of: impl Fn(usize) -> Slopes<Vec2>,
-    ) -> Self {
-        let uv = Column2::gather(len, uv);
-        if !slopes {
-            return Self { uv, slopes: None };
-        }
-        let mut columns = Slopes { dx: Column2::ZERO, dy: Column2::ZERO };
-        for i in 0..len.min(BATCH_SIZE) {
-            let s = slopes_of(i);
-            (columns.dx.x[i], columns.dx.y[i]) = (s.dx.x, s.dx.y);
-            (columns.dy.x[i], columns.dy.y[i]) = (s.dy.x, s.dy.y);
-        }
-        Self { uv, slopes: Some(columns) }
-    }
-}
 
 /// A map's width, height and number of levels read.
 type MapShape = (u32, u32, usize);
@@ -318,7 +283,7 @@ pub(crate) fn stored(colors: &mut [Vec3], space: ShadingSpace) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::pipeline::columns::Column;
+    use crate::pipeline::columns::{Column, Column2};
     use crate::texture::{Anisotropy, Bilinear, Clamp, MipContent, Nearest, Repeat, build_mip_levels};
 
     /// A reader gives each map's own samples, as stored and in light, when maps of different sizes take turns

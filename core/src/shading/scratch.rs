@@ -1,8 +1,9 @@
 //! The working set of one batch of fragments, as a structure of arrays: each stage reads and writes whole
 //! columns.
 
-use super::maps::Coordinates;
-use crate::pipeline::columns::{Column, Column3};
+use crate::math::Vec2;
+use crate::pipeline::columns::{Column, Column2, Column3};
+use crate::pipeline::{BATCH_SIZE, Slopes};
 
 /// Per-fragment values of one batch. Only the first `len` lanes of each column are meaningful, and a column is
 /// filled only by a draw that uses it; the others hold finite values nobody reads (lane-wise loops run over every
@@ -62,5 +63,40 @@ impl Scratch {
             specular_color: v3,
             emission: v3,
         }
+    }
+}
+
+/// A batch's texture coordinates and, in a draw that mipmaps, their screen-space slopes.
+#[derive(Clone, Copy)]
+pub(crate) struct Coordinates {
+    pub uv: Column2,
+    /// `None` in a draw that does not mipmap (so that its batches do not clear four more columns).
+    pub slopes: Option<Slopes<Column2>>,
+}
+
+impl Coordinates {
+    /// Every lane at `(0, 0)`, no slopes.
+    pub const ZERO: Self = Self { uv: Column2::ZERO, slopes: None };
+
+    /// The coordinates `uv(i)` of the lanes of a batch of `len` and, when `slopes` is set, their slopes
+    /// `slopes_of(i)`.
+    #[inline(always)]
+    pub fn gather(
+        len: usize,
+        uv: impl Fn(usize) -> Vec2,
+        slopes: bool,
+        slopes_of: impl Fn(usize) -> Slopes<Vec2>,
+    ) -> Self {
+        let uv = Column2::gather(len, uv);
+        if !slopes {
+            return Self { uv, slopes: None };
+        }
+        let mut columns = Slopes { dx: Column2::ZERO, dy: Column2::ZERO };
+        for i in 0..len.min(BATCH_SIZE) {
+            let s = slopes_of(i);
+            (columns.dx.x[i], columns.dx.y[i]) = (s.dx.x, s.dx.y);
+            (columns.dy.x[i], columns.dy.y[i]) = (s.dy.x, s.dy.y);
+        }
+        Self { uv, slopes: Some(columns) }
     }
 }

@@ -4,8 +4,7 @@ use core::marker::PhantomData;
 
 use super::capabilities::{self, has};
 use super::light_terms::{face_light, vertex_light};
-use super::maps::Coordinates;
-use super::scratch::Scratch;
+use super::scratch::{Coordinates, Scratch};
 use super::surface::Surface;
 use super::varyings::{Absent, Slot, SurfaceVaryings};
 use super::{Cutout, Lighting, Material, ShadingError, Variant, coarse, views};

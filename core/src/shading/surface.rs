@@ -8,9 +8,9 @@
 
 use super::capabilities::{self, has};
 use super::coarse;
-use super::maps::{Coordinates, MapReader, Texels, albedo, glow, occluded_ambient, specular_color, stored};
+use super::maps::{MapReader, Texels, albedo, glow, occluded_ambient, specular_color, stored};
 use super::normals::{self, object_map, tangent_map};
-use super::scratch::Scratch;
+use super::scratch::{Coordinates, Scratch};
 use super::{Cutout, Layout, Lighting, Material, NormalSource, SpecularSource, Variant, lighting};
 use crate::color::{ShadingSpace, texel_alpha};
 use crate::math::Vec3;

@@ -3,32 +3,15 @@
 //! The ramp spans the picture's own lightness ([`PictureLightness`]): its darkest pixel is the sparsest visible
 //! character, its lightest the densest, and the background is blank. The ramp assumes a dark terminal background.
 
-use std::sync::OnceLock;
-
 use super::cell::Cell;
 use super::cell_grid::CellGrid;
 use super::color::Color;
 use super::color_mode::ColorMode;
-use super::oklab::srgb_to_linear;
 use super::picture_lightness::PictureLightness;
 use super::pixel_frame::PixelFrame;
 
 /// The characters of the lightness ramp, darkest first; the first, a space, is kept for the background.
 pub const ASCII_RAMP: &[u8; 10] = b" .:-=+*#%@";
-
-/// Linear-light value of every 8-bit sRGB channel value.
-fn linear_table() -> &'static [f32; 256] {
-    static TABLE: OnceLock<[f32; 256]> = OnceLock::new();
-    TABLE.get_or_init(|| std::array::from_fn(|v| srgb_to_linear(v as f32 / 255.0)))
-}
-
-/// Relative luminance Y (linear light, Rec. 709 / sRGB primaries) of a pixel `0x00RRGGBB`, in `0.0..=1.0`.
-#[inline]
-pub fn relative_luminance(pixel: u32) -> f32 {
-    let [_, r, g, b] = pixel.to_be_bytes();
-    let linear = linear_table();
-    0.2126 * linear[usize::from(r)] + 0.7152 * linear[usize::from(g)] + 0.0722 * linear[usize::from(b)]
-}
 
 /// The ramp character of a picture pixel at `level` (`0.0..=1.0` of the picture's lightness range): one of the
 /// nine visible steps, each an equal ninth of the range.

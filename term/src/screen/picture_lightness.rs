@@ -4,8 +4,24 @@
 //! lightest to 1, in perceived lightness (`cbrt(Y)`, which is Oklab's L for greys), so the characters span what
 //! the picture holds: a dim model uses the whole ramp, and the background stays blank.
 
-use super::ascii_ramp::relative_luminance;
+use std::sync::OnceLock;
+
+use super::oklab::srgb_to_linear;
 use super::pixel_frame::PixelFrame;
+
+/// Linear-light value of every 8-bit sRGB channel value.
+fn linear_table() -> &'static [f32; 256] {
+    static TABLE: OnceLock<[f32; 256]> = OnceLock::new();
+    TABLE.get_or_init(|| std::array::from_fn(|v| srgb_to_linear(v as f32 / 255.0)))
+}
+
+/// Relative luminance Y (linear light, Rec. 709 / sRGB primaries) of a pixel `0x00RRGGBB`, in `0.0..=1.0`.
+#[inline]
+pub fn relative_luminance(pixel: u32) -> f32 {
+    let [_, r, g, b] = pixel.to_be_bytes();
+    let linear = linear_table();
+    0.2126 * linear[usize::from(r)] + 0.7152 * linear[usize::from(g)] + 0.0722 * linear[usize::from(b)]
+}
 
 /// The darkest and lightest perceived lightness of a picture's pixels.
 #[derive(Clone, Copy, Debug, PartialEq)]
