@@ -6,8 +6,8 @@ use euc::rasterizer::{BackfaceCullingEnabled, Triangles};
 use euc::{Pipeline, Target};
 use rastty_core::math::{Mat4, Vec2, Vec3};
 
-use super::pack;
-use super::scenes::{AMBIENT, DIFFUSE, PeerScene, to_light};
+use super::scenes::{PeerScene, to_light};
+use super::{light_factor, pack};
 
 /// The frame's buffers, kept between frames.
 pub struct EucRenderer {
@@ -33,9 +33,9 @@ impl Shading<'_> {
         vek::Vec3::new(n.x, n.y, n.z)
     }
 
+    #[inline(always)]
     fn shade(&self, normal: vek::Vec3<f32>, albedo: Vec3) -> u32 {
-        let light = AMBIENT + DIFFUSE * normal.normalized().dot(self.to_light).max(0.0);
-        pack(albedo * light)
+        pack(albedo * light_factor(normal.dot(self.to_light), normal.magnitude()))
     }
 }
 

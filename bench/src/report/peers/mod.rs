@@ -100,10 +100,25 @@ pub fn differing_pixels(a: &[u32], b: &[u32]) -> usize {
         .count()
 }
 
-/// `color` (each channel clamped to `[0, 1]`) as `0x00RRGGBB`, rounded to nearest: the peers' last step.
+/// `color` as `0x00RRGGBB`, each channel rounded to nearest and limited to `[0, 255]`: the peers' last step.
 pub fn pack(color: Vec3) -> u32 {
-    let channel = |c: f32| (c.clamp(0.0, 1.0) * 255.0 + 0.5) as u32;
     channel(color.x) << 16 | channel(color.y) << 8 | channel(color.z)
+}
+
+/// One channel of [`pack`]: `c * 255` rounded to nearest, through the saturating conversion `as u8` (values past
+/// 255 give 255, negative values and NaN give 0), so no clamp is needed: the bits of a clamp and a rounding, in
+/// fewer operations, as a careful user writes it.
+#[inline(always)]
+pub fn channel(c: f32) -> u32 {
+    u32::from((c * 255.0 + 0.5) as u8)
+}
+
+/// The comparison's light factor from an interpolated normal `n` (not unit length) as `n.l` (`l`: the unit vector
+/// to the light) and `|n|`: `AMBIENT + DIFFUSE * max(0, n.l / |n|)`, one square root and one division where
+/// normalising `n` first takes three more.
+#[inline(always)]
+pub fn light_factor(n_dot_l: f32, n_length: f32) -> f32 {
+    scenes::AMBIENT + scenes::DIFFUSE * (n_dot_l / n_length).max(0.0)
 }
 
 /// Runs the report and writes it to `out` as Markdown.

@@ -11,8 +11,8 @@ use retrofire_core::render::{Context, Frag, Model, Ndc, Screen, render, shader};
 use retrofire_core::util::pixfmt::Xrgb8888;
 use retrofire_core::util::{Buf2, Dims};
 
-use super::pack;
-use super::scenes::{AMBIENT, DIFFUSE, PeerScene, to_light};
+use super::scenes::{PeerScene, to_light};
+use super::{channel, light_factor};
 
 /// The vertices with their varyings: the normal, and the texture coordinates when the scene is textured.
 enum Vertices {
@@ -73,9 +73,11 @@ impl RetrofireRenderer {
         let context = Context { face_cull: Some(FaceCull::Front), ..Context::default() };
         let l = to_light();
         let to_light = vec3(l.x, l.y, l.z);
+        // Its fragment shader returns a `Color4`: the channels go straight in, as bytes.
         let shade = |n: RVec3, albedo: Vec3| -> Color4 {
-            let c = pack(albedo * (AMBIENT + DIFFUSE * n.normalize().dot(&to_light).max(0.0)));
-            rgba((c >> 16) as u8, (c >> 8) as u8, c as u8, 0xFF)
+            let light = light_factor(n.dot(&to_light), n.len());
+            let byte = |c: f32| channel(c * light) as u8;
+            rgba(byte(albedo.x), byte(albedo.y), byte(albedo.z), 0xFF)
         };
         let (frame, mvp) = (&mut self.frame, &self.clip_from_model);
         match &self.vertices {
