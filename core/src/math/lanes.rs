@@ -84,15 +84,6 @@ impl<const N: usize> Lanes<f32, N> {
     }
 }
 
-impl<const N: usize> Lanes<i32, N> {
-    /// Each pair of lanes added modulo 2^32.
-    #[inline(always)]
-    #[must_use]
-    pub fn wrapping_add(self, o: Self) -> Self {
-        Self::from_fn(|k| self[k].wrapping_add(o[k]))
-    }
-}
-
 impl<T, const N: usize> Deref for Lanes<T, N> {
     type Target = [T; N];
     #[inline(always)]
@@ -148,6 +139,5 @@ mod tests {
         assert_eq!(x.where_less(low, high), Lanes([1.0, 0.0, 0.0, 4.0]));
         assert_eq!(x.max(Lanes([0.5, f32::NAN, 3.5, 4.0])), Lanes([1.0, 2.0, 3.5, 4.0]));
         assert_eq!(x.equal(Lanes([1.0, 0.0, 3.0, f32::NAN])), Lanes([1.0, 0.0, 1.0, 0.0]));
-        assert_eq!(Lanes([i32::MAX, -1]).wrapping_add(Lanes([1, 1])), Lanes([i32::MIN, 0]));
     }
 }

@@ -9,10 +9,9 @@ use crate::pipeline::{BATCH_SIZE, Slopes};
 /// filled only by a draw that uses it; the others hold finite values nobody reads (lane-wise loops run over every
 /// lane, see [`crate::pipeline::columns`]).
 ///
-/// One lives as long as its draw's shader ([`super::SurfaceShader`]) and serves each of the draw's batches in turn:
-/// every stage writes the columns it produces before any stage reads them, so nothing needs clearing between
-/// batches. (Made afresh for each batch, its 5.7 KB of zeros were 30 % of the instructions of a frame of large
-/// triangles.)
+/// Every stage writes the columns it produces before any stage reads them, so one set can serve a draw's batches
+/// in turn without clearing: where batches have 32 lanes the draw's shader keeps one (`KEPT_SCRATCH` in
+/// [`super::shader`] says why and where).
 #[derive(Clone)]
 pub(crate) struct Scratch {
     pub len: usize,

@@ -102,15 +102,15 @@ pub fn differing_pixels(a: &[u32], b: &[u32]) -> usize {
 
 /// `color` as `0x00RRGGBB`, each channel rounded to nearest and limited to `[0, 255]`: the peers' last step.
 pub fn pack(color: Vec3) -> u32 {
-    channel(color.x) << 16 | channel(color.y) << 8 | channel(color.z)
+    u32::from(channel(color.x)) << 16 | u32::from(channel(color.y)) << 8 | u32::from(channel(color.z))
 }
 
 /// One channel of [`pack`]: `c * 255` rounded to nearest, through the saturating conversion `as u8` (values past
 /// 255 give 255, negative values and NaN give 0), so no clamp is needed: the bits of a clamp and a rounding, in
 /// fewer operations, as a careful user writes it.
 #[inline(always)]
-pub fn channel(c: f32) -> u32 {
-    u32::from((c * 255.0 + 0.5) as u8)
+pub fn channel(c: f32) -> u8 {
+    (c * 255.0 + 0.5) as u8
 }
 
 /// The comparison's light factor from an interpolated normal `n` (not unit length) as `n.l` (`l`: the unit vector

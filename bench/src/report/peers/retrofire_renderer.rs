@@ -76,8 +76,7 @@ impl RetrofireRenderer {
         // Its fragment shader returns a `Color4`: the channels go straight in, as bytes.
         let shade = |n: RVec3, albedo: Vec3| -> Color4 {
             let light = light_factor(n.dot(&to_light), n.len());
-            let byte = |c: f32| channel(c * light) as u8;
-            rgba(byte(albedo.x), byte(albedo.y), byte(albedo.z), 0xFF)
+            rgba(channel(albedo.x * light), channel(albedo.y * light), channel(albedo.z * light), 0xFF)
         };
         let (frame, mvp) = (&mut self.frame, &self.clip_from_model);
         match &self.vertices {
