@@ -280,7 +280,11 @@ fn inside_tmux_kitty_images_pass_through_to_the_pane_on_the_terminal() {
     // The image covers the pane's cells; its pixels follow the cell size tmux gives the pane. (On a loaded
     // machine the first image may come before tmux has settled the pane's size: the one drawn for it is read.)
     let sized = format!(",i=1,p=1,c={cols},r={rows},C=1,z=-1,q=2,");
-    let whole_after = |text: &str| text.rfind(&sized).is_some_and(|at| text[at..].contains("m=0;"));
+    // Whole: its last chunk (`m=0`) has arrived up to its string terminator, not merely begun.
+    let whole_after = |text: &str| {
+        text.rfind(&sized)
+            .is_some_and(|at| text[at..].find("m=0;").is_some_and(|last| text[at + last..].contains("\x1b\\")))
+    };
     screen.wait_for("a whole image of the pane's size", |out| whole_after(&String::from_utf8_lossy(out)));
     let text = String::from_utf8_lossy(&screen.output()).into_owned();
     let start = text[..text.rfind(&sized).expect("the image")].rfind("\x1b_Ga=T,").expect("its start");
