@@ -27,7 +27,7 @@ enum ReportCommand {
     /// Time per frame of a scene file as it is (shadow maps kept, drawn every frame, and without shadows), the
     /// same frame drawn again and again.
     Frames(FramesReportArgs),
-    /// Time per frame of the core, euc 0.5.3 and retrofire-core 0.4.0 drawing the same five pictures, one thread,
+    /// Time per frame of the core, euc 0.5.3 and retrofire-core 0.4.0 drawing the same six pictures, one thread,
     /// side by side, and how many pixels differ.
     Peers(PeersReportArgs),
 }

@@ -71,14 +71,18 @@ fn an_unknown_scene_is_named_in_the_error() {
 
 #[test]
 fn the_quick_report_of_the_spheres_has_their_rows() {
-    let only = vec!["sphere100k".to_owned(), "sphere1m".to_owned()];
-    let report = PeersReport { models: "/nonexistent".into(), frames: 1, quick: true, only, threads: 2 };
+    let only = vec!["sphere100k".to_owned(), "sphere1m".to_owned(), "large".to_owned()];
+    let report = PeersReport { models: "/nonexistent".into(), frames: 1, quick: true, only, threads: 3 };
     let mut out = Vec::new();
     run(&report, &mut out).unwrap();
     let text = String::from_utf8(out).unwrap();
-    // Each sphere has a row in both tables.
-    for name in ["sphere100k", "sphere1m"] {
-        assert_eq!(text.matches(&format!("\n| {name} |")).count(), 2, "{text}");
+    // Each sphere has a row in the first table and one per thread count, 2 and 3, in the second, with the ceiling.
+    for name in ["sphere100k", "sphere1m", "large"] {
+        assert_eq!(text.matches(&format!("\n| {name} |")).count(), 3, "{text}");
+        for threads in [2, 3] {
+            let row = text.lines().find(|l| l.starts_with(&format!("| {name} | {threads} |"))).expect("a row");
+            assert_eq!(row.matches('|').count(), 9, "{row}");
+        }
     }
 }
 

@@ -6,7 +6,7 @@
 //! | [`effects`] | time per frame of a scene file with no effect, each effect alone and every effect |
 //! | [`frames`] | time per frame of a scene file as it is, the same frame drawn again and again |
 //! | [`terminal`] | bytes and times of terminal frames for a turntable of the built-in model |
-//! | [`peers`] | time per frame of the core, euc and retrofire drawing the same five pictures, one thread |
+//! | [`peers`] | time per frame of the core, euc and retrofire drawing the same six pictures, one thread |
 //! | [`cell_modes`] | (with `terminal`) bytes and times of every cell mode at one terminal size |
 //! | [`moving_frames`] | (with `terminal`) bytes and error of moving frames at each tolerance of the frame writer |
 

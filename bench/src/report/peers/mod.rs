@@ -1,6 +1,6 @@
 //! `rastty-bench peers`: the core against published Rust software rasterizers, side by side in one run.
 //!
-//! Five pictures ([`scenes`]) drawn by euc 0.5.3, retrofire-core 0.4.0 and the core, single thread, the same
+//! Six pictures ([`scenes`]) drawn by euc 0.5.3, retrofire-core 0.4.0 and the core, single thread, the same
 //! work per frame for each: clear colour and depth, draw the whole mesh with a z-buffer, back faces culled, the
 //! vertex normal interpolated perspective-correctly, and per pixel `albedo * (0.1 + 0.9 * max(0, n.l))` with `n`
 //! the normalised interpolated normal. The renderers take turns frame by frame (the first of each round rotating),
@@ -10,8 +10,10 @@
 //! differ from the core's exact ones, so a few edge pixels do).
 //!
 //! A second table draws the same scenes through the program's threaded frame ([`threaded_renderer`]) on one
-//! thread and on [`PeersReport::threads`], taking turns frame by frame, and gives the speed-up.
+//! thread and on each count up to [`PeersReport::threads`], taking turns frame by frame, and gives the speed-up
+//! beside the machine's own ceiling for the frame ([`ceiling`]).
 
+pub mod ceiling;
 pub mod core_renderer;
 pub mod euc_renderer;
 pub mod retrofire_renderer;
@@ -25,6 +27,7 @@ use std::time::{Duration, Instant};
 
 use rastty_core::math::Vec3;
 
+use self::ceiling::Ceiling;
 use self::core_renderer::CoreRenderer;
 use self::euc_renderer::EucRenderer;
 use self::retrofire_renderer::RetrofireRenderer;
@@ -39,7 +42,7 @@ pub const QUICK_FRAMES: usize = 2;
 /// A pixel differs when a channel differs by more than this many levels.
 pub const DIFFERENCE: u32 = 8;
 /// The scenes' names, in the report's order.
-pub const SCENES: [&str; 5] = ["head", "head-tex", "bunny", "sphere100k", "sphere1m"];
+pub const SCENES: [&str; 6] = ["head", "head-tex", "bunny", "sphere100k", "sphere1m", "large"];
 
 /// What to measure.
 #[derive(Clone, Debug, PartialEq)]
@@ -52,7 +55,7 @@ pub struct PeersReport {
     pub quick: bool,
     /// The scenes to draw (names from [`SCENES`]); empty for all.
     pub only: Vec<String>,
-    /// Threads of the threaded frame's second column (the first is one thread).
+    /// The most threads of the threaded frame: it is drawn on 1 and on each count from 2 to this.
     pub threads: usize,
 }
 
@@ -193,16 +196,18 @@ pub fn run(report: &PeersReport, out: &mut dyn Write) -> Result<(), Box<dyn std:
     Ok(())
 }
 
-/// The second table: each scene through the threaded frame on one thread and on `report.threads`, the two taking
-/// turns frame by frame, and the pixels that differ from the core's own draw (none, when the frame is right).
+/// The second table: each scene through the threaded frame on one thread and on each count from 2 to
+/// `report.threads`, the two taking turns frame by frame, with the machine's ceiling for that frame ([`Ceiling`])
+/// timed the same way beside it, and the pixels that differ from the core's own draw (none, when the frame is
+/// right).
 fn threaded_table(
     report: &PeersReport,
     scenes: &[PeerScene],
     text: &mut String,
 ) -> Result<(), Box<dyn std::error::Error>> {
-    let threads = report.threads.max(2);
+    let most = report.threads.max(2);
     writeln!(text)?;
-    writeln!(text, "### The same scenes through the threaded frame, 1 and {threads} threads")?;
+    writeln!(text, "### The same scenes through the threaded frame, on 1 to {most} threads")?;
     writeln!(text)?;
     writeln!(
         text,
@@ -210,40 +215,60 @@ fn threaded_table(
          turns frame by frame; ms: median (minimum) wall time of a frame; differing: pixels more than \
          {DIFFERENCE} levels from the core's single draw above"
     )?;
+    writeln!(
+        text,
+        "- ceiling: the speed-up of a plain parallel loop writing the frame's colour and depth, at least {} pixels \
+         a time (passes over the frame), in one band of rows per thread of a pool started once, timed on 1 and n \
+         threads in the same turns; of the ceiling: the frame's speed-up over the loop's",
+        ceiling::MIN_WRITES
+    )?;
     writeln!(text)?;
-    writeln!(text, "| scene | 1 thread | {threads} threads | speed-up | differing from the core's draw |")?;
-    writeln!(text, "|---|---:|---:|---:|---:|")?;
+    writeln!(
+        text,
+        "| scene | n | 1 thread | n threads | speed-up | ceiling speed-up | of the ceiling | differing from the \
+         core's draw |"
+    )?;
+    writeln!(text, "|---|---:|---:|---:|---:|---:|---:|---:|")?;
     for scene in scenes {
         let mut single = CoreRenderer::new(scene);
         single.render(scene);
-        let mut renderers = [ThreadedRenderer::new(scene, 1)?, ThreadedRenderer::new(scene, threads)?];
-        let mut times: [Vec<Duration>; 2] = Default::default();
-        for renderer in &mut renderers {
-            renderer.render()?;
-        }
-        for round in 0..report.frames {
-            for k in 0..2 {
-                let which = (round + k) % 2;
-                let start = Instant::now();
-                renderers[which].render()?;
-                times[which].push(start.elapsed());
+        for threads in 2..=most {
+            let mut renderers = [ThreadedRenderer::new(scene, 1)?, ThreadedRenderer::new(scene, threads)?];
+            let mut ceilings =
+                [Ceiling::new(scene.width, scene.height, 1)?, Ceiling::new(scene.width, scene.height, threads)?];
+            let mut times: [Vec<Duration>; 4] = Default::default();
+            for (renderer, ceiling) in renderers.iter_mut().zip(&mut ceilings) {
+                renderer.render()?;
+                ceiling.fill();
             }
+            for round in 0..report.frames {
+                for k in 0..2 {
+                    let which = (round + k) % 2;
+                    let start = Instant::now();
+                    renderers[which].render()?;
+                    times[which].push(start.elapsed());
+                    let start = Instant::now();
+                    ceilings[which].fill();
+                    times[2 + which].push(start.elapsed());
+                }
+            }
+            let ms = |d: Duration| d.as_secs_f64() * 1e3;
+            let medians = times.each_ref().map(|t| ms(median(t)));
+            let cell = |which: usize| {
+                let min = times[which].iter().min().copied().unwrap_or_default();
+                format!("{:.2} ({:.2})", medians[which], ms(min))
+            };
+            let (speed_up, ceiling) = (medians[0] / medians[1], medians[2] / medians[3]);
+            let differing = renderers.iter().map(|r| differing_pixels(r.pixels(), single.pixels())).max().unwrap_or(0);
+            writeln!(
+                text,
+                "| {} | {threads} | {} | {} | {speed_up:.2} | {ceiling:.2} | {:.2} | {differing} |",
+                scene.name,
+                cell(0),
+                cell(1),
+                speed_up / ceiling,
+            )?;
         }
-        let ms = |d: Duration| d.as_secs_f64() * 1e3;
-        let medians = times.each_ref().map(|t| ms(median(t)));
-        let cell = |which: usize| {
-            let min = times[which].iter().min().copied().unwrap_or_default();
-            format!("{:.2} ({:.2})", medians[which], ms(min))
-        };
-        let differing = renderers.iter().map(|r| differing_pixels(r.pixels(), single.pixels())).max().unwrap_or(0);
-        writeln!(
-            text,
-            "| {} | {} | {} | {:.2} | {differing} |",
-            scene.name,
-            cell(0),
-            cell(1),
-            medians[0] / medians[1],
-        )?;
     }
     Ok(())
 }

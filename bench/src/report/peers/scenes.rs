@@ -1,4 +1,4 @@
-//! The five pictures of the comparison: meshes, sizes and the camera every renderer uses.
+//! The six pictures of the comparison: meshes, sizes and the camera every renderer uses.
 //!
 //! Each mesh is moved and scaled once, here, so that its bounding box is centred on the origin with a largest
 //! half-extent of 1; the renderers then need only the camera: eye at `(0, 0, 3)` looking at the origin, `y` up,
@@ -90,9 +90,9 @@ impl std::fmt::Display for PeerSceneError {
 
 impl std::error::Error for PeerSceneError {}
 
-/// The scenes named in `only` (all five when it is empty), in the report's order, the models read from `models`
-/// (the shared models folder, never copied); with `quick`, the two spheres have a quarter of their rings and
-/// segments.
+/// The scenes named in `only` (all six when it is empty), in the report's order, the models read from `models`
+/// (the shared models folder, never copied); with `quick`, the two dense spheres have a quarter of their
+/// rings and segments, and the large one a quarter of its pixels.
 ///
 /// # Errors
 /// When a model or texture cannot be read.
@@ -115,7 +115,9 @@ pub fn scenes(models: &Path, quick: bool, only: &[String]) -> Result<Vec<PeerSce
             }
             "bunny" => from_obj("bunny", &models.join("common-3d/stanford-bunny.obj"), 640, 480, "smooth normals")?,
             "sphere100k" => sphere("sphere100k", 160 / divide, 320 / divide, 1920, 1080),
-            _ => sphere("sphere1m", 500 / divide, 1000 / divide, 640, 480),
+            "sphere1m" => sphere("sphere1m", 500 / divide, 1000 / divide, 640, 480),
+            // Few large triangles at 4K: on average about 2,500 pixels each.
+            _ => sphere("large", 24, 48, 3840 / divide.min(2), 2160 / divide.min(2)),
         });
     }
     Ok(scenes)
