@@ -7,6 +7,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use clap::{Args, Parser};
+use rastty_bench::report::error::ReportError;
 use rastty_bench::report::terminal::{DEFAULT_FRAMES, TerminalReport};
 use rastty_bench::report::{effects, frames, peers};
 use rastty_scene::escaped::{Escaped, path_text};
@@ -180,9 +181,9 @@ fn effects_report(args: &EffectsReportArgs) -> Result<(), String> {
 }
 
 /// A timing report's error as a message; a frame that could not be planned or drawn names the scene file.
-fn in_file(scene: &Path) -> impl Fn(effects::EffectsError) -> String + '_ {
+fn in_file(scene: &Path) -> impl Fn(ReportError) -> String + '_ {
     move |e| match e {
-        effects::EffectsError::Render(e) => format!("{}: {e}", path_text(scene)),
+        ReportError::Render(e) => format!("{}: {e}", path_text(scene)),
         e => e.to_string(),
     }
 }

@@ -9,8 +9,9 @@
 use std::io::{self, Write};
 use std::time::Duration;
 
+use super::error::ReportError;
 use super::median;
-use super::turntable::{ReportError, Turntable, TurntableFrame, mean};
+use super::turntable::{Turntable, TurntableFrame, mean};
 use rastty::graphics::GraphicsProtocol;
 use rastty::graphics::frame_palette::Dither;
 use rastty::screen::{CellMode, ColorMode, Encoder};

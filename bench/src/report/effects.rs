@@ -18,13 +18,14 @@
 //! frames share. A frame's time is the wall time of [`SceneRenderer::render`]; the passes' times are the
 //! [`FrameReport`]'s. Every figure is a median over the measured frames.
 
-use std::fmt::{self, Write as _};
-use std::io::{self, Write};
+use std::fmt::Write as _;
+use std::io::Write;
 use std::path::PathBuf;
 use std::time::{Duration, Instant};
 
 use rastty_core::target::{Rgb888, Target};
 
+use super::error::ReportError;
 use super::median;
 use rastty_scene::escaped::path_text;
 use rastty_scene::scene_render::{
@@ -144,41 +145,6 @@ impl EffectsReport {
     }
 }
 
-/// Why the report could not be made.
-#[derive(Debug)]
-pub enum EffectsError {
-    /// A frame could not be planned or drawn.
-    Render(SceneRenderError),
-    /// No frame to measure, or the renderer did not draw or reuse the shadow maps as the configuration needs.
-    Setup(String),
-    /// The report could not be written.
-    Write(io::Error),
-}
-
-impl fmt::Display for EffectsError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Self::Render(e) => e.fmt(f),
-            Self::Setup(e) => f.write_str(e),
-            Self::Write(e) => write!(f, "cannot write the report: {e}"),
-        }
-    }
-}
-
-impl std::error::Error for EffectsError {}
-
-impl From<io::Error> for EffectsError {
-    fn from(e: io::Error) -> Self {
-        Self::Write(e)
-    }
-}
-
-impl From<SceneRenderError> for EffectsError {
-    fn from(e: SceneRenderError) -> Self {
-        Self::Render(e)
-    }
-}
-
 /// The measured frames of one configuration at one size, one sample per frame.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct ConfigurationTimes {
@@ -251,7 +217,7 @@ impl<'s> TimedFrames<'s> {
         renderer: &mut SceneRenderer,
         maps: ShadowMaps,
         plan: &ScenePlan,
-    ) -> Result<(Duration, FrameReport), EffectsError> {
+    ) -> Result<(Duration, FrameReport), ReportError> {
         if maps == ShadowMaps::Drawn {
             *renderer = SceneRenderer::with_threads(self.threads);
         }
@@ -266,12 +232,12 @@ impl<'s> TimedFrames<'s> {
 
 /// An error unless the measured frame `report` of row `label` drew (for [`ShadowMaps::Drawn`]) or reused (for
 /// [`ShadowMaps::Kept`]) every shadow map: the report would otherwise print figures under the wrong label.
-pub(super) fn check_maps(label: &str, maps: ShadowMaps, report: &FrameReport) -> Result<(), EffectsError> {
+pub(super) fn check_maps(label: &str, maps: ShadowMaps, report: &FrameReport) -> Result<(), ReportError> {
     let want_reused = maps == ShadowMaps::Kept;
     match report.shadow_passes.iter().find(|p| p.reused != want_reused) {
         Some(pass) => {
             let did = if pass.reused { "reused" } else { "drew" };
-            Err(EffectsError::Setup(format!(
+            Err(ReportError::Setup(format!(
                 "{label}: the renderer {did} the shadow map of light {} (a bug in the report)",
                 pass.light
             )))
@@ -303,11 +269,11 @@ impl EffectsResults {
 /// Measures every configuration at every size of `report` on `scene`.
 ///
 /// # Errors
-/// [`EffectsError::Setup`] for zero frames or shadow maps not drawn or reused as the configuration needs;
-/// [`EffectsError::Render`].
-pub fn measure(scene: &PreparedScene, report: &EffectsReport) -> Result<EffectsResults, EffectsError> {
+/// [`ReportError::Setup`] for zero frames or shadow maps not drawn or reused as the configuration needs;
+/// [`ReportError::Render`].
+pub fn measure(scene: &PreparedScene, report: &EffectsReport) -> Result<EffectsResults, ReportError> {
     if report.frames == 0 {
-        return Err(EffectsError::Setup("the report needs at least one frame per configuration".into()));
+        return Err(ReportError::Setup("the report needs at least one frame per configuration".into()));
     }
     let configurations = configurations();
     let threads = report.thread_count();
@@ -329,14 +295,14 @@ fn measure_size(
     (width, height): (u32, u32),
     threads: usize,
     frames: usize,
-) -> Result<Vec<ConfigurationTimes>, EffectsError> {
+) -> Result<Vec<ConfigurationTimes>, ReportError> {
     let plans =
         configurations.iter().map(|c| plan(scene, (width, height), c.effects)).collect::<Result<Vec<_>, _>>()?;
     let mut renderers: Vec<SceneRenderer> =
         configurations.iter().map(|_| SceneRenderer::with_threads(threads)).collect();
     let mut samples: Vec<ConfigurationTimes> = plans.iter().map(ConfigurationTimes::for_plan).collect();
     let mut frames_drawn = TimedFrames::new(scene, (width, height), threads);
-    let mut frame = |row: usize, warm_up: bool| -> Result<(), EffectsError> {
+    let mut frame = |row: usize, warm_up: bool| -> Result<(), ReportError> {
         let configuration = &configurations[row];
         let (elapsed, report) = frames_drawn.render(&mut renderers[row], configuration.maps, &plans[row])?;
         if !warm_up {
@@ -462,8 +428,8 @@ pub fn table(results: &EffectsResults) -> String {
 /// Markdown report to `out`: the header first, the table when every row is measured. Returns the measurements.
 ///
 /// # Errors
-/// [`EffectsError`].
-pub fn run(report: &EffectsReport, scene: &PreparedScene, out: &mut dyn Write) -> Result<EffectsResults, EffectsError> {
+/// [`ReportError`].
+pub fn run(report: &EffectsReport, scene: &PreparedScene, out: &mut dyn Write) -> Result<EffectsResults, ReportError> {
     // Plan first: a scene that cannot be planned fails before anything is printed.
     let plans = report
         .sizes

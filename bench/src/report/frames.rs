@@ -15,7 +15,8 @@ use std::io::Write;
 use std::path::PathBuf;
 use std::time::Duration;
 
-use super::effects::{ConfigurationTimes, EffectsError, ShadowMaps, TimedFrames, check_maps, plan};
+use super::effects::{ConfigurationTimes, ShadowMaps, TimedFrames, check_maps, plan};
+use super::error::ReportError;
 use super::median;
 use rastty_scene::escaped::path_text;
 use rastty_scene::scene_render::{
@@ -134,11 +135,11 @@ pub struct FramesResults {
 /// Measures every row of `report` on `scene`.
 ///
 /// # Errors
-/// [`EffectsError::Setup`] for zero frames, or shadow maps not drawn or reused as the row needs;
-/// [`EffectsError::Render`].
-pub fn measure(scene: &PreparedScene, report: &FramesReport) -> Result<FramesResults, EffectsError> {
+/// [`ReportError::Setup`] for zero frames, or shadow maps not drawn or reused as the row needs;
+/// [`ReportError::Render`].
+pub fn measure(scene: &PreparedScene, report: &FramesReport) -> Result<FramesResults, ReportError> {
     if report.frames == 0 {
-        return Err(EffectsError::Setup("the report needs at least one frame per row".into()));
+        return Err(ReportError::Setup("the report needs at least one frame per row".into()));
     }
     let has_shadows = !plan(scene, report.size, EffectToggles::ALL_ON)?.shadow_passes.is_empty();
     let rows = rows(has_shadows);
@@ -233,8 +234,8 @@ pub fn table(results: &FramesResults) -> String {
 /// Markdown report to `out`: the header first, the table when every row is measured. Returns the measurements.
 ///
 /// # Errors
-/// [`EffectsError`].
-pub fn run(report: &FramesReport, scene: &PreparedScene, out: &mut dyn Write) -> Result<FramesResults, EffectsError> {
+/// [`ReportError`].
+pub fn run(report: &FramesReport, scene: &PreparedScene, out: &mut dyn Write) -> Result<FramesResults, ReportError> {
     // Plan first: a scene that cannot be planned fails before anything is printed.
     let plan = plan(scene, report.size, EffectToggles::ALL_ON)?;
     let threads = report.thread_count();

@@ -13,6 +13,7 @@
 pub mod accuracy;
 pub mod cell_modes;
 pub mod effects;
+pub mod error;
 pub mod frames;
 pub mod moving_frames;
 pub mod peers;

@@ -10,7 +10,8 @@
 
 use std::io::Write;
 
-use super::turntable::{ReportError, Turntable};
+use super::error::ReportError;
+use super::turntable::Turntable;
 use rastty::screen::TOLERANCES;
 use rastty::screen::tolerance::color_distance;
 use rastty::screen::{CellGrid, CellMode, ColorMode, Encoder, Tolerance};

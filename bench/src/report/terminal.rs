@@ -14,8 +14,9 @@
 use std::io::Write;
 use std::time::{Duration, Instant};
 
+use super::error::ReportError;
 use super::median;
-use super::turntable::{CELL_ASPECT, ReportError, Turntable, TurntableFrame, builtin_scene, mean};
+use super::turntable::{CELL_ASPECT, Turntable, TurntableFrame, builtin_scene, mean};
 use rastty::screen::{CellMode, ColorMode, Encoder, naive_full_frame};
 use rastty_scene::builtin::BUILTIN_NAME;
 use rastty_scene::scene_file::{FramedCamera, SceneProjection};

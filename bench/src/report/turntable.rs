@@ -1,9 +1,7 @@
 //! The turntable the terminal reports measure: the built-in model turned once around in equal steps, each frame
 //! made as the viewer makes it (a [`ScenePlan`] for the terminal's physical aspect and a kept [`SceneRenderer`]
-//! into a pixel buffer, then cells or an image), and the error those reports share.
+//! into a pixel buffer, then cells or an image).
 
-use std::fmt;
-use std::io;
 use std::time::{Duration, Instant};
 
 use rastty_core::target::{Rgb888, Target};
@@ -11,43 +9,13 @@ use rastty_core::target::{Rgb888, Target};
 use rastty::graphics::{FrameImage, GraphicsProtocol, Passthrough};
 use rastty::graphics::{MAX_IMAGE_PIXELS, image_size};
 use rastty::screen::{CellGrid, CellMode, ColorMode, PixelFrame};
-use rastty_scene::scene_file::{OpenError, open};
-use rastty_scene::scene_render::{Orbit, PlanOptions, PreparedScene, ScenePlan, SceneRenderError, SceneRenderer};
+use rastty_scene::scene_file::open;
+use rastty_scene::scene_render::{Orbit, PlanOptions, PreparedScene, ScenePlan, SceneRenderer};
+
+use super::error::ReportError;
 
 /// Cell height over cell width (the viewer's default).
 pub const CELL_ASPECT: f32 = 2.0;
-
-/// Why a report could not be made.
-#[derive(Debug)]
-pub enum ReportError {
-    /// The built-in model did not load.
-    Load(OpenError),
-    /// A frame could not be planned or drawn.
-    Render(SceneRenderError),
-    /// The frame size is not one the renderer takes, or the frame count is zero.
-    Setup(String),
-    /// The report could not be written.
-    Write(io::Error),
-}
-
-impl fmt::Display for ReportError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Self::Load(e) => e.fmt(f),
-            Self::Render(e) => e.fmt(f),
-            Self::Setup(e) => f.write_str(e),
-            Self::Write(e) => write!(f, "cannot write the report: {e}"),
-        }
-    }
-}
-
-impl std::error::Error for ReportError {}
-
-impl From<io::Error> for ReportError {
-    fn from(e: io::Error) -> Self {
-        Self::Write(e)
-    }
-}
 
 /// The mean of `values` (0 for none).
 pub(crate) fn mean(values: &[usize]) -> f64 {

@@ -16,10 +16,10 @@ pub const MIN_WRITES: usize = 1 << 23;
 pub struct Ceiling {
     color: Vec<u32>,
     depth: Vec<f32>,
-    width: usize,
+    /// Pixels of a band: whole rows, one band per thread.
+    band: usize,
     /// The threads beside the caller; `None` for one thread.
     pool: Option<ThreadPool>,
-    threads: usize,
     passes: usize,
 }
 
@@ -37,8 +37,9 @@ impl Ceiling {
             None
         };
         let n = width as usize * height as usize;
+        let band = (height as usize).div_ceil(threads).max(1) * (width as usize).max(1);
         let passes = MIN_WRITES.div_ceil(n.max(1));
-        Ok(Self { color: vec![0; n], depth: vec![1.0; n], width: width as usize, pool, threads, passes })
+        Ok(Self { color: vec![0; n], depth: vec![1.0; n], band, pool, passes })
     }
 
     /// How many times a fill writes the frame.
@@ -48,9 +49,7 @@ impl Ceiling {
 
     /// Writes every pixel of the frame [`Self::passes`] times, in bands of rows, one band per thread.
     pub fn fill(&mut self) {
-        let passes = self.passes;
-        let rows = self.color.len() / self.width.max(1);
-        let band = rows.div_ceil(self.threads).max(1) * self.width.max(1);
+        let (passes, band) = (self.passes, self.band);
         let bands = self.color.chunks_mut(band).zip(self.depth.chunks_mut(band)).enumerate();
         match &self.pool {
             Some(pool) => pool.in_place_scope(|scope| {
