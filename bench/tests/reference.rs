@@ -550,6 +550,7 @@ fn one_quad_model() -> Model {
             ..ModelMaterial::default()
         }],
         warnings: Vec::new(),
+        rig: None,
     }
 }
 

@@ -24,6 +24,9 @@
 //! on threads) bins its triangles once ([`pipeline::BandBins`]) and lends the bins to each band's target
 //! ([`target::FrameGeometry`]).
 //!
+//! A model that moves is posed first, into the caller's buffers ([`animation`]: keyframes, node transforms, morph
+//! targets, skins), and then drawn as any mesh.
+//!
 //! The crate root re-exports what a typical draw needs, so one `use` line does.
 //!
 //! # Example
@@ -57,6 +60,7 @@
 #![deny(rustdoc::broken_intra_doc_links)]
 #![warn(clippy::std_instead_of_core)]
 
+pub mod animation;
 pub mod camera;
 pub mod color;
 mod light_kind;

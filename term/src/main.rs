@@ -11,6 +11,7 @@ mod viewer;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::str::FromStr;
+use std::sync::Arc;
 
 use crate::render_stats::{FrameStats, PassCounts, SceneCounts, TurntableFrameTimes, TurntableSummary};
 use crate::turntable_export::{DEFAULT_FPS, MAX_FPS, MAX_FRAMES, Turntable, TurntableError, TurntableOutput};
@@ -22,9 +23,9 @@ use rastty::screen::{CellMode, ColorMode};
 use rastty_core::math::Vec3;
 use rastty_scene::escaped::Escaped;
 use rastty_scene::input_file::{parse_byte_size, set_max_file_bytes};
-use rastty_scene::model::ModelOptions;
+use rastty_scene::model::{ModelOptions, RigListing};
 use rastty_scene::png_file::write_png;
-use rastty_scene::scene_file::{open, parse_hex_color};
+use rastty_scene::scene_file::{SceneData, open, parse_hex_color};
 use rastty_scene::scene_render::{
     CameraOptions, EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, ShadingMode, parse_size,
     render_scene_image,
@@ -189,6 +190,13 @@ struct SceneArgs {
     /// (default: flat; a scene file sets smooth_angle per object).
     #[arg(long, value_name = "DEGREES", allow_negative_numbers = true, value_parser = smooth_angle)]
     smooth_angle: Option<f32>,
+    /// glTF models that move: draw each at this moment, in seconds, of its animation (--animation, else its first;
+    /// before its first key or after its last, the nearest key). Without it, models stand in their rest pose.
+    #[arg(long, value_name = "SECONDS", allow_negative_numbers = true, value_parser = finite)]
+    time: Option<f32>,
+    /// The animation --time poses, by name or by number from 0 (default: each model's first).
+    #[arg(long, value_name = "NAME|INDEX", requires = "time")]
+    animation: Option<String>,
 }
 
 impl SceneArgs {
@@ -230,12 +238,31 @@ impl SceneArgs {
                 textures = false;
             }
         }
+        if let Some(time) = self.time {
+            pose(&mut opened.data, self.animation.as_deref(), time)?;
+        }
         for warning in opened.warnings() {
             eprintln!("rastty: warning: {}", Escaped(warning));
         }
         let scene = PreparedScene::new(opened.data).map_err(|e| format!("{}: {e}", opened.name))?;
         Ok((scene, opened.name, self.plan(textures)))
     }
+}
+
+/// Poses every object at `time` of its animation `animation` (`--time`, `--animation`); an object without
+/// animations gets a warning and stands in its rest pose.
+fn pose(data: &mut SceneData, animation: Option<&str>, time: f32) -> Result<(), String> {
+    for (i, object) in data.objects.iter_mut().enumerate() {
+        let file = Escaped(&object.mesh_path.to_string_lossy()).to_string();
+        match Arc::make_mut(&mut object.model).pose_at(animation, time) {
+            Ok(Some(_)) => {}
+            Ok(None) => {
+                data.warnings.push(format!("object {} ({file}) has no animation: --time leaves it at rest", i + 1))
+            }
+            Err(e) => return Err(format!("{file}: {e}")),
+        }
+    }
+    Ok(())
 }
 
 fn smooth_angle(s: &str) -> Result<f32, String> {
@@ -336,6 +363,9 @@ fn render(args: &RenderArgs) -> Result<(), String> {
         _ => None,
     };
     let (scene, name, options) = args.scene.load(args.model.as_deref())?;
+    if args.explain {
+        explain_rigs(scene.data());
+    }
     let camera = args.scene.camera().orbit(&scene).camera;
     let in_scene = |e: rastty_scene::scene_render::SceneRenderError| format!("{}: {e}", Escaped(&name));
     let Some(output) = &args.output else {
@@ -361,6 +391,16 @@ fn render(args: &RenderArgs) -> Result<(), String> {
         print!("{}", FrameStats { scene: &scene, name: &name, image: &image });
     }
     Ok(())
+}
+
+/// Prints what moves each object that moves: its animations, their channels and lengths, its skins.
+fn explain_rigs(data: &SceneData) {
+    for (i, object) in data.objects.iter().enumerate() {
+        if let Some(rig) = &object.model.rig {
+            println!("object {} ({}):", i + 1, Escaped(&object.mesh_path.to_string_lossy()));
+            print!("{}", RigListing(rig));
+        }
+    }
 }
 
 /// `rastty render --turntable N -o OUT`: the frames written as they are rendered, the first frame's plan and counts

@@ -68,6 +68,13 @@ pub fn asin(x: f32) -> f32 {
     libm::asinf(x)
 }
 
+/// Arc-cosine in radians, in `[0, pi]`.
+#[inline(always)]
+#[must_use]
+pub fn acos(x: f32) -> f32 {
+    libm::acosf(x)
+}
+
 /// Arc-tangent in radians, in `[-pi/2, pi/2]`.
 #[inline(always)]
 #[must_use]

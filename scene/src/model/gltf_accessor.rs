@@ -62,6 +62,24 @@ pub(crate) fn read_floats(accessor: &Accessor<'_>, buffers: &Buffers<'_>, allowe
     Ok(Floats { components, values })
 }
 
+/// Reads a `MAT4` accessor of `f32` (a skin's inverse bind matrices), each matrix's 16 values column by column.
+///
+/// # Errors
+/// A message naming the accessor when it is not of `f32` 4x4 matrices, does not fit its buffer, or holds a value
+/// that is not finite.
+pub(crate) fn read_mat4s(accessor: &Accessor<'_>, buffers: &Buffers<'_>) -> Result<Vec<[f32; 16]>, String> {
+    if accessor.dimensions() != Dimensions::Mat4 || accessor.data_type() != DataType::F32 {
+        return Err(format!("accessor {} should hold 4x4 matrices of floats", accessor.index()));
+    }
+    let values = read_elements(accessor, buffers, 16, |bytes, out: &mut Vec<f32>| {
+        out.extend(bytes.chunks_exact(4).map(|b| f32::from_le_bytes([b[0], b[1], b[2], b[3]])));
+    })?;
+    if values.iter().any(|v| !v.is_finite()) {
+        return Err(format!("accessor {} holds a value that is not finite", accessor.index()));
+    }
+    Ok(values.chunks_exact(16).map(|m| core::array::from_fn(|i| m[i])).collect())
+}
+
 /// Reads an index accessor: unsigned 8, 16 or 32-bit scalars, exactly.
 ///
 /// # Errors

@@ -12,6 +12,7 @@ use super::error::{COORDINATE_LIMIT, LoadError, LoadErrorKind};
 use super::gltf_accessor::{Buffers, read_floats, read_indices};
 use super::gltf_material::{UvTransform, convert, renderer_uv};
 use super::gltf_resources::{load_buffers, load_image};
+use super::gltf_rig::{Placed, RigReader, has_rig};
 use super::loaded_model::{Model, Part};
 use super::resolver::Resolver;
 use super::texture_image::TextureImage;
@@ -31,11 +32,14 @@ pub const READ_EXTENSIONS: [&str; 2] = ["KHR_materials_emissive_strength", "KHR_
 /// computed when a primitive has none, as the specification asks), `TEXCOORD_0` (its material's texture
 /// transform applied), `COLOR_0` and `TANGENT`. Materials as `docs/models.md` says (base colour, normal and emission
 /// maps, metallic-roughness as a highlight, double-sidedness); each part is one primitive, named after its mesh.
+/// A file with animations, skins or morph targets keeps them in [`Model::rig`], and the model stands in its rest
+/// pose ([`Model::pose`]).
 ///
 /// # Errors
 /// [`LoadErrorKind::Format`] for JSON the format does not allow, a required extension not in
 /// [`READ_EXTENSIONS`], a buffer that is missing or shorter than it says, an accessor whose data does not fit, an
-/// index beyond its vertices, a node reached twice, or coordinates that are not finite once placed;
+/// index beyond its vertices, a node reached twice, coordinates that are not finite once placed, or skins and
+/// morph targets that do not fit their mesh;
 /// [`LoadErrorKind::NoTriangles`] when nothing is left to draw.
 pub fn load_gltf_bytes(name: impl AsRef<Path>, bytes: &[u8], files: &dyn Resolver) -> Result<Model, LoadError> {
     let name = name.as_ref();
@@ -58,12 +62,17 @@ pub fn load_gltf_bytes(name: impl AsRef<Path>, bytes: &[u8], files: &dyn Resolve
     let document = Document::from_json(document.into_json()).map_err(|e| fail(e.to_string()))?;
     let buffers = load_buffers(&document, blob.as_deref(), files).map_err(fail)?;
     let mut builder = Builder::new(&document, &buffers, files);
-    for (mesh, transform) in placed_meshes(&document).map_err(fail)? {
+    if has_rig(&document) {
+        builder.rig = Some(RigReader::new(&document, &buffers).map_err(fail)?);
+    }
+    for (node, mesh, transform) in placed_meshes(&document).map_err(fail)? {
         for primitive in mesh.primitives() {
-            builder.primitive(&mesh, &primitive, &transform).map_err(fail)?;
+            builder.primitive(node, &mesh, &primitive, &transform).map_err(fail)?;
         }
     }
-    let model = builder.finish();
+    let mut model = builder.finish();
+    // A model that moves stands in its rest pose: skinned by its joints, morphed by its default weights.
+    model.pose(None, 0.0);
     if model.indices.is_empty() {
         return Err(LoadError::new(name, LoadErrorKind::NoTriangles));
     }
@@ -100,10 +109,11 @@ fn positions_in_range(root: &gltf::json::Root) -> Result<(), String> {
     Ok(())
 }
 
-/// The meshes of the default scene (or the first) with their nodes' world transforms, in depth-first order.
-fn placed_meshes<'a>(document: &'a Document) -> Result<Vec<(gltf::Mesh<'a>, Mat4)>, String> {
+/// The meshes of the default scene (or the first) with their nodes (by index) and the nodes' world transforms, in
+/// depth-first order; without a scene, every mesh with no node.
+fn placed_meshes<'a>(document: &'a Document) -> Result<Vec<(Option<usize>, gltf::Mesh<'a>, Mat4)>, String> {
     let Some(scene) = document.default_scene().or_else(|| document.scenes().next()) else {
-        return Ok(document.meshes().map(|m| (m, Mat4::IDENTITY)).collect());
+        return Ok(document.meshes().map(|m| (None, m, Mat4::IDENTITY)).collect());
     };
     let mut seen = vec![false; document.nodes().len()];
     let mut stack: Vec<(gltf::Node<'a>, Mat4)> = scene.nodes().map(|n| (n, Mat4::IDENTITY)).collect();
@@ -116,7 +126,7 @@ fn placed_meshes<'a>(document: &'a Document) -> Result<Vec<(gltf::Mesh<'a>, Mat4
         }
         let world = parent * node_matrix(&node);
         if let Some(mesh) = node.mesh() {
-            out.push((mesh, world));
+            out.push((Some(index), mesh, world));
         }
         let first_child = stack.len();
         stack.extend(node.children().map(|c| (c, world)));
@@ -150,6 +160,8 @@ struct Builder<'a, 'b> {
     materials: HashMap<Option<usize>, (usize, UvTransform)>,
     images: HashMap<usize, Option<TextureImage>>,
     skipped_modes: Vec<Mode>,
+    /// What moves the model, for a file with animations, skins or morph targets.
+    rig: Option<RigReader<'a, 'b>>,
 }
 
 impl<'a, 'b> Builder<'a, 'b> {
@@ -168,12 +180,14 @@ impl<'a, 'b> Builder<'a, 'b> {
             materials: HashMap::new(),
             images: HashMap::new(),
             skipped_modes: Vec::new(),
+            rig: None,
         }
     }
 
-    /// Adds `primitive` of `mesh` placed by `transform`.
+    /// Adds `primitive` of `mesh`, held by node `node`, placed by `transform`.
     fn primitive(
         &mut self,
+        node: Option<usize>,
         mesh: &gltf::Mesh<'_>,
         primitive: &gltf::Primitive<'_>,
         transform: &Mat4,
@@ -222,19 +236,22 @@ impl<'a, 'b> Builder<'a, 'b> {
         let read = |semantic: Semantic, sizes: &[usize]| {
             primitive.get(&semantic).map(|a| read_floats(&a, self.buffers, sizes)).transpose().map_err(at)
         };
-        let normals: Option<Vec<Vec3>> = read(Semantic::Normals, &[3])?
-            .map(|n| n.elements::<3>().map(|v| normal_matrix * Vec3::new(v[0], v[1], v[2])).collect());
+        let file_normals: Option<Vec<Vec3>> =
+            read(Semantic::Normals, &[3])?.map(|n| n.elements::<3>().map(|v| Vec3::new(v[0], v[1], v[2])).collect());
+        let normals: Option<Vec<Vec3>> = file_normals.as_ref().map(|n| n.iter().map(|&v| normal_matrix * v).collect());
         let uvs: Option<Vec<Vec2>> = read(Semantic::TexCoords(0), &[2])?
             .map(|t| t.elements::<2>().map(|uv| renderer_uv(uv_transform.apply(uv))).collect());
         // Colours are from 0 to 1 (glTF 2.0 specification, section 3.7.2.1); clamped, so that none can overflow
         // the shading.
         let colors: Option<Vec<Vec3>> = read(Semantic::Colors(0), &[3, 4])?
             .map(|c| c.elements::<3>().map(|c| Vec3::new(c[0], c[1], c[2]).max(Vec3::ZERO).min(Vec3::ONE)).collect());
-        let tangents: Option<Vec<Vec4>> = read(Semantic::Tangents, &[4])?.map(|t| {
-            t.elements::<4>()
+        let file_tangents: Option<Vec<Vec4>> = read(Semantic::Tangents, &[4])?
+            .map(|t| t.elements::<4>().map(|t| Vec4::new(t[0], t[1], t[2], t[3])).collect());
+        let tangents: Option<Vec<Vec4>> = file_tangents.as_ref().map(|t| {
+            t.iter()
                 .map(|t| {
-                    let xyz = transform.transform_vector(Vec3::new(t[0], t[1], t[2])).normalize_or_zero();
-                    let w = if (t[3] < 0.0) != mirrored { -1.0 } else { 1.0 };
+                    let xyz = transform.transform_vector(t.truncate()).normalize_or_zero();
+                    let w = if (t.w < 0.0) != mirrored { -1.0 } else { 1.0 };
                     xyz.extend(w)
                 })
                 .collect()
@@ -290,6 +307,17 @@ impl<'a, 'b> Builder<'a, 'b> {
                 }
             }
         }
+        if let (Some(rig), Some(node)) = (&mut self.rig, node) {
+            let placed = Placed {
+                node,
+                vertices: base as usize..self.model.positions.len(),
+                corners: normals.is_none().then(|| triangles.iter().flatten().copied().collect()),
+                positions: &positions,
+                normals: file_normals,
+                tangents: file_tangents.filter(|_| normals.is_some()),
+            };
+            rig.instance(primitive, placed).map_err(at)?;
+        }
         let name = mesh.name().unwrap_or_default().to_owned();
         self.model.parts.push(Part {
             name,
@@ -324,6 +352,9 @@ impl<'a, 'b> Builder<'a, 'b> {
     }
 
     fn finish(mut self) -> Model {
+        if let Some(rig) = self.rig.take() {
+            self.model.rig = Some(std::sync::Arc::new(rig.finish(&mut self.model.warnings)));
+        }
         for mode in &self.skipped_modes {
             self.model.warnings.push(format!("primitives of mode {mode:?} are left out: only triangles are drawn"));
         }

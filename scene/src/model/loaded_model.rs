@@ -7,7 +7,9 @@ use rastty_core::mesh::{Indices, Mesh};
 
 use super::bounding_box::BoundingBox;
 use super::material::ModelMaterial;
+use super::rig::{PosedVertices, Rig};
 use super::texture_image::TextureImage;
+use crate::escaped::Escaped;
 
 /// An owned triangle model, ready for the core.
 ///
@@ -39,6 +41,9 @@ pub struct Model {
     pub materials: Vec<ModelMaterial>,
     /// Non-fatal problems met while loading, one line each (control characters escaped).
     pub warnings: Vec<String>,
+    /// What moves the model (a glTF file's node tree, skins, morph targets and animations), when its file has
+    /// any: [`Self::pose`] uses it.
+    pub rig: Option<std::sync::Arc<Rig>>,
 }
 
 /// A run of triangles with one name and one material.
@@ -54,6 +59,47 @@ pub struct Part {
 }
 
 impl Model {
+    /// Moves the vertices (positions, normals, tangents) to time `time`, in seconds, of animation `animation` of
+    /// [`Self::rig`] (an index into [`Rig::animations`]; times outside the animation hold its first or last keys),
+    /// or to the rest pose when `None`: the file's node transforms, skins and default morph weights, as the model
+    /// is loaded. Nothing changes for a model without a rig.
+    pub fn pose(&mut self, animation: Option<usize>, time: f32) {
+        if let Some(rig) = &self.rig {
+            let mut vertices = PosedVertices {
+                positions: &mut self.positions,
+                normals: &mut self.normals,
+                tangents: self.tangents.as_deref_mut(),
+            };
+            rig.pose(animation, time, &mut vertices);
+        }
+    }
+
+    /// Poses the model at `time` seconds of the animation named `animation` (else numbered so, from 0), or of its
+    /// first animation when `None` ([`Self::pose`]). Returns the animation's label and length, or `None` when the
+    /// model has no animation and none was named (the model is left as it is).
+    ///
+    /// # Errors
+    /// A message naming the animation asked for, and those there are, when the model has none of that name or
+    /// number.
+    pub fn pose_at(&mut self, animation: Option<&str>, time: f32) -> Result<Option<(String, f32)>, String> {
+        let animations = self.rig.as_ref().map_or(&[][..], |r| r.animations());
+        let index = match animation {
+            None if animations.is_empty() => return Ok(None),
+            None => 0,
+            Some(name) => self.rig.as_ref().and_then(|r| r.find(name)).ok_or_else(|| {
+                let there: Vec<String> =
+                    animations.iter().enumerate().map(|(i, a)| format!("{i}: {}", Escaped(&a.label(i)))).collect();
+                match there.is_empty() {
+                    true => format!("there is no animation {}: the model has none", Escaped(name)),
+                    false => format!("there is no animation {} (there are {})", Escaped(name), there.join(", ")),
+                }
+            })?,
+        };
+        let found = (animations[index].label(index), animations[index].length);
+        self.pose(Some(index), time);
+        Ok(Some(found))
+    }
+
     /// Number of triangles.
     pub fn triangle_count(&self) -> usize {
         self.indices.len() / 3
@@ -148,6 +194,7 @@ mod tests {
             ],
             materials: vec![ModelMaterial { name: "m".into(), ..ModelMaterial::default() }],
             warnings: Vec::new(),
+            rig: None,
         }
     }
 

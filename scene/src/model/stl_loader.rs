@@ -77,6 +77,7 @@ pub fn load_stl_bytes(name: &Path, bytes: &[u8], smooth_angle: Option<f32>) -> R
         parts: vec![part],
         materials: Vec::new(),
         warnings,
+        rig: None,
     })
 }
 

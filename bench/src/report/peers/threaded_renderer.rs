@@ -51,6 +51,7 @@ impl ThreadedRenderer {
                 ..ModelMaterial::default()
             }],
             warnings: Vec::new(),
+            rig: None,
         };
         if let Some(texture) = &scene.texture {
             model.materials[0].diffuse = Vec3::ONE;

@@ -1,0 +1,232 @@
+//! glTF models that move, written by the tests (`common::gltf_writer`): a skin of two joints, a mesh of two morph
+//! targets, and animations of every interpolation. Each answer is worked out by hand from the glTF 2.0
+//! specification's formulas: where a joint turned a quarter turn puts a vertex, what weights of 0.5 and 0.25 add,
+//! the cubic spline's value half way, and what each kind of bad data gives.
+
+use std::fs;
+use std::path::Path;
+use std::process::{Command, Output, Stdio};
+
+use rastty_core::math::Vec3;
+use rastty_scene::model::{LoadError, Model, ModelOptions, load_model};
+
+use crate::common::gltf_writer::GltfWriter;
+
+const H: f32 = std::f32::consts::FRAC_1_SQRT_2;
+
+/// An accessor of unsigned bytes, four to an element (`JOINTS_0`), normalised or not; its index.
+fn bytes4(w: &mut GltfWriter, values: &[u8], normalized: bool) -> usize {
+    let view = w.view(values);
+    w.accessor(&format!(
+        r#"{{"bufferView": {view}, "componentType": 5121, "normalized": {normalized}, "count": {}, "type": "VEC4"}}"#,
+        values.len() / 4
+    ))
+}
+
+/// A skin of two joints: joint 0 (node 0) at the origin, joint 1 (node 1, its child) one unit along x; a triangle
+/// (node 2) with its corner (2, 0, 0) on joint 1, the normal there +y, corner (0, 0, 0) on joint 0 and corner
+/// (0, 1, 0) half on each, its weights normalised bytes of 100 and 100 (200/255 in all, which loading
+/// normalises). Animation "bend" turns joint 1 from nothing to a quarter turn about z in one second (`LINEAR`) at
+/// key `times`. `joints` replaces the vertices' joints when given.
+fn skinned(joints: Option<&[u8]>, times: &[f32]) -> String {
+    let mut w = GltfWriter::new();
+    let position = w.floats(&[0.0, 0.0, 0.0, 2.0, 0.0, 0.0, 0.0, 1.0, 0.0], "VEC3");
+    let normal = w.floats(&[0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0], "VEC3");
+    let joints = bytes4(&mut w, joints.unwrap_or(&[0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0]), false);
+    let weights = bytes4(&mut w, &[255, 0, 0, 0, 255, 0, 0, 0, 100, 100, 0, 0], true);
+    let inverse_binds: Vec<f32> = [
+        [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0],
+        [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, -1.0, 0.0, 0.0, 1.0],
+    ]
+    .concat();
+    let bytes: Vec<u8> = inverse_binds.iter().flat_map(|v| v.to_le_bytes()).collect();
+    let view = w.view(&bytes);
+    let ibm = w.accessor(&format!(r#"{{"bufferView": {view}, "componentType": 5126, "count": 2, "type": "MAT4"}}"#));
+    let input = w.floats(times, "SCALAR");
+    let output = w.floats(&[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, H, H], "VEC4");
+    w.embedded(&format!(
+        r#""scene": 0, "scenes": [{{"nodes": [0, 2]}}],
+        "nodes": [{{"name": "root", "children": [1]}}, {{"name": "bone", "translation": [1, 0, 0]}},
+                  {{"mesh": 0, "skin": 0}}],
+        "skins": [{{"name": "arm", "joints": [0, 1], "inverseBindMatrices": {ibm}}}],
+        "meshes": [{{"primitives": [{{"attributes": {{"POSITION": {position}, "NORMAL": {normal},
+            "JOINTS_0": {joints}, "WEIGHTS_0": {weights}}}}}]}}],
+        "animations": [{{"name": "bend", "samplers": [{{"input": {input}, "output": {output}}}],
+            "channels": [{{"sampler": 0, "target": {{"node": 1, "path": "rotation"}}}}]}}]"#
+    ))
+}
+
+/// A triangle with two morph targets, +2 and +4 in z everywhere, at default weights 0.5 and 0.25, on a node whose
+/// translation animation "pulse" follows a cubic spline (x: 1 at 0 s, 3 at 2 s, out-tangent 2, in-tangent -1) and
+/// whose weights step from (0, 0) at 0 s to (1, 0) at 1 s.
+fn morphed() -> String {
+    let mut w = GltfWriter::new();
+    let position = w.floats(&[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0], "VEC3");
+    let normal = w.floats(&[0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0], "VEC3");
+    let up2 = w.floats(&[0.0, 0.0, 2.0, 0.0, 0.0, 2.0, 0.0, 0.0, 2.0], "VEC3");
+    let up4 = w.floats(&[0.0, 0.0, 4.0, 0.0, 0.0, 4.0, 0.0, 0.0, 4.0], "VEC3");
+    let spline_times = w.floats(&[0.0, 2.0], "SCALAR");
+    let spline =
+        w.floats(&[9.0, 9.0, 9.0, 1.0, 0.0, 0.0, 2.0, 0.0, 0.0, -1.0, 0.0, 0.0, 3.0, 0.0, 0.0, 9.0, 9.0, 9.0], "VEC3");
+    let step_times = w.floats(&[0.0, 1.0], "SCALAR");
+    let step = w.floats(&[0.0, 0.0, 1.0, 0.0], "SCALAR");
+    w.embedded(&format!(
+        r#""scenes": [{{"nodes": [0]}}], "nodes": [{{"mesh": 0}}],
+        "meshes": [{{"weights": [0.5, 0.25], "primitives": [{{"attributes": {{"POSITION": {position},
+            "NORMAL": {normal}}}, "targets": [{{"POSITION": {up2}}}, {{"POSITION": {up4}}}]}}]}}],
+        "animations": [{{"name": "pulse", "samplers": [
+            {{"input": {spline_times}, "output": {spline}, "interpolation": "CUBICSPLINE"}},
+            {{"input": {step_times}, "output": {step}, "interpolation": "STEP"}}],
+            "channels": [{{"sampler": 0, "target": {{"node": 0, "path": "translation"}}}},
+                         {{"sampler": 1, "target": {{"node": 0, "path": "weights"}}}}]}}]"#
+    ))
+}
+
+/// Loads glTF JSON text from a fresh folder.
+fn load(json: &str) -> Result<Model, LoadError> {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(dir.path().join("m.gltf"), json).unwrap();
+    load_model(dir.path().join("m.gltf"), &ModelOptions::default())
+}
+
+fn near(a: Vec3, b: Vec3) -> bool {
+    (a - b).length() < 1e-6
+}
+
+#[test]
+fn a_joint_turned_a_quarter_turn_carries_its_vertex_there() {
+    let mut model = load(&skinned(None, &[0.0, 1.0])).expect("the skinned triangle loads");
+    assert!(model.warnings.is_empty(), "{:?}", model.warnings);
+    // At rest the joints stand where they were bound: the file's positions (corner 2 too: its weights were
+    // normalised to 0.5 and 0.5; as given, 200/255 in all, it would lie at (0, 0.78, 0)).
+    assert_eq!(model.positions, [Vec3::ZERO, Vec3::new(2.0, 0.0, 0.0), Vec3::Y]);
+    let rig = model.rig.clone().expect("a rig");
+    assert_eq!(rig.animations().len(), 1);
+    assert_eq!((rig.animations()[0].name.as_deref(), rig.animations()[0].length), (Some("bend"), 1.0));
+    assert_eq!(model.pose_at(None, 1.0).unwrap(), Some(("bend".to_owned(), 1.0)));
+    // The bone, one unit long from (1, 0, 0), now points along +y: (1, 1, 0); the normal +y turns to -x; the
+    // corner on joint 0 stays. Corner 2 is half where joint 0 leaves it, (0, 1, 0), and half where joint 1 takes
+    // it, (1, 0, 0) + the quarter turn of (-1, 1, 0) = (0, -1, 0): the origin.
+    assert!(near(model.positions[1], Vec3::new(1.0, 1.0, 0.0)), "{:?}", model.positions[1]);
+    assert!(near(model.normals[1], Vec3::new(-1.0, 0.0, 0.0)), "{:?}", model.normals[1]);
+    assert_eq!(model.positions[0], Vec3::ZERO);
+    assert!(near(model.positions[2], Vec3::ZERO), "{:?}", model.positions[2]);
+    // Half way, an eighth of a turn (spherical interpolation at constant speed).
+    model.pose_at(Some("bend"), 0.5).unwrap();
+    assert!(near(model.positions[1], Vec3::new(1.0 + H, H, 0.0)), "{:?}", model.positions[1]);
+    // Before the first key and after the last, the keys' own poses; by number as well as by name.
+    model.pose_at(Some("0"), -3.0).unwrap();
+    assert!(near(model.positions[1], Vec3::new(2.0, 0.0, 0.0)));
+    model.pose_at(Some("0"), 30.0).unwrap();
+    assert!(near(model.positions[1], Vec3::new(1.0, 1.0, 0.0)));
+    // The rest pose again.
+    model.pose(None, 0.0);
+    assert_eq!(model.positions[1], Vec3::new(2.0, 0.0, 0.0));
+    let e = model.pose_at(Some("walk"), 1.0).unwrap_err();
+    assert!(e.contains("no animation walk") && e.contains("0: bend"), "{e}");
+}
+
+#[test]
+fn a_skinned_mesh_without_normals_keeps_flat_normals_as_it_moves() {
+    let json = skinned(None, &[0.0, 1.0]);
+    let at = json.find(r#""NORMAL": "#).unwrap();
+    let end = at + json[at..].find(',').unwrap() + 1;
+    let mut model = load(&format!("{}{}", &json[..at], &json[end..])).expect("loads without normals");
+    // Each corner its own vertex, with its face's normal: (2, 0, 0) x (0, 1, 0) = +z at rest.
+    assert_eq!(model.normals, [Vec3::Z; 3]);
+    model.pose_at(Some("bend"), 0.5).unwrap();
+    assert!(near(model.positions[1], Vec3::new(1.0 + H, H, 0.0)), "{:?}", model.positions[1]);
+    let [a, b, c] = [model.positions[0], model.positions[1], model.positions[2]];
+    assert!(near(model.normals[0], (b - a).cross(c - a).normalize_or_zero()));
+}
+
+#[test]
+fn morph_weights_default_to_the_mesh_and_animations_step_and_spline() {
+    let mut model = load(&morphed()).expect("the morphed triangle loads");
+    // Weights 0.5 and 0.25 of +2 and +4 in z: +2.
+    assert_eq!(model.positions, [Vec3::new(0.0, 0.0, 2.0), Vec3::new(1.0, 0.0, 2.0), Vec3::new(0.0, 1.0, 2.0)]);
+    // At 1 s: the weights have stepped to (1, 0), +2 in z; the spline is half way, x = 2.75
+    // (0.5 * 1 + 0.25 * 2 + 0.5 * 3 - 0.25 * -1).
+    model.pose_at(None, 1.0).unwrap();
+    assert_eq!(model.positions[0], Vec3::new(2.75, 0.0, 2.0));
+    // Just before 1 s the step still holds (0, 0).
+    model.pose_at(None, 0.999).unwrap();
+    assert_eq!(model.positions[0].z, 0.0);
+    // At 0.5 s (u = 0.25): x = 1.96875; at the end, 3.
+    model.pose_at(Some("pulse"), 0.5).unwrap();
+    assert_eq!(model.positions[0], Vec3::new(1.968_75, 0.0, 0.0));
+    model.pose_at(Some("pulse"), 2.0).unwrap();
+    assert_eq!(model.positions[0], Vec3::new(3.0, 0.0, 2.0));
+}
+
+#[test]
+fn bad_animation_data_is_an_error_or_a_warning_that_names_it() {
+    // A joint beyond the skin's two, with a weight: an error naming the vertex and the joint.
+    let e = load(&skinned(Some(&[0, 0, 0, 0, 5, 0, 0, 0, 0, 0, 0, 0]), &[0.0, 1.0])).unwrap_err().to_string();
+    assert!(e.contains("m.gltf") && e.contains("vertex 1") && e.contains("beyond the skin's 2 joints"), "{e}");
+    // Key times that do not increase: the channel is left out with a warning, the model still loads.
+    let model = load(&skinned(None, &[1.0, 0.5])).expect("loads without the bad channel");
+    assert!(model.warnings.iter().any(|w| w.contains("bend") && w.contains("key 1") && w.contains("left out")));
+    assert_eq!(model.rig.as_ref().unwrap().animations()[0].length, 0.0);
+    // A cycle of nodes in a file with a skin.
+    let cycle = skinned(None, &[0.0, 1.0]).replacen(
+        r#"{"name": "bone", "translation": [1, 0, 0]}"#,
+        r#"{"name": "bone", "translation": [1, 0, 0], "children": [0]}"#,
+        1,
+    );
+    let e = load(&cycle).unwrap_err().to_string();
+    assert!(e.contains("cycle") || e.contains("two parents"), "{e}");
+    // Joints for fewer vertices than there are.
+    let e = load(&skinned(Some(&[0; 8]), &[0.0, 1.0])).unwrap_err().to_string();
+    assert!(e.contains("JOINTS_0 has 2 and WEIGHTS_0 3 entries for 3 positions"), "{e}");
+}
+
+/// `rastty ARGS` in `dir`.
+fn rastty(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_rastty"))
+        .args(args)
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .output()
+        .expect("the rastty binary runs")
+}
+
+#[test]
+fn render_draws_the_moment_asked_for_and_explain_lists_the_animations() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(dir.path().join("arm.gltf"), skinned(None, &[0.0, 1.0])).unwrap();
+    let picture = |args: &[&str]| {
+        let mut all = vec!["render", "arm.gltf", "-o", "out.png", "--size", "96x72"];
+        all.extend_from_slice(args);
+        let output = rastty(dir.path(), &all);
+        assert!(output.status.success(), "{all:?}: {}", String::from_utf8_lossy(&output.stderr));
+        fs::read(dir.path().join("out.png")).unwrap()
+    };
+    let rest = picture(&[]);
+    let bent = picture(&["--time", "1"]);
+    assert_ne!(rest, bent, "a quarter turn of the bone shows");
+    assert_eq!(picture(&["--time", "0"]), rest, "time 0 is the first key, the bind pose");
+    assert_eq!(picture(&["--time", "1", "--animation", "bend"]), bent);
+    assert_eq!(picture(&["--time", "5", "--animation", "0"]), bent, "after the last key, the last");
+
+    let output = rastty(dir.path(), &["render", "arm.gltf", "-o", "x.png", "--time", "1", "--animation", "walk"]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("arm.gltf") && stderr.contains("no animation walk") && stderr.contains("0: bend"),
+        "{stderr}"
+    );
+
+    let output = rastty(dir.path(), &["render", "arm.gltf", "--explain"]);
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert!(output.status.success());
+    for line in
+        ["animations: 1", "  0: bend, 1 s, 1 channel", "    node 1 rotation: linear, 2 keys", "  0: arm, 2 joints"]
+    {
+        assert!(stdout.lines().any(|l| l == line), "{line:?} not in\n{stdout}");
+    }
+    // A model that does not move: a warning, and its rest picture.
+    let output = rastty(dir.path(), &["render", "-o", "spot.png", "--size", "32x24", "--time", "1"]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(output.status.success() && stderr.contains("has no animation"), "{stderr}");
+}
