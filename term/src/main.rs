@@ -11,7 +11,6 @@ mod viewer;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::str::FromStr;
-use std::sync::Arc;
 
 use crate::render_stats::{FrameStats, PassCounts, SceneCounts, TurntableFrameTimes, TurntableSummary};
 use crate::turntable_export::{DEFAULT_FPS, MAX_FPS, MAX_FRAMES, Turntable, TurntableError, TurntableOutput};
@@ -128,6 +127,10 @@ struct RenderArgs {
         requires = "turntable"
     )]
     fps: u32,
+    /// Turntable: record the animation (--animation, else the first) instead of turning: N frames over its length
+    /// from its start, at --fps, the camera still.
+    #[arg(long, requires = "turntable", conflicts_with = "time")]
+    animate: bool,
     /// Turntable GIF: dither each frame (Floyd-Steinberg) to its palette: smoother gradients, with noise that
     /// moves from frame to frame (and a larger file).
     #[arg(long, requires = "turntable")]
@@ -191,11 +194,13 @@ struct SceneArgs {
     #[arg(long, value_name = "DEGREES", allow_negative_numbers = true, value_parser = smooth_angle)]
     smooth_angle: Option<f32>,
     /// glTF models that move: draw each at this moment, in seconds, of its animation (--animation, else its first;
-    /// before its first key or after its last, the nearest key). Without it, models stand in their rest pose.
+    /// before its first key or after its last, the nearest key). Without it, `render` draws models in their rest
+    /// pose; the viewer plays the animation, looping, from here (else from its start).
     #[arg(long, value_name = "SECONDS", allow_negative_numbers = true, value_parser = finite)]
     time: Option<f32>,
-    /// The animation --time poses, by name or by number from 0 (default: each model's first).
-    #[arg(long, value_name = "NAME|INDEX", requires = "time")]
+    /// The animation --time poses (at 0 s without it) and the viewer plays, by name or by number from 0 (default: the
+    /// first).
+    #[arg(long, value_name = "NAME|INDEX")]
     animation: Option<String>,
 }
 
@@ -238,31 +243,22 @@ impl SceneArgs {
                 textures = false;
             }
         }
-        if let Some(time) = self.time {
-            pose(&mut opened.data, self.animation.as_deref(), time)?;
-        }
         for warning in opened.warnings() {
             eprintln!("rastty: warning: {}", Escaped(warning));
         }
-        let scene = PreparedScene::new(opened.data).map_err(|e| format!("{}: {e}", opened.name))?;
+        let in_scene = |e: &dyn std::fmt::Display| format!("{}: {e}", opened.name);
+        let mut scene = PreparedScene::new(opened.data).map_err(|e| in_scene(&e))?;
+        if self.time.is_some() || self.animation.is_some() {
+            let time = self.time.unwrap_or(0.0);
+            match scene.choose_animation(self.animation.as_deref()).map_err(|e| in_scene(&e))? {
+                Some(animation) => scene.pose(Some(animation), time).map_err(|e| in_scene(&e))?,
+                None => {
+                    eprintln!("rastty: warning: nothing in {} moves: --time leaves it at rest", Escaped(&opened.name))
+                }
+            }
+        }
         Ok((scene, opened.name, self.plan(textures)))
     }
-}
-
-/// Poses every object at `time` of its animation `animation` (`--time`, `--animation`); an object without
-/// animations gets a warning and stands in its rest pose.
-fn pose(data: &mut SceneData, animation: Option<&str>, time: f32) -> Result<(), String> {
-    for (i, object) in data.objects.iter_mut().enumerate() {
-        let file = Escaped(&object.mesh_path.to_string_lossy()).to_string();
-        match Arc::make_mut(&mut object.model).pose_at(animation, time) {
-            Ok(Some(_)) => {}
-            Ok(None) => {
-                data.warnings.push(format!("object {} ({file}) has no animation: --time leaves it at rest", i + 1))
-            }
-            Err(e) => return Err(format!("{file}: {e}")),
-        }
-    }
-    Ok(())
 }
 
 fn smooth_angle(s: &str) -> Result<f32, String> {
@@ -413,6 +409,18 @@ fn render_turntable(
     name: &str,
     options: &PlanOptions,
 ) -> Result<(), String> {
+    let animate = match args.animate {
+        true => {
+            let found = scene
+                .choose_animation(args.scene.animation.as_deref())
+                .map_err(|e| format!("{}: {e}", Escaped(name)))?;
+            let Some(animation) = found else {
+                return Err(format!("nothing in {} moves: --animate has no animation to record", Escaped(name)));
+            };
+            Some((animation, scene.animations()[animation].1))
+        }
+        false => None,
+    };
     let turntable = Turntable {
         scene,
         camera: args.scene.camera(),
@@ -422,6 +430,7 @@ fn render_turntable(
         frames,
         fps: args.fps,
         dither: if args.dither { Dither::FloydSteinberg } else { Dither::None },
+        animate,
     };
     if args.stats {
         print!("{}", SceneCounts { scene, name });
@@ -451,8 +460,11 @@ fn render_turntable(
 fn view(args: &ViewerArgs) -> Result<ExitCode, String> {
     // Before loading: a large model need not be read to learn that there is no terminal to show it in.
     crate::viewer::ensure_terminal().map_err(|e| e.to_string())?;
-    let (scene, name, plan) = args.scene.load(args.model.as_deref())?;
+    let (mut scene, name, plan) = args.scene.load(args.model.as_deref())?;
+    // The first animation (or --animation's), from --time or its start.
+    let animation = scene.choose_animation(args.scene.animation.as_deref())?;
     let options = ViewerOptions {
+        animation: animation.map(|a| (a, args.scene.time.unwrap_or(0.0))),
         orbit: args.scene.camera().orbit(&scene),
         plan,
         cell_mode: args.mode,
@@ -462,7 +474,7 @@ fn view(args: &ViewerArgs) -> Result<ExitCode, String> {
         cell_aspect: args.cell_aspect,
         pacing: !args.no_pacing,
     };
-    match crate::viewer::run(&scene, &name, &options).map_err(|e| e.to_string())? {
+    match crate::viewer::run(&mut scene, &name, &options).map_err(|e| e.to_string())? {
         // Killed by a signal: exit as the shell expects, 128 + the signal number.
         ViewerExit::Signal(signal) => Ok(ExitCode::from(128u8.saturating_add(u8::try_from(signal).unwrap_or(0)))),
         ViewerExit::Quit | ViewerExit::TerminalGone => Ok(ExitCode::SUCCESS),

@@ -127,15 +127,19 @@ impl fmt::Display for FrameStats<'_> {
     }
 }
 
-/// One turntable frame's line: its number, its yaw (the `--yaw` that renders it alone), [`RenderTime`], and the
-/// time its palette took (GIF) and its encoding and writing.
+/// One turntable frame's line: its number, its yaw (the `--yaw` that renders it alone) or, recording an animation,
+/// its time (the `--time`), [`RenderTime`], and the time its palette took (GIF) and its encoding and writing.
 #[derive(Clone, Copy, Debug)]
 pub struct TurntableFrameTimes<'a>(pub &'a ExportedFrame<'a>);
 
 impl fmt::Display for TurntableFrameTimes<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let frame = self.0;
-        write!(f, "frame {} (yaw {} degrees): render {}; ", frame.index, frame.yaw_degrees, RenderTime(frame.image))?;
+        match frame.time {
+            Some(time) => write!(f, "frame {} (time {time} s): ", frame.index)?,
+            None => write!(f, "frame {} (yaw {} degrees): ", frame.index, frame.yaw_degrees)?,
+        }
+        write!(f, "render {}; ", RenderTime(frame.image))?;
         if let Some(palette) = frame.times.palette {
             write!(f, "palette {:.2} ms, ", ms(palette))?;
         }

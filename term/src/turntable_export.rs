@@ -223,6 +223,8 @@ pub struct ExportedFrame<'a> {
     pub index: u32,
     /// Its yaw in degrees: `rastty render --yaw` with this value (and the other options the same) renders it alone.
     pub yaw_degrees: f32,
+    /// Recording an animation, its time in seconds: `rastty render --time` with this value renders it alone.
+    pub time: Option<f32>,
     /// The frame as rendered (its pixels before any palette), with its plan and report.
     pub image: &'a SceneImage,
     /// What its steps took.
@@ -266,6 +268,9 @@ pub struct Turntable<'a> {
     pub fps: u32,
     /// How a GIF's frames are mapped to their palettes.
     pub dither: Dither,
+    /// Record an animation instead of turning (`--animate`): its number and length in seconds; the frames are
+    /// `length / frames` seconds apart from its start, the camera the first frame's.
+    pub animate: Option<(usize, f32)>,
 }
 
 impl Turntable<'_> {
@@ -274,10 +279,19 @@ impl Turntable<'_> {
         self.camera.yaw_degrees.unwrap_or_else(|| self.camera.orbit(self.scene).angles().0.to_degrees())
     }
 
-    /// Frame `index`'s yaw in degrees: the start plus `360 index / frames`.
+    /// Frame `index`'s yaw in degrees: the start plus `360 index / frames` (the start, recording an animation).
     pub fn yaw_degrees(&self, index: u32) -> f32 {
+        if self.animate.is_some() {
+            return self.start_yaw_degrees();
+        }
         let step = 360.0 * f64::from(index) / f64::from(self.frames.max(1));
         (f64::from(self.start_yaw_degrees()) + step) as f32
+    }
+
+    /// Recording an animation, frame `index`'s time: `length index / frames` seconds.
+    pub fn time(&self, index: u32) -> Option<f32> {
+        let (_, length) = self.animate?;
+        Some((f64::from(length) * f64::from(index) / f64::from(self.frames.max(1))) as f32)
     }
 
     /// Frame `index`'s camera: the camera options with the frame's yaw, so that `rastty render --yaw` with
@@ -358,10 +372,15 @@ impl FrameLoop<'_, '_> {
     /// Renders every frame and writes it to `sink`, timing both and telling `on_frame`.
     fn run(&mut self, sink: &mut dyn FrameSink) -> Result<(), Failure> {
         let t = self.turntable;
+        // Recording an animation: a copy of the scene, posed for each frame.
+        let mut posed = t.animate.map(|_| t.scene.clone());
         for index in 0..t.frames {
+            if let (Some(scene), Some((animation, _)), Some(time)) = (&mut posed, t.animate, t.time(index)) {
+                scene.pose(Some(animation), time).map_err(|error| Failure::Render { frame: index, error })?;
+            }
             let image = render_scene_image_with(
                 &mut self.renderer,
-                t.scene,
+                posed.as_ref().unwrap_or(t.scene),
                 &t.camera(index),
                 t.size,
                 t.supersample,
@@ -373,7 +392,8 @@ impl FrameLoop<'_, '_> {
             let encode = written.elapsed().saturating_sub(palette.unwrap_or_default());
             let times = FrameTimes { render: image.render_time, palette, encode };
             self.times.push(times);
-            (self.on_frame)(&ExportedFrame { index, yaw_degrees: t.yaw_degrees(index), image: &image, times });
+            let yaw_degrees = t.yaw_degrees(index);
+            (self.on_frame)(&ExportedFrame { index, yaw_degrees, time: t.time(index), image: &image, times });
         }
         Ok(())
     }

@@ -89,6 +89,14 @@ fn load(json: &str) -> Result<Model, LoadError> {
     load_model(dir.path().join("m.gltf"), &ModelOptions::default())
 }
 
+/// Poses `model` at `time` of its animation named `name` (else numbered so; its first when `None`).
+fn pose(model: &mut Model, name: Option<&str>, time: f32) {
+    let rig = model.rig.clone().expect("a rig");
+    let animation = name.map_or(Some(0), |n| rig.find(n));
+    assert!(animation.is_some(), "no animation {name:?}");
+    model.pose(animation, time);
+}
+
 fn near(a: Vec3, b: Vec3) -> bool {
     (a - b).length() < 1e-6
 }
@@ -103,7 +111,8 @@ fn a_joint_turned_a_quarter_turn_carries_its_vertex_there() {
     let rig = model.rig.clone().expect("a rig");
     assert_eq!(rig.animations().len(), 1);
     assert_eq!((rig.animations()[0].name.as_deref(), rig.animations()[0].length), (Some("bend"), 1.0));
-    assert_eq!(model.pose_at(None, 1.0).unwrap(), Some(("bend".to_owned(), 1.0)));
+    assert_eq!(rig.find("bend"), Some(0));
+    pose(&mut model, None, 1.0);
     // The bone, one unit long from (1, 0, 0), now points along +y: (1, 1, 0); the normal +y turns to -x; the
     // corner on joint 0 stays. Corner 2 is half where joint 0 leaves it, (0, 1, 0), and half where joint 1 takes
     // it, (1, 0, 0) + the quarter turn of (-1, 1, 0) = (0, -1, 0): the origin.
@@ -112,18 +121,17 @@ fn a_joint_turned_a_quarter_turn_carries_its_vertex_there() {
     assert_eq!(model.positions[0], Vec3::ZERO);
     assert!(near(model.positions[2], Vec3::ZERO), "{:?}", model.positions[2]);
     // Half way, an eighth of a turn (spherical interpolation at constant speed).
-    model.pose_at(Some("bend"), 0.5).unwrap();
+    pose(&mut model, Some("bend"), 0.5);
     assert!(near(model.positions[1], Vec3::new(1.0 + H, H, 0.0)), "{:?}", model.positions[1]);
     // Before the first key and after the last, the keys' own poses; by number as well as by name.
-    model.pose_at(Some("0"), -3.0).unwrap();
+    pose(&mut model, Some("0"), -3.0);
     assert!(near(model.positions[1], Vec3::new(2.0, 0.0, 0.0)));
-    model.pose_at(Some("0"), 30.0).unwrap();
+    pose(&mut model, Some("0"), 30.0);
     assert!(near(model.positions[1], Vec3::new(1.0, 1.0, 0.0)));
     // The rest pose again.
     model.pose(None, 0.0);
     assert_eq!(model.positions[1], Vec3::new(2.0, 0.0, 0.0));
-    let e = model.pose_at(Some("walk"), 1.0).unwrap_err();
-    assert!(e.contains("no animation walk") && e.contains("0: bend"), "{e}");
+    assert_eq!((rig.find("walk"), rig.find("1")), (None, None));
 }
 
 #[test]
@@ -134,7 +142,7 @@ fn a_skinned_mesh_without_normals_keeps_flat_normals_as_it_moves() {
     let mut model = load(&format!("{}{}", &json[..at], &json[end..])).expect("loads without normals");
     // Each corner its own vertex, with its face's normal: (2, 0, 0) x (0, 1, 0) = +z at rest.
     assert_eq!(model.normals, [Vec3::Z; 3]);
-    model.pose_at(Some("bend"), 0.5).unwrap();
+    pose(&mut model, Some("bend"), 0.5);
     assert!(near(model.positions[1], Vec3::new(1.0 + H, H, 0.0)), "{:?}", model.positions[1]);
     let [a, b, c] = [model.positions[0], model.positions[1], model.positions[2]];
     assert!(near(model.normals[0], (b - a).cross(c - a).normalize_or_zero()));
@@ -147,15 +155,15 @@ fn morph_weights_default_to_the_mesh_and_animations_step_and_spline() {
     assert_eq!(model.positions, [Vec3::new(0.0, 0.0, 2.0), Vec3::new(1.0, 0.0, 2.0), Vec3::new(0.0, 1.0, 2.0)]);
     // At 1 s: the weights have stepped to (1, 0), +2 in z; the spline is half way, x = 2.75
     // (0.5 * 1 + 0.25 * 2 + 0.5 * 3 - 0.25 * -1).
-    model.pose_at(None, 1.0).unwrap();
+    pose(&mut model, None, 1.0);
     assert_eq!(model.positions[0], Vec3::new(2.75, 0.0, 2.0));
     // Just before 1 s the step still holds (0, 0).
-    model.pose_at(None, 0.999).unwrap();
+    pose(&mut model, None, 0.999);
     assert_eq!(model.positions[0].z, 0.0);
     // At 0.5 s (u = 0.25): x = 1.96875; at the end, 3.
-    model.pose_at(Some("pulse"), 0.5).unwrap();
+    pose(&mut model, Some("pulse"), 0.5);
     assert_eq!(model.positions[0], Vec3::new(1.968_75, 0.0, 0.0));
-    model.pose_at(Some("pulse"), 2.0).unwrap();
+    pose(&mut model, Some("pulse"), 2.0);
     assert_eq!(model.positions[0], Vec3::new(3.0, 0.0, 2.0));
 }
 
@@ -228,5 +236,76 @@ fn render_draws_the_moment_asked_for_and_explain_lists_the_animations() {
     // A model that does not move: a warning, and its rest picture.
     let output = rastty(dir.path(), &["render", "-o", "spot.png", "--size", "32x24", "--time", "1"]);
     let stderr = String::from_utf8_lossy(&output.stderr);
-    assert!(output.status.success() && stderr.contains("has no animation"), "{stderr}");
+    assert!(output.status.success() && stderr.contains("moves: --time leaves it at rest"), "{stderr}");
+}
+
+/// The animation line of the viewer's HUD on `screen`, if it shows one.
+fn animation_line(screen: &str) -> Option<String> {
+    let at = screen.find("animation 1/1")?;
+    Some(screen[at..].lines().next()?.trim_end().trim_end_matches('│').trim_end().to_owned())
+}
+
+#[test]
+fn the_viewer_plays_the_animation_and_its_keys_pause_and_speed_it() {
+    use crate::common::tmux::{Tmux, tmux_wanted};
+    if !tmux_wanted() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("arm.gltf");
+    fs::write(&file, skinned(None, &[0.0, 1.0])).unwrap();
+    let tmux = Tmux::start_with("animation", 100, 32, &[&file]);
+    // Not a steady picture: it moves.
+    tmux.wait_for("a picture", || tmux.screen().contains('▀').then_some(()));
+    tmux.send_keys("i");
+    let first = tmux.wait_for("the HUD's animation line", || animation_line(&tmux.screen()));
+    assert!(first.contains("bend") && first.contains("/ 1.00 s") && first.contains("1x"), "{first}");
+    let playing =
+        tmux.wait_for("the animation's time to move", || animation_line(&tmux.screen()).filter(|line| *line != first));
+    assert!(!playing.contains("paused"), "{playing}");
+    tmux.send_keys("o");
+    let paused = tmux.wait_for("the pause", || animation_line(&tmux.screen()).filter(|l| l.contains("paused")));
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    let time = |line: &str| line.split("   ").nth(1).map(str::to_owned);
+    assert_eq!(time(&animation_line(&tmux.screen()).unwrap()), time(&paused), "paused, the time stays");
+    tmux.send_keys(">");
+    tmux.wait_for("twice the speed", || animation_line(&tmux.screen()).filter(|l| l.contains("2x   paused")));
+    tmux.send_keys("q");
+    let (status, tty_same) = tmux.wait_for_exit();
+    assert_eq!(status, 0);
+    tmux.assert_restored(tty_same);
+}
+
+#[test]
+fn an_animated_turntable_records_the_stills_of_its_times() {
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(dir.path().join("arm.gltf"), skinned(None, &[0.0, 1.0])).unwrap();
+    let view = ["--size", "64x48", "--yaw", "30"];
+    let mut args = vec!["render", "arm.gltf", "--turntable", "4", "--animate", "-o", "f-#.png", "--stats"];
+    args.extend_from_slice(&view);
+    let output = rastty(dir.path(), &args);
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
+    assert!(stdout.contains("frame 1 (time 0.25 s): render"), "{stdout}");
+    let rgb = |file: &str| image::open(dir.path().join(file)).expect("a PNG").to_rgb8().into_raw();
+    let mut frames = Vec::new();
+    for k in 0..4 {
+        let time = format!("{}", f64::from(k) * 0.25);
+        let mut still = vec!["render", "arm.gltf", "-o", "still.png", "--time", &time];
+        still.extend_from_slice(&view);
+        assert!(rastty(dir.path(), &still).status.success());
+        let frame = rgb(&format!("f-{k}.png"));
+        assert_eq!(frame, rgb("still.png"), "frame {k} is the still at {time} s");
+        frames.push(frame);
+    }
+    assert_ne!(frames[0], frames[2], "the bone moves");
+
+    // Nothing to record, and --time with --animate: errors that say so.
+    let output = rastty(dir.path(), &["render", "--turntable", "2", "--animate", "-o", "spot.gif"]);
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert_eq!(output.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("nothing in built-in Spot moves"), "{stderr}");
+    let output =
+        rastty(dir.path(), &["render", "arm.gltf", "--turntable", "2", "--animate", "--time", "1", "-o", "a.gif"]);
+    assert_eq!(output.status.code(), Some(2), "{}", String::from_utf8_lossy(&output.stderr));
 }

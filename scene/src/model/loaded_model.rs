@@ -9,7 +9,6 @@ use super::bounding_box::BoundingBox;
 use super::material::ModelMaterial;
 use super::rig::{PosedVertices, Rig};
 use super::texture_image::TextureImage;
-use crate::escaped::Escaped;
 
 /// An owned triangle model, ready for the core.
 ///
@@ -72,32 +71,6 @@ impl Model {
             };
             rig.pose(animation, time, &mut vertices);
         }
-    }
-
-    /// Poses the model at `time` seconds of the animation named `animation` (else numbered so, from 0), or of its
-    /// first animation when `None` ([`Self::pose`]). Returns the animation's label and length, or `None` when the
-    /// model has no animation and none was named (the model is left as it is).
-    ///
-    /// # Errors
-    /// A message naming the animation asked for, and those there are, when the model has none of that name or
-    /// number.
-    pub fn pose_at(&mut self, animation: Option<&str>, time: f32) -> Result<Option<(String, f32)>, String> {
-        let animations = self.rig.as_ref().map_or(&[][..], |r| r.animations());
-        let index = match animation {
-            None if animations.is_empty() => return Ok(None),
-            None => 0,
-            Some(name) => self.rig.as_ref().and_then(|r| r.find(name)).ok_or_else(|| {
-                let there: Vec<String> =
-                    animations.iter().enumerate().map(|(i, a)| format!("{i}: {}", Escaped(&a.label(i)))).collect();
-                match there.is_empty() {
-                    true => format!("there is no animation {}: the model has none", Escaped(name)),
-                    false => format!("there is no animation {} (there are {})", Escaped(name), there.join(", ")),
-                }
-            })?,
-        };
-        let found = (animations[index].label(index), animations[index].length);
-        self.pose(Some(index), time);
-        Ok(Some(found))
     }
 
     /// Number of triangles.

@@ -12,6 +12,7 @@ use rastty_core::mesh::{TangentError, compute_tangents};
 use super::bounds::scene_bounds;
 use super::interleaved::{InterleavedBuffers, PartMaps};
 use super::{Orbit, SceneRenderError};
+use crate::escaped::Escaped;
 use crate::model::Model;
 use crate::scene_file::{CameraPlacement, NormalSpaceSpec, SceneCamera, SceneData, SceneObject};
 
@@ -23,7 +24,10 @@ static NEXT_ID: AtomicU64 = AtomicU64::new(0);
 /// by several such objects is computed once), and each part's maps of one size are interleaved texel by texel
 /// ([`PartMaps`], shared by the parts with the same maps). Nothing else is precomputed: which effects run is decided
 /// per frame.
-#[derive(Debug)]
+///
+/// A scene whose models move is posed in place ([`Self::pose`]): its camera stays framed around the rest pose, so
+/// that a moving model does not move the view.
+#[derive(Clone, Debug)]
 pub struct PreparedScene {
     data: SceneData,
     bounds: BoundingSphere,
@@ -47,31 +51,7 @@ impl PreparedScene {
     pub fn new(data: SceneData) -> Result<Self, SceneRenderError> {
         let bounds = scene_bounds(&data.objects).ok_or(SceneRenderError::Empty)?;
         let labels: Vec<String> = data.objects.iter().enumerate().map(|(i, o)| object_label(i, o)).collect();
-        let mut shared: HashMap<*const Model, Arc<[Vec4]>> = HashMap::new();
-        let mut tangents = Vec::with_capacity(data.objects.len());
-        for (object, label) in data.objects.iter().zip(&labels) {
-            let model = &object.model;
-            let tangent_map = |part| object.material.normal_over(model.part_material(part));
-            let wanted = (0..model.parts.len())
-                .any(|part| tangent_map(part).is_some_and(|(_, s)| s == NormalSpaceSpec::Tangent))
-                && model.uvs.is_some();
-            if !wanted {
-                tangents.push(None);
-                continue;
-            }
-            let key = Arc::as_ptr(&object.model);
-            let computed = match shared.get(&key) {
-                Some(t) => Arc::clone(t),
-                None => {
-                    let t: Arc<[Vec4]> = model_tangents(&object.model)
-                        .map_err(|error| SceneRenderError::Tangents { object: label.clone(), error })?
-                        .into();
-                    shared.insert(key, Arc::clone(&t));
-                    t
-                }
-            };
-            tangents.push(Some(computed));
-        }
+        let tangents = object_tangents(&data.objects, &labels)?;
         let mut buffers = InterleavedBuffers::new();
         let maps = data
             .objects
@@ -118,10 +98,111 @@ impl PreparedScene {
         self.labels.get(object).map_or("", String::as_str)
     }
 
-    /// A number unique to this preparation, for caches of things computed from it.
+    /// A number unique to this preparation (and pose), for caches of things computed from it.
     pub fn id(&self) -> u64 {
         self.id
     }
+
+    /// The animations of the scene's models, by number: the label of the first model that has one of that number,
+    /// and the longest of their lengths in seconds. Empty when nothing moves.
+    pub fn animations(&self) -> Vec<(String, f32)> {
+        let mut found: Vec<(String, f32)> = Vec::new();
+        for rig in self.data.objects.iter().filter_map(|o| o.model.rig.as_deref()) {
+            for (k, animation) in rig.animations().iter().enumerate() {
+                match found.get_mut(k) {
+                    Some((_, length)) => *length = length.max(animation.length),
+                    None => found.push((animation.label(k), animation.length)),
+                }
+            }
+        }
+        found
+    }
+
+    /// The number of the animation named `name` in the first model that has one of that name, else `name` read as a
+    /// number below [`Self::animations`]' count.
+    pub fn find_animation(&self, name: &str) -> Option<usize> {
+        let rigs = || self.data.objects.iter().filter_map(|o| o.model.rig.as_deref());
+        let count = rigs().map(|r| r.animations().len()).max().unwrap_or(0);
+        rigs()
+            .find_map(|r| r.animations().iter().position(|a| a.name.as_deref() == Some(name)))
+            .or_else(|| name.parse::<usize>().ok().filter(|&k| k < count))
+    }
+
+    /// The animation to pose or play: the one named (or numbered) `name`, else the first; `None` when nothing in the
+    /// scene moves and no name was given.
+    ///
+    /// # Errors
+    /// A message naming the animation asked for and listing those there are (escaped), when none has that name or
+    /// number.
+    pub fn choose_animation(&self, name: Option<&str>) -> Result<Option<usize>, String> {
+        let animations = self.animations();
+        match name {
+            None => Ok((!animations.is_empty()).then_some(0)),
+            Some(name) => self.find_animation(name).map(Some).ok_or_else(|| {
+                let there: Vec<String> =
+                    animations.iter().enumerate().map(|(k, (label, _))| format!("{k}: {}", Escaped(label))).collect();
+                if there.is_empty() {
+                    format!("there is no animation {}: nothing in the scene moves", Escaped(name))
+                } else {
+                    format!("there is no animation {} (there are {})", Escaped(name), there.join(", "))
+                }
+            }),
+        }
+    }
+
+    /// Poses every model that moves at `time` seconds of its animation number `animation` (the rest pose for
+    /// `None`, or for a model without that animation; [`Model::pose`]), then measures the bounds again and
+    /// computes the tangents of its normal-mapped meshes again. The camera stays where it was framed.
+    ///
+    /// # Errors
+    /// [`SceneRenderError::Tangents`] as [`Self::new`].
+    pub fn pose(&mut self, animation: Option<usize>, time: f32) -> Result<(), SceneRenderError> {
+        let mut moved = false;
+        for object in &mut self.data.objects {
+            let Some(rig) = object.model.rig.as_deref() else { continue };
+            let own = animation.filter(|&k| k < rig.animations().len());
+            Arc::make_mut(&mut object.model).pose(own, time);
+            moved = true;
+        }
+        if !moved {
+            return Ok(());
+        }
+        self.tangents = object_tangents(&self.data.objects, &self.labels)?;
+        self.bounds = scene_bounds(&self.data.objects).unwrap_or(self.bounds);
+        self.id = NEXT_ID.fetch_add(1, Ordering::Relaxed);
+        Ok(())
+    }
+}
+
+/// Per object: the tangents of its mesh, when it draws with a tangent-space normal map and has texture coordinates
+/// (computed once for a mesh several objects share).
+fn object_tangents(objects: &[SceneObject], labels: &[String]) -> Result<Vec<Option<Arc<[Vec4]>>>, SceneRenderError> {
+    let mut shared: HashMap<*const Model, Arc<[Vec4]>> = HashMap::new();
+    let mut tangents = Vec::with_capacity(objects.len());
+    for (object, label) in objects.iter().zip(labels) {
+        let model = &object.model;
+        let tangent_map = |part| object.material.normal_over(model.part_material(part));
+        let wanted = (0..model.parts.len())
+            .any(|part| tangent_map(part).is_some_and(|(_, s)| s == NormalSpaceSpec::Tangent))
+            && model.uvs.is_some();
+        if !wanted {
+            tangents.push(None);
+            continue;
+        }
+        let key = Arc::as_ptr(&object.model);
+        let computed = match shared.get(&key) {
+            Some(t) => Arc::clone(t),
+            None => {
+                let t: Arc<[Vec4]> = model_tangents(&object.model)
+                    .map_err(|error| SceneRenderError::Tangents { object: label.clone(), error })?
+                    .into();
+                shared.insert(key, Arc::clone(&t));
+                t
+            }
+        };
+        tangents.push(Some(computed));
+    }
+    Ok(tangents)
 }
 
 /// `object N (FILE)`, with the mesh's file name only (or `builtin:NAME`).

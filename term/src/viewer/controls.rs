@@ -38,6 +38,12 @@ pub enum Action {
     ToggleMultisample,
     /// Turntable rotation on / off.
     ToggleTurntable,
+    /// Play / pause the animation.
+    TogglePlayback,
+    /// The next (+1) or previous (-1) animation, from its start.
+    StepAnimation(i32),
+    /// Play the animation twice as fast (+1) or half as fast (-1).
+    ChangeSpeed(i32),
     /// HUD on / off.
     ToggleHud,
     /// Key help on / off.
@@ -62,6 +68,9 @@ pub const HELP: &[&str] = &[
     "1 2 3                 normal maps, specular, glow",
     "4 5                   shadows, ambient occlusion",
     "space                 turntable",
+    "o                     play / pause animation",
+    ", .                   previous / next animation",
+    "< >                   slower / faster animation",
     "i                     info (HUD)",
     "?                     this help",
     "q / Esc / Ctrl-C      quit",
@@ -103,6 +112,11 @@ fn key_action(key: Key) -> Option<Action> {
         Key::Char('x') => Some(Action::ToggleWireframe),
         Key::Char('e') => Some(Action::ToggleMultisample),
         Key::Char(' ') => Some(Action::ToggleTurntable),
+        Key::Char('o') => Some(Action::TogglePlayback),
+        Key::Char('.') => Some(Action::StepAnimation(1)),
+        Key::Char(',') => Some(Action::StepAnimation(-1)),
+        Key::Char('>') => Some(Action::ChangeSpeed(1)),
+        Key::Char('<') => Some(Action::ChangeSpeed(-1)),
         Key::Char('i') => Some(Action::ToggleHud),
         Key::Char('?') => Some(Action::ToggleHelp),
         Key::Char(_) => None,

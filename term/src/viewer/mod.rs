@@ -25,7 +25,7 @@ use controls::{Action, HELP, action_for};
 use frame_writer::{Frame, FrameWriter, REFINE_AFTER, WriterStats};
 use graphics_probe::ProbeAnswers;
 use input_decoder::{ESCAPE_WAIT, Input, InputDecoder};
-use state::{Effect, ViewerState};
+use state::{Effect, Playback, ViewerState};
 use terminal_session::TerminalSession;
 use tty::{Gone, Tty, Woken, write_until};
 
@@ -97,6 +97,9 @@ pub struct ViewerOptions {
     /// Pace the writer by the terminal's answers and send a moving picture within a tolerance on a slow link
     /// ([`FrameWriter`]); off, every frame is exact and written as fast as the terminal takes it.
     pub pacing: bool,
+    /// The animation to play, by number ([`PreparedScene::animations`]), and the time it starts at; `None` when
+    /// nothing moves.
+    pub animation: Option<(usize, f32)>,
 }
 
 /// Why the viewer stopped with an error.
@@ -148,11 +151,11 @@ fn terminal_error(e: io::Error) -> ViewerError {
 }
 
 /// Shows `scene` (called `name` in the HUD and in errors) until the user quits, a signal arrives or the terminal
-/// goes away.
+/// goes away, playing its animation (posing the scene) when it has one.
 ///
 /// # Errors
 /// [`ViewerError`]; the terminal is restored in every case.
-pub fn run(scene: &PreparedScene, name: &str, options: &ViewerOptions) -> Result<ViewerExit, ViewerError> {
+pub fn run(scene: &mut PreparedScene, name: &str, options: &ViewerOptions) -> Result<ViewerExit, ViewerError> {
     ensure_terminal()?;
     let orbit = options.orbit;
     // The first frame is planned now, so a scene that cannot be drawn (a point light inside its bounds casting
@@ -181,11 +184,16 @@ pub fn run(scene: &PreparedScene, name: &str, options: &ViewerOptions) -> Result
     };
     let writer =
         FrameWriter::start(output.try_clone().map_err(terminal_error)?, (graphics, options.dither), options.pacing);
+    let animations = scene.animations();
+    let playback = options.animation.map(|(animation, time)| Playback::new(animation, animations.len(), time));
     let mut viewer = Viewer {
         scene,
+        animations,
+        posed: None,
+        pose_time: Duration::ZERO,
         renderer: SceneRenderer::new(),
         name: name.into(),
-        state: ViewerState::new(orbit, options.plan, DEFAULT_CELL_ASPECT),
+        state: ViewerState::new(orbit, options.plan, DEFAULT_CELL_ASPECT, playback),
         canvas: Canvas::default(),
         cell_mode: options.cell_mode,
         graphics,
@@ -250,7 +258,13 @@ impl FrameClock {
 }
 
 struct Viewer<'a> {
-    scene: &'a PreparedScene,
+    scene: &'a mut PreparedScene,
+    /// The scene's animations: label and length.
+    animations: Vec<(String, f32)>,
+    /// The animation and time the scene stands posed at.
+    posed: Option<(usize, f32)>,
+    /// How long the last pose took.
+    pose_time: Duration,
     /// Keeps the shadow maps from frame to frame.
     renderer: SceneRenderer,
     name: String,
@@ -320,6 +334,7 @@ impl Viewer<'_> {
     ) -> Result<ViewerExit, ViewerError> {
         let mut dirty = true;
         let mut last_spin = Instant::now();
+        let mut last_tick = Instant::now();
         let (mut decoder, mut inputs, mut actions) = (InputDecoder::new(), typed, Vec::new());
         let mut buffer = [0u8; 4096];
         loop {
@@ -335,6 +350,13 @@ impl Viewer<'_> {
                 last_spin = now;
                 dirty = true;
             }
+            if let Some(playback) = &mut self.state.playback {
+                let now = Instant::now();
+                let length = self.animations.get(playback.animation).map_or(0.0, |a| a.1);
+                playback.advance((now - last_tick).as_secs_f32().min(0.25), length);
+                last_tick = now;
+                dirty |= !playback.paused;
+            }
             // A still picture that went out smaller (a slow link) is drawn again at full size.
             let sharpen = !dirty && self.sharpen_at.is_some_and(|at| Instant::now() >= at);
             if dirty || sharpen {
@@ -342,7 +364,8 @@ impl Viewer<'_> {
                 writer.send(frame);
                 dirty = false;
             }
-            let mut timeout = if self.state.turntable { TURNTABLE_FRAME } else { IDLE_POLL };
+            let moving = self.state.turntable || self.state.playback.is_some_and(|p| !p.paused);
+            let mut timeout = if moving { TURNTABLE_FRAME } else { IDLE_POLL };
             if let Some(at) = self.sharpen_at {
                 timeout = timeout.min(at.saturating_duration_since(Instant::now()));
             }
@@ -414,6 +437,7 @@ impl Viewer<'_> {
             let grid = overlay::notice(usize::from(cols), usize::from(rows), "terminal too small");
             return Ok(Frame { grid, image: None });
         }
+        self.pose()?;
         let (width, height, aspect) = self.render_size();
         let n = width * height;
         self.canvas.pixels.resize(n, 0);
@@ -454,6 +478,19 @@ impl Viewer<'_> {
             overlay::draw_centered_box(&mut grid, HELP);
         }
         Ok(Frame { grid, image })
+    }
+
+    /// Poses the scene at the animation's time, unless it stands there already.
+    fn pose(&mut self) -> Result<(), ViewerError> {
+        let Some(p) = self.state.playback else { return Ok(()) };
+        if self.posed == Some((p.animation, p.time)) {
+            return Ok(());
+        }
+        let start = Instant::now();
+        self.scene.pose(Some(p.animation), p.time).map_err(|e| ViewerError::Scene(self.name.clone(), e))?;
+        self.pose_time = start.elapsed();
+        self.posed = Some((p.animation, p.time));
+        Ok(())
     }
 
     fn hud_lines(&self, written: WriterStats) -> Vec<String> {
@@ -504,6 +541,20 @@ impl Viewer<'_> {
             ),
             format!("cell aspect {:.2} ({})", self.cell_aspect, self.cell_aspect_source()),
         ];
+        if let Some(p) = self.state.playback {
+            let (label, length) = self.animations.get(p.animation).map_or(("", 0.0), |(l, t)| (l.as_str(), *t));
+            lines.push(format!(
+                "animation {}/{} {}   {:.2} / {:.2} s   {}x{}   pose {:.2} ms",
+                p.animation + 1,
+                p.count,
+                Escaped(label),
+                p.time,
+                length,
+                p.speed,
+                if p.paused { "   paused" } else { "" },
+                self.pose_time.as_secs_f64() * 1e3
+            ));
+        }
         if let Some(report) = &self.last_report {
             let ms = |d: Duration| d.as_secs_f64() * 1e3;
             let kept = report.shadow_passes.iter().filter(|p| p.reused).count();

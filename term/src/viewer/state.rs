@@ -12,6 +12,39 @@ const DRAG_DEGREES_PER_CELL: f32 = 2.5;
 const ZOOM_FACTOR: f32 = 1.12;
 /// Turntable speed in degrees per second.
 pub const TURNTABLE_DEGREES_PER_SECOND: f32 = 40.0;
+/// The slowest and fastest an animation plays, times its own speed (`<` halves it, `>` doubles it).
+const SPEEDS: (f32, f32) = (1.0 / 16.0, 16.0);
+
+/// An animation of the scene, playing or paused.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Playback {
+    /// Its number.
+    pub animation: usize,
+    /// How many animations the scene has.
+    pub count: usize,
+    /// Seconds into it.
+    pub time: f32,
+    /// Times its own speed.
+    pub speed: f32,
+    /// Stopped where it is.
+    pub paused: bool,
+}
+
+impl Playback {
+    /// Animation `animation` of `count`, playing from `time` at its own speed.
+    pub fn new(animation: usize, count: usize, time: f32) -> Self {
+        Self { animation, count, time, speed: 1.0, paused: false }
+    }
+
+    /// Moves on by `seconds` of wall time, looping over an animation `length` seconds long.
+    pub fn advance(&mut self, seconds: f32, length: f32) {
+        if self.paused {
+            return;
+        }
+        self.time += seconds * self.speed;
+        self.time = if length > 0.0 { self.time.rem_euclid(length) } else { 0.0 };
+    }
+}
 
 /// The viewer's state.
 #[derive(Clone, Debug)]
@@ -22,6 +55,8 @@ pub struct ViewerState {
     pub options: PlanOptions,
     /// Turning by itself.
     pub turntable: bool,
+    /// The animation, when the scene has any.
+    pub playback: Option<Playback>,
     /// Showing the HUD.
     pub hud: bool,
     /// Showing the key help.
@@ -50,13 +85,14 @@ impl ViewerState {
         self.cell_aspect = cell_aspect;
     }
 
-    /// The state at start-up, for cells `cell_aspect` times as tall as wide.
-    pub fn new(orbit: Orbit, options: PlanOptions, cell_aspect: f32) -> Self {
+    /// The state at start-up, for cells `cell_aspect` times as tall as wide, playing `playback`.
+    pub fn new(orbit: Orbit, options: PlanOptions, cell_aspect: f32, playback: Option<Playback>) -> Self {
         Self {
             cell_aspect,
             orbit,
             options,
             turntable: false,
+            playback,
             hud: false,
             help: false,
             drag: None,
@@ -100,6 +136,20 @@ impl ViewerState {
             Action::ToggleWireframe => self.options.wireframe = !self.options.wireframe,
             Action::ToggleMultisample => self.options.multisample = !self.options.multisample,
             Action::ToggleTurntable => self.turntable = !self.turntable,
+            Action::TogglePlayback => {
+                let Some(p) = &mut self.playback else { return Effect::None };
+                p.paused = !p.paused;
+            }
+            Action::StepAnimation(step) => {
+                let Some(p) = &mut self.playback else { return Effect::None };
+                let count = p.count.max(1) as i64;
+                p.animation = (p.animation as i64 + i64::from(step)).rem_euclid(count) as usize;
+                p.time = 0.0;
+            }
+            Action::ChangeSpeed(step) => {
+                let Some(p) = &mut self.playback else { return Effect::None };
+                p.speed = (p.speed * 2f32.powi(step)).clamp(SPEEDS.0, SPEEDS.1);
+            }
             Action::ToggleHud => self.hud = !self.hud,
             Action::ToggleHelp => self.help = !self.help,
             Action::Resize(..) => {}
@@ -131,7 +181,32 @@ mod tests {
             near: None,
             far: None,
         };
-        ViewerState::new(Orbit::new(camera), PlanOptions::default(), 2.0)
+        ViewerState::new(Orbit::new(camera), PlanOptions::default(), 2.0, Some(Playback::new(0, 3, 0.0)))
+    }
+
+    #[test]
+    fn animation_keys_pause_step_and_change_speed_and_time_loops() {
+        let mut state = state();
+        let p = |s: &ViewerState| s.playback.unwrap();
+        state.playback.as_mut().unwrap().advance(2.5, 1.0);
+        assert_eq!(p(&state).time, 0.5, "2.5 s into a 1 s animation is 0.5 s into its third loop");
+        assert_eq!(state.apply(Action::TogglePlayback), Effect::Redraw);
+        state.playback.as_mut().unwrap().advance(0.25, 1.0);
+        assert_eq!((p(&state).paused, p(&state).time), (true, 0.5), "paused, it stays");
+        state.apply(Action::StepAnimation(-1));
+        assert_eq!((p(&state).animation, p(&state).time), (2, 0.0), "before the first, the last, from its start");
+        state.apply(Action::StepAnimation(1));
+        assert_eq!(p(&state).animation, 0);
+        state.apply(Action::ChangeSpeed(1));
+        state.apply(Action::TogglePlayback);
+        state.playback.as_mut().unwrap().advance(0.25, 1.0);
+        assert_eq!(p(&state).time, 0.5, "twice as fast");
+        for _ in 0..10 {
+            state.apply(Action::ChangeSpeed(-1));
+        }
+        assert_eq!(p(&state).speed, 1.0 / 16.0, "the slowest");
+        let mut still = ViewerState::new(state.orbit, PlanOptions::default(), 2.0, None);
+        assert_eq!(still.apply(Action::TogglePlayback), Effect::None, "nothing moves: nothing to do");
     }
 
     #[test]
