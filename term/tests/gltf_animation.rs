@@ -309,3 +309,34 @@ fn an_animated_turntable_records_the_stills_of_its_times() {
         rastty(dir.path(), &["render", "arm.gltf", "--turntable", "2", "--animate", "--time", "1", "-o", "a.gif"]);
     assert_eq!(output.status.code(), Some(2), "{}", String::from_utf8_lossy(&output.stderr));
 }
+
+#[test]
+fn a_scene_file_names_an_animation_and_a_start_time_per_object() {
+    use rastty_scene::scene_file::load as load_scene;
+    use rastty_scene::scene_render::PreparedScene;
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(dir.path().join("arm.gltf"), skinned(None, &[0.0, 1.0])).unwrap();
+    let scene = |own: &str| {
+        let text = format!(
+            "[[objects]]\nmesh = \"arm.gltf\"\n{own}\n[[objects]]\nmesh = \"arm.gltf\"\ntranslate = [0, 0, 3]\n"
+        );
+        fs::write(dir.path().join("s.toml"), text).unwrap();
+        load_scene(dir.path().join("s.toml"))
+    };
+    // The first object stands where its animation is at 1 s, the second at rest.
+    let data = scene("animation = \"bend\"\ntime = 1").expect("the scene loads");
+    assert!(near(data.objects[0].model.positions[1], Vec3::new(1.0, 1.0, 0.0)));
+    assert_eq!(data.objects[1].model.positions[1], Vec3::new(2.0, 0.0, 0.0));
+    // On the scene's clock, the first runs from its start: at -0.5 s it is half way; the second, at -0.5 s of the
+    // chosen animation, holds its first key.
+    let mut prepared = PreparedScene::new(data).unwrap();
+    prepared.pose(Some(0), -0.5).unwrap();
+    let objects = &prepared.data().objects;
+    assert!(near(objects[0].model.positions[1], Vec3::new(1.0 + H, H, 0.0)), "{:?}", objects[0].model.positions[1]);
+    assert!(near(objects[1].model.positions[1], Vec3::new(2.0, 0.0, 0.0)));
+
+    let e = scene("animation = 3").unwrap_err().to_string();
+    assert!(e.contains("s.toml:3") && e.contains("objects[0].animation") && e.contains("0: bend"), "{e}");
+    let e = scene("time = 1").unwrap_err().to_string();
+    assert!(e.contains("objects[0].time") && e.contains("needs `animation`"), "{e}");
+}

@@ -15,11 +15,11 @@ use super::defaults;
 use super::error::{SceneFileError, SceneFileErrorKind};
 use super::hex_color::parse_hex_color;
 use super::loaded::{
-    CameraPlacement, FramedCamera, ObjectMaterial, ObjectNormalMap, SceneCamera, SceneData, SceneLight, SceneLightKind,
-    SceneObject, SceneProjection,
+    CameraPlacement, FramedCamera, ObjectAnimation, ObjectMaterial, ObjectNormalMap, SceneCamera, SceneData,
+    SceneLight, SceneLightKind, SceneObject, SceneProjection,
 };
 use super::schema::{
-    CameraSpec, FilterSpec, LightSpec, LightType, MaterialSpec, Mipmaps, ObjectSpec, Triple, WrapSpec,
+    CameraSpec, FilterSpec, LightSpec, LightType, MaterialSpec, Mipmaps, NameOrIndex, ObjectSpec, Triple, WrapSpec,
 };
 use super::transform::object_transform;
 use super::validate::{BUILTIN_PREFIX, Checker, unit};
@@ -142,7 +142,33 @@ impl Loader<'_> {
         let scale = o.scale.as_ref().map_or(Vec3::ONE, |s| vec3(s.get_ref().triple()));
         let transform = object_transform(vec3_or(&o.translate, Vec3::ZERO), vec3_or(&o.rotate, Vec3::ZERO), scale);
         let material = self.material(&o.material, &format!("{key}.material"), model.uvs.is_some())?;
-        Ok(SceneObject { mesh_path, model, transform, material })
+        let Some(spec) = &o.animation else {
+            return Ok(SceneObject { mesh_path, model, transform, material, animation: None });
+        };
+        let animations = model.rig.as_ref().map_or(&[][..], |r| r.animations());
+        let index = match spec.get_ref() {
+            NameOrIndex::Name(name) => animations.iter().position(|a| a.name.as_deref() == Some(name)),
+            NameOrIndex::Index(i) => usize::try_from(*i).ok().filter(|&i| i < animations.len()),
+        };
+        let Some(index) = index else {
+            let asked = match spec.get_ref() {
+                NameOrIndex::Name(name) => Escaped(name).to_string(),
+                NameOrIndex::Index(i) => i.to_string(),
+            };
+            let there: Vec<String> =
+                animations.iter().enumerate().map(|(k, a)| format!("{k}: {}", Escaped(&a.label(k)))).collect();
+            let message = match there.is_empty() {
+                true => format!("there is no animation {asked}: {} does not move", path_text(&mesh_path)),
+                false => format!("there is no animation {asked} (there are {})", there.join(", ")),
+            };
+            return Err(self.checker.invalid(&spec.span(), format!("{key}.animation"), message));
+        };
+        let start = o.time.as_ref().map_or(0.0, |t| *t.get_ref());
+        // Its own copy, standing where its animation starts: a still shows it there.
+        let mut posed = Model::clone(&model);
+        posed.pose(Some(index), start);
+        let animation = Some(ObjectAnimation { index, start });
+        Ok(SceneObject { mesh_path, model: Arc::new(posed), transform, material, animation })
     }
 
     fn mesh(

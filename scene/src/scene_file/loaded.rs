@@ -175,6 +175,17 @@ pub struct SceneObject {
     pub transform: Mat4,
     /// The material keys of the scene file, over the model's own materials.
     pub material: ObjectMaterial,
+    /// The animation of its own it plays, whatever is chosen for the others (`animation`, `time`).
+    pub animation: Option<ObjectAnimation>,
+}
+
+/// An object's own animation ([`SceneObject::animation`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ObjectAnimation {
+    /// Its number in the object's model ([`crate::model::Rig::animations`]).
+    pub index: usize,
+    /// Where it stands when the scene's clock reads 0, in seconds.
+    pub start: f32,
 }
 
 /// The `[objects.material]` keys of an object, with their images loaded. `None` means the key was left out.

@@ -58,12 +58,12 @@ mod validate;
 pub use error::{SceneFileError, SceneFileErrorKind};
 pub use hex_color::parse_hex_color;
 pub use loaded::{
-    CameraPlacement, FramedCamera, ObjectMaterial, ObjectNormalMap, SceneCamera, SceneData, SceneLight, SceneLightKind,
-    SceneObject, SceneProjection,
+    CameraPlacement, FramedCamera, ObjectAnimation, ObjectMaterial, ObjectNormalMap, SceneCamera, SceneData,
+    SceneLight, SceneLightKind, SceneObject, SceneProjection,
 };
 pub use location::Location;
 pub use open::{OpenError, OpenedScene, is_scene_file, open};
-pub use schema::{LightSpace, NormalSpaceSpec, SceneSpec};
+pub use schema::{LightSpace, NameOrIndex, NormalSpaceSpec, SceneSpec};
 pub use transform::object_transform;
 pub(crate) use validate::BUILTIN_PREFIX;
 

@@ -17,7 +17,13 @@ impl SceneData {
     /// background; linear light; no ambient occlusion. The model keeps its warnings ([`Model::warnings`]).
     pub fn from_model(model: Model, mesh_path: PathBuf) -> Self {
         let transform = model.fit();
-        let object = SceneObject { mesh_path, model: Arc::new(model), transform, material: ObjectMaterial::default() };
+        let object = SceneObject {
+            mesh_path,
+            model: Arc::new(model),
+            transform,
+            material: ObjectMaterial::default(),
+            animation: None,
+        };
         Self {
             camera: CameraPlacement::Framed(FramedCamera::DEFAULT),
             lights: VIEWER_LIGHTS.to_vec(),

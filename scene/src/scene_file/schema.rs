@@ -167,9 +167,52 @@ pub struct ObjectSpec {
     /// `scale = NUMBER` or `scale = [x, y, z]`: a uniform or per-axis scale, applied first; every factor positive.
     /// Default 1.
     pub scale: Option<Spanned<NumberOrTriple>>,
+    /// `animation = "NAME"` or `animation = NUMBER` (from 0): a glTF model that moves plays this animation of its
+    /// own, whatever the viewer's keys choose for the others. Default: the scene's chosen animation.
+    pub animation: Option<Spanned<NameOrIndex>>,
+    /// `time = SECONDS`: where the object's animation stands when the scene's clock reads 0 (a still drawn without
+    /// `--time` shows it there). Finite. Default 0; needs `animation`.
+    pub time: Option<Spanned<f32>>,
     /// `[objects.material]`: how the surface looks. Optional.
     #[serde(default)]
     pub material: MaterialSpec,
+}
+
+/// A name or a number from 0 (`animation = "Walk"` or `animation = 2`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum NameOrIndex {
+    /// By name.
+    Name(String),
+    /// By number.
+    Index(u64),
+}
+
+impl<'de> Deserialize<'de> for NameOrIndex {
+    fn deserialize<D: Deserializer<'de>>(deserializer: D) -> Result<Self, D::Error> {
+        struct NameOrIndexVisitor;
+
+        impl Visitor<'_> for NameOrIndexVisitor {
+            type Value = NameOrIndex;
+
+            fn expecting(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+                f.write_str("a name or a number from 0")
+            }
+
+            fn visit_str<E: de::Error>(self, v: &str) -> Result<Self::Value, E> {
+                Ok(NameOrIndex::Name(v.to_owned()))
+            }
+
+            fn visit_u64<E: de::Error>(self, v: u64) -> Result<Self::Value, E> {
+                Ok(NameOrIndex::Index(v))
+            }
+
+            fn visit_i64<E: de::Error>(self, v: i64) -> Result<Self::Value, E> {
+                u64::try_from(v).map(NameOrIndex::Index).map_err(|_| E::custom(format!("{v} is below 0")))
+            }
+        }
+
+        deserializer.deserialize_any(NameOrIndexVisitor)
+    }
 }
 
 /// `[objects.material]`: the object's surface. Every key is optional.

@@ -296,6 +296,16 @@ fn object(c: &Checker<'_>, o: &ObjectSpec, key: &str) -> Result<(), SceneFileErr
             return Err(c.invalid(&angle.span(), format!("{key}.smooth_angle"), message));
         }
     }
+    if let Some(time) = &o.time {
+        let v = *time.get_ref();
+        if !v.is_finite() {
+            return Err(c.invalid(&time.span(), format!("{key}.time"), format!("must be a finite number, got {v}")));
+        }
+        if o.animation.is_none() {
+            let message = "needs `animation`, the animation it is a time of";
+            return Err(c.invalid(&time.span(), format!("{key}.time"), message));
+        }
+    }
     if let Some(t) = &o.translate {
         c.finite3(t, &format!("{key}.translate"))?;
     }

@@ -48,6 +48,7 @@ mod tests {
             model: Arc::new(model),
             transform,
             material: ObjectMaterial::default(),
+            animation: None,
         }
     }
 

@@ -151,7 +151,8 @@ impl PreparedScene {
     }
 
     /// Poses every model that moves at `time` seconds of its animation number `animation` (the rest pose for
-    /// `None`, or for a model without that animation; [`Model::pose`]), then measures the bounds again and
+    /// `None`, or for a model without that animation; [`Model::pose`]); an object with an animation of its own
+    /// ([`SceneObject::animation`]) at its start plus `time` of that one. Then measures the bounds again and
     /// computes the tangents of its normal-mapped meshes again. The camera stays where it was framed.
     ///
     /// # Errors
@@ -160,8 +161,12 @@ impl PreparedScene {
         let mut moved = false;
         for object in &mut self.data.objects {
             let Some(rig) = object.model.rig.as_deref() else { continue };
-            let own = animation.filter(|&k| k < rig.animations().len());
-            Arc::make_mut(&mut object.model).pose(own, time);
+            // An object with an animation of its own plays it, from its start.
+            let (chosen, at) = match object.animation {
+                Some(own) => (Some(own.index), own.start + time),
+                None => (animation.filter(|&k| k < rig.animations().len()), time),
+            };
+            Arc::make_mut(&mut object.model).pose(chosen, at);
             moved = true;
         }
         if !moved {

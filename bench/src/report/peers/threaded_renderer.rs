@@ -68,6 +68,7 @@ impl ThreadedRenderer {
                 mip_filter: MipFilter::Off,
                 ..Default::default()
             },
+            animation: None,
         };
         let camera = SceneCamera {
             position: Vec3::new(0.0, 0.0, 3.0),
