@@ -279,34 +279,39 @@ fn bins_made_for_another_draw_are_not_used() {
 
 #[test]
 fn binning_counts_each_triangle_once_as_a_whole_frame_draw_does() {
-    // Far enough that nothing is clipped: binning's counts are then the whole frame's.
+    // From afar nothing is clipped; from close by, triangles cross the near plane and the guard band, and their
+    // pieces are counted by what they come to, as the whole frame's draw counts them.
     let torus = Torus::new(1.0, 0.4, 24, 12);
     let mesh = torus.mesh();
-    let view = rastty_core::look_at(Vec3::new(0.3, 1.5, 4.0), Vec3::ZERO, Vec3::Y).unwrap();
-    let projection = rastty_core::perspective(0.9, W as f32 / H as f32, 0.5, 10.0).unwrap();
-    let shader = Normals { clip_from_object: projection * view };
-    let state = DrawState::default();
-    let bands = Bands::new(W, H, 5, Samples::One).unwrap();
-    let mut memory = vec![BinnedTriangle::UNSET; mesh.triangle_count()];
-    let bins = bin(&mut memory, &mesh, &shader, &state, bands, 0..mesh.triangle_count());
-    let frame = whole(0..H, Samples::One, |t| {
-        let stats = draw(t, &mesh, &shader, &state).unwrap();
-        assert_eq!(bins.stats(), DrawStats { fragments: 0, ..stats }, "binning counts what the frame's draw does");
-        assert_eq!(stats.clipped, 0);
-        assert!(stats.culled > 0 && stats.rasterized > 0, "{stats:?}");
-        stats
-    });
-    // The kept triangles cover a pixel: fewer than rasterized, which counts those that cover none.
-    assert!(bins.kept() as u64 <= bins.stats().rasterized && bins.kept() > 0);
-    let fragments: u64 = (0..bands.count())
-        .map(|b| {
-            band(bands.rows(b), Samples::One, core::slice::from_ref(&bins), |t| {
-                draw(t, &mesh, &shader, &state).unwrap()
+    for (eye, near, clipping) in [(Vec3::new(0.3, 1.5, 4.0), 0.5, false), (Vec3::new(0.3, 0.5, 2.2), 1.95, true)] {
+        let view = rastty_core::look_at(eye, Vec3::ZERO, Vec3::Y).unwrap();
+        let projection = rastty_core::perspective(0.9, W as f32 / H as f32, near, 10.0).unwrap();
+        let shader = Normals { clip_from_object: projection * view };
+        let state = DrawState::default();
+        let bands = Bands::new(W, H, 5, Samples::One).unwrap();
+        let mut memory = vec![BinnedTriangle::UNSET; mesh.triangle_count()];
+        let bins = bin(&mut memory, &mesh, &shader, &state, bands, 0..mesh.triangle_count());
+        let frame = whole(0..H, Samples::One, |t| {
+            let stats = draw(t, &mesh, &shader, &state).unwrap();
+            assert_eq!(bins.stats(), DrawStats { fragments: 0, ..stats }, "binning counts what the frame's draw does");
+            assert_eq!(stats.clipped > 0, clipping, "{stats:?}");
+            assert!(stats.culled > 0 && stats.rasterized > 0, "{stats:?}");
+            let s = bins.stats();
+            assert_eq!(s.invalid + s.outside + s.culled + s.degenerate + s.rasterized, s.triangles_in, "{s:?}");
+            stats
+        });
+        // The kept triangles cover a pixel: fewer than rasterized, which counts those that cover none.
+        assert!(bins.kept() as u64 <= bins.stats().rasterized && bins.kept() > 0);
+        let fragments: u64 = (0..bands.count())
+            .map(|b| {
+                band(bands.rows(b), Samples::One, core::slice::from_ref(&bins), |t| {
+                    draw(t, &mesh, &shader, &state).unwrap()
+                })
+                .2
             })
-            .2
-        })
-        .sum();
-    assert_eq!(fragments, frame.2, "the bands' fragments add up to the frame's");
+            .sum();
+        assert_eq!(fragments, frame.2, "the bands' fragments add up to the frame's");
+    }
 }
 
 #[test]

@@ -1,9 +1,9 @@
 //! The checks every model loader's target makes: the model is what `Model`'s documentation promises, and it draws.
 
+use rastty_core::target::{Rgb888, Target};
 use rastty_scene::model::{COORDINATE_LIMIT, MAX_TEXTURE_SIDE, Model};
 use rastty_scene::scene_file::SceneData;
 use rastty_scene::scene_render::{CameraOptions, PlanOptions, PreparedScene, ScenePlan, SceneRenderer, ShadingMode};
-use rastty_core::target::{Rgb888, Target};
 
 const WIDTH: u32 = 32;
 const HEIGHT: u32 = 24;

@@ -14,6 +14,7 @@
 use arbitrary::{Arbitrary, Result, Unstructured};
 use rastty_core::camera::{look_at, orthographic, perspective};
 use rastty_core::color::{ShadingSpace, pack_rgb888};
+use rastty_core::math::BoundingSphere;
 use rastty_core::math::{Lanes, Mat4, Vec2, Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh, compute_tangents};
 use rastty_core::pipeline::{
@@ -24,8 +25,9 @@ use rastty_core::shading::{
     Light, LightKind, Lighting, Material, NormalMap, NormalSpace, Object, ShadingError, ShadingModel, Transforms,
     Variant, draw_mesh,
 };
-use rastty_core::math::BoundingSphere;
-use rastty_core::shadow::{ShadowBias, ShadowMap, ShadowView, WindowRanges, clear_shadow_depth, draw_shadow_caster, window_ranges_band};
+use rastty_core::shadow::{
+    ShadowBias, ShadowMap, ShadowView, WindowRanges, clear_shadow_depth, draw_shadow_caster, window_ranges_band,
+};
 use rastty_core::target::{ColorBuffer, DEPTH_LANES, DepthBuffer, NoColor, Rgb888, Samples, Target};
 use rastty_core::testing::{draw_mesh_general, draw_unspecialised};
 use rastty_core::texture::{
@@ -462,7 +464,12 @@ impl DepthBuffer for CheckedDepth<'_> {
             Depths::U16(d) => d.nearer(index, z),
         }
     }
-    fn test_and_set_lanes(&mut self, start: usize, z: &Lanes<f32, DEPTH_LANES>, covered: &Lanes<bool, DEPTH_LANES>) -> u32 {
+    fn test_and_set_lanes(
+        &mut self,
+        start: usize,
+        z: &Lanes<f32, DEPTH_LANES>,
+        covered: &Lanes<bool, DEPTH_LANES>,
+    ) -> u32 {
         for lane in (0..DEPTH_LANES).filter(|&lane| covered[lane]) {
             self.check(start + lane, z[lane]);
         }

@@ -3,9 +3,9 @@
 //! prepared, planned and drawn once into a small frame; scenes that name files are not loaded, so that a run does not
 //! depend on the machine's files.
 
+use rastty_core::target::{Rgb888, Target};
 use rastty_scene::scene_file::parse;
 use rastty_scene::scene_render::{CameraOptions, PlanOptions, PreparedScene, ScenePlan, SceneRenderer};
-use rastty_core::target::{Rgb888, Target};
 
 use crate::model_checks::has_control;
 

@@ -11,6 +11,8 @@
 //!   squares placed by TRS, matrix, child and mirroring nodes, with normals, texture coordinates, colours, tangents,
 //!   a PNG in the binary chunk as base colour, normal and emissive map, a texture transform and two materials; and
 //!   a `.glb` of a strip, a fan, a sparse accessor and a line primitive.
+//! - `corpus/gltf_animation/`: the target's skinned and morphed triangle with its joint turning a quarter turn,
+//!   for every pair of interpolations, one to four keys and each rotation component type.
 //! - `corpus/scene_parse/`: the scene files of `assets/scenes/`, and a scene of built-in meshes only (which the
 //!   target draws).
 //! - `corpus/raster/`: scenes found by decoding pseudo-random bytes exactly as the target does and keeping those
@@ -317,7 +319,7 @@ const GLTF_TRIANGLE: &str = r#"{"asset": {"version": "2.0"}, "scene": 0, "scenes
 "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}]}"#;
 
 /// A binary glTF file of `json` and the binary chunk `bin` (each padded to 4 bytes, as the format asks).
-fn glb(json: &str, bin: &[u8]) -> Vec<u8> {
+pub(crate) fn glb(json: &str, bin: &[u8]) -> Vec<u8> {
     let mut json = json.as_bytes().to_vec();
     json.resize(json.len().next_multiple_of(4), b' ');
     let mut bin = bin.to_vec();
@@ -426,6 +428,23 @@ fn gltf_seeds(dir: &Path) -> usize {
     seeds.len()
 }
 
+fn animation_seeds(dir: &Path) -> usize {
+    use crate::gltf_animation::{encode, run, seed_buffer};
+    let mut count = 0;
+    // Every pair of interpolations, one to four keys, each rotation type (choice: bits 0-1 rotations, 2-3 weights
+    // and translations, 4-5 keys less one, 6-7 rotation type).
+    for choice in [0x11u8, 0x15, 0x1A, 0x2E, 0x31, 0x35, 0x55, 0x95, 0x05] {
+        let cubic = |bits: u8| bits & 3 == 2;
+        let buffer = seed_buffer(usize::from((choice >> 4) & 3) + 1, cubic(choice), cubic(choice >> 2));
+        let data = encode(choice, choice & 3, 0.5, &buffer);
+        // A rotation type other than float reads the float bytes as integers: it still loads.
+        assert!(run(&data), "seed {choice:#04x} does not load");
+        write(dir, &format!("skin_morph_{choice:02x}"), &data);
+        count += 1;
+    }
+    count
+}
+
 fn scene_seeds(dir: &Path) -> usize {
     assert!(crate::scene_parse::run(BUILTIN_SCENE.as_bytes()), "the built-in scene does not parse");
     write(dir, "builtin_spots", BUILTIN_SCENE.as_bytes());
@@ -460,7 +479,8 @@ pub fn write_corpora() -> usize {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus");
     let (obj, raster) = (root.join("obj_load"), root.join("raster"));
     let (stl, scene, gltf) = (root.join("stl_load"), root.join("scene_parse"), root.join("gltf_load"));
-    for dir in [&obj, &raster, &stl, &scene, &gltf] {
+    let animation = root.join("gltf_animation");
+    for dir in [&obj, &raster, &stl, &scene, &gltf, &animation] {
         fs::create_dir_all(dir).unwrap_or_else(|e| panic!("creating {}: {e}", dir.display()));
     }
     // The checks print panics of candidates they catch; keep the output to the summary.
@@ -468,13 +488,15 @@ pub fn write_corpora() -> usize {
     let o = obj_seeds(&obj);
     let s = stl_seeds(&stl);
     let g = gltf_seeds(&gltf);
+    let a = animation_seeds(&animation);
     let p = scene_seeds(&scene);
     let (r, broken) = raster_seeds(&raster, &Path::new(env!("CARGO_MANIFEST_DIR")).join("artifacts").join("raster"));
     println!(
-        "wrote {o} seeds to {}, {s} to {}, {g} to {}, {p} to {} and {r} to {}",
+        "wrote {o} seeds to {}, {s} to {}, {g} to {}, {a} to {}, {p} to {} and {r} to {}",
         obj.display(),
         stl.display(),
         gltf.display(),
+        animation.display(),
         scene.display(),
         raster.display()
     );

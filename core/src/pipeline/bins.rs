@@ -34,9 +34,10 @@
 
 use core::ops::{Range, RangeInclusive};
 
-use super::clip::CLIP_MASK;
+use super::clip::{CLIP_MASK, ClipVertex, MAX_CLIPPED};
 use super::raster::{EdgeSetup, FixedPoint, FloatingPoint, Rasterizer, Setup};
 use super::screen_vertex::{NO_SCREEN, NOT_FINITE};
+use super::stats::Outcome;
 use super::vertex_cache::VertexCache;
 use super::{ClipVolume, DrawError, DrawState, DrawStats, EdgeArithmetic, PositionShader, Shader};
 use crate::math::Mat4;
@@ -279,8 +280,8 @@ impl<'m> BandBins<'m> {
 
     /// What binning counted for the triangles before [`Self::rest`], once for the frame: those it dropped by reason
     /// (a triangle that covers no pixel centre counts as rasterized, as in a draw), the ones it kept as rasterized,
-    /// and those to be clipped as clipped only (what their pieces do is found by the bands' draws). No fragments: the
-    /// bands' draws count those.
+    /// and those to be clipped as clipped and by what their pieces come to, as a draw of the frame counts them. No
+    /// fragments: the bands' draws count those.
     #[must_use]
     pub fn stats(&self) -> DrawStats {
         self.stats
@@ -343,8 +344,26 @@ impl BinRun<'_, '_> {
                 continue;
             }
             let (first_band, last_band) = if any & CLIP_MASK != 0 {
-                // Where its clipped pieces fall is found when they are drawn.
                 stats.clipped += 1;
+                // What its pieces come to is counted here, once for the frame, as a draw of the frame counts it;
+                // where they fall is found when the bands draw them.
+                let tri = indices.map(|i| ClipVertex { pos: shader.position(mesh, i), var: () });
+                let polygon = volume.clip(&tri, any & CLIP_MASK);
+                let verts = polygon.vertices();
+                let mut snapped = [None; MAX_CLIPPED];
+                for (s, v) in snapped.iter_mut().zip(verts) {
+                    *s = raster.snap(v.pos);
+                }
+                let mut outcome = Outcome::default();
+                for i in 1..verts.len().saturating_sub(1) {
+                    let (Some(p), Some(q), Some(r)) = (snapped[0], snapped[i], snapped[i + 1]) else { continue };
+                    outcome.record(&E::setup(&raster, [p, q, r]));
+                }
+                let reaches_pixels = outcome.rasterized();
+                outcome.count(&mut stats);
+                if !reaches_pixels {
+                    continue;
+                }
                 (0, last)
             } else {
                 match E::setup(&raster, [a.screen, b.screen, c.screen]) {

@@ -6,6 +6,7 @@ use super::fragment_stage::{FragmentStage, ShaderStage, Writes};
 use super::fragments::Fragments;
 use super::raster::{Coverage, EdgeSetup, FixedPoint, FloatingPoint, Pass, PixelLoops, Rasterizer, Setup, Shading};
 use super::screen_vertex::{NO_SCREEN, NOT_FINITE, ScreenVertex, screen_vertices};
+use super::stats::Outcome;
 use super::vertex_cache::VertexCache;
 use super::{DrawState, DrawStats, EdgeArithmetic, Interpolation, MAX_SUBPIXEL_BITS, Shader, Varyings};
 use crate::mesh::{Attributes, Mesh};
@@ -150,36 +151,6 @@ where
     match state.edges {
         EdgeArithmetic::FixedPoint => run::<S, FixedPoint>(view, vertices, mesh, shader, state, walk, path),
         EdgeArithmetic::Float => run::<S, FloatingPoint>(view, vertices, mesh, shader, state, walk, path),
-    }
-}
-
-/// What happened to the pieces of one input triangle, to count it once in [`DrawStats`].
-#[derive(Default)]
-struct Outcome {
-    rasterized: bool,
-    culled: bool,
-    degenerate: bool,
-}
-
-impl Outcome {
-    fn record<E>(&mut self, setup: &Setup<E>) {
-        match setup {
-            Setup::Degenerate => self.degenerate = true,
-            Setup::Culled => self.culled = true,
-            Setup::Empty | Setup::Ready(_) => self.rasterized = true,
-        }
-    }
-
-    fn count(self, stats: &mut DrawStats) {
-        if self.rasterized {
-            stats.rasterized += 1;
-        } else if self.culled {
-            stats.culled += 1;
-        } else if self.degenerate {
-            stats.degenerate += 1;
-        } else {
-            stats.outside += 1;
-        }
     }
 }
 

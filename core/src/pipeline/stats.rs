@@ -2,6 +2,8 @@
 
 use core::ops::AddAssign;
 
+use super::raster::Setup;
+
 /// Counts from one draw (or several, added up).
 ///
 /// Every input triangle ends in exactly one of `invalid`, `outside`, `culled`, `degenerate` and `rasterized`;
@@ -38,5 +40,42 @@ impl AddAssign for DrawStats {
         self.clipped += o.clipped;
         self.rasterized += o.rasterized;
         self.fragments += o.fragments;
+    }
+}
+
+/// What happened to the pieces of one input triangle, to count it once in [`DrawStats`].
+#[derive(Default)]
+pub(crate) struct Outcome {
+    rasterized: bool,
+    culled: bool,
+    degenerate: bool,
+}
+
+impl Outcome {
+    /// Notes what set-up made of one piece.
+    pub fn record<E>(&mut self, setup: &Setup<E>) {
+        match setup {
+            Setup::Degenerate => self.degenerate = true,
+            Setup::Culled => self.culled = true,
+            Setup::Empty | Setup::Ready(_) => self.rasterized = true,
+        }
+    }
+
+    /// Whether a piece reached the pixel loop.
+    pub fn rasterized(&self) -> bool {
+        self.rasterized
+    }
+
+    /// Counts the triangle once: rasterized if any piece was, else culled, else degenerate, else outside.
+    pub fn count(self, stats: &mut DrawStats) {
+        if self.rasterized {
+            stats.rasterized += 1;
+        } else if self.culled {
+            stats.culled += 1;
+        } else if self.degenerate {
+            stats.degenerate += 1;
+        } else {
+            stats.outside += 1;
+        }
     }
 }

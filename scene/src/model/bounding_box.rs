@@ -23,6 +23,12 @@ impl BoundingBox {
         (points.iter().all(|p| p.is_finite())).then_some(b)
     }
 
+    /// The box around both.
+    #[must_use]
+    pub fn union(&self, other: &Self) -> Self {
+        Self { min: self.min.min(other.min), max: self.max.max(other.max) }
+    }
+
     /// The centre of the box.
     pub fn center(&self) -> Vec3 {
         self.min * 0.5 + self.max * 0.5
@@ -41,11 +47,13 @@ impl BoundingBox {
     }
 
     /// The transform that moves the centre of the box to the origin and scales uniformly so that the box's
-    /// bounding sphere ([`Self::radius`]) has radius 1. A box of zero size (a single point) is only moved.
+    /// bounding sphere ([`Self::radius`]) has radius 1. A box of zero size (a single point), or one so small for its
+    /// distance from the origin that the scaled transform would overflow `f32`, is only moved.
     pub fn fit(&self) -> Mat4 {
         let radius = self.radius();
-        let scale = if radius > 0.0 && (1.0 / radius).is_finite() { 1.0 / radius } else { 1.0 };
-        Mat4::from_scale(Vec3::splat(scale)) * Mat4::from_translation(-self.center())
+        let moved = Mat4::from_translation(-self.center());
+        let scaled = Mat4::from_scale(Vec3::splat(1.0 / radius)) * moved;
+        if radius > 0.0 && scaled.is_finite() { scaled } else { moved }
     }
 }
 
@@ -89,6 +97,9 @@ mod tests {
     fn extreme_boxes_stay_finite() {
         let b = BoundingBox { min: Vec3::splat(-1e15), max: Vec3::splat(1e15) };
         assert!(b.fit().is_finite());
+        // A box of 1e-38 at 1,574 from the origin: scaling it to radius 1 would put the origin at infinity.
+        let far_speck = BoundingBox { min: Vec3::new(0.0, 1574.0, 0.0), max: Vec3::new(9e-39, 1574.0, 0.0) };
+        assert_eq!(far_speck.fit(), Mat4::from_translation(-far_speck.center()));
         assert!((b.fit().transform_point(b.max).length() - 1.0).abs() < 1e-5);
     }
 }

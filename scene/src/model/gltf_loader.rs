@@ -72,7 +72,10 @@ pub fn load_gltf_bytes(name: impl AsRef<Path>, bytes: &[u8], files: &dyn Resolve
     }
     let mut model = builder.finish();
     // A model that moves stands in its rest pose: skinned by its joints, morphed by its default weights.
-    model.pose(None, 0.0);
+    if model.rig.is_some() {
+        model.pose(None, 0.0);
+        posed_in_range(&model).map_err(fail)?;
+    }
     if model.indices.is_empty() {
         return Err(LoadError::new(name, LoadErrorKind::NoTriangles));
     }
@@ -80,6 +83,21 @@ pub fn load_gltf_bytes(name: impl AsRef<Path>, bytes: &[u8], files: &dyn Resolve
         return Err(LoadError::new(name, LoadErrorKind::TooManyVertices));
     }
     Ok(model)
+}
+
+/// The rest pose's vertices are finite and within [`COORDINATE_LIMIT`], as a placed mesh's are.
+fn posed_in_range(model: &Model) -> Result<(), String> {
+    let beyond = |p: &&Vec3| [p.x, p.y, p.z].iter().any(|v| !v.is_finite() || v.abs() > COORDINATE_LIMIT);
+    if let Some(p) = model.positions.iter().find(beyond) {
+        return Err(format!(
+            "a vertex is at ({}, {}, {}) in the rest pose (skinned and morphed), beyond the {COORDINATE_LIMIT:e} read",
+            p.x, p.y, p.z
+        ));
+    }
+    if !model.normals.iter().all(|n| n.is_finite()) || !model.tangents.iter().flatten().all(|t| t.is_finite()) {
+        return Err("a normal or tangent is not finite in the rest pose (skinned and morphed)".into());
+    }
+    Ok(())
 }
 
 /// A GLB file's header says a length of at least its own 12 bytes. The `gltf` crate (1.4.1) subtracts 12 from it

@@ -6,9 +6,13 @@ use rastty_core::math::{Mat4, Vec2, Vec3, Vec4};
 use rastty_core::mesh::{Indices, Mesh};
 
 use super::bounding_box::BoundingBox;
+use super::error::COORDINATE_LIMIT;
 use super::material::ModelMaterial;
 use super::rig::{PosedVertices, Rig};
 use super::texture_image::TextureImage;
+
+/// How many steps [`Model::reach`] samples each animation in.
+pub const MOTION_SAMPLES: u32 = 24;
 
 /// An owned triangle model, ready for the core.
 ///
@@ -101,11 +105,40 @@ impl Model {
         BoundingBox::from_points(&self.positions)
     }
 
+    /// The box around the model in every pose it takes: [`Self::bounds`] joined with the boxes of each animation
+    /// at [`MOTION_SAMPLES`] + 1 times from its start to its end (a pose with a vertex that is not finite or beyond
+    /// [`COORDINATE_LIMIT`], as no file is read, adds nothing). [`Self::bounds`] for a model that does not move.
+    pub fn reach(&self) -> Option<BoundingBox> {
+        let joined = self.bounds();
+        let Some(rig) = self.rig.as_ref().filter(|r| !r.animations().is_empty()) else { return joined };
+        // The arrays a pose writes, not the materials and their images.
+        let mut posed = Model {
+            positions: self.positions.clone(),
+            normals: self.normals.clone(),
+            tangents: self.tangents.clone(),
+            rig: Some(std::sync::Arc::clone(rig)),
+            ..Model::default()
+        };
+        let mut joined = joined;
+        for (k, animation) in rig.animations().iter().enumerate() {
+            for i in 0..=MOTION_SAMPLES {
+                posed.pose(Some(k), animation.length * i as f32 / MOTION_SAMPLES as f32);
+                let largest = |v: Vec3| v.x.abs().max(v.y.abs()).max(v.z.abs());
+                let within = |b: &BoundingBox| largest(b.min).max(largest(b.max)) <= COORDINATE_LIMIT;
+                if let Some(b) = posed.bounds().filter(within) {
+                    joined = Some(joined.map_or(b, |j| j.union(&b)));
+                }
+            }
+        }
+        joined
+    }
+
     /// The auto-fit transform: centres the bounding box at the origin and scales uniformly so that the box's
     /// bounding sphere (half the box diagonal) has radius 1. So a model with coordinates of ±250 frames like a
-    /// unit-sized one. The identity when there are no positions.
+    /// unit-sized one. The box is the one around every pose of a model that moves ([`Self::reach`]), so that all
+    /// of its motion fits. The identity when there are no positions.
     pub fn fit(&self) -> Mat4 {
-        self.bounds().map_or(Mat4::IDENTITY, |b| b.fit())
+        self.reach().map_or(Mat4::IDENTITY, |b| b.fit())
     }
 
     /// Draws every part with `texture` (for example one given on the command line for an OBJ without materials):

@@ -50,7 +50,7 @@ mod texture_image;
 pub use bounding_box::BoundingBox;
 pub use error::{COORDINATE_LIMIT, Element, LoadError, LoadErrorKind};
 pub use gltf_loader::{READ_EXTENSIONS, load_gltf_bytes};
-pub use loaded_model::{Model, Part};
+pub use loaded_model::{MOTION_SAMPLES, Model, Part};
 pub use material::{DEFAULT_DIFFUSE, ModelMaterial};
 pub use model_file::{ModelFormat, ModelOptions, SUPPORTED_MODELS, load_model};
 pub use obj_loader::load_obj_bytes;

@@ -7,15 +7,16 @@ use rastty_core::math::Vec3;
 use crate::model;
 use crate::scene_file::SceneObject;
 
-/// The sphere around the world-space bounding box of every object: each object's model-space box has its eight
-/// corners placed by the object's transform, the boxes around those are joined, and the sphere is centred on the
-/// joined box with half its diagonal as radius. `None` when no object has a finite vertex.
+/// The sphere around the world-space bounding box of every object: each object's model-space box (around every
+/// pose it takes when it moves, [`model::Model::reach`]) has its eight corners placed by the object's transform, the
+/// boxes around those are joined, and the sphere is centred on the joined box with half its diagonal as radius.
+/// `None` when no object has a finite vertex.
 ///
 /// The radius is never zero (a scene of one point gets a small sphere), so it always makes a shadow view.
 pub fn scene_bounds(objects: &[SceneObject]) -> Option<BoundingSphere> {
     let mut corners = Vec::with_capacity(objects.len() * 8);
     for object in objects {
-        let Some(b) = object.model.bounds() else { continue };
+        let Some(b) = object.model.reach() else { continue };
         for i in 0..8 {
             let pick = |bit: usize, lo: f32, hi: f32| if i & bit == 0 { lo } else { hi };
             let corner = Vec3::new(pick(1, b.min.x, b.max.x), pick(2, b.min.y, b.max.y), pick(4, b.min.z, b.max.z));

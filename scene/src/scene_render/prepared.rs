@@ -25,8 +25,8 @@ static NEXT_ID: AtomicU64 = AtomicU64::new(0);
 /// ([`PartMaps`], shared by the parts with the same maps). Nothing else is precomputed: which effects run is decided
 /// per frame.
 ///
-/// A scene whose models move is posed in place ([`Self::pose`]): its camera stays framed around the rest pose, so
-/// that a moving model does not move the view.
+/// A scene whose models move is posed in place ([`Self::pose`]); its bounds, and the camera framed around them, take
+/// in every pose of every animation, so that a moving model stays in view and does not move it.
 #[derive(Clone, Debug)]
 pub struct PreparedScene {
     data: SceneData,
@@ -152,8 +152,9 @@ impl PreparedScene {
 
     /// Poses every model that moves at `time` seconds of its animation number `animation` (the rest pose for
     /// `None`, or for a model without that animation; [`Model::pose`]); an object with an animation of its own
-    /// ([`SceneObject::animation`]) at its start plus `time` of that one. Then measures the bounds again and
-    /// computes the tangents of its normal-mapped meshes again. The camera stays where it was framed.
+    /// ([`SceneObject::animation`]) at its start plus `time` of that one; then computes the tangents of its
+    /// normal-mapped meshes again. The bounds, measured around every pose ([`Model::reach`]), and the camera framed
+    /// around them stay: the view, the clipping planes and the shadow maps' fit do not move with the model.
     ///
     /// # Errors
     /// [`SceneRenderError::Tangents`] as [`Self::new`].
@@ -173,7 +174,6 @@ impl PreparedScene {
             return Ok(());
         }
         self.tangents = object_tangents(&self.data.objects, &self.labels)?;
-        self.bounds = scene_bounds(&self.data.objects).unwrap_or(self.bounds);
         self.id = NEXT_ID.fetch_add(1, Ordering::Relaxed);
         Ok(())
     }
