@@ -551,6 +551,7 @@ fn one_quad_model() -> Model {
         }],
         warnings: Vec::new(),
         rig: None,
+        cameras: Vec::new(),
     }
 }
 

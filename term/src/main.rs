@@ -4,6 +4,23 @@
 //! Argument parsing, and `rastty render`'s files; the scene and the frame are `rastty_scene`'s, the terminal the
 //! `rastty` library's.
 
+/// Writes to standard output, like `print!`, except that a reader that has gone (`rastty render --explain | head`)
+/// is not a panic: what is left of the output is dropped and the program goes on (a PNG is still written).
+macro_rules! out {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = write!(std::io::stdout().lock(), $($arg)*);
+    }};
+}
+
+/// [`out!`] with a line end, like `println!`.
+macro_rules! outln {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stdout().lock(), $($arg)*);
+    }};
+}
+
 mod render_stats;
 mod turntable_export;
 mod viewer;
@@ -22,7 +39,7 @@ use rastty::screen::{CellMode, ColorMode};
 use rastty_core::math::Vec3;
 use rastty_scene::escaped::Escaped;
 use rastty_scene::input_file::{parse_byte_size, set_max_file_bytes};
-use rastty_scene::model::{ModelOptions, RigListing};
+use rastty_scene::model::{ModelLens, ModelOptions, RigListing};
 use rastty_scene::png_file::write_png;
 use rastty_scene::scene_file::{SceneData, open, parse_hex_color};
 use rastty_scene::scene_render::{
@@ -198,6 +215,10 @@ struct SceneArgs {
     /// pose; the viewer plays the animation, looping, from here (else from its start).
     #[arg(long, value_name = "SECONDS", allow_negative_numbers = true, value_parser = finite)]
     time: Option<f32>,
+    /// View through a camera the glTF file gives, by name or by number from 0 (its field of view across the frame's
+    /// shorter side; the camera options then move it as they move a scene file's camera).
+    #[arg(long = "camera", value_name = "NAME|INDEX")]
+    file_camera: Option<String>,
     /// The animation --time poses (at 0 s without it) and the viewer plays, by name or by number from 0 (default: the
     /// first).
     #[arg(long, value_name = "NAME|INDEX")]
@@ -242,6 +263,9 @@ impl SceneArgs {
                 opened.data.warnings.push(format!("{}; rendering untextured", reason.trim_end_matches('.')));
                 textures = false;
             }
+        }
+        if let Some(camera) = &self.file_camera {
+            opened.data.use_file_camera(camera).map_err(|e| format!("{}: {e}", opened.name))?;
         }
         for warning in opened.warnings() {
             eprintln!("rastty: warning: {}", Escaped(warning));
@@ -321,7 +345,7 @@ fn main() -> ExitCode {
             if e.use_stderr() {
                 eprintln!("{safe}");
             } else {
-                println!("{safe}");
+                outln!("{safe}");
             }
             return ExitCode::from(u8::try_from(e.exit_code()).unwrap_or(2));
         }
@@ -372,7 +396,7 @@ fn render(args: &RenderArgs) -> Result<(), String> {
         let k = args.supersample;
         let size = (args.size.0.saturating_mul(k), args.size.1.saturating_mul(k));
         let plan = ScenePlan::new(&scene, &camera, size, &options).map_err(in_scene)?;
-        print!("{plan}");
+        out!("{plan}");
         return Ok(());
     };
     if let Some((frames, output)) = turntable {
@@ -380,21 +404,35 @@ fn render(args: &RenderArgs) -> Result<(), String> {
     }
     let image = render_scene_image(&scene, &camera, args.size, args.supersample, &options).map_err(in_scene)?;
     if args.explain {
-        print!("{}", image.plan);
+        out!("{}", image.plan);
     }
     write_png(output, image.width, image.height, &image.pixels).map_err(|e| e.to_string())?;
     if args.stats {
-        print!("{}", FrameStats { scene: &scene, name: &name, image: &image });
+        out!("{}", FrameStats { scene: &scene, name: &name, image: &image });
     }
     Ok(())
 }
 
-/// Prints what moves each object that moves: its animations, their channels and lengths, its skins.
+/// Prints what each glTF object gives beyond its meshes: its animations (their channels and lengths), skins,
+/// morph targets and cameras.
 fn explain_rigs(data: &SceneData) {
     for (i, object) in data.objects.iter().enumerate() {
-        if let Some(rig) = &object.model.rig {
-            println!("object {} ({}):", i + 1, Escaped(&object.mesh_path.to_string_lossy()));
-            print!("{}", RigListing(rig));
+        let model = &object.model;
+        if model.rig.is_none() && model.cameras.is_empty() {
+            continue;
+        }
+        outln!("object {} ({}):", i + 1, Escaped(&object.mesh_path.to_string_lossy()));
+        if let Some(rig) = &model.rig {
+            out!("{}", RigListing(rig));
+        }
+        outln!("cameras: {}", model.cameras.len());
+        for (k, camera) in model.cameras.iter().enumerate() {
+            let lens = match camera.lens {
+                ModelLens::Perspective { yfov } => format!("perspective, {} degrees high", yfov.to_degrees()),
+                ModelLens::Orthographic { ymag } => format!("orthographic, {} units high", 2.0 * ymag),
+            };
+            let far = camera.far.map_or_else(|| "infinite".to_owned(), |f| f.to_string());
+            outln!("  {k}: {}, {lens}, near {}, far {far}", Escaped(&camera.label(k)), camera.near);
         }
     }
 }
@@ -433,18 +471,18 @@ fn render_turntable(
         animate,
     };
     if args.stats {
-        print!("{}", SceneCounts { scene, name });
+        out!("{}", SceneCounts { scene, name });
     }
     let report = turntable
         .export(output, |frame| {
             if frame.index == 0 && args.explain {
-                print!("{}", frame.image.plan);
+                out!("{}", frame.image.plan);
             }
             if frame.index == 0 && args.stats {
-                print!("{}", PassCounts(frame.image));
+                out!("{}", PassCounts(frame.image));
             }
             if args.stats {
-                print!("{}", TurntableFrameTimes(frame));
+                out!("{}", TurntableFrameTimes(frame));
             }
         })
         .map_err(|e| match e {
@@ -452,7 +490,7 @@ fn render_turntable(
             TurntableError::Output { .. } | TurntableError::Write { .. } => e.to_string(),
         })?;
     if args.stats {
-        print!("{}", TurntableSummary(&report));
+        out!("{}", TurntableSummary(&report));
     }
     Ok(())
 }

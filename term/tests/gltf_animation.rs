@@ -340,3 +340,38 @@ fn a_scene_file_names_an_animation_and_a_start_time_per_object() {
     let e = scene("time = 1").unwrap_err().to_string();
     assert!(e.contains("objects[0].time") && e.contains("needs `animation`"), "{e}");
 }
+
+/// A skin of `joints` joints (nodes 1 to `joints`, children of node 0, none moved) over a triangle whose corners
+/// hang on the first and last joints.
+fn many_joints(joints: usize) -> String {
+    let mut w = GltfWriter::new();
+    let position = w.floats(&[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0], "VEC3");
+    let last = (joints - 1) as u16;
+    let bytes: Vec<u8> =
+        [[0u16, 0, 0, 0], [last, 0, 0, 0], [last, 0, 0, 0]].iter().flatten().flat_map(|j| j.to_le_bytes()).collect();
+    let view = w.view(&bytes);
+    let joint_sets =
+        w.accessor(&format!(r#"{{"bufferView": {view}, "componentType": 5123, "count": 3, "type": "VEC4"}}"#));
+    let weights = w.floats(&[1.0, 0.0, 0.0, 0.0].repeat(3), "VEC4");
+    let children: Vec<String> = (1..=joints).map(|n| n.to_string()).collect();
+    let nodes: Vec<&str> = vec!["{}"; joints];
+    w.embedded(&format!(
+        r#""scenes": [{{"nodes": [0, {mesh_node}]}}],
+        "nodes": [{{"children": [{children}]}}, {nodes}, {{"mesh": 0, "skin": 0}}],
+        "skins": [{{"joints": [{children}]}}],
+        "meshes": [{{"primitives": [{{"attributes": {{"POSITION": {position}, "JOINTS_0": {joint_sets},
+            "WEIGHTS_0": {weights}}}}}]}}]"#,
+        mesh_node = joints + 1,
+        children = children.join(", "),
+        nodes = nodes.join(", "),
+    ))
+}
+
+#[test]
+fn a_skin_of_thousands_of_joints_loads_and_one_beyond_the_indices_is_refused() {
+    let model = load(&many_joints(5_000)).expect("5,000 joints load");
+    assert_eq!(model.rig.as_ref().unwrap().skins().next(), Some((None, 5_000)));
+    assert_eq!(model.positions, [Vec3::ZERO, Vec3::X, Vec3::Y], "joints at rest without inverse binds: in place");
+    let e = load(&many_joints(70_000)).unwrap_err().to_string();
+    assert!(e.contains("skin 0: 70000 joints, more than the 65535 read"), "{e}");
+}

@@ -461,3 +461,71 @@ fn vertex_colours_multiply_the_base_colour_under_every_shading_model() {
         }
     }
 }
+
+/// The unit square seen by two cameras: "front", perspective (yfov 0.8), 4 units in front of the square's centre on
+/// its node, under a parent that moves it up by 1 (so it looks at (0.5, 0.5) from (0.5, 0.5, 4) after its own
+/// translation of (0.5, -0.5, 4)); and an orthographic one, 3 units high, looking down from above with +y up turned
+/// to -z.
+fn square_with_cameras() -> String {
+    let mut w = GltfWriter::new();
+    let (p, n, _, i) = square(&mut w);
+    w.embedded(&format!(
+        r#""scenes": [{{"nodes": [0, 1, 3]}}],
+        "nodes": [{{"mesh": 0}}, {{"translation": [0, 1, 0], "children": [2]}},
+          {{"camera": 0, "translation": [0.5, -0.5, 4]}},
+          {{"camera": 1, "translation": [0.5, 5, 0], "rotation": [-0.70710677, 0, 0, 0.70710677]}}],
+        "cameras": [{{"name": "front", "type": "perspective", "perspective": {{"yfov": 0.8, "znear": 0.5, "zfar": 50}}}},
+          {{"type": "orthographic", "orthographic": {{"xmag": 2, "ymag": 1.5, "znear": 0, "zfar": 10}}}}],
+        "meshes": [{{"primitives": [{{"attributes": {{"POSITION": {p}, "NORMAL": {n}}}, "indices": {i}}}]}}]"#
+    ))
+}
+
+#[test]
+fn the_files_cameras_are_placed_by_their_nodes_and_chosen_by_name_or_number() {
+    use rastty_scene::model::ModelLens;
+    use rastty_scene::scene_file::{CameraPlacement, SceneData, SceneProjection};
+    let model = load_model_text(&square_with_cameras()).expect("the square with cameras loads");
+    assert_eq!(model.cameras.len(), 2);
+    let front = &model.cameras[0];
+    assert_eq!(
+        (front.name.as_deref(), front.lens, front.near, front.far),
+        (Some("front"), ModelLens::Perspective { yfov: 0.8 }, 0.5, Some(50.0))
+    );
+    // Placed as the object is (unfitted here): the eye at (0.5, 0.5, 4), looking down -z, +y up.
+    let camera = front.scene_camera(&rastty_core::math::Mat4::IDENTITY).unwrap();
+    assert_eq!(
+        (camera.position, camera.target, camera.up),
+        (Vec3::new(0.5, 0.5, 4.0), Vec3::new(0.5, 0.5, 3.0), Vec3::Y)
+    );
+    assert_eq!(camera.projection, SceneProjection::Perspective { fov_degrees: 0.8f32.to_degrees() });
+    // The orthographic camera looks straight down (-z turned to -y), 3 units high.
+    let above = model.cameras[1].scene_camera(&rastty_core::math::Mat4::IDENTITY).unwrap();
+    assert!((above.target - above.position - Vec3::new(0.0, -1.0, 0.0)).length() < 1e-6, "{above:?}");
+    // 3 units high, as far as the quaternion's rounding (its axes are 1 - 6e-8 long) lets it be.
+    let SceneProjection::Orthographic { height } = above.projection else { panic!("orthographic") };
+    assert!((height - 3.0).abs() < 1e-6, "{height}");
+
+    // In a scene of the model alone, fitted into the unit sphere, the camera is fitted with it; by name or number.
+    let mut data = SceneData::from_model(model, "square.gltf".into());
+    let fit = data.objects[0].transform;
+    data.use_file_camera("front").unwrap();
+    let CameraPlacement::Placed(placed) = data.camera else { panic!("a placed camera") };
+    assert_eq!(placed.position, fit.transform_point(Vec3::new(0.5, 0.5, 4.0)));
+    data.use_file_camera("1").unwrap();
+    let e = data.use_file_camera("side").unwrap_err();
+    assert!(e.contains("no camera side") && e.contains("0: front, 1: camera 1"), "{e}");
+
+    // The command line: the view through each differs from the default, --explain lists them, a wrong name fails.
+    let dir = tempfile::tempdir().unwrap();
+    fs::write(dir.path().join("square.gltf"), square_with_cameras()).unwrap();
+    let default = picture(dir.path(), "square.gltf", &[]);
+    let through_front = picture(dir.path(), "square.gltf", &["--camera", "front"]);
+    assert_ne!(default, through_front);
+    assert_ne!(through_front, picture(dir.path(), "square.gltf", &["--camera", "1"]));
+    let output = rastty(dir.path(), &["render", "square.gltf", "--explain"]);
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert!(stdout.contains("cameras: 2") && stdout.contains("  0: front, perspective"), "{stdout}");
+    let output = rastty(dir.path(), &["render", "square.gltf", "--camera", "side", "-o", "x.png"]);
+    assert_eq!(output.status.code(), Some(1));
+    assert!(String::from_utf8_lossy(&output.stderr).contains("there is no camera side"));
+}

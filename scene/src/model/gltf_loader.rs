@@ -14,6 +14,7 @@ use super::gltf_material::{UvTransform, convert, renderer_uv};
 use super::gltf_resources::{load_buffers, load_image};
 use super::gltf_rig::{Placed, RigReader, has_rig};
 use super::loaded_model::{Model, Part};
+use super::model_camera::{ModelCamera, ModelLens};
 use super::resolver::Resolver;
 use super::texture_image::TextureImage;
 use crate::escaped::Escaped;
@@ -65,12 +66,14 @@ pub fn load_gltf_bytes(name: impl AsRef<Path>, bytes: &[u8], files: &dyn Resolve
     if has_rig(&document) {
         builder.rig = Some(RigReader::new(&document, &buffers).map_err(fail)?);
     }
-    for (node, mesh, transform) in placed_meshes(&document).map_err(fail)? {
+    let placed = placed_nodes(&document).map_err(fail)?;
+    for (node, mesh, transform) in placed.meshes {
         for primitive in mesh.primitives() {
             builder.primitive(node, &mesh, &primitive, &transform).map_err(fail)?;
         }
     }
     let mut model = builder.finish();
+    model.cameras = cameras(&placed.cameras, &mut model.warnings);
     // A model that moves stands in its rest pose: skinned by its joints, morphed by its default weights.
     if model.rig.is_some() {
         model.pose(None, 0.0);
@@ -127,16 +130,24 @@ fn positions_in_range(root: &gltf::json::Root) -> Result<(), String> {
     Ok(())
 }
 
-/// The meshes of the default scene (or the first) with their nodes (by index) and the nodes' world transforms, in
-/// depth-first order; without a scene, every mesh with no node.
-fn placed_meshes<'a>(document: &'a Document) -> Result<Vec<(Option<usize>, gltf::Mesh<'a>, Mat4)>, String> {
+/// What the default scene (or the first) places: its meshes with their nodes (by index) and the nodes' world
+/// transforms, and its cameras with theirs, in depth-first order.
+struct PlacedNodes<'a> {
+    meshes: Vec<(Option<usize>, gltf::Mesh<'a>, Mat4)>,
+    cameras: Vec<(gltf::Camera<'a>, Mat4)>,
+}
+
+/// The meshes and cameras the default scene (or the first) places; without a scene, every mesh with no node and no
+/// camera.
+fn placed_nodes<'a>(document: &'a Document) -> Result<PlacedNodes<'a>, String> {
     let Some(scene) = document.default_scene().or_else(|| document.scenes().next()) else {
-        return Ok(document.meshes().map(|m| (None, m, Mat4::IDENTITY)).collect());
+        let meshes = document.meshes().map(|m| (None, m, Mat4::IDENTITY)).collect();
+        return Ok(PlacedNodes { meshes, cameras: Vec::new() });
     };
     let mut seen = vec![false; document.nodes().len()];
     let mut stack: Vec<(gltf::Node<'a>, Mat4)> = scene.nodes().map(|n| (n, Mat4::IDENTITY)).collect();
     stack.reverse();
-    let mut out = Vec::new();
+    let mut placed = PlacedNodes { meshes: Vec::new(), cameras: Vec::new() };
     while let Some((node, parent)) = stack.pop() {
         let index = node.index();
         if std::mem::replace(&mut seen[index], true) {
@@ -144,13 +155,49 @@ fn placed_meshes<'a>(document: &'a Document) -> Result<Vec<(Option<usize>, gltf:
         }
         let world = parent * node_matrix(&node);
         if let Some(mesh) = node.mesh() {
-            out.push((Some(index), mesh, world));
+            placed.meshes.push((Some(index), mesh, world));
+        }
+        if let Some(camera) = node.camera() {
+            placed.cameras.push((camera, world));
         }
         let first_child = stack.len();
         stack.extend(node.children().map(|c| (c, world)));
         stack[first_child..].reverse();
     }
-    Ok(out)
+    Ok(placed)
+}
+
+/// The cameras placed, as the model keeps them; one whose lens or planes the specification does not allow is left
+/// out with a warning.
+fn cameras(placed: &[(gltf::Camera<'_>, Mat4)], warnings: &mut Vec<String>) -> Vec<ModelCamera> {
+    let mut out = Vec::new();
+    for (camera, world) in placed {
+        let name = camera.name().map(str::to_owned);
+        let (lens, near, far) = match camera.projection() {
+            gltf::camera::Projection::Perspective(p) => {
+                (ModelLens::Perspective { yfov: p.yfov() }, p.znear(), p.zfar())
+            }
+            gltf::camera::Projection::Orthographic(o) => {
+                (ModelLens::Orthographic { ymag: o.ymag() }, o.znear(), Some(o.zfar()))
+            }
+        };
+        let lens_ok = match lens {
+            ModelLens::Perspective { yfov } => yfov > 0.0 && yfov < std::f32::consts::PI,
+            ModelLens::Orthographic { ymag } => ymag > 0.0 && ymag.is_finite(),
+        };
+        let planes_ok = near.is_finite() && near >= 0.0 && far.is_none_or(|f| f.is_finite() && f > near);
+        // An orthographic camera may have its near plane at 0; a perspective one must not.
+        let near_ok = near > 0.0 || matches!(lens, ModelLens::Orthographic { .. });
+        if !(lens_ok && planes_ok && near_ok && world.is_finite()) {
+            let label =
+                name.as_deref().map_or_else(|| format!("camera {}", camera.index()), |n| Escaped(n).to_string());
+            warnings.push(format!("{label} has a lens or planes out of range and is left out"));
+            continue;
+        }
+        let near = if near > 0.0 { near } else { f32::EPSILON };
+        out.push(ModelCamera { name, world: *world, lens, near, far });
+    }
+    out
 }
 
 /// A node's local transform as a matrix (glTF stores matrices column by column).

@@ -8,6 +8,7 @@ use rastty_core::mesh::{Indices, Mesh};
 use super::bounding_box::BoundingBox;
 use super::error::COORDINATE_LIMIT;
 use super::material::ModelMaterial;
+use super::model_camera::ModelCamera;
 use super::rig::{PosedVertices, Rig};
 use super::texture_image::TextureImage;
 
@@ -47,6 +48,8 @@ pub struct Model {
     /// What moves the model (a glTF file's node tree, skins, morph targets and animations), when its file has
     /// any: [`Self::pose`] uses it.
     pub rig: Option<std::sync::Arc<Rig>>,
+    /// The cameras the file gives (glTF), placed by their nodes, in the order the scene's nodes are met.
+    pub cameras: Vec<ModelCamera>,
 }
 
 /// A run of triangles with one name and one material.
@@ -201,6 +204,7 @@ mod tests {
             materials: vec![ModelMaterial { name: "m".into(), ..ModelMaterial::default() }],
             warnings: Vec::new(),
             rig: None,
+            cameras: Vec::new(),
         }
     }
 

@@ -78,6 +78,7 @@ pub fn load_stl_bytes(name: &Path, bytes: &[u8], smooth_angle: Option<f32>) -> R
         materials: Vec::new(),
         warnings,
         rig: None,
+        cameras: Vec::new(),
     })
 }
 

@@ -4,10 +4,10 @@ use std::fmt;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use super::{BUILTIN_PREFIX, SceneData, SceneFileError};
+use super::{BUILTIN_PREFIX, CameraPlacement, SceneData, SceneFileError, SceneObject};
 use crate::builtin::{BUILTIN_NAME, builtin_model};
 use crate::escaped::{Escaped, path_text};
-use crate::model::{LoadError, ModelOptions, TextureImage, load_model};
+use crate::model::{LoadError, ModelCamera, ModelOptions, TextureImage, load_model};
 
 /// A scene file: a path ending in `.toml` (any case). Everything else is read as a model.
 pub fn is_scene_file(path: &Path) -> bool {
@@ -76,6 +76,35 @@ pub fn open(path: Option<&Path>, options: &ModelOptions) -> Result<OpenedScene, 
 }
 
 impl SceneData {
+    /// Views the scene through a camera its models give (glTF cameras, `--camera`): the first named `name`, else
+    /// the one numbered `name` among every object's cameras in order (from 0), placed as its object is.
+    ///
+    /// # Errors
+    /// A message naming the camera asked for and listing those there are (escaped), when none has that name or
+    /// number, or it cannot be placed.
+    pub fn use_file_camera(&mut self, name: &str) -> Result<(), String> {
+        let all: Vec<(&SceneObject, usize, &ModelCamera)> =
+            self.objects.iter().flat_map(|o| o.model.cameras.iter().enumerate().map(move |(k, c)| (o, k, c))).collect();
+        let found = all
+            .iter()
+            .position(|(_, _, c)| c.name.as_deref() == Some(name))
+            .or_else(|| name.parse::<usize>().ok().filter(|&i| i < all.len()));
+        let Some(i) = found else {
+            let there: Vec<String> =
+                all.iter().enumerate().map(|(i, (_, k, c))| format!("{i}: {}", Escaped(&c.label(*k)))).collect();
+            return Err(match there.is_empty() {
+                true => format!("there is no camera {}: the models give none", Escaped(name)),
+                false => format!("there is no camera {} (there are {})", Escaped(name), there.join(", ")),
+            });
+        };
+        let (object, _, camera) = all[i];
+        let placed = camera
+            .scene_camera(&object.transform)
+            .ok_or_else(|| format!("camera {} cannot be placed: its transform has no direction", Escaped(name)))?;
+        self.camera = CameraPlacement::Placed(placed);
+        Ok(())
+    }
+
     /// Uses the image at `path` as the diffuse texture of every object (`--texture`), over their own; an object
     /// without texture coordinates gets a warning, as the image cannot show on it.
     ///
