@@ -234,19 +234,6 @@ impl Rig {
                 tangents: t.tangents.as_deref(),
             })
             .collect();
-        let source = Source {
-            positions: &instance.positions,
-            normals: instance.normals.as_deref(),
-            tangents: instance.tangents.as_deref(),
-        };
-        let mut positions = vec![Vec3::ZERO; n];
-        let mut normals = instance.normals.as_ref().map(|_| vec![Vec3::ZERO; n]);
-        let mut tangents = instance.tangents.as_ref().map(|_| vec![Vec4::ZERO; n]);
-        let out =
-            Deformed { positions: &mut positions, normals: normals.as_deref_mut(), tangents: tangents.as_deref_mut() };
-        if deform(&source, &targets, weights, Some(&skin), out).is_err() {
-            return;
-        }
         // The model's arrays as loaded hold every instance's range; a model changed by hand since keeps its vertices.
         let range = instance.vertices.clone();
         let (Some(out_positions), Some(out_normals)) =
@@ -255,18 +242,27 @@ impl Rig {
             return;
         };
         match &instance.corners {
-            None if positions.len() == range.len() => {
-                out_positions.copy_from_slice(&positions);
-                if let Some(normals) = &normals {
-                    out_normals.copy_from_slice(normals);
-                }
+            // One model vertex per source vertex: deformed straight into the model's arrays.
+            None if n == range.len() => {
                 let out_tangents = model.tangents.as_deref_mut().and_then(|t| t.get_mut(range));
-                if let (Some(tangents), Some(out)) = (&tangents, out_tangents) {
-                    out.copy_from_slice(tangents);
-                }
+                let tangents = instance.tangents.as_deref().filter(|_| out_tangents.is_some());
+                let source = Source { positions: &instance.positions, normals: instance.normals.as_deref(), tangents };
+                let out = Deformed {
+                    positions: out_positions,
+                    normals: source.normals.map(|_| out_normals),
+                    tangents: out_tangents.filter(|_| tangents.is_some()),
+                };
+                // The lengths were checked when the rig was read: nothing to refuse.
+                let _ = deform(&source, &targets, weights, Some(&skin), out);
             }
             None => {}
             Some(corners) => {
+                let source = Source { positions: &instance.positions, normals: None, tangents: None };
+                let mut positions = vec![Vec3::ZERO; n];
+                let out = Deformed { positions: &mut positions, normals: None, tangents: None };
+                if deform(&source, &targets, weights, Some(&skin), out).is_err() {
+                    return;
+                }
                 // Three model vertices per triangle, each with its face's normal.
                 let triangles = corners.chunks_exact(3).zip(out_positions.chunks_exact_mut(3));
                 for ((t, out), normal_out) in triangles.zip(out_normals.chunks_exact_mut(3)) {
