@@ -1,5 +1,5 @@
-//! The `rastty-bench` command: measurement reports of rastty as Markdown (`rastty-bench accuracy`, `effects`,
-//! `frames`, `terminal`).
+//! The `rastty-bench` command: measurement reports of rastty as Markdown (`rastty-bench accuracy`, `animation`,
+//! `effects`, `frames`, `peers`, `terminal`).
 //!
 //! Argument parsing only; the work is in the `rastty_bench` library.
 
@@ -9,7 +9,7 @@ use std::process::ExitCode;
 use clap::{Args, Parser};
 use rastty_bench::report::error::ReportError;
 use rastty_bench::report::terminal::{DEFAULT_FRAMES, TerminalReport};
-use rastty_bench::report::{effects, frames, peers};
+use rastty_bench::report::{animation, effects, frames, peers};
 use rastty_scene::escaped::{Escaped, path_text};
 use rastty_scene::scene_file::SceneData;
 use rastty_scene::scene_render::{PreparedScene, parse_size};
@@ -28,6 +28,9 @@ enum ReportCommand {
     /// Time per frame of a scene file as it is (shadow maps kept, drawn every frame, and without shadows), the
     /// same frame drawn again and again.
     Frames(FramesReportArgs),
+    /// Time per frame of a skinned, morphed model playing its animation and standing still, and of its pose alone,
+    /// taking turns.
+    Animation(AnimationReportArgs),
     /// Time per frame of the core, euc 0.5.3 and retrofire-core 0.4.0 drawing the same six pictures, one thread,
     /// side by side, and how many pixels differ.
     Peers(PeersReportArgs),
@@ -51,6 +54,20 @@ struct PeersReportArgs {
     /// Threads of the threaded frame's table (default: every logical CPU, at least 2).
     #[arg(long, value_parser = clap::value_parser!(u32).range(2..=256))]
     threads: Option<u32>,
+}
+
+/// Options of `rastty-bench animation`.
+#[derive(Args, Debug)]
+struct AnimationReportArgs {
+    /// Rounds measured (each a pose, a still frame and a playing frame).
+    #[arg(long, default_value_t = animation::DEFAULT_ROUNDS as u32, value_parser = clap::value_parser!(u32).range(1..=100_000))]
+    rounds: u32,
+    /// Threads per frame (default: every logical CPU).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    threads: Option<u32>,
+    /// A few rounds only (for CI): proves the command works; the figures mean little.
+    #[arg(long, conflicts_with = "rounds")]
+    quick: bool,
 }
 
 /// Options of `rastty-bench frames`.
@@ -117,6 +134,7 @@ fn main() -> ExitCode {
         ReportCommand::Effects(args) => effects_report(&args),
         ReportCommand::Frames(args) => frames_report(&args),
         ReportCommand::Peers(args) => peers_report(&args),
+        ReportCommand::Animation(args) => animation_report(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -186,6 +204,12 @@ fn in_file(scene: &Path) -> impl Fn(ReportError) -> String + '_ {
         ReportError::Render(e) => format!("{}: {e}", path_text(scene)),
         e => e.to_string(),
     }
+}
+
+fn animation_report(args: &AnimationReportArgs) -> Result<(), String> {
+    let rounds = if args.quick { animation::QUICK_ROUNDS } else { args.rounds as usize };
+    let threads = args.threads.map(|n| n as usize);
+    animation::run(rounds, threads, args.quick, &mut std::io::stdout().lock()).map(|_| ()).map_err(|e| e.to_string())
 }
 
 fn frames_report(args: &FramesReportArgs) -> Result<(), String> {

@@ -5,6 +5,7 @@
 
 mod common;
 mod reference;
+mod report_animation;
 mod report_effects;
 mod report_frames;
 mod report_peers;

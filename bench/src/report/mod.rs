@@ -2,6 +2,7 @@
 //!
 //! | report | measures |
 //! |---|---|
+//! | [`animation`] | time per frame of a model that moves, playing and standing still, and of its pose |
 //! | [`accuracy`] | time and error of every quality knob against a high-precision reference |
 //! | [`effects`] | time per frame of a scene file with no effect, each effect alone and every effect |
 //! | [`frames`] | time per frame of a scene file as it is, the same frame drawn again and again |
@@ -11,6 +12,7 @@
 //! | [`moving_frames`] | (with `terminal`) bytes and error of moving frames at each tolerance of the frame writer |
 
 pub mod accuracy;
+pub mod animation;
 pub mod cell_modes;
 pub mod effects;
 pub mod error;
