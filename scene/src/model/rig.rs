@@ -218,11 +218,13 @@ impl Rig {
             None => vec![worlds[instance.node]],
         };
         let n = instance.positions.len();
-        let every_vertex_on_joint_0 = (vec![[0u16; 4]; n], vec![[1.0f32, 0.0, 0.0, 0.0]; n]);
+        // A mesh without a skin is one joint's, its node's, every vertex wholly on it.
+        let on_its_node;
         let sets: Vec<Influences<'_>> = if instance.skin.is_some() {
             instance.influences.iter().map(|s| Influences { joints: &s.joints, weights: &s.weights }).collect()
         } else {
-            vec![Influences { joints: &every_vertex_on_joint_0.0, weights: &every_vertex_on_joint_0.1 }]
+            on_its_node = (vec![[0u16; 4]; n], vec![[1.0f32, 0.0, 0.0, 0.0]; n]);
+            vec![Influences { joints: &on_its_node.0, weights: &on_its_node.1 }]
         };
         let skin = Skin { joints: &joints, influences: &sets };
         let targets: Vec<MorphTarget<'_>> = instance
