@@ -1,5 +1,6 @@
 //! The checks every model loader's target makes: the model is what `Model`'s documentation promises, and it draws.
 
+use rastty_core::pipeline::DrawStats;
 use rastty_core::target::{Rgb888, Target};
 use rastty_scene::model::{COORDINATE_LIMIT, MAX_TEXTURE_SIDE, Model};
 use rastty_scene::scene_file::SceneData;
@@ -97,7 +98,18 @@ pub fn render_once(model: Model, config: u8, name: &str) {
     let report = SceneRenderer::with_threads(1)
         .render(&scene, &plan, &mut target)
         .unwrap_or_else(|e| panic!("a loaded model does not render: {e}"));
-    let s = report.forward;
+    check_counted(&report.forward, triangles);
+}
+
+/// A frame's counts: every one of the model's `triangles` went in, and each ended in exactly one of the five
+/// outcomes (a failure is a panic).
+pub fn check_counted(s: &DrawStats, triangles: u64) {
     assert_eq!(s.triangles_in, triangles, "{s:?}");
     assert_eq!(s.invalid + s.outside + s.culled + s.degenerate + s.rasterized, s.triangles_in, "{s:?}");
+}
+
+/// A loader's error is one line that may reach a terminal: no control character in it (a failure is a panic).
+pub fn check_load_error(e: &dyn std::fmt::Display) {
+    let text = e.to_string();
+    assert!(!has_control(&text), "a load error holds a control character: {text:?}");
 }

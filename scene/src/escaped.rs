@@ -22,6 +22,18 @@ impl fmt::Display for Escaped<'_> {
     }
 }
 
+/// The message for a `what` named `asked` that is not among `labels` (raw names, numbered from 0 in the message):
+/// "there is no WHAT ASKED (there are 0: a, 1: b)", or "there is no WHAT ASKED: NONE" when there are none. Every
+/// name escaped.
+pub fn not_among(what: &str, asked: &str, labels: impl IntoIterator<Item = String>, none: &str) -> String {
+    let there: Vec<String> = labels.into_iter().enumerate().map(|(k, l)| format!("{k}: {}", Escaped(&l))).collect();
+    if there.is_empty() {
+        format!("there is no {what} {}: {none}", Escaped(asked))
+    } else {
+        format!("there is no {what} {} (there are {})", Escaped(asked), there.join(", "))
+    }
+}
+
 /// `path` as text for a message: lossy UTF-8, control characters escaped.
 pub fn path_text(path: &std::path::Path) -> String {
     Escaped(&path.to_string_lossy()).to_string()

@@ -4,13 +4,12 @@
 //! the cubic spline's value half way, and what each kind of bad data gives.
 
 use std::fs;
-use std::path::Path;
-use std::process::{Command, Output, Stdio};
 
 use rastty_core::math::Vec3;
 use rastty_scene::model::{LoadError, Model, ModelOptions, load_model};
 
 use crate::common::gltf_writer::GltfWriter;
+use crate::common::rastty_in as rastty;
 
 const H: f32 = std::f32::consts::FRAC_1_SQRT_2;
 
@@ -187,16 +186,6 @@ fn bad_animation_data_is_an_error_or_a_warning_that_names_it() {
     // Joints for fewer vertices than there are.
     let e = load(&skinned(Some(&[0; 8]), &[0.0, 1.0])).unwrap_err().to_string();
     assert!(e.contains("JOINTS_0 has 2 and WEIGHTS_0 3 entries for 3 positions"), "{e}");
-}
-
-/// `rastty ARGS` in `dir`.
-fn rastty(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rastty"))
-        .args(args)
-        .current_dir(dir)
-        .stdin(Stdio::null())
-        .output()
-        .expect("the rastty binary runs")
 }
 
 #[test]

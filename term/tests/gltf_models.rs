@@ -5,13 +5,13 @@
 
 use std::fs;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
 
 use rastty_core::color::{linear_to_srgb, srgb_to_linear};
 use rastty_core::math::{Vec2, Vec3};
 use rastty_scene::model::{LoadError, Model, ModelOptions, load_model};
 
 use crate::common::gltf_writer::GltfWriter;
+use crate::common::rastty_in as rastty;
 
 /// Spot's OBJ file and texture in the repository.
 fn spot(file: &str) -> PathBuf {
@@ -52,16 +52,6 @@ fn write_spot_gltf(dir: &Path) -> Model {
     let in_buffer = format!(r#"{{"bufferView": {image_view}, "mimeType": "image/png"}}"#);
     fs::write(dir.join("spot.glb"), w.glb(&rest(&in_buffer))).unwrap();
     obj
-}
-
-/// `rastty ARGS` in `dir`.
-fn rastty(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_rastty"))
-        .args(args)
-        .current_dir(dir)
-        .stdin(Stdio::null())
-        .output()
-        .expect("the rastty binary runs")
 }
 
 /// The RGB bytes of the picture `rastty render MODEL -o OUT ARGS` draws at 160x120.

@@ -45,6 +45,17 @@ pub struct Skin<'a> {
     pub influences: &'a [Influences<'a>],
 }
 
+/// How [`deform`] moves the morphed vertices.
+#[derive(Clone, Copy, Debug)]
+pub enum Placement<'a> {
+    /// Not at all: written where the morph put them.
+    AsIs,
+    /// Every vertex by one matrix (a mesh without a skin, placed by its node).
+    Rigid(Mat4),
+    /// Each vertex by the weighted sum of its joints' matrices.
+    Skinned(Skin<'a>),
+}
+
 /// Where [`deform`] writes: one entry per source position; normals and tangents where the source has them.
 #[derive(Debug)]
 pub struct Deformed<'a> {
@@ -90,13 +101,13 @@ pub fn joint_matrix(mesh_world_inverse: &Mat4, joint_world: &Mat4, inverse_bind:
     *mesh_world_inverse * *joint_world * *inverse_bind
 }
 
-/// Morphs and skins the `source` vertices into `out`: first each morph target's displacements times its weight
-/// are added (glTF 2.0, section 3.7.2.2), then each vertex is moved by the weighted sum of its joints' matrices
-/// (section 3.7.3), its normal by that matrix's cofactor ([`crate::math::Mat3::normal_matrix`]) and its tangent by the matrix,
-/// both normalised. Without a skin the morphed vertices are written as they are.
+/// Morphs the `source` vertices and places them into `out`: first each morph target's displacements times its
+/// weight are added (glTF 2.0, section 3.7.2.2), then each vertex is moved by its [`Placement`]'s matrix (for a
+/// skin, the weighted sum of its joints' matrices, section 3.7.3), its normal by that matrix's cofactor
+/// ([`crate::math::Mat3::normal_matrix`]) and its tangent by the matrix, both normalised.
 ///
-/// A joint index beyond the skin's matrices adds nothing; a vertex whose weights sum to zero is left where the
-/// morph put it. Weights are used as given: a loader normalises them.
+/// A joint index beyond the skin's matrices adds nothing; a skinned vertex whose weights sum to zero is left where
+/// the morph put it. Weights are used as given: a loader normalises them.
 ///
 /// # Errors
 /// [`DeformError`] when a slice's length does not match the source's positions (or `weights` the targets), or the
@@ -105,11 +116,11 @@ pub fn deform(
     source: &Source<'_>,
     targets: &[MorphTarget<'_>],
     weights: &[f32],
-    skin: Option<&Skin<'_>>,
+    placement: &Placement<'_>,
     out: Deformed<'_>,
 ) -> Result<(), DeformError> {
     let n = source.positions.len();
-    check(source, targets, weights, skin, &out)?;
+    check(source, targets, weights, placement, &out)?;
     let Deformed { positions, mut normals, mut tangents } = out;
     for i in 0..n {
         let (mut p, mut normal, mut tangent) =
@@ -128,7 +139,11 @@ pub fn deform(
                 *t = (t.truncate() + d[i] * w).extend(t.w);
             }
         }
-        let matrix = skin.and_then(|s| skin_matrix(s, i));
+        let matrix = match placement {
+            Placement::AsIs => None,
+            Placement::Rigid(m) => Some(*m),
+            Placement::Skinned(skin) => skin_matrix(skin, i),
+        };
         if let Some(m) = &matrix {
             p = m.transform_point(p);
         }
@@ -175,7 +190,7 @@ fn check(
     source: &Source<'_>,
     targets: &[MorphTarget<'_>],
     weights: &[f32],
-    skin: Option<&Skin<'_>>,
+    placement: &Placement<'_>,
     out: &Deformed<'_>,
 ) -> Result<(), DeformError> {
     let n = source.positions.len();
@@ -196,7 +211,11 @@ fn check(
         length("target normals", n, t.normals.map_or(n, <[_]>::len))?;
         length("target tangents", n, t.tangents.map_or(n, <[_]>::len))?;
     }
-    for set in skin.map_or(&[][..], |s| s.influences) {
+    let sets = match placement {
+        Placement::Skinned(skin) => skin.influences,
+        Placement::AsIs | Placement::Rigid(_) => &[],
+    };
+    for set in sets {
         length("joint sets", n, set.joints.len())?;
         length("weight sets", n, set.weights.len())?;
     }
@@ -226,7 +245,7 @@ mod tests {
         let source = Source { positions: &positions, normals: None, tangents: None };
         let mut moved = [Vec3::ZERO];
         let out = Deformed { positions: &mut moved, normals: None, tangents: None };
-        deform(&source, &targets, &[0.5, 0.25], None, out).unwrap();
+        deform(&source, &targets, &[0.5, 0.25], &Placement::AsIs, out).unwrap();
         assert_eq!(moved, [Vec3::ONE]);
     }
 
@@ -245,7 +264,7 @@ mod tests {
         let source = Source { positions: &positions, normals: Some(&normals), tangents: Some(&tangents) };
         let (mut p, mut n, mut t) = ([Vec3::ZERO; 2], [Vec3::ZERO; 2], [Vec4::ZERO; 2]);
         let out = Deformed { positions: &mut p, normals: Some(&mut n), tangents: Some(&mut t) };
-        deform(&source, &[], &[], Some(&skin), out).unwrap();
+        deform(&source, &[], &[], &Placement::Skinned(skin), out).unwrap();
         let near = |a: Vec3, b: Vec3| (a - b).length() < 1e-6;
         assert!(near(p[0], Vec3::new(1.0, 1.0, 0.0)), "{:?}", p[0]);
         assert!(near(n[0], -Vec3::X) && near(t[0].truncate(), Vec3::Y) && t[0].w == -1.0, "{:?} {:?}", n[0], t[0]);
@@ -261,7 +280,14 @@ mod tests {
         let positions = [Vec3::ZERO];
         let source = Source { positions: &positions, normals: None, tangents: None };
         let mut p = [Vec3::ZERO];
-        deform(&source, &[], &[], Some(&skin), Deformed { positions: &mut p, normals: None, tangents: None }).unwrap();
+        deform(
+            &source,
+            &[],
+            &[],
+            &Placement::Skinned(skin),
+            Deformed { positions: &mut p, normals: None, tangents: None },
+        )
+        .unwrap();
         assert_eq!(p[0], Vec3::Y);
         // A joint stretching x by 4: the plane x = y (normal (1, -1, 0)) becomes x = 4y, normal (1, -4, 0)
         // normalised; the matrix itself would give (4, -1, 0), which is not perpendicular.
@@ -272,9 +298,21 @@ mod tests {
         let source = Source { positions: &positions, normals: Some(&normals), tangents: None };
         let mut n = [Vec3::ZERO];
         let out = Deformed { positions: &mut p, normals: Some(&mut n), tangents: None };
-        deform(&source, &[], &[], Some(&skin), out).unwrap();
+        deform(&source, &[], &[], &Placement::Skinned(skin), out).unwrap();
         let expected = Vec3::new(1.0, -4.0, 0.0).normalize_or_zero();
         assert!((n[0] - expected).length() < 1e-6, "{:?}", n[0]);
+    }
+
+    #[test]
+    fn a_rigid_placement_moves_every_vertex_by_its_matrix() {
+        // A quarter turn about z, then 3 along z: (1, 0, 0) goes to (0, 1, 3), its normal +x to +y.
+        let m = Mat4::from_translation(Vec3::new(0.0, 0.0, 3.0)) * quarter_turn();
+        let (positions, normals) = ([Vec3::X], [Vec3::X]);
+        let source = Source { positions: &positions, normals: Some(&normals), tangents: None };
+        let (mut p, mut n) = ([Vec3::ZERO], [Vec3::ZERO]);
+        let out = Deformed { positions: &mut p, normals: Some(&mut n), tangents: None };
+        deform(&source, &[], &[], &Placement::Rigid(m), out).unwrap();
+        assert!((p[0] - Vec3::new(0.0, 1.0, 3.0)).length() < 1e-6 && (n[0] - Vec3::Y).length() < 1e-6, "{p:?} {n:?}");
     }
 
     #[test]
@@ -284,14 +322,17 @@ mod tests {
         let mut p = [Vec3::ZERO; 1];
         let out = Deformed { positions: &mut p, normals: None, tangents: None };
         assert_eq!(
-            deform(&source, &[], &[], None, out),
+            deform(&source, &[], &[], &Placement::AsIs, out),
             Err(DeformError::Length { what: "output positions", expected: 2, actual: 1 })
         );
         let mut p = [Vec3::ZERO; 2];
         let mut n = [Vec3::ZERO; 2];
         let out = Deformed { positions: &mut p, normals: Some(&mut n), tangents: None };
-        assert_eq!(deform(&source, &[], &[], None, out), Err(DeformError::Streams));
+        assert_eq!(deform(&source, &[], &[], &Placement::AsIs, out), Err(DeformError::Streams));
         let out = Deformed { positions: &mut p, normals: None, tangents: None };
-        assert!(matches!(deform(&source, &[MorphTarget::default()], &[], None, out), Err(DeformError::Length { .. })));
+        assert!(matches!(
+            deform(&source, &[MorphTarget::default()], &[], &Placement::AsIs, out),
+            Err(DeformError::Length { .. })
+        ));
     }
 }

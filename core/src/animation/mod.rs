@@ -7,7 +7,7 @@
 //! |---|---|---|
 //! | sample | [`Keyframes`] | a channel's value at a time: `STEP`, `LINEAR` (spherical for rotations) or `CUBICSPLINE` |
 //! | place | [`Trs`], [`world_matrices`] | each node's local matrix from its translation, rotation and scale, then its world matrix through its parents |
-//! | deform | [`deform`] | a mesh's vertices morphed by weighted targets, then skinned by its joints' matrices ([`joint_matrix`]) |
+//! | deform | [`deform`] | a mesh's vertices morphed by weighted targets, then placed by one matrix or skinned by its joints' matrices ([`joint_matrix`]) |
 //!
 //! The formulas are those of the glTF 2.0 specification (section 3.11, "Animations", and appendix C,
 //! "KeyInterpolation"); the tests check each against values worked out by hand.
@@ -17,7 +17,7 @@ mod hierarchy;
 mod keyframes;
 mod trs;
 
-pub use deform::{DeformError, Deformed, Influences, MorphTarget, Skin, Source, deform, joint_matrix};
+pub use deform::{DeformError, Deformed, Influences, MorphTarget, Placement, Skin, Source, deform, joint_matrix};
 pub use hierarchy::{HierarchyError, world_matrices};
 pub use keyframes::{KeyInterpolation, KeyframeError, Keyframes};
 pub use trs::Trs;

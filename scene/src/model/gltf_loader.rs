@@ -78,6 +78,10 @@ pub fn load_gltf_bytes(name: impl AsRef<Path>, bytes: &[u8], files: &dyn Resolve
     if model.rig.is_some() {
         model.pose(None, 0.0);
         posed_in_range(&model).map_err(fail)?;
+        // Once, while the rig is the model's alone: the box around every pose, for framing.
+        if let Some(rig) = model.rig.as_mut().and_then(std::sync::Arc::get_mut) {
+            rig.measure_motion(&model.positions, &model.normals);
+        }
     }
     if model.indices.is_empty() {
         return Err(LoadError::new(name, LoadErrorKind::NoTriangles));
@@ -88,10 +92,14 @@ pub fn load_gltf_bytes(name: impl AsRef<Path>, bytes: &[u8], files: &dyn Resolve
     Ok(model)
 }
 
+/// Whether a coordinate of `p` is not finite or beyond [`COORDINATE_LIMIT`].
+fn beyond_read(p: &Vec3) -> bool {
+    [p.x, p.y, p.z].iter().any(|v| !v.is_finite() || v.abs() > COORDINATE_LIMIT)
+}
+
 /// The rest pose's vertices are finite and within [`COORDINATE_LIMIT`], as a placed mesh's are.
 fn posed_in_range(model: &Model) -> Result<(), String> {
-    let beyond = |p: &&Vec3| [p.x, p.y, p.z].iter().any(|v| !v.is_finite() || v.abs() > COORDINATE_LIMIT);
-    if let Some(p) = model.positions.iter().find(beyond) {
+    if let Some(p) = model.positions.iter().find(|p| beyond_read(p)) {
         return Err(format!(
             "a vertex is at ({}, {}, {}) in the rest pose (skinned and morphed), beyond the {COORDINATE_LIMIT:e} read",
             p.x, p.y, p.z
@@ -290,8 +298,7 @@ impl<'a, 'b> Builder<'a, 'b> {
         let normal_matrix: Mat3 = transform.normal_matrix();
         let placed: Vec<Vec3> =
             positions.iter().map(|p| transform.transform_point(Vec3::new(p[0], p[1], p[2]))).collect();
-        let beyond = |p: &&Vec3| [p.x, p.y, p.z].iter().any(|v| !v.is_finite() || v.abs() > COORDINATE_LIMIT);
-        if let Some(p) = placed.iter().find(beyond) {
+        if let Some(p) = placed.iter().find(|p| beyond_read(p)) {
             return Err(at(format!(
                 "a vertex is at ({}, {}, {}) once placed, beyond the {COORDINATE_LIMIT:e} read",
                 p.x, p.y, p.z

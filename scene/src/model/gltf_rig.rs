@@ -97,13 +97,8 @@ impl<'a, 'b> RigReader<'a, 'b> {
                 Vec4::new(matrix[3][0], matrix[3][1], matrix[3][2], matrix[3][3]),
             );
             let rest_trs: Trs = trs(node.transform().decomposed());
-            rig.nodes.push(RigNode {
-                file_index: f,
-                parent: parent[f].map(|p| rig_node[p]),
-                rest,
-                rest_trs,
-                weights: node.weights().map(<[f32]>::to_vec),
-            });
+            rig.parents.push(parent[f].map(|p| rig_node[p]));
+            rig.nodes.push(RigNode { file_index: f, rest, rest_trs, weights: node.weights().map(<[f32]>::to_vec) });
         }
         for skin in document.skins() {
             let joints: Vec<usize> = skin.joints().map(|j| rig_node[j.index()]).collect();

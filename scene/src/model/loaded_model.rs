@@ -6,14 +6,10 @@ use rastty_core::math::{Mat4, Vec2, Vec3, Vec4};
 use rastty_core::mesh::{Indices, Mesh};
 
 use super::bounding_box::BoundingBox;
-use super::error::COORDINATE_LIMIT;
 use super::material::ModelMaterial;
 use super::model_camera::ModelCamera;
 use super::rig::{PosedVertices, Rig};
 use super::texture_image::TextureImage;
-
-/// How many steps [`Model::reach`] samples each animation in.
-pub const MOTION_SAMPLES: u32 = 24;
 
 /// An owned triangle model, ready for the core.
 ///
@@ -108,32 +104,15 @@ impl Model {
         BoundingBox::from_points(&self.positions)
     }
 
-    /// The box around the model in every pose it takes: [`Self::bounds`] joined with the boxes of each animation
-    /// at [`MOTION_SAMPLES`] + 1 times from its start to its end (a pose with a vertex that is not finite or beyond
-    /// [`COORDINATE_LIMIT`], as no file is read, adds nothing). [`Self::bounds`] for a model that does not move.
+    /// The box around the model in every pose it takes: [`Self::bounds`] joined with the box its rig measured
+    /// around every animation when the model was loaded ([`Rig::motion`]). [`Self::bounds`] for a model that does
+    /// not move.
     pub fn reach(&self) -> Option<BoundingBox> {
-        let joined = self.bounds();
-        let Some(rig) = self.rig.as_ref().filter(|r| !r.animations().is_empty()) else { return joined };
-        // The arrays a pose writes, not the materials and their images.
-        let mut posed = Model {
-            positions: self.positions.clone(),
-            normals: self.normals.clone(),
-            tangents: self.tangents.clone(),
-            rig: Some(std::sync::Arc::clone(rig)),
-            ..Model::default()
-        };
-        let mut joined = joined;
-        for (k, animation) in rig.animations().iter().enumerate() {
-            for i in 0..=MOTION_SAMPLES {
-                posed.pose(Some(k), animation.length * i as f32 / MOTION_SAMPLES as f32);
-                let largest = |v: Vec3| v.x.abs().max(v.y.abs()).max(v.z.abs());
-                let within = |b: &BoundingBox| largest(b.min).max(largest(b.max)) <= COORDINATE_LIMIT;
-                if let Some(b) = posed.bounds().filter(within) {
-                    joined = Some(joined.map_or(b, |j| j.union(&b)));
-                }
-            }
+        let bounds = self.bounds();
+        match (bounds, self.rig.as_ref().and_then(|r| r.motion())) {
+            (Some(b), Some(m)) => Some(b.union(&m)),
+            (b, m) => b.or(m),
         }
-        joined
     }
 
     /// The auto-fit transform: centres the bounding box at the origin and scales uniformly so that the box's

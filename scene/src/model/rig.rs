@@ -4,11 +4,13 @@
 use std::ops::Range;
 
 use rastty_core::animation::{
-    Deformed, Influences, KeyInterpolation, Keyframes, MorphTarget, Skin, Source, Trs, deform, joint_matrix,
+    Deformed, Influences, KeyInterpolation, Keyframes, MorphTarget, Placement, Skin, Source, Trs, deform, joint_matrix,
     world_matrices,
 };
 use rastty_core::math::{Mat4, Quat, Vec3, Vec4};
 
+use super::bounding_box::BoundingBox;
+use super::error::COORDINATE_LIMIT;
 use crate::escaped::Escaped;
 
 /// The animated parts of a glTF file, kept with its model ([`super::Model::rig`]): [`super::Model::pose`] moves the
@@ -17,21 +19,27 @@ use crate::escaped::Escaped;
 pub struct Rig {
     /// The nodes, each after its parent.
     pub(crate) nodes: Vec<RigNode>,
+    /// Each node's parent, an index into [`Self::nodes`] before it (kept apart, as [`world_matrices`] reads them).
+    pub(crate) parents: Vec<Option<usize>>,
     /// The skins.
     pub(crate) skins: Vec<RigSkin>,
     /// The placed primitives whose vertices a pose moves.
     pub(crate) instances: Vec<Instance>,
     /// The animations, in file order.
     pub(crate) animations: Vec<Animation>,
+    /// The box around the model's vertices in every pose its animations take ([`Self::measure_motion`]), once
+    /// measured.
+    pub(crate) motion: Option<BoundingBox>,
 }
+
+/// How many steps [`Rig::measure_motion`] samples each animation in.
+pub const MOTION_SAMPLES: u32 = 24;
 
 /// A node of the tree.
 #[derive(Clone, Debug)]
 pub(crate) struct RigNode {
     /// Its index in the file.
     pub file_index: usize,
-    /// Its parent, an index into [`Rig::nodes`] before it.
-    pub parent: Option<usize>,
     /// Its local matrix as the file gives it.
     pub rest: Mat4,
     /// The same as translation, rotation and scale, which animation channels replace.
@@ -159,6 +167,32 @@ impl Rig {
         self.skins.iter().map(|s| (s.name.as_deref(), s.joints.len()))
     }
 
+    /// The box around the model's vertices in every pose its animations take, as measured when it was loaded; `None`
+    /// when nothing animates them.
+    pub fn motion(&self) -> Option<BoundingBox> {
+        self.motion
+    }
+
+    /// Measures [`Self::motion`] for a model whose rest-pose arrays are `positions` and `normals`: the box around
+    /// its vertices at [`MOTION_SAMPLES`] + 1 times of each animation, from its start to its end (a pose with a
+    /// vertex that is not finite or beyond [`COORDINATE_LIMIT`], as no file is read, adds nothing).
+    pub(crate) fn measure_motion(&mut self, positions: &[Vec3], normals: &[Vec3]) {
+        let (mut positions, mut normals) = (positions.to_vec(), normals.to_vec());
+        let largest = |v: Vec3| v.x.abs().max(v.y.abs()).max(v.z.abs());
+        let within = |b: &BoundingBox| largest(b.min).max(largest(b.max)) <= COORDINATE_LIMIT;
+        let mut joined: Option<BoundingBox> = None;
+        for (k, animation) in self.animations.iter().enumerate() {
+            for i in 0..=MOTION_SAMPLES {
+                let mut vertices = PosedVertices { positions: &mut positions, normals: &mut normals, tangents: None };
+                self.pose(Some(k), animation.length * i as f32 / MOTION_SAMPLES as f32, &mut vertices);
+                if let Some(b) = BoundingBox::from_points(&positions).filter(within) {
+                    joined = Some(joined.map_or(b, |j| j.union(&b)));
+                }
+            }
+        }
+        self.motion = joined;
+    }
+
     /// The number of morph targets of the primitive with the most.
     pub fn most_morph_targets(&self) -> usize {
         self.instances.iter().map(|i| i.targets.len()).max().unwrap_or(0)
@@ -193,9 +227,8 @@ impl Rig {
         }
         let matrices: Vec<Mat4> =
             self.nodes.iter().zip(&locals).map(|(n, trs)| trs.map_or(n.rest, |t| t.to_mat4())).collect();
-        let parents: Vec<Option<usize>> = self.nodes.iter().map(|n| n.parent).collect();
         let mut worlds = vec![Mat4::IDENTITY; self.nodes.len()];
-        if world_matrices(&matrices, &parents, &mut worlds).is_err() {
+        if world_matrices(&matrices, &self.parents, &mut worlds).is_err() {
             return;
         }
         for instance in &self.instances {
@@ -206,27 +239,24 @@ impl Rig {
 
     /// Poses one primitive: morphed by `weights`, then skinned (joints placed by `worlds`) or placed by its node.
     fn pose_instance(&self, instance: &Instance, worlds: &[Mat4], weights: &[f32], model: &mut PosedVertices<'_>) {
-        let joints: Vec<Mat4> = match instance.skin.and_then(|s| self.skins.get(s)) {
+        let (joints, sets): (Vec<Mat4>, Vec<Influences<'_>>);
+        let placement = match instance.skin.and_then(|s| self.skins.get(s)) {
             // Skinned vertices land in the model's (the scene's) space: the mesh node's own transform is not used
             // (glTF 2.0, section 3.7.3).
-            Some(skin) => skin
-                .joints
-                .iter()
-                .zip(&skin.inverse_binds)
-                .map(|(&j, ibm)| joint_matrix(&Mat4::IDENTITY, &worlds[j], ibm))
-                .collect(),
-            None => vec![worlds[instance.node]],
+            Some(skin) => {
+                joints = skin
+                    .joints
+                    .iter()
+                    .zip(&skin.inverse_binds)
+                    .map(|(&j, ibm)| joint_matrix(&Mat4::IDENTITY, &worlds[j], ibm))
+                    .collect();
+                sets =
+                    instance.influences.iter().map(|s| Influences { joints: &s.joints, weights: &s.weights }).collect();
+                Placement::Skinned(Skin { joints: &joints, influences: &sets })
+            }
+            None => Placement::Rigid(worlds[instance.node]),
         };
         let n = instance.positions.len();
-        // A mesh without a skin is one joint's, its node's, every vertex wholly on it.
-        let on_its_node;
-        let sets: Vec<Influences<'_>> = if instance.skin.is_some() {
-            instance.influences.iter().map(|s| Influences { joints: &s.joints, weights: &s.weights }).collect()
-        } else {
-            on_its_node = (vec![[0u16; 4]; n], vec![[1.0f32, 0.0, 0.0, 0.0]; n]);
-            vec![Influences { joints: &on_its_node.0, weights: &on_its_node.1 }]
-        };
-        let skin = Skin { joints: &joints, influences: &sets };
         let targets: Vec<MorphTarget<'_>> = instance
             .targets
             .iter()
@@ -255,14 +285,14 @@ impl Rig {
                     tangents: out_tangents.filter(|_| tangents.is_some()),
                 };
                 // The lengths were checked when the rig was read: nothing to refuse.
-                let _ = deform(&source, &targets, weights, Some(&skin), out);
+                let _ = deform(&source, &targets, weights, &placement, out);
             }
             None => {}
             Some(corners) => {
                 let source = Source { positions: &instance.positions, normals: None, tangents: None };
                 let mut positions = vec![Vec3::ZERO; n];
                 let out = Deformed { positions: &mut positions, normals: None, tangents: None };
-                if deform(&source, &targets, weights, Some(&skin), out).is_err() {
+                if deform(&source, &targets, weights, &placement, out).is_err() {
                     return;
                 }
                 // Three model vertices per triangle, each with its face's normal.

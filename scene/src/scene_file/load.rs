@@ -24,7 +24,7 @@ use super::schema::{
 use super::transform::object_transform;
 use super::validate::{BUILTIN_PREFIX, Checker, unit};
 use crate::builtin::builtin_model;
-use crate::escaped::{Escaped, path_text};
+use crate::escaped::{Escaped, not_among, path_text};
 use crate::model::{Model, ModelOptions, TextureImage, load_model};
 
 fn vec3(t: Triple) -> Vec3 {
@@ -152,15 +152,11 @@ impl Loader<'_> {
         };
         let Some(index) = index else {
             let asked = match spec.get_ref() {
-                NameOrIndex::Name(name) => Escaped(name).to_string(),
+                NameOrIndex::Name(name) => name.clone(),
                 NameOrIndex::Index(i) => i.to_string(),
             };
-            let there: Vec<String> =
-                animations.iter().enumerate().map(|(k, a)| format!("{k}: {}", Escaped(&a.label(k)))).collect();
-            let message = match there.is_empty() {
-                true => format!("there is no animation {asked}: {} does not move", path_text(&mesh_path)),
-                false => format!("there is no animation {asked} (there are {})", there.join(", ")),
-            };
+            let labels = animations.iter().enumerate().map(|(k, a)| a.label(k));
+            let message = not_among("animation", &asked, labels, &format!("{} does not move", path_text(&mesh_path)));
             return Err(self.checker.invalid(&spec.span(), format!("{key}.animation"), message));
         };
         let start = o.time.as_ref().map_or(0.0, |t| *t.get_ref());

@@ -6,7 +6,7 @@ use std::sync::Arc;
 
 use super::{BUILTIN_PREFIX, CameraPlacement, SceneData, SceneFileError, SceneObject};
 use crate::builtin::{BUILTIN_NAME, builtin_model};
-use crate::escaped::{Escaped, path_text};
+use crate::escaped::{Escaped, not_among, path_text};
 use crate::model::{LoadError, ModelCamera, ModelOptions, TextureImage, load_model};
 
 /// A scene file: a path ending in `.toml` (any case). Everything else is read as a model.
@@ -90,12 +90,8 @@ impl SceneData {
             .position(|(_, _, c)| c.name.as_deref() == Some(name))
             .or_else(|| name.parse::<usize>().ok().filter(|&i| i < all.len()));
         let Some(i) = found else {
-            let there: Vec<String> =
-                all.iter().enumerate().map(|(i, (_, k, c))| format!("{i}: {}", Escaped(&c.label(*k)))).collect();
-            return Err(match there.is_empty() {
-                true => format!("there is no camera {}: the models give none", Escaped(name)),
-                false => format!("there is no camera {} (there are {})", Escaped(name), there.join(", ")),
-            });
+            let labels = all.iter().map(|(_, k, c)| c.label(*k));
+            return Err(not_among("camera", name, labels, "the models give none"));
         };
         let (object, _, camera) = all[i];
         let placed = camera

@@ -12,7 +12,7 @@ use rastty_core::mesh::{TangentError, compute_tangents};
 use super::bounds::scene_bounds;
 use super::interleaved::{InterleavedBuffers, PartMaps};
 use super::{Orbit, SceneRenderError};
-use crate::escaped::Escaped;
+use crate::escaped::not_among;
 use crate::model::Model;
 use crate::scene_file::{CameraPlacement, NormalSpaceSpec, SceneCamera, SceneData, SceneObject};
 
@@ -139,13 +139,8 @@ impl PreparedScene {
         match name {
             None => Ok((!animations.is_empty()).then_some(0)),
             Some(name) => self.find_animation(name).map(Some).ok_or_else(|| {
-                let there: Vec<String> =
-                    animations.iter().enumerate().map(|(k, (label, _))| format!("{k}: {}", Escaped(label))).collect();
-                if there.is_empty() {
-                    format!("there is no animation {}: nothing in the scene moves", Escaped(name))
-                } else {
-                    format!("there is no animation {} (there are {})", Escaped(name), there.join(", "))
-                }
+                let labels = animations.into_iter().map(|(label, _)| label);
+                not_among("animation", name, labels, "nothing in the scene moves")
             }),
         }
     }
@@ -160,20 +155,26 @@ impl PreparedScene {
     /// [`SceneRenderError::Tangents`] as [`Self::new`].
     pub fn pose(&mut self, animation: Option<usize>, time: f32) -> Result<(), SceneRenderError> {
         let mut moved = false;
-        for object in &mut self.data.objects {
+        for ((object, tangents), label) in self.data.objects.iter_mut().zip(&mut self.tangents).zip(&self.labels) {
             let Some(rig) = object.model.rig.as_deref() else { continue };
             // An object with an animation of its own plays it, from its start.
             let (chosen, at) = match object.animation {
                 Some(own) => (Some(own.index), own.start + time),
                 None => (animation.filter(|&k| k < rig.animations().len()), time),
             };
-            Arc::make_mut(&mut object.model).pose(chosen, at);
+            let model = Arc::make_mut(&mut object.model);
+            model.pose(chosen, at);
             moved = true;
+            // Its tangents move with it; the other objects' stay as they were.
+            if tangents.is_some() {
+                let posed = model_tangents(model)
+                    .map_err(|error| SceneRenderError::Tangents { object: label.clone(), error })?;
+                *tangents = Some(posed.into());
+            }
         }
         if !moved {
             return Ok(());
         }
-        self.tangents = object_tangents(&self.data.objects, &self.labels)?;
         self.id = NEXT_ID.fetch_add(1, Ordering::Relaxed);
         Ok(())
     }

@@ -23,6 +23,16 @@ pub fn rastty_in_empty_dir(args: &[&str]) -> std::process::Output {
         .expect("run rastty")
 }
 
+/// Runs the `rastty` binary with `args` in `dir`, stdin empty, and waits for it.
+pub fn rastty_in(dir: &Path, args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_rastty"))
+        .args(args)
+        .current_dir(dir)
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("the rastty binary runs")
+}
+
 /// Runs the `rastty` binary with `args` in `dir` (stdin empty, stdout and stderr read as it writes them) and kills
 /// it, failing the test, when it runs longer than `limit`: a run that hangs fails its test rather than the suite.
 pub fn rastty_within(dir: &Path, args: &[&str], limit: std::time::Duration) -> std::process::Output {
