@@ -32,7 +32,7 @@ pub struct Rig {
     pub(crate) motion: Option<BoundingBox>,
 }
 
-/// How many steps [`Rig::measure_motion`] samples each animation in.
+/// How many steps each animation is sampled in, from its start to its end, to measure [`Rig::motion`].
 pub const MOTION_SAMPLES: u32 = 24;
 
 /// A node of the tree.
