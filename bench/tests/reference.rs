@@ -552,6 +552,7 @@ fn one_quad_model() -> Model {
         warnings: Vec::new(),
         rig: None,
         cameras: Vec::new(),
+        lights: Vec::new(),
     }
 }
 

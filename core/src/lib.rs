@@ -80,6 +80,8 @@ pub use color::ShadingSpace;
 pub use math::{Mat3, Mat4, Quat, Vec2, Vec3, Vec4};
 pub use mesh::{Indices, Mesh, MeshError};
 pub use pipeline::{DrawError, DrawState, DrawStats};
-pub use shading::{Light, LightKind, Lighting, Material, Object, ShadingError, ShadingModel, Transforms, draw_mesh};
+pub use shading::{
+    Cone, Falloff, Light, LightKind, Lighting, Material, Object, ShadingError, ShadingModel, Transforms, draw_mesh,
+};
 pub use target::{Rgb565, Rgb888, Target, TargetError};
 pub use texture::{FilterMode, Texture, WrapMode};

@@ -16,8 +16,8 @@ use rastty_core::math::{Mat4, Vec3, Vec4};
 use rastty_core::mesh::{Indices, Mesh, compute_tangents};
 use rastty_core::pipeline::{Cull, DepthTest, DrawState, DrawStats, EdgeArithmetic, Interpolation, Winding};
 use rastty_core::shading::{
-    Cutout, Light, Lighting, Material, NormalMap, NormalSource, NormalSpace, Object, ShadingModel, SpecularSource,
-    Transforms, Variant, draw_mesh,
+    Cone, Cutout, Falloff, Light, LightKind, Lighting, Material, NormalMap, NormalSource, NormalSpace, Object,
+    ShadingModel, SpecularSource, Transforms, Variant, draw_mesh,
 };
 use rastty_core::shadow::{ShadowBias, ShadowMap, ShadowView, clear_shadow_depth, draw_shadow_caster};
 use rastty_core::target::Samples;
@@ -119,6 +119,21 @@ fn every_choice_of_a_variant_equals_the_general_path() {
     };
     let (sun_view, sun_depth) = map_of(&sun);
     let (lamp_view, lamp_depth) = map_of(&lamp);
+    // Lights that weaken with distance, ending at a range (the torus spans distances about 2.2 to 4.4 from the
+    // lamp's place), and spots with and without fall-off whose cones cut across the torus.
+    let position = Vec3::new(-1.2, 2.5, 2.0);
+    let bulb = Light {
+        kind: LightKind::Point { position, falloff: Falloff::inverse_square(Some(4.0)) },
+        color: Vec3::new(6.0, 5.4, 4.5),
+        shadow: None,
+    };
+    let spot = |falloff, color| Light {
+        kind: LightKind::Spot { position, falloff, cone: Cone::new(Vec3::ZERO - position, 0.15, 0.35) },
+        color,
+        shadow: None,
+    };
+    let spot_far = spot(Falloff::inverse_square(None), Vec3::new(9.0, 8.0, 7.0));
+    let spot_near = spot(Falloff::None, Vec3::new(0.7, 0.6, 0.5));
     let shadowed = |light: Light<'_>, view, depth, pcf| Light {
         shadow: Some(ShadowMap::new(view, depth, ShadowBias::DEFAULT, pcf).unwrap()),
         ..light
@@ -129,6 +144,8 @@ fn every_choice_of_a_variant_equals_the_general_path() {
         vec![sun, lamp],
         vec![shadowed(sun, sun_view, &sun_depth, 0), fill],
         vec![shadowed(sun, sun_view, &sun_depth, 2), shadowed(lamp, lamp_view, &lamp_depth, 1)],
+        vec![bulb, spot_near, fill],
+        vec![shadowed(spot_far, lamp_view, &lamp_depth, 1), bulb],
     ];
 
     let base = Material {
@@ -224,7 +241,7 @@ fn every_choice_of_a_variant_equals_the_general_path() {
                         let state = DrawState { interpolation, depth_test, cull, edges, ..DrawState::default() };
                         let object =
                             Object { mesh, tangents: Some(&tangents), transforms, shading, material: *material };
-                        // Every other draw lights the stored codes: five light sets, an odd number, so each
+                        // Every other draw lights the stored codes: seven light sets, an odd number, so each
                         // material meets each light set in both spaces.
                         let space = [ShadingSpace::Linear, ShadingSpace::Encoded][draws % 2];
                         let lights = Lighting { ambient: Vec3::splat(0.08), lights, space };
@@ -245,7 +262,7 @@ fn every_choice_of_a_variant_equals_the_general_path() {
                             assert_eq!(drawn, fast_stats.fragments > 100, "{what}: the scene must cover pixels");
                             seen.note(&fast_variant);
                             clipped += u64::from(fast_stats.clipped > 0);
-                            multisampled += u64::from(samples == Samples::Four);
+                            multisampled += usize::from(samples == Samples::Four);
                         }
                         draws += 1;
                     }
@@ -253,8 +270,8 @@ fn every_choice_of_a_variant_equals_the_general_path() {
             }
         }
     }
-    assert_eq!(draws, 2 * 6 * 3 * 17 * 5);
-    assert_eq!(multisampled, 765);
+    assert_eq!(draws, 2 * 6 * 3 * 17 * 7);
+    assert_eq!(multisampled, 1071);
     assert!(clipped > 0);
     seen.assert_every_choice();
     // docs/stability.md describes this matrix: its counts must be the ones run here.
@@ -266,7 +283,7 @@ fn every_choice_of_a_variant_equals_the_general_path() {
         format!("{} projections", projections.len()),
         format!("{} fixed-function states", STATES.len()),
         format!("{} draws", thousands(draws)),
-        format!("every fourth, {multisampled},"),
+        format!("every fourth, {},", thousands(multisampled)),
     ];
     let doc = include_str!("../../docs/stability.md");
     for figure in quoted {
@@ -357,7 +374,7 @@ impl Seen {
         assert_eq!(self.mip_filters.len(), 4, "filters between levels: {:?}", self.mip_filters);
         // The four models that colour in both spaces, the two views in the stored one only.
         assert_eq!(self.spaces.len(), 4 * 2 + 2, "spaces: {:?}", self.spaces);
-        assert_eq!(self.shadows.len(), 2, "shadow filter radii: {:?}", self.shadows);
+        assert_eq!(self.shadows.len(), 3, "shadow filter radii: {:?}", self.shadows);
         assert_eq!(self.cutouts.len(), 3, "cut-outs: {:?}", self.cutouts);
         assert_eq!(self.two_sided, [true, true], "one- and two-sided lighting");
     }

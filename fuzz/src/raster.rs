@@ -22,7 +22,7 @@ use rastty_core::pipeline::{
     MAX_SUBPIXEL_BITS, Shader, Slopes, Winding, draw, draw_wireframe,
 };
 use rastty_core::shading::{
-    Light, LightKind, Lighting, Material, NormalMap, NormalSpace, Object, ShadingError, ShadingModel, Transforms,
+    Cone, Falloff, Light, LightKind, Lighting, Material, NormalMap, NormalSpace, Object, ShadingError, ShadingModel, Transforms,
     Variant, draw_mesh,
 };
 use rastty_core::shadow::{
@@ -795,7 +795,8 @@ pub fn run(input: Input) -> Option<DrawStats> {
         alpha_cutoff: extras.cutout.map(|(_, cutoff)| f32::from(cutoff) / 255.0),
     };
 
-    // Lights: directional or point, each with its shadow map if it casts one.
+    // Lights: directional, point, or (from raw values) a spot aimed at the origin that falls off by the inverse
+    // square within a range, each with its shadow map if it casts one.
     let lights: Vec<Light> = input
         .lights
         .iter()
@@ -808,7 +809,11 @@ pub fn run(input: Input) -> Option<DrawStats> {
                 Light { kind: LightKind::Directional { to_light: d.get() }, color: c.get(), shadow: None }
             }
             (LightIn::Raw(p, c), true) => {
-                Light { kind: LightKind::Point { position: p.get() }, color: c.get(), shadow: None }
+                let (position, color) = (p.get(), c.get());
+                let range = Some(color.x.abs() * 4.0);
+                let cone = Cone::new(-position, color.y.abs(), color.z.abs());
+                let kind = LightKind::Spot { position, falloff: Falloff::inverse_square(range), cone };
+                Light { kind, color, shadow: None }
             }
         })
         .collect();

@@ -13,7 +13,7 @@ use rastty_core::math::{Mat4, Vec3};
 use rastty_core::texture::{Anisotropy, FilterMode, MipFilter, WrapMode};
 use rastty_scene::model::TextureImage;
 use rastty_scene::scene_file::{
-    CameraPlacement, FramedCamera, LightSpace, NormalSpaceSpec, SceneCamera, SceneData, SceneFileError,
+    CameraPlacement, FramedCamera, LightFalloff, LightSpace, NormalSpaceSpec, SceneCamera, SceneData, SceneFileError,
     SceneFileErrorKind, SceneLightKind, SceneProjection, defaults, load, object_transform, parse,
 };
 
@@ -225,8 +225,8 @@ fn wrong_types_name_the_value() {
          numbers"
     );
     assert_eq!(
-        error(&format!("{CAMERA}[[lights]]\ntype = \"spot\"\n{SPOT}")),
-        "scene.toml:6:8: lights[0].type: unknown variant `spot`, expected `directional` or `point`"
+        error(&format!("{CAMERA}[[lights]]\ntype = \"area\"\n{SPOT}")),
+        "scene.toml:6:8: lights[0].type: unknown variant `area`, expected one of `directional`, `point`, `spot`"
     );
     assert_eq!(
         error(&format!("{CAMERA}[[lights]]\ntype = \"point\"\nposition = [0, 1, 0]\nshadows = \"yes\"\n{SPOT}")),
@@ -364,6 +364,46 @@ fn invalid_lights_name_the_key() {
     assert_eq!(
         light("type = \"point\"\nposition = [0, 5, 0]\nintensity = -1\n"),
         "scene.toml:8:13: lights[0].intensity: must be finite and not negative, got -1"
+    );
+    // Spots: both places, their angles in order and within a quarter turn, and a range only with the inverse
+    // square, positive.
+    assert_eq!(
+        light("type = \"spot\"\nposition = [0, 5, 0]\n"),
+        "scene.toml:5:1: lights[0].direction: required for a spot light"
+    );
+    let spot = "type = \"spot\"\nposition = [0, 5, 0]\ndirection = [0, -1, 0]\n";
+    assert_eq!(
+        light(&format!("{spot}outer_angle = 95\n")),
+        "scene.toml:9:15: lights[0].outer_angle: must be an angle above 0 and at most 90 degrees, got 95"
+    );
+    assert_eq!(
+        light(&format!("{spot}inner_angle = 30\nouter_angle = 20\n")),
+        "scene.toml:9:15: lights[0].inner_angle: must be an angle from 0 degrees and below outer_angle (20), got 30"
+    );
+    assert_eq!(
+        light(&format!("{spot}inner_angle = nan\n")),
+        "scene.toml:9:15: lights[0].inner_angle: must be an angle from 0 degrees and below outer_angle (45), got NaN"
+    );
+    assert_eq!(
+        light(&format!("{spot}range = 4\n")),
+        "scene.toml:9:9: lights[0].range: a range needs falloff = \"inverse-square\" (a light that does not fall \
+         off has no end)"
+    );
+    assert_eq!(
+        light(&format!("{spot}falloff = \"inverse-square\"\nrange = -4\n")),
+        "scene.toml:10:9: lights[0].range: must be positive, got -4"
+    );
+    assert_eq!(
+        light("type = \"point\"\nposition = [0, 5, 0]\ninner_angle = 10\n"),
+        "scene.toml:8:15: lights[0].inner_angle: a point light has no inner_angle"
+    );
+    assert_eq!(
+        light("type = \"directional\"\ndirection = [0, -1, 0]\nfalloff = \"none\"\n"),
+        "scene.toml:8:11: lights[0].falloff: a directional light has no falloff"
+    );
+    assert!(
+        light("type = \"spot\"\nposition = [0, 5, 0]\ndirection = [0, -1, 0]\nfalloff = \"linear\"\n")
+            .contains("unknown variant `linear`, expected `none` or `inverse-square`")
     );
     // The second light's index.
     assert_eq!(
@@ -641,7 +681,7 @@ fn a_framed_camera_and_the_viewer_lights_arrive_as_written() {
     assert_eq!(scene.camera, CameraPlacement::Framed(framed));
     assert_eq!(scene.lights.len(), 3, "the file's light, then the viewer's two");
     assert_eq!(scene.lights[0].space, LightSpace::Camera);
-    assert_eq!(scene.lights[0].kind, SceneLightKind::Point { position: Vec3::Z });
+    assert_eq!(scene.lights[0].kind, SceneLightKind::Point { position: Vec3::Z, falloff: LightFalloff::None });
     assert_eq!(scene.lights[1..], defaults::VIEWER_LIGHTS);
 }
 
@@ -667,12 +707,42 @@ fn defaults_and_values_arrive_as_written() {
     assert_eq!(placed(&huge).up, Vec3::Y);
     assert_eq!(huge.lights[0].kind, SceneLightKind::Directional { direction: Vec3::X });
     assert_eq!((scene.lights[0].color, scene.lights[0].intensity, scene.lights[0].shadows), (Vec3::ONE, 1.0, false));
-    assert_eq!(scene.lights[1].kind, SceneLightKind::Point { position: Vec3::new(1.0, 2.0, 3.0) });
+    assert_eq!(
+        scene.lights[1].kind,
+        SceneLightKind::Point { position: Vec3::new(1.0, 2.0, 3.0), falloff: LightFalloff::None }
+    );
     assert_eq!((scene.lights[1].color, scene.lights[1].intensity), (Vec3::new(1.0, 0.5, 0.0), 2.0));
     assert!(scene.lights[1].shadows);
     assert_eq!(scene.background, defaults::BACKGROUND);
     assert_eq!(scene.ambient, defaults::AMBIENT);
     assert!(!scene.ambient_occlusion);
+    // A spot in degrees, falling off by the inverse square within a range; the cone's defaults are glTF's.
+    let text = format!(
+        "{CAMERA}[[lights]]\ntype = \"spot\"\nposition = [0, 4, 0]\ndirection = [0, -2, 0]\ninner_angle = 10\n\
+         outer_angle = 30\nfalloff = \"inverse-square\"\nrange = 12\n\
+         [[lights]]\ntype = \"spot\"\nposition = [0, 4, 0]\ndirection = [1, 0, 0]\n{SPOT}"
+    );
+    let spots = parse(text, "scene.toml").unwrap().load().unwrap();
+    assert_eq!(
+        spots.lights[0].kind,
+        SceneLightKind::Spot {
+            position: Vec3::new(0.0, 4.0, 0.0),
+            direction: -Vec3::Y,
+            inner: 10f32.to_radians(),
+            outer: 30f32.to_radians(),
+            falloff: LightFalloff::InverseSquare { range: Some(12.0) },
+        }
+    );
+    assert_eq!(
+        spots.lights[1].kind,
+        SceneLightKind::Spot {
+            position: Vec3::new(0.0, 4.0, 0.0),
+            direction: Vec3::X,
+            inner: 0.0,
+            outer: std::f32::consts::FRAC_PI_4,
+            falloff: LightFalloff::None,
+        }
+    );
     let m = &scene.objects[0].material;
     assert_eq!((m.filter, m.wrap, m.mip_filter), (FilterMode::Bilinear, WrapMode::Repeat, MipFilter::Linear));
     assert_eq!((m.color, m.specular, m.shininess), (None, None, None));

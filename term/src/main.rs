@@ -39,7 +39,7 @@ use rastty::screen::{CellMode, ColorMode};
 use rastty_core::math::Vec3;
 use rastty_scene::escaped::Escaped;
 use rastty_scene::input_file::{parse_byte_size, set_max_file_bytes};
-use rastty_scene::model::{ModelLens, ModelOptions, RigListing};
+use rastty_scene::model::{ModelLens, ModelLightKind, ModelOptions, RigListing};
 use rastty_scene::png_file::write_png;
 use rastty_scene::scene_file::{SceneData, open, parse_hex_color};
 use rastty_scene::scene_render::{
@@ -414,11 +414,11 @@ fn render(args: &RenderArgs) -> Result<(), String> {
 }
 
 /// Prints what each glTF object gives beyond its meshes: its animations (their channels and lengths), skins,
-/// morph targets and cameras.
+/// morph targets, cameras and lights.
 fn explain_rigs(data: &SceneData) {
     for (i, object) in data.objects.iter().enumerate() {
         let model = &object.model;
-        if model.rig.is_none() && model.cameras.is_empty() {
+        if model.rig.is_none() && model.cameras.is_empty() && model.lights.is_empty() {
             continue;
         }
         outln!("object {} ({}):", i + 1, Escaped(&object.mesh_path.to_string_lossy()));
@@ -433,6 +433,27 @@ fn explain_rigs(data: &SceneData) {
             };
             let far = camera.far.map_or_else(|| "infinite".to_owned(), |f| f.to_string());
             outln!("  {k}: {}, {lens}, near {}, far {far}", Escaped(&camera.label(k)), camera.near);
+        }
+        outln!("lights: {}", model.lights.len());
+        for (k, light) in model.lights.iter().enumerate() {
+            let unit = if light.kind == ModelLightKind::Directional { "lux" } else { "candela" };
+            let c = light.color;
+            let mut line = format!(
+                "  {k}: {}, {}, colour [{}, {}, {}], {} {unit}",
+                Escaped(&light.label(k)),
+                light.kind_name(),
+                c.x,
+                c.y,
+                c.z,
+                light.intensity
+            );
+            if let Some(range) = light.range {
+                line.push_str(&format!(", range {range}"));
+            }
+            if let ModelLightKind::Spot { inner, outer } = light.kind {
+                line.push_str(&format!(", cone {} to {} degrees", inner.to_degrees(), outer.to_degrees()));
+            }
+            outln!("{line}");
         }
     }
 }

@@ -6,6 +6,7 @@
 mod cli;
 mod common;
 mod gltf_animation;
+mod gltf_lights;
 mod gltf_models;
 mod graphics_decoders;
 mod readme_picture;

@@ -15,7 +15,7 @@ pub const GOURAUD: u32 = 1 << 2;
 pub const PER_PIXEL: u32 = 1 << 3;
 /// The depth and normals views.
 pub const VIEWS: u32 = 1 << 4;
-/// Point lights (directional lights are always compiled in).
+/// Point and spot lights (directional lights are always compiled in).
 pub const POINT_LIGHTS: u32 = 1 << 5;
 /// Shadow maps (read by per-pixel lighting).
 pub const SHADOWS: u32 = 1 << 6;

@@ -11,7 +11,7 @@ use super::TangentFrame;
 use super::light_terms::{face_light, vertex_light};
 use super::material::decode_normal;
 use super::{
-    Cutout, LightKind, LightTerms, Lighting, Material, NormalSource, ShadingModel, SpecularSource, Transforms, Variant,
+    Cutout, LightTerms, Lighting, Material, NormalSource, ShadingModel, SpecularSource, Transforms, Variant,
     world_normal,
 };
 use crate::color::{ShadingSpace, encode_srgb, texel_alpha, unpack_rgb888};
@@ -28,7 +28,7 @@ pub struct GeneralVaryings {
     pub color: Vec3,
     /// World normal, unit length at the vertices (Gouraud, per-pixel, the normals view).
     pub normal: Vec3,
-    /// World position (per-pixel lighting with highlights, point lights or shadows).
+    /// World position (per-pixel lighting with highlights, point or spot lights or shadows).
     pub world: Vec3,
     /// Texture coordinates (any map).
     pub uv: Vec2,
@@ -176,14 +176,16 @@ impl<'a> GeneralShader<'a> {
         };
         let mut specular = Vec3::ZERO;
         for light in self.lights.lights {
-            let to_light = match light.kind {
-                LightKind::Directional { to_light } => to_light,
-                LightKind::Point { position } => (position - v.world).normalize_or_zero(),
-            };
+            let (to_light, reaching) = light.kind.toward(v.world);
             let n_dot_l = shading.dot(to_light);
-            // The share of the light its shadow map lets through, from the geometric normal's offset.
-            let share =
+            // The share of the light its shadow map lets through, from the geometric normal's offset, times the
+            // share that reaches the point.
+            let shadowed =
                 light.shadow.as_ref().map(|map| map.light_reaching(v.world, geometric, geometric.dot(to_light)));
+            let share = match (reaching, shadowed) {
+                (Some(r), Some(s)) => Some(r * s),
+                (reaching, shadowed) => reaching.or(shadowed),
+            };
             let arriving = float::max(n_dot_l, 0.0);
             diffuse += light.color * share.map_or(arriving, |s| arriving * s);
             if highlights && n_dot_l > 0.0 {

@@ -1,7 +1,9 @@
 //! Light at one point, in scalar maths: what flat shading computes once per triangle (at its centroid, with its
 //! face normal) and Gouraud shading once per vertex, under the same lights as per-pixel lighting.
 
-use super::{LightKind, Lighting, SpecularSource, Transforms, Variant, world_normal};
+use super::{Lighting, SpecularSource, Transforms, Variant, world_normal};
+#[cfg(doc)]
+use crate::light_kind::LightKind;
 use crate::math::{Vec3, float};
 use crate::mesh::Mesh;
 
@@ -15,10 +17,11 @@ pub struct LightTerms {
 }
 
 /// The light arriving at `point` on a surface with unit normal `n`: ambient plus each light's
-/// `color * max(0, n . l)`, and with `specular` each light's Blinn-Phong highlight
-/// `color * max(0, n . h)^shininess` where `n . l > 0` (Blinn, SIGGRAPH 1977). `l` points toward the light (the
-/// same for every point under a directional light), `h` is the unit half vector of `l` and the direction to
-/// `eye`. Shadow maps are not read: shadows are computed per pixel.
+/// `color * max(0, n . l) * share`, and with `specular` each light's Blinn-Phong highlight
+/// `color * max(0, n . h)^shininess * share` where `n . l > 0` (Blinn, SIGGRAPH 1977). `l` points toward the light
+/// (the same for every point under a directional light), `h` is the unit half vector of `l` and the direction to
+/// `eye`, and `share` what arrives of a light that weakens with distance or has a cone ([`LightKind::toward`]).
+/// Shadow maps are not read: shadows are computed per pixel.
 #[inline(always)]
 pub(crate) fn light_at(
     lights: &Lighting<'_>,
@@ -31,15 +34,14 @@ pub(crate) fn light_at(
     let mut terms = LightTerms { diffuse: lights.ambient, specular: Vec3::ZERO };
     let to_eye = if specular { (eye - point).normalize_or_zero() } else { Vec3::ZERO };
     for light in lights.lights {
-        let to_light = match light.kind {
-            LightKind::Directional { to_light } => to_light,
-            LightKind::Point { position } => (position - point).normalize_or_zero(),
-        };
+        let (to_light, share) = light.kind.toward(point);
         let n_dot_l = n.dot(to_light);
-        terms.diffuse += light.color * float::max(n_dot_l, 0.0);
+        let arriving = float::max(n_dot_l, 0.0);
+        terms.diffuse += light.color * share.map_or(arriving, |s| arriving * s);
         if specular && n_dot_l > 0.0 {
             let h = (to_light + to_eye).normalize_or_zero();
-            terms.specular += light.color * float::pow(float::max(n.dot(h), 0.0), shininess);
+            let k = float::pow(float::max(n.dot(h), 0.0), shininess);
+            terms.specular += light.color * share.map_or(k, |s| k * s);
         }
     }
     terms

@@ -8,7 +8,7 @@
 
 use super::capabilities::{self, has};
 use super::scratch::Scratch;
-use super::{LightKind, Lighting};
+use super::{Cone, Falloff, LightKind, Lighting};
 use crate::math::Vec3;
 use crate::math::float::{self, Exponent};
 use crate::pipeline::columns::{self, Column, Column3};
@@ -39,25 +39,38 @@ pub(crate) fn light<const CAPS: u32>(
         s.view.normalize(len);
     }
     for light in lights.lights {
-        let to_light = match light.kind {
-            LightKind::Directional { to_light } => Column3::splat(to_light),
-            LightKind::Point { position } if has(CAPS, capabilities::POINT_LIGHTS) => {
-                let mut l = Column3::toward(position, &s.world, len);
-                l.normalize(len);
-                l
+        // The direction toward the light and, for a light that weakens with distance or has a cone, the share of
+        // its colour arriving: as `LightKind::toward` computes it, lane by lane.
+        let (to_light, reaching) = match light.kind {
+            LightKind::Directional { to_light } => (Column3::splat(to_light), None),
+            LightKind::Point { position, falloff } if has(CAPS, capabilities::POINT_LIGHTS) => {
+                toward(s, position, falloff, None)
             }
-            LightKind::Point { .. } => Column3::ZERO,
+            LightKind::Spot { position, falloff, cone } if has(CAPS, capabilities::POINT_LIGHTS) => {
+                toward(s, position, falloff, Some(cone))
+            }
+            LightKind::Point { .. } | LightKind::Spot { .. } => (Column3::ZERO, None),
         };
         let mut n_dot_l = Column::ZERO;
         s.shading.dot(&to_light, &mut n_dot_l, len);
         // The share of the light its shadow map lets through, if it has one.
-        let shares = light.shadow.as_ref().filter(|_| has(CAPS, capabilities::SHADOWS)).map(|map| {
+        let shadowed = light.shadow.as_ref().filter(|_| has(CAPS, capabilities::SHADOWS)).map(|map| {
             let mut n_dot_geometric = Column::ZERO;
             s.geometric.dot(&to_light, &mut n_dot_geometric, len);
             let mut shares = Column::ZERO;
             map.light_reaching_lanes(&s.world, &s.geometric, &n_dot_geometric, len, &mut shares);
             shares
         });
+        // What arrives of the light: the share reaching the point times the share its shadow lets through.
+        let shares = match (reaching, shadowed) {
+            (Some(mut reaching), Some(shadowed)) => {
+                for i in 0..lanes(len) {
+                    reaching[i] *= shadowed[i];
+                }
+                Some(reaching)
+            }
+            (reaching, shadowed) => reaching.or(shadowed),
+        };
         // max(0, n . l) times the share: the diffuse factor.
         let mut arriving = Column::ZERO;
         for i in 0..lanes(len) {
@@ -122,4 +135,37 @@ fn highlight(
         specular.y[i] += lit(color.y * k[i]);
         specular.z[i] += lit(color.z * k[i]);
     }
+}
+
+/// The unit directions from the batch's points toward a light at `position`, and the share of its colour arriving
+/// at each (`None`: all of it): [`LightKind::toward`] lane by lane, the same operations in the same order.
+#[inline(always)]
+fn toward(s: &Scratch, position: Vec3, falloff: Falloff, cone: Option<Cone>) -> (Column3, Option<Column>) {
+    let len = s.len;
+    let mut l = Column3::toward(position, &s.world, len);
+    let mut squared = Column::ZERO;
+    if falloff != Falloff::None {
+        l.dot(&l, &mut squared, len);
+    }
+    l.normalize(len);
+    let mut share = Column::ZERO;
+    match (falloff, cone) {
+        (Falloff::None, None) => return (l, None),
+        (Falloff::None, Some(cone)) => {
+            for i in 0..lanes(len) {
+                share[i] = cone.at(l.get(i));
+            }
+        }
+        (falloff, None) => {
+            for i in 0..lanes(len) {
+                share[i] = falloff.at(squared[i]);
+            }
+        }
+        (falloff, Some(cone)) => {
+            for i in 0..lanes(len) {
+                share[i] = falloff.at(squared[i]) * cone.at(l.get(i));
+            }
+        }
+    }
+    (l, Some(share))
 }

@@ -1,6 +1,8 @@
-//! The lights of a draw: directional and point lights, each with an optional shadow map.
+//! The lights of a draw: directional, point and spot lights, each with an optional shadow map.
 
 use crate::color::ShadingSpace;
+#[cfg(doc)]
+use crate::light_kind::Falloff;
 use crate::light_kind::LightKind;
 use crate::math::Vec3;
 use crate::shadow::ShadowMap;
@@ -8,7 +10,7 @@ use crate::shadow::ShadowMap;
 /// One light of a scene.
 #[derive(Clone, Copy, Debug)]
 pub struct Light<'a> {
-    /// Directional or point.
+    /// Directional, point or spot, and how its light weakens.
     pub kind: LightKind,
     /// Colour times intensity.
     pub color: Vec3,
@@ -22,9 +24,9 @@ impl Light<'_> {
         Self { kind: LightKind::Directional { to_light: to_light.normalize_or_zero() }, color, shadow: None }
     }
 
-    /// A point light at `position`, without shadows.
+    /// A point light at `position` that does not weaken with distance ([`Falloff::None`]), without shadows.
     pub fn point(position: Vec3, color: Vec3) -> Self {
-        Self { kind: LightKind::Point { position }, color, shadow: None }
+        Self { kind: LightKind::point(position), color, shadow: None }
     }
 }
 
@@ -42,12 +44,12 @@ pub struct Lighting<'a> {
     pub space: ShadingSpace,
 }
 
-/// What choosing a draw's stages needs to know of a light: whether it is a point light, and the filter radius of
+/// What choosing a draw's stages needs to know of a light: whether it is a point or spot light, and the filter radius of
 /// its shadow map if it has one. [`super::Variant::resolve`] takes these, so a draw can be planned before
 /// any shadow map exists.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct LightUse {
-    /// A point light (else directional).
+    /// A point or spot light (else directional): one whose direction is worked out per point.
     pub point: bool,
     /// The percentage-closer filter radius of its shadow map, if it casts shadows.
     pub shadow_pcf: Option<u32>,
@@ -55,9 +57,6 @@ pub struct LightUse {
 
 impl From<&Light<'_>> for LightUse {
     fn from(light: &Light<'_>) -> Self {
-        Self {
-            point: matches!(light.kind, LightKind::Point { .. }),
-            shadow_pcf: light.shadow.as_ref().map(|s| s.pcf_radius()),
-        }
+        Self { point: light.kind.position().is_some(), shadow_pcf: light.shadow.as_ref().map(|s| s.pcf_radius()) }
     }
 }

@@ -1,7 +1,7 @@
 //! Shading: how a mesh's surfaces are coloured, decided once per draw and computed only where used.
 //!
 //! [`draw_mesh`] draws an [`Object`] (mesh, tangents, [`Transforms`], [`ShadingModel`], [`Material`]) under
-//! [`Lighting`] (ambient, directional and point [`Light`]s, each with an optional shadow map). It resolves a
+//! [`Lighting`] (ambient, directional, point and spot [`Light`]s, each with an optional shadow map). It resolves a
 //! [`Variant`] once per draw, which covers every shading model: unlit (material or vertex colours), flat (light
 //! once per triangle), Gouraud (once per vertex), per-pixel, and the depth and normals views; which varyings are
 //! interpolated (the [`Layout`]); and which fragment stages run: normals (interpolated or from a tangent- or
@@ -42,7 +42,7 @@ mod variant;
 mod varyings;
 mod views;
 
-pub use crate::light_kind::LightKind;
+pub use crate::light_kind::{Cone, Falloff, LightKind};
 pub use draw::{Object, draw_mesh};
 pub use light_terms::LightTerms;
 pub use lights::{Light, LightUse, Lighting};

@@ -99,7 +99,7 @@ pub struct Variant {
     /// The albedo is the material colour times the mesh's vertex colours (a model that colours, on a mesh with
     /// colours).
     pub vertex_colors: bool,
-    /// The world position is interpolated (per-pixel lighting with point lights, highlights or shadows).
+    /// The world position is interpolated (per-pixel lighting with point or spot lights, highlights or shadows).
     pub world: bool,
     /// Texture coordinates are interpolated (for any map).
     pub uvs: bool,
@@ -132,7 +132,7 @@ pub struct Variant {
     pub mip_filter: MipFilter,
     /// Directional lights.
     pub directional_lights: usize,
-    /// Point lights.
+    /// Point and spot lights.
     pub point_lights: usize,
     /// Lights with a shadow map that this draw reads (per-pixel lighting only).
     pub shadowed_lights: usize,
@@ -179,7 +179,7 @@ impl Variant {
     /// - Back faces, where a draw keeps them, are lit with their normal turned round: per-pixel lighting only
     ///   (flat and Gouraud light both faces alike).
     /// - Highlights only for a non-zero [`super::Material::specular`] with at least one light.
-    /// - The world position only for per-pixel point lights, highlights or shadows.
+    /// - The world position only for per-pixel point or spot lights, highlights or shadows.
     /// - Affine interpolation under an orthographic projection, and the front face flipped for a mirroring model
     ///   matrix ([`crate::shading::Transforms::adapt`]).
     ///

@@ -147,9 +147,10 @@ pub struct ShadowView {
 
 impl ShadowView {
     /// The view of a map fitted to `bounds` as seen from a light: for a directional light an orthographic box
-    /// around the sphere, `size x size` texels; for a point light outside the sphere the narrowest perspective
-    /// cone that holds it, `size x size` texels; for a point light inside (or on) it a cube of six `size x size`
-    /// faces around the light, each seeing as far as the sphere's farthest point.
+    /// around the sphere, `size x size` texels; for a point or spot light outside the sphere the narrowest
+    /// perspective cone that holds it, `size x size` texels; for one inside (or on) it a cube of six `size x size`
+    /// faces around the light, each seeing as far as the sphere's farthest point. A spot light's map covers the
+    /// bounds as a point light's does, whatever its cone.
     ///
     /// # Errors
     /// [`ShadowError::Bounds`] for empty or non-finite bounds, [`ShadowError::Size`] for a side of 0 or above
@@ -172,7 +173,7 @@ impl ShadowView {
                 let texel = TexelSize::Constant(2.0 * r / size_f);
                 Ok(Self { projection: Projection::Square(projection * view), texel, size })
             }
-            LightKind::Point { position } => {
+            LightKind::Point { position, .. } | LightKind::Spot { position, .. } => {
                 let d = (centre - position).length();
                 if !d.is_finite() {
                     return Err(ShadowError::Camera(CameraError::NotFinite));
@@ -730,7 +731,7 @@ mod tests {
         let map = ShadowMap::new(view, &depth, ShadowBias::DEFAULT, 1).unwrap();
         let Projection::Square(m) = &view.projection else { panic!("a directional light's map is square") };
         assert!(m.is_affine());
-        let point = ShadowView::fit(LightKind::Point { position: Vec3::new(0.0, 5.0, 0.0) }, bounds, 64).unwrap();
+        let point = ShadowView::fit(LightKind::point(Vec3::new(0.0, 5.0, 0.0)), bounds, 64).unwrap();
         assert!(matches!(point.projection, Projection::Square(m) if !m.is_affine()));
         let values = [0.0, -0.0, 0.37, -1.9, 2.5, 1e-30, -3e7, 1e30, f32::INFINITY, f32::NEG_INFINITY, f32::NAN];
         let bits = |(f, face, x, y, z): (bool, usize, i32, i32, f32)| (f, face, x, y, z.to_bits());
@@ -764,8 +765,8 @@ mod tests {
         let all: [f32; CUBE] = core::array::from_fn(|i| 0.3 + ((i * 37) % 97) as f32 / 200.0);
         let kinds = [
             LightKind::Directional { to_light: Vec3::new(0.3, 0.9, 0.2).normalize_or_zero() },
-            LightKind::Point { position: Vec3::new(0.5, 4.0, 1.0) },
-            LightKind::Point { position: Vec3::new(0.1, -0.2, 0.15) },
+            LightKind::point(Vec3::new(0.5, 4.0, 1.0)),
+            LightKind::point(Vec3::new(0.1, -0.2, 0.15)),
         ];
         let (mut p, mut n, mut n_dot_l) = (Column3::ZERO, Column3::ZERO, Column::ZERO);
         for i in 0..BATCH_SIZE {
@@ -824,12 +825,12 @@ mod tests {
     #[test]
     fn point_lights_inside_the_bounds_get_a_cube() {
         let bounds = BoundingSphere { centre: Vec3::ZERO, radius: 2.0 };
-        let inside = LightKind::Point { position: Vec3::new(0.5, 1.0, -0.5) };
+        let inside = LightKind::point(Vec3::new(0.5, 1.0, -0.5));
         let view = ShadowView::fit(inside, bounds, 32).unwrap();
         assert_eq!((view.faces(), view.rows(), view.size()), (6, 192, 32));
         assert!((0..6).all(|f| view.clip_from_world(f).is_some_and(|m| !m.is_affine())));
         assert_eq!(view.clip_from_world(6), None);
-        let outside = ShadowView::fit(LightKind::Point { position: Vec3::new(0.0, 5.0, 0.0) }, bounds, 32).unwrap();
+        let outside = ShadowView::fit(LightKind::point(Vec3::new(0.0, 5.0, 0.0)), bounds, 32).unwrap();
         assert_eq!((outside.faces(), outside.rows()), (1, 32));
         assert_eq!(ShadowView::fit(inside, bounds, 2 * CUBE_BORDER), Err(ShadowError::Size(2 * CUBE_BORDER)));
         assert!(ShadowView::fit(inside, bounds, 2 * CUBE_BORDER + 1).is_ok());
@@ -839,7 +840,7 @@ mod tests {
         assert_eq!(wide, Some(ShadowError::CubeFilter(CUBE_BORDER)));
         let short = ShadowMap::new(view, &depth[..32 * 32], ShadowBias::DEFAULT, 1).err();
         assert_eq!(short, Some(ShadowError::Buffer { expected: 6 * 32 * 32, actual: 32 * 32 }));
-        let nan = LightKind::Point { position: Vec3::new(f32::NAN, 0.0, 0.0) };
+        let nan = LightKind::point(Vec3::new(f32::NAN, 0.0, 0.0));
         assert_eq!(ShadowView::fit(nan, bounds, 32), Err(ShadowError::Camera(CameraError::NotFinite)));
     }
 }

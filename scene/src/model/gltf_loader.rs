@@ -15,13 +15,15 @@ use super::gltf_resources::{load_buffers, load_image};
 use super::gltf_rig::{Placed, RigReader, has_rig};
 use super::loaded_model::{Model, Part};
 use super::model_camera::{ModelCamera, ModelLens};
+use super::model_light::{ModelLight, ModelLightKind};
 use super::resolver::Resolver;
 use super::texture_image::TextureImage;
 use crate::escaped::Escaped;
 
 /// The extensions a file may require: any other required extension (Draco or meshopt compression, ...) refuses
 /// the file, by name.
-pub const READ_EXTENSIONS: [&str; 2] = ["KHR_materials_emissive_strength", "KHR_texture_transform"];
+pub const READ_EXTENSIONS: [&str; 3] =
+    ["KHR_lights_punctual", "KHR_materials_emissive_strength", "KHR_texture_transform"];
 
 /// Loads a glTF 2.0 model held in `bytes` (JSON or binary), named `name` in messages, with `files` giving the
 /// files its buffers and images name.
@@ -34,7 +36,8 @@ pub const READ_EXTENSIONS: [&str; 2] = ["KHR_materials_emissive_strength", "KHR_
 /// transform applied), `COLOR_0` and `TANGENT`. Materials as `docs/models.md` says (base colour, normal and emission
 /// maps, metallic-roughness as a highlight, double-sidedness); each part is one primitive, named after its mesh.
 /// A file with animations, skins or morph targets keeps them in [`Model::rig`], and the model stands in its rest
-/// pose ([`Model::pose`]).
+/// pose ([`Model::pose`]). Its cameras and its `KHR_lights_punctual` lights are kept, placed by their nodes
+/// ([`Model::cameras`], [`Model::lights`]).
 ///
 /// # Errors
 /// [`LoadErrorKind::Format`] for JSON the format does not allow, a required extension not in
@@ -60,7 +63,9 @@ pub fn load_gltf_bytes(name: impl AsRef<Path>, bytes: &[u8], files: &dyn Resolve
         )));
     }
     positions_in_range(document.as_json()).map_err(fail)?;
-    let document = Document::from_json(document.into_json()).map_err(|e| fail(e.to_string()))?;
+    let mut json = document.into_json();
+    spot_defaults(&mut json);
+    let document = Document::from_json(json).map_err(|e| fail(e.to_string()))?;
     let buffers = load_buffers(&document, blob.as_deref(), files).map_err(fail)?;
     let mut builder = Builder::new(&document, &buffers, files);
     if has_rig(&document) {
@@ -74,6 +79,7 @@ pub fn load_gltf_bytes(name: impl AsRef<Path>, bytes: &[u8], files: &dyn Resolve
     }
     let mut model = builder.finish();
     model.cameras = cameras(&placed.cameras, &mut model.warnings);
+    model.lights = lights(&placed.lights, &mut model.warnings);
     // A model that moves stands in its rest pose: skinned by its joints, morphed by its default weights.
     if model.rig.is_some() {
         model.pose(None, 0.0);
@@ -139,23 +145,25 @@ fn positions_in_range(root: &gltf::json::Root) -> Result<(), String> {
 }
 
 /// What the default scene (or the first) places: its meshes with their nodes (by index) and the nodes' world
-/// transforms, and its cameras with theirs, in depth-first order.
+/// transforms, and its cameras and lights with theirs, in depth-first order.
+#[derive(Default)]
 struct PlacedNodes<'a> {
     meshes: Vec<(Option<usize>, gltf::Mesh<'a>, Mat4)>,
     cameras: Vec<(gltf::Camera<'a>, Mat4)>,
+    lights: Vec<(gltf::khr_lights_punctual::Light<'a>, Mat4)>,
 }
 
-/// The meshes and cameras the default scene (or the first) places; without a scene, every mesh with no node and no
-/// camera.
+/// The meshes, cameras and lights the default scene (or the first) places; without a scene, every mesh with no
+/// node, and no camera or light.
 fn placed_nodes<'a>(document: &'a Document) -> Result<PlacedNodes<'a>, String> {
     let Some(scene) = document.default_scene().or_else(|| document.scenes().next()) else {
         let meshes = document.meshes().map(|m| (None, m, Mat4::IDENTITY)).collect();
-        return Ok(PlacedNodes { meshes, cameras: Vec::new() });
+        return Ok(PlacedNodes { meshes, ..PlacedNodes::default() });
     };
     let mut seen = vec![false; document.nodes().len()];
     let mut stack: Vec<(gltf::Node<'a>, Mat4)> = scene.nodes().map(|n| (n, Mat4::IDENTITY)).collect();
     stack.reverse();
-    let mut placed = PlacedNodes { meshes: Vec::new(), cameras: Vec::new() };
+    let mut placed = PlacedNodes::default();
     while let Some((node, parent)) = stack.pop() {
         let index = node.index();
         if std::mem::replace(&mut seen[index], true) {
@@ -167,6 +175,9 @@ fn placed_nodes<'a>(document: &'a Document) -> Result<PlacedNodes<'a>, String> {
         }
         if let Some(camera) = node.camera() {
             placed.cameras.push((camera, world));
+        }
+        if let Some(light) = node.light() {
+            placed.lights.push((light, world));
         }
         let first_child = stack.len();
         stack.extend(node.children().map(|c| (c, world)));
@@ -204,6 +215,50 @@ fn cameras(placed: &[(gltf::Camera<'_>, Mat4)], warnings: &mut Vec<String>) -> V
         }
         let near = if near > 0.0 { near } else { f32::EPSILON };
         out.push(ModelCamera { name, world: *world, lens, near, far });
+    }
+    out
+}
+
+/// A spot light without its `spot` object takes the default angles (`KHR_lights_punctual`: inner 0, outer
+/// pi / 4), where the parser would refuse the file.
+fn spot_defaults(json: &mut gltf::json::Root) {
+    use gltf::json::extensions::scene::khr_lights_punctual::{Spot, Type};
+    use gltf::json::validation::Checked;
+    let Some(lights) = json.extensions.as_mut().and_then(|e| e.khr_lights_punctual.as_mut()) else { return };
+    for light in &mut lights.lights {
+        if matches!(light.type_, Checked::Valid(Type::Spot)) && light.spot.is_none() {
+            light.spot = Some(Spot { inner_cone_angle: 0.0, outer_cone_angle: std::f32::consts::FRAC_PI_4 });
+        }
+    }
+}
+
+/// The lights placed, as the model keeps them; one whose values the extension does not allow (a negative
+/// intensity or colour, a range not above 0, cone angles out of order or beyond pi / 2) is left out with a
+/// warning.
+fn lights(placed: &[(gltf::khr_lights_punctual::Light<'_>, Mat4)], warnings: &mut Vec<String>) -> Vec<ModelLight> {
+    use gltf::khr_lights_punctual::Kind;
+    let mut out = Vec::new();
+    for (light, world) in placed {
+        let name = light.name().map(str::to_owned);
+        let [r, g, b] = light.color();
+        let color = Vec3::new(r, g, b);
+        let (kind, shape_ok) = match light.kind() {
+            Kind::Directional => (ModelLightKind::Directional, light.range().is_none()),
+            Kind::Point => (ModelLightKind::Point, true),
+            Kind::Spot { inner_cone_angle: inner, outer_cone_angle: outer } => {
+                let ok = inner >= 0.0 && inner < outer && outer <= std::f32::consts::FRAC_PI_2;
+                (ModelLightKind::Spot { inner, outer }, ok)
+            }
+        };
+        let intensity = light.intensity();
+        let range_ok = light.range().is_none_or(|r| r > 0.0 && r.is_finite());
+        let color_ok = [color.x, color.y, color.z].iter().all(|c| c.is_finite() && *c >= 0.0);
+        if !(shape_ok && range_ok && color_ok && intensity.is_finite() && intensity >= 0.0 && world.is_finite()) {
+            let label = name.as_deref().map_or_else(|| format!("light {}", light.index()), |n| Escaped(n).to_string());
+            warnings.push(format!("{label} has a colour, intensity, range or cone out of range and is left out"));
+            continue;
+        }
+        out.push(ModelLight { name, world: *world, kind, color, intensity, range: light.range() });
     }
     out
 }

@@ -8,6 +8,7 @@ use rastty_core::mesh::{Indices, Mesh};
 use super::bounding_box::BoundingBox;
 use super::material::ModelMaterial;
 use super::model_camera::ModelCamera;
+use super::model_light::ModelLight;
 use super::rig::{PosedVertices, Rig};
 use super::texture_image::TextureImage;
 
@@ -46,6 +47,9 @@ pub struct Model {
     pub rig: Option<std::sync::Arc<Rig>>,
     /// The cameras the file gives (glTF), placed by their nodes, in the order the scene's nodes are met.
     pub cameras: Vec<ModelCamera>,
+    /// The lights the file gives (glTF's `KHR_lights_punctual`), placed by their nodes, in the order the scene's
+    /// nodes are met.
+    pub lights: Vec<ModelLight>,
 }
 
 /// A run of triangles with one name and one material.
@@ -184,6 +188,7 @@ mod tests {
             warnings: Vec::new(),
             rig: None,
             cameras: Vec::new(),
+            lights: Vec::new(),
         }
     }
 

@@ -79,6 +79,7 @@ pub fn load_stl_bytes(name: &Path, bytes: &[u8], smooth_angle: Option<f32>) -> R
         warnings,
         rig: None,
         cameras: Vec::new(),
+        lights: Vec::new(),
     })
 }
 

@@ -15,11 +15,12 @@ use super::defaults;
 use super::error::{SceneFileError, SceneFileErrorKind};
 use super::hex_color::parse_hex_color;
 use super::loaded::{
-    CameraPlacement, FramedCamera, ObjectAnimation, ObjectMaterial, ObjectNormalMap, SceneCamera, SceneData,
-    SceneLight, SceneLightKind, SceneObject, SceneProjection,
+    CameraPlacement, FramedCamera, LightFalloff, ObjectAnimation, ObjectMaterial, ObjectNormalMap, SceneCamera,
+    SceneData, SceneLight, SceneLightKind, SceneObject, SceneProjection,
 };
 use super::schema::{
-    CameraSpec, FilterSpec, LightSpec, LightType, MaterialSpec, Mipmaps, NameOrIndex, ObjectSpec, Triple, WrapSpec,
+    CameraSpec, FalloffSpec, FilterSpec, LightSpec, LightType, MaterialSpec, Mipmaps, NameOrIndex, ObjectSpec, Triple,
+    WrapSpec,
 };
 use super::transform::object_transform;
 use super::validate::{BUILTIN_PREFIX, Checker, unit};
@@ -107,7 +108,14 @@ fn light(l: &LightSpec) -> SceneLight {
         LightType::Directional => SceneLightKind::Directional {
             direction: l.direction.as_ref().and_then(|d| unit(*d.get_ref())).unwrap_or(-Vec3::Y),
         },
-        LightType::Point => SceneLightKind::Point { position: vec3_or(&l.position, Vec3::ZERO) },
+        LightType::Point => SceneLightKind::Point { position: vec3_or(&l.position, Vec3::ZERO), falloff: falloff(l) },
+        LightType::Spot => SceneLightKind::Spot {
+            position: vec3_or(&l.position, Vec3::ZERO),
+            direction: l.direction.as_ref().and_then(|d| unit(*d.get_ref())).unwrap_or(-Vec3::Y),
+            inner: l.inner_angle.as_ref().map_or(0.0, |a| a.get_ref().to_radians()),
+            outer: l.outer_angle.as_ref().map_or(core::f32::consts::FRAC_PI_4, |a| a.get_ref().to_radians()),
+            falloff: falloff(l),
+        },
     };
     SceneLight {
         kind,
@@ -115,6 +123,16 @@ fn light(l: &LightSpec) -> SceneLight {
         intensity: l.intensity.as_ref().map_or(1.0, |v| *v.get_ref()),
         shadows: l.shadows,
         space: l.space,
+    }
+}
+
+/// A point or spot light's fall-off, as its keys give it (checked: a range only with the inverse square).
+fn falloff(l: &LightSpec) -> LightFalloff {
+    match l.falloff.as_ref().map(|f| *f.get_ref()) {
+        None | Some(FalloffSpec::None) => LightFalloff::None,
+        Some(FalloffSpec::InverseSquare) => {
+            LightFalloff::InverseSquare { range: l.range.as_ref().map(|r| *r.get_ref()) }
+        }
     }
 }
 

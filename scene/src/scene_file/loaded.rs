@@ -6,6 +6,7 @@ use std::sync::Arc;
 use rastty_core::camera::{CameraError, look_at};
 use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Mat4, Vec3};
+use rastty_core::shading::Falloff;
 use rastty_core::texture::{FilterMode, MipFilter, WrapMode};
 
 use super::schema::{LightSpace, NormalSpaceSpec};
@@ -155,11 +156,49 @@ pub enum SceneLightKind {
         /// `to_light`).
         direction: Vec3,
     },
-    /// Rays from one point.
+    /// Rays from one point in every direction.
     Point {
         /// Where the light is.
         position: Vec3,
+        /// How its light weakens with distance.
+        falloff: LightFalloff,
     },
+    /// Rays from one point within a cone.
+    Spot {
+        /// Where the light is.
+        position: Vec3,
+        /// The unit direction of the cone's axis, the way the light shines.
+        direction: Vec3,
+        /// The angle from the axis within which the light is full, in radians (from 0, below `outer`).
+        inner: f32,
+        /// The angle from the axis beyond which there is no light, in radians (at most pi / 2).
+        outer: f32,
+        /// How its light weakens with distance.
+        falloff: LightFalloff,
+    },
+}
+
+/// How the light of a point or spot light weakens with distance (the core's `Falloff`, with the range as given).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum LightFalloff {
+    /// Not at all: the light's colour times its intensity reaches every distance.
+    None,
+    /// As the inverse square of the distance, ended smoothly at the range when there is one: the colour times the
+    /// intensity is what a surface facing the light receives at distance 1.
+    InverseSquare {
+        /// Where the light ends (positive), or `None` for nowhere.
+        range: Option<f32>,
+    },
+}
+
+impl LightFalloff {
+    /// The core's fall-off.
+    pub fn core(self) -> Falloff {
+        match self {
+            Self::None => Falloff::None,
+            Self::InverseSquare { range } => Falloff::inverse_square(range),
+        }
+    }
 }
 
 /// An object of a scene file: a mesh, where it is, and how it looks.

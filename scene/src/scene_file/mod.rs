@@ -58,8 +58,8 @@ mod validate;
 pub use error::{SceneFileError, SceneFileErrorKind};
 pub use hex_color::parse_hex_color;
 pub use loaded::{
-    CameraPlacement, FramedCamera, ObjectAnimation, ObjectMaterial, ObjectNormalMap, SceneCamera, SceneData,
-    SceneLight, SceneLightKind, SceneObject, SceneProjection,
+    CameraPlacement, FramedCamera, LightFalloff, ObjectAnimation, ObjectMaterial, ObjectNormalMap, SceneCamera,
+    SceneData, SceneLight, SceneLightKind, SceneObject, SceneProjection,
 };
 pub use location::Location;
 pub use open::{OpenError, OpenedScene, is_scene_file, open};

@@ -9,14 +9,22 @@ use rastty_core::color::ShadingSpace;
 use super::defaults::{AMBIENT, BACKGROUND, VIEWER_LIGHTS};
 use super::loaded::{CameraPlacement, FramedCamera, ObjectMaterial, SceneData, SceneObject};
 use crate::model::Model;
+#[cfg(doc)]
+use crate::model::ModelLight;
 
 impl SceneData {
     /// The scene of `model` alone, loaded from `mesh_path`: one object whose transform is the model's fit into the
     /// unit sphere ([`Model::fit`]), with the model's own materials; the viewer's framed camera
-    /// ([`FramedCamera::DEFAULT`]), lights ([`VIEWER_LIGHTS`], which follow the camera), ambient light and
-    /// background; linear light; no ambient occlusion. The model keeps its warnings ([`Model::warnings`]).
+    /// ([`FramedCamera::DEFAULT`]), ambient light and background; the model's own lights, fitted with it
+    /// ([`ModelLight::scene_light`]), or the viewer's ([`VIEWER_LIGHTS`], which follow the camera) for a model
+    /// that has none; linear light; no ambient occlusion. The model keeps its warnings ([`Model::warnings`]).
     pub fn from_model(model: Model, mesh_path: PathBuf) -> Self {
         let transform = model.fit();
+        let lights = if model.lights.is_empty() {
+            VIEWER_LIGHTS.to_vec()
+        } else {
+            model.lights.iter().filter_map(|light| light.scene_light(&transform)).collect()
+        };
         let object = SceneObject {
             mesh_path,
             model: Arc::new(model),
@@ -26,7 +34,7 @@ impl SceneData {
         };
         Self {
             camera: CameraPlacement::Framed(FramedCamera::DEFAULT),
-            lights: VIEWER_LIGHTS.to_vec(),
+            lights,
             objects: vec![object],
             background: BACKGROUND,
             ambient: AMBIENT,

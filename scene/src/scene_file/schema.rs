@@ -96,18 +96,32 @@ pub struct CameraSpec {
 }
 
 /// `[[lights]]`: one light. `type = "directional"` needs `direction` (and takes no `position`); `type = "point"`
-/// needs `position` (and takes no `direction`).
+/// needs `position` (and takes no `direction`); `type = "spot"` needs both. Only point and spot lights take
+/// `falloff` and `range`, only spots the cone's angles.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields, expecting = "a table of light keys")]
 pub struct LightSpec {
-    /// `type = "directional" | "point"`. Required.
+    /// `type = "directional" | "point" | "spot"`. Required.
     #[serde(rename = "type")]
     pub kind: Spanned<LightType>,
-    /// `direction = [x, y, z]`, directional lights only: the direction the light **travels**, from the light toward
-    /// the scene (so `[0, -1, 0]` is a sun straight overhead). Not zero; its length does not matter.
+    /// `direction = [x, y, z]`, directional and spot lights: the direction the light **travels**, from the light
+    /// toward the scene (so `[0, -1, 0]` is a sun straight overhead, or a spot pointing down). Not zero; its length
+    /// does not matter.
     pub direction: Option<Spanned<Triple>>,
-    /// `position = [x, y, z]`, point lights only: where the light is, in world coordinates.
+    /// `position = [x, y, z]`, point and spot lights: where the light is, in world coordinates.
     pub position: Option<Spanned<Triple>>,
+    /// `inner_angle = DEGREES`, spot lights: the angle from the axis within which the light is full, from 0 and
+    /// below `outer_angle`. Default 0.
+    pub inner_angle: Option<Spanned<f32>>,
+    /// `outer_angle = DEGREES`, spot lights: the angle from the axis beyond which there is no light, above
+    /// `inner_angle` and at most 90. Default 45. Between the two the light fades as `KHR_lights_punctual` writes.
+    pub outer_angle: Option<Spanned<f32>>,
+    /// `falloff = "none" | "inverse-square"`, point and spot lights: whether the light weakens with the square of
+    /// the distance (`intensity` is then what arrives at distance 1). Default `"none"`.
+    pub falloff: Option<Spanned<FalloffSpec>>,
+    /// `range = NUMBER`, with `falloff = "inverse-square"`: the distance, positive, at which the light has faded to
+    /// nothing (smoothly, by `KHR_lights_punctual`'s window). Default: none, the light reaches everywhere.
+    pub range: Option<Spanned<f32>>,
     /// `color = [r, g, b]`: the light's colour, components finite and not negative. Default white `[1, 1, 1]`.
     pub color: Option<Spanned<Triple>>,
     /// `intensity = NUMBER`: multiplies `color`; finite and not negative. Default 1.
@@ -135,12 +149,24 @@ pub enum LightSpace {
 
 /// The kinds of light (`type = "..."` of a `[[lights]]` table).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
-#[serde(rename_all = "lowercase", expecting = "\"directional\" or \"point\"")]
+#[serde(rename_all = "lowercase", expecting = "\"directional\", \"point\" or \"spot\"")]
 pub enum LightType {
     /// `"directional"`: parallel rays from far away, like the sun.
     Directional,
     /// `"point"`: rays in every direction from one point, like a bulb.
     Point,
+    /// `"spot"`: rays within a cone from one point, like a stage light.
+    Spot,
+}
+
+/// How a point or spot light weakens with distance (`falloff = "..."` of a `[[lights]]` table).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "kebab-case", expecting = "\"none\" or \"inverse-square\"")]
+pub enum FalloffSpec {
+    /// `"none"`: the same light at every distance.
+    None,
+    /// `"inverse-square"`: as one over the distance squared.
+    InverseSquare,
 }
 
 /// `[[objects]]`: one mesh, placed in the world by `scale`, then `rotate`, then `translate`.

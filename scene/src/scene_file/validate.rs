@@ -10,7 +10,9 @@ use toml::Spanned;
 use super::error::{SceneFileError, SceneFileErrorKind};
 use super::hex_color::parse_hex_color;
 use super::location::Location;
-use super::schema::{CameraSpec, LightSpec, LightType, MaterialSpec, NumberOrTriple, ObjectSpec, SceneSpec, Triple};
+use super::schema::{
+    CameraSpec, FalloffSpec, LightSpec, LightType, MaterialSpec, NumberOrTriple, ObjectSpec, SceneSpec, Triple,
+};
 
 /// The prefix of a mesh naming a model built into `rastty`.
 pub(crate) const BUILTIN_PREFIX: &str = "builtin:";
@@ -248,21 +250,45 @@ fn camera(c: &Checker<'_>, spec: &Spanned<CameraSpec>) -> Result<(), SceneFileEr
 
 fn light(c: &Checker<'_>, spec: &Spanned<LightSpec>, key: &str) -> Result<(), SceneFileError> {
     let l = spec.get_ref();
-    let (needed, needed_name, excluded, excluded_name, kind) = match l.kind.get_ref() {
-        LightType::Directional => (&l.direction, "direction", &l.position, "position", "directional"),
-        LightType::Point => (&l.position, "position", &l.direction, "direction", "point"),
+    let (kind, position, direction, cone, falloff) = match l.kind.get_ref() {
+        LightType::Directional => ("directional", false, true, false, false),
+        LightType::Point => ("point", true, false, false, true),
+        LightType::Spot => ("spot", true, true, true, true),
     };
-    if let Some(x) = excluded {
-        let message = format!("a {kind} light has no {excluded_name}; give {needed_name}");
-        return Err(c.invalid(&x.span(), format!("{key}.{excluded_name}"), message));
+    // Each key a kind does not take, in the order the keys are documented.
+    let excluded = [
+        (!position).then_some(("position", l.position.as_ref().map(Spanned::span))),
+        (!direction).then_some(("direction", l.direction.as_ref().map(Spanned::span))),
+        (!cone).then_some(("inner_angle", l.inner_angle.as_ref().map(Spanned::span))),
+        (!cone).then_some(("outer_angle", l.outer_angle.as_ref().map(Spanned::span))),
+        (!falloff).then_some(("falloff", l.falloff.as_ref().map(Spanned::span))),
+        (!falloff).then_some(("range", l.range.as_ref().map(Spanned::span))),
+    ];
+    if let Some((name, Some(span))) = excluded.into_iter().flatten().find(|(_, span)| span.is_some()) {
+        // Position and direction given the wrong way round: say which one the kind takes.
+        let hint = match (kind, name) {
+            ("directional", "position") => "; give direction",
+            ("point", "direction") => "; give position",
+            _ => "",
+        };
+        let message = format!("a {kind} light has no {name}{hint}");
+        return Err(c.invalid(&span, format!("{key}.{name}"), message));
     }
-    let Some(needed) = needed else {
-        let message = format!("required for a {kind} light");
-        return Err(c.invalid(&spec.span(), format!("{key}.{needed_name}"), message));
-    };
-    match l.kind.get_ref() {
-        LightType::Directional => c.nonzero3(needed, &format!("{key}.direction"))?,
-        LightType::Point => c.finite3(needed, &format!("{key}.position"))?,
+    let required =
+        |name: &str| c.invalid(&spec.span(), format!("{key}.{name}"), format!("required for a {kind} light"));
+    if position {
+        c.finite3(l.position.as_ref().ok_or_else(|| required("position"))?, &format!("{key}.position"))?;
+    }
+    if direction {
+        c.nonzero3(l.direction.as_ref().ok_or_else(|| required("direction"))?, &format!("{key}.direction"))?;
+    }
+    spot_angles(c, l, key)?;
+    if let Some(range) = &l.range {
+        if l.falloff.as_ref().map(|f| *f.get_ref()) != Some(FalloffSpec::InverseSquare) {
+            let message = "a range needs falloff = \"inverse-square\" (a light that does not fall off has no end)";
+            return Err(c.invalid(&range.span(), format!("{key}.range"), message));
+        }
+        c.positive(range, &format!("{key}.range"), "")?;
     }
     if let Some(color) = &l.color {
         c.not_negative3(color, &format!("{key}.color"))?;
@@ -272,6 +298,27 @@ fn light(c: &Checker<'_>, spec: &Spanned<LightSpec>, key: &str) -> Result<(), Sc
         if !(v.is_finite() && v >= 0.0) {
             let message = format!("must be finite and not negative, got {}", num(v));
             return Err(c.invalid(&intensity.span(), format!("{key}.intensity"), message));
+        }
+    }
+    Ok(())
+}
+
+/// A spot's angles in degrees: the inner from 0 and below the outer, the outer at most 90 (as glTF allows them).
+fn spot_angles(c: &Checker<'_>, l: &LightSpec, key: &str) -> Result<(), SceneFileError> {
+    let inner = l.inner_angle.as_ref().map_or(0.0, |a| *a.get_ref());
+    if let Some(outer) = &l.outer_angle {
+        let v = *outer.get_ref();
+        if !(v > 0.0 && v <= 90.0) {
+            let message = format!("must be an angle above 0 and at most 90 degrees, got {}", num(v));
+            return Err(c.invalid(&outer.span(), format!("{key}.outer_angle"), message));
+        }
+    }
+    let outer = l.outer_angle.as_ref().map_or(45.0, |a| *a.get_ref());
+    if let Some(given) = &l.inner_angle {
+        if !(inner >= 0.0 && inner < outer) {
+            let message =
+                format!("must be an angle from 0 degrees and below outer_angle ({}), got {}", num(outer), num(inner));
+            return Err(c.invalid(&given.span(), format!("{key}.inner_angle"), message));
         }
     }
     Ok(())

@@ -8,7 +8,7 @@ use super::ScenePlan;
 use super::camera::PlaneSource;
 use super::lights::{LightName, ShortNumber, ShortTriple};
 use crate::escaped::Escaped;
-use crate::scene_file::SceneProjection;
+use crate::scene_file::{LightFalloff, SceneLightKind, SceneProjection};
 
 impl fmt::Display for ScenePlan {
     /// The frame (with the space it is lit in, in which the ambient and light colours are given), the lights, then
@@ -49,7 +49,25 @@ impl fmt::Display for ScenePlan {
         }
         for light in &self.lights {
             let shadows = if light.shadow_pass.is_some() { ", casts shadows" } else { "" };
-            writeln!(f, "  {}: colour {}{shadows}", self.light_name(light), ShortTriple(light.color))?;
+            let falloff = match light.source.kind {
+                SceneLightKind::Point { falloff, .. } | SceneLightKind::Spot { falloff, .. } => falloff,
+                SceneLightKind::Directional { .. } => LightFalloff::None,
+            };
+            let falloff = match falloff {
+                LightFalloff::None => String::new(),
+                LightFalloff::InverseSquare { range: None } => ", falling off by the inverse square".to_owned(),
+                LightFalloff::InverseSquare { range: Some(r) } => {
+                    format!(", falling off by the inverse square to range {}", ShortNumber(r))
+                }
+            };
+            let cone = match light.source.kind {
+                SceneLightKind::Spot { inner, outer, .. } => {
+                    format!(", cone {} to {} degrees", ShortNumber(inner.to_degrees()), ShortNumber(outer.to_degrees()))
+                }
+                _ => String::new(),
+            };
+            let (name, color) = (self.light_name(light), ShortTriple(light.color));
+            writeln!(f, "  {name}: colour {color}{falloff}{cone}{shadows}")?;
         }
         for light in &self.dropped_lights {
             let why = if light.source.intensity == 0.0 { "intensity 0" } else { "black colour" };

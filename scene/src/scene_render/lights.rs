@@ -6,7 +6,7 @@ use std::fmt;
 
 use rastty_core::color::ShadingSpace;
 use rastty_core::math::{Mat4, Vec3};
-use rastty_core::shading::LightKind as CoreLightKind;
+use rastty_core::shading::{Cone, LightKind as CoreLightKind};
 
 use super::lit_color;
 use crate::scene_file::{LightSpace, SceneLight, SceneLightKind};
@@ -48,18 +48,25 @@ pub fn core_light(light: &SceneLight, view: &Mat4, eye: Vec3, space: ShadingSpac
         return None;
     }
     let to_world = view.to_mat3().transpose();
-    let kind = match (light.kind, light.space) {
+    let place = |position: Vec3| match light.space {
+        LightSpace::World => position,
+        LightSpace::Camera => eye + to_world * position,
+    };
+    let turn = |direction: Vec3| match light.space {
+        LightSpace::World => direction,
+        LightSpace::Camera => (to_world * direction).normalize_or_zero(),
+    };
+    let kind = match light.kind {
         // The file gives the way the light travels; the core wants the way toward it.
-        (SceneLightKind::Directional { direction }, LightSpace::World) => {
-            CoreLightKind::Directional { to_light: -direction }
+        SceneLightKind::Directional { direction } => CoreLightKind::Directional { to_light: turn(-direction) },
+        SceneLightKind::Point { position, falloff } => {
+            CoreLightKind::Point { position: place(position), falloff: falloff.core() }
         }
-        (SceneLightKind::Directional { direction }, LightSpace::Camera) => {
-            CoreLightKind::Directional { to_light: (to_world * -direction).normalize_or_zero() }
-        }
-        (SceneLightKind::Point { position }, LightSpace::World) => CoreLightKind::Point { position },
-        (SceneLightKind::Point { position }, LightSpace::Camera) => {
-            CoreLightKind::Point { position: eye + to_world * position }
-        }
+        SceneLightKind::Spot { position, direction, inner, outer, falloff } => CoreLightKind::Spot {
+            position: place(position),
+            falloff: falloff.core(),
+            cone: Cone::new(turn(direction), inner, outer),
+        },
     };
     Some((kind, color))
 }
@@ -80,9 +87,16 @@ impl fmt::Display for LightName<'_> {
             SceneLightKind::Directional { direction } => {
                 write!(f, "light {} (directional, travelling {})", self.number, ShortTriple(direction))
             }
-            SceneLightKind::Point { position } => {
+            SceneLightKind::Point { position, .. } => {
                 write!(f, "light {} (point at {})", self.number, ShortTriple(position))
             }
+            SceneLightKind::Spot { position, direction, .. } => write!(
+                f,
+                "light {} (spot at {}, pointing {})",
+                self.number,
+                ShortTriple(position),
+                ShortTriple(direction)
+            ),
         }
     }
 }
@@ -113,6 +127,7 @@ impl fmt::Display for ShortTriple {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scene_file::LightFalloff;
     use rastty_core::color::srgb_to_linear;
 
     fn light(kind: SceneLightKind, intensity: f32) -> SceneLight {
@@ -148,28 +163,75 @@ mod tests {
             panic!("a directional light")
         };
         assert!(close(to_light, Vec3::X), "{to_light:?}");
-        let right = SceneLight { space: LightSpace::Camera, ..light(SceneLightKind::Point { position: Vec3::X }, 1.0) };
-        let Some((CoreLightKind::Point { position }, _)) = core_light(&right, &view, eye, ShadingSpace::Encoded) else {
+        let right = SceneLight {
+            space: LightSpace::Camera,
+            ..light(SceneLightKind::Point { position: Vec3::X, falloff: LightFalloff::None }, 1.0)
+        };
+        let Some((CoreLightKind::Point { position, .. }, _)) = core_light(&right, &view, eye, ShadingSpace::Encoded)
+        else {
             panic!("a point light")
         };
         assert!(close(position, Vec3::new(5.0, 0.0, -1.0)), "{position:?}");
+        // A spot to the right pointing away from the viewer: at world (5, 0, -1), along the world's -x, its cone
+        // and fall-off kept.
+        let spot = SceneLight {
+            space: LightSpace::Camera,
+            ..light(
+                SceneLightKind::Spot {
+                    position: Vec3::X,
+                    direction: -Vec3::Z,
+                    inner: 0.25,
+                    outer: 0.5,
+                    falloff: LightFalloff::InverseSquare { range: Some(3.0) },
+                },
+                1.0,
+            )
+        };
+        let Some((CoreLightKind::Spot { position, falloff, cone }, _)) =
+            core_light(&spot, &view, eye, ShadingSpace::Encoded)
+        else {
+            panic!("a spot light")
+        };
+        assert!(close(position, Vec3::new(5.0, 0.0, -1.0)), "{position:?}");
+        assert!(close(cone.direction, -Vec3::X), "{:?}", cone.direction);
+        assert_eq!(cone, Cone::new(cone.direction, 0.25, 0.5));
+        assert_eq!(falloff, rastty_core::shading::Falloff::inverse_square(Some(3.0)));
     }
 
     #[test]
     fn dark_lights_are_left_out() {
         let (view, eye) = (Mat4::IDENTITY, Vec3::ZERO);
         assert!(
-            core_light(&light(SceneLightKind::Point { position: Vec3::ONE }, 0.0), &view, eye, ShadingSpace::Encoded)
-                .is_none()
+            core_light(
+                &light(SceneLightKind::Point { position: Vec3::ONE, falloff: LightFalloff::None }, 0.0),
+                &view,
+                eye,
+                ShadingSpace::Encoded
+            )
+            .is_none()
         );
-        let black = SceneLight { color: Vec3::ZERO, ..light(SceneLightKind::Point { position: Vec3::ONE }, 1.0) };
+        let black = SceneLight {
+            color: Vec3::ZERO,
+            ..light(SceneLightKind::Point { position: Vec3::ONE, falloff: LightFalloff::None }, 1.0)
+        };
         assert!(core_light(&black, &view, eye, ShadingSpace::Encoded).is_none());
     }
 
     #[test]
     fn names_give_the_place_and_the_kind() {
-        let l = light(SceneLightKind::Point { position: Vec3::new(1.2, 2.2, 1.0) }, 1.0);
+        let l = light(SceneLightKind::Point { position: Vec3::new(1.2, 2.2, 1.0), falloff: LightFalloff::None }, 1.0);
         assert_eq!(LightName { number: 2, light: &l }.to_string(), "light 2 (point at [1.2, 2.2, 1])");
+        let spot = SceneLightKind::Spot {
+            position: Vec3::Y,
+            direction: -Vec3::Y,
+            inner: 0.0,
+            outer: 0.5,
+            falloff: LightFalloff::None,
+        };
+        assert_eq!(
+            LightName { number: 1, light: &light(spot, 1.0) }.to_string(),
+            "light 1 (spot at [0, 1, 0], pointing [0, -1, 0])"
+        );
         assert_eq!(ShortNumber(-0.0001).to_string(), "0");
         assert_eq!(ShortNumber(0.73751).to_string(), "0.738");
         assert_eq!(ShortNumber(100.0).to_string(), "100");

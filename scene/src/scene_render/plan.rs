@@ -6,7 +6,7 @@ use rastty_core::math::{Vec3, float};
 use rastty_core::occlusion::AmbientOcclusion;
 use rastty_core::pipeline::DrawState;
 use rastty_core::shading::Transforms;
-use rastty_core::shading::{LightKind, LightUse, Material, Object, Variant};
+use rastty_core::shading::{LightUse, Material, Object, Variant};
 use rastty_core::shadow::ShadowView;
 use rastty_core::target::Samples;
 
@@ -239,7 +239,7 @@ impl ScenePlan {
             .lights
             .iter()
             .map(|l| LightUse {
-                point: matches!(l.kind, LightKind::Point { .. }),
+                point: l.kind.position().is_some(),
                 shadow_pcf: l.shadow_pass.map(|p| self.shadow_passes[p].pcf_radius),
             })
             .collect();

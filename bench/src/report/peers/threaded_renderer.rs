@@ -53,6 +53,7 @@ impl ThreadedRenderer {
             warnings: Vec::new(),
             rig: None,
             cameras: Vec::new(),
+            lights: Vec::new(),
         };
         if let Some(texture) = &scene.texture {
             model.materials[0].diffuse = Vec3::ONE;
