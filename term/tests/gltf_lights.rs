@@ -16,7 +16,30 @@ use crate::common::rastty_in as rastty;
 /// given (`lights`: the members of the extension's `lights` array; `light_nodes`: nodes, each a child of the
 /// root, as JSON objects).
 fn lit_square(scale: f32, lights: &str, light_nodes: &[&str], required: bool) -> String {
+    lit_square_moving(scale, lights, light_nodes, required, None)
+}
+
+/// [`lit_square`] with an animation "sweep" that moves the first light's node (node 2) linearly through the
+/// `(time, translation)` keys given.
+fn lit_square_moving(
+    scale: f32,
+    lights: &str,
+    light_nodes: &[&str],
+    required: bool,
+    keys: Option<&[(f32, [f32; 3])]>,
+) -> String {
     let mut w = GltfWriter::new();
+    let animations = match keys {
+        Some(keys) => {
+            let times = w.floats(&keys.iter().map(|(t, _)| *t).collect::<Vec<_>>(), "SCALAR");
+            let places = w.floats(&keys.iter().flat_map(|(_, p)| *p).collect::<Vec<_>>(), "VEC3");
+            format!(
+                r#", "animations": [{{"name": "sweep", "samplers": [{{"input": {times}, "output": {places}}}],
+                "channels": [{{"sampler": 0, "target": {{"node": 2, "path": "translation"}}}}]}}]"#
+            )
+        }
+        None => String::new(),
+    };
     let p = w.floats(&[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 0.0], "VEC3");
     let n = w.floats(&[0.0, 0.0, 1.0].repeat(4), "VEC3");
     let i = w.indices(&[0, 1, 2, 0, 2, 3], 2);
@@ -30,7 +53,7 @@ fn lit_square(scale: f32, lights: &str, light_nodes: &[&str], required: bool) ->
         "materials": [{{"pbrMetallicRoughness": {{"baseColorFactor": [0.5, 0.5, 0.5, 1], "metallicFactor": 0,
             "roughnessFactor": 1}}}}],
         "meshes": [{{"primitives": [{{"attributes": {{"POSITION": {p}, "NORMAL": {n}}}, "indices": {i},
-            "material": 0}}]}}]"#,
+            "material": 0}}]}}]{animations}"#,
         children.join(", "),
         light_nodes.iter().map(|node| format!(", {node}")).collect::<String>()
     ))
@@ -45,8 +68,15 @@ fn load(json: &str) -> Result<Model, LoadError> {
 
 /// The RGB bytes of `rastty render FILE` at 160x120.
 fn picture(dir: &Path, json: &str) -> Vec<u8> {
+    picture_with(dir, json, &[])
+}
+
+/// The RGB bytes of `rastty render FILE ARGS` at 160x120.
+fn picture_with(dir: &Path, json: &str, args: &[&str]) -> Vec<u8> {
     fs::write(dir.join("m.gltf"), json).unwrap();
-    let output = rastty(dir, &["render", "m.gltf", "-o", "out.png", "--size", "160x120"]);
+    let mut all = vec!["render", "m.gltf", "-o", "out.png", "--size", "160x120"];
+    all.extend_from_slice(args);
+    let output = rastty(dir, &all);
     assert!(output.status.success(), "{}", String::from_utf8_lossy(&output.stderr));
     image::open(dir.join("out.png")).expect("a PNG").to_rgb8().into_raw()
 }
@@ -201,4 +231,28 @@ fn explain_lists_the_files_lights_and_the_frames() {
         stdout.contains("colour [0.318, 0.318, 0.318], falling off by the inverse square, cone 5.73 to 22.918"),
         "{stdout}"
     );
+}
+
+#[test]
+fn lights_ride_on_their_animated_nodes() {
+    // A spot swept from over (0.25, 0.5) at 0 s to over (0.75, 0.5) at 2 s.
+    let (spot, node) = spot_over(0.25, 0.1, 0.4, 0.5);
+    let keys = [(0.0, [0.25, 0.5, 0.5]), (2.0, [0.75, 0.5, 0.5])];
+    let moving = lit_square_moving(1.0, &spot, &[&node], false, Some(&keys));
+    let mut model = load(&moving).expect("a moving light loads");
+    assert_eq!(model.lights[0].world.transform_point(Vec3::ZERO), Vec3::new(0.25, 0.5, 0.5));
+    model.pose(Some(0), 1.0);
+    assert_eq!(model.lights[0].world.transform_point(Vec3::ZERO), Vec3::new(0.5, 0.5, 0.5));
+    model.pose(None, 0.0);
+    assert_eq!(model.lights[0].world.transform_point(Vec3::ZERO), Vec3::new(0.25, 0.5, 0.5));
+
+    // A still at a time is the picture of the light standing where the animation has it then.
+    let dir = tempfile::tempdir().unwrap();
+    let at_rest = picture(dir.path(), &lit_square(1.0, &spot, &[&node], false));
+    let (_, there) = spot_over(0.75, 0.1, 0.4, 0.5);
+    let standing_there = picture(dir.path(), &lit_square(1.0, &spot, &[&there], false));
+    assert_ne!(at_rest, standing_there);
+    assert_eq!(picture_with(dir.path(), &moving, &[]), at_rest, "without --time, the rest pose");
+    assert_eq!(picture_with(dir.path(), &moving, &["--time", "2"]), standing_there);
+    assert_eq!(picture_with(dir.path(), &moving, &["--time", "0"]), at_rest);
 }

@@ -145,12 +145,12 @@ fn positions_in_range(root: &gltf::json::Root) -> Result<(), String> {
 }
 
 /// What the default scene (or the first) places: its meshes with their nodes (by index) and the nodes' world
-/// transforms, and its cameras and lights with theirs, in depth-first order.
+/// transforms, and its cameras and lights with theirs (and a light's node), in depth-first order.
 #[derive(Default)]
 struct PlacedNodes<'a> {
     meshes: Vec<(Option<usize>, gltf::Mesh<'a>, Mat4)>,
     cameras: Vec<(gltf::Camera<'a>, Mat4)>,
-    lights: Vec<(gltf::khr_lights_punctual::Light<'a>, Mat4)>,
+    lights: Vec<(gltf::khr_lights_punctual::Light<'a>, Mat4, usize)>,
 }
 
 /// The meshes, cameras and lights the default scene (or the first) places; without a scene, every mesh with no
@@ -177,7 +177,7 @@ fn placed_nodes<'a>(document: &'a Document) -> Result<PlacedNodes<'a>, String> {
             placed.cameras.push((camera, world));
         }
         if let Some(light) = node.light() {
-            placed.lights.push((light, world));
+            placed.lights.push((light, world, index));
         }
         let first_child = stack.len();
         stack.extend(node.children().map(|c| (c, world)));
@@ -235,10 +235,13 @@ fn spot_defaults(json: &mut gltf::json::Root) {
 /// The lights placed, as the model keeps them; one whose values the extension does not allow (a negative
 /// intensity or colour, a range not above 0, cone angles out of order or beyond pi / 2) is left out with a
 /// warning.
-fn lights(placed: &[(gltf::khr_lights_punctual::Light<'_>, Mat4)], warnings: &mut Vec<String>) -> Vec<ModelLight> {
+fn lights(
+    placed: &[(gltf::khr_lights_punctual::Light<'_>, Mat4, usize)],
+    warnings: &mut Vec<String>,
+) -> Vec<ModelLight> {
     use gltf::khr_lights_punctual::Kind;
     let mut out = Vec::new();
-    for (light, world) in placed {
+    for (light, world, node) in placed {
         let name = light.name().map(str::to_owned);
         let [r, g, b] = light.color();
         let color = Vec3::new(r, g, b);
@@ -258,7 +261,7 @@ fn lights(placed: &[(gltf::khr_lights_punctual::Light<'_>, Mat4)], warnings: &mu
             warnings.push(format!("{label} has a colour, intensity, range or cone out of range and is left out"));
             continue;
         }
-        out.push(ModelLight { name, world: *world, kind, color, intensity, range: light.range() });
+        out.push(ModelLight { name, node: *node, world: *world, kind, color, intensity, range: light.range() });
     }
     out
 }

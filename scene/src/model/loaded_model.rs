@@ -68,7 +68,8 @@ impl Model {
     /// Moves the vertices (positions, normals, tangents) to time `time`, in seconds, of animation `animation` of
     /// [`Self::rig`] (an index into [`Rig::animations`]; times outside the animation hold its first or last keys),
     /// or to the rest pose when `None`: the file's node transforms, skins and default morph weights, as the model
-    /// is loaded. Nothing changes for a model without a rig.
+    /// is loaded. The lights move with their nodes ([`ModelLight::world`]); the cameras stay in the rest pose.
+    /// Nothing changes for a model without a rig.
     pub fn pose(&mut self, animation: Option<usize>, time: f32) {
         if let Some(rig) = &self.rig {
             let mut vertices = PosedVertices {
@@ -76,7 +77,13 @@ impl Model {
                 normals: &mut self.normals,
                 tangents: self.tangents.as_deref_mut(),
             };
-            rig.pose(animation, time, &mut vertices);
+            let worlds = rig.pose(animation, time, &mut vertices);
+            // The lights ride on their nodes.
+            for light in &mut self.lights {
+                if let Some(world) = worlds.get(light.node) {
+                    light.world = *world;
+                }
+            }
         }
     }
 

@@ -7,13 +7,16 @@ use rastty_core::math::{Mat4, Vec3};
 
 use crate::scene_file::{LightFalloff, LightSpace, SceneLight, SceneLightKind};
 
-/// A light of a glTF file: what it is and its node's world transform in the rest pose. Directional and spot
-/// lights shine down their node's `-z` (`KHR_lights_punctual`).
+/// A light of a glTF file: what it is, and its node's world transform in the model's pose (moved by
+/// [`super::Model::pose`] when an animation moves the node). Directional and spot lights shine down their node's
+/// `-z` (`KHR_lights_punctual`).
 #[derive(Clone, Debug, PartialEq)]
 pub struct ModelLight {
     /// Its name in the file, raw (escape before printing), or `None`.
     pub name: Option<String>,
-    /// Its node's world transform.
+    /// Its node's index in the file.
+    pub node: usize,
+    /// Its node's world transform, in the model's current pose.
     pub world: Mat4,
     /// Directional, point or spot.
     pub kind: ModelLightKind,
@@ -97,7 +100,8 @@ mod tests {
     use super::*;
 
     fn light(kind: ModelLightKind, world: Mat4) -> ModelLight {
-        ModelLight { name: None, world, kind, color: Vec3::new(1.0, 0.5, 0.25), intensity: 3.0, range: Some(2.0) }
+        let color = Vec3::new(1.0, 0.5, 0.25);
+        ModelLight { name: None, node: 0, world, kind, color, intensity: 3.0, range: Some(2.0) }
     }
 
     #[test]

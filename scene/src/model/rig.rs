@@ -208,7 +208,10 @@ impl Rig {
 
     /// Moves the model's vertices (`model`) to time `time` (seconds) of animation `animation`, or to the rest pose
     /// (the file's node transforms and default morph weights) when `None`. An unknown animation poses the rest.
-    pub(crate) fn pose(&self, animation: Option<usize>, time: f32, model: &mut PosedVertices<'_>) {
+    ///
+    /// Returns the nodes' world matrices in that pose, by their index in the file (none when the tree cannot be
+    /// evaluated, which the loader's checks rule out).
+    pub(crate) fn pose(&self, animation: Option<usize>, time: f32, model: &mut PosedVertices<'_>) -> Vec<Mat4> {
         let mut locals: Vec<Option<Trs>> = vec![None; self.nodes.len()];
         let mut weights: Vec<Option<Vec<f32>>> = self.nodes.iter().map(|n| n.weights.clone()).collect();
         for channel in animation.and_then(|a| self.animations.get(a)).map_or(&[][..], |a| &a.channels) {
@@ -229,12 +232,19 @@ impl Rig {
             self.nodes.iter().zip(&locals).map(|(n, trs)| trs.map_or(n.rest, |t| t.to_mat4())).collect();
         let mut worlds = vec![Mat4::IDENTITY; self.nodes.len()];
         if world_matrices(&matrices, &self.parents, &mut worlds).is_err() {
-            return;
+            return Vec::new();
         }
         for instance in &self.instances {
             let weights = weights[instance.node].as_deref().filter(|w| w.len() == instance.weights.len());
             self.pose_instance(instance, &worlds, weights.unwrap_or(&instance.weights), model);
         }
+        let mut by_file = vec![Mat4::IDENTITY; self.nodes.len()];
+        for (node, world) in self.nodes.iter().zip(worlds) {
+            if let Some(slot) = by_file.get_mut(node.file_index) {
+                *slot = world;
+            }
+        }
+        by_file
     }
 
     /// Poses one primitive: morphed by `weights`, then skinned (joints placed by `worlds`) or placed by its node.

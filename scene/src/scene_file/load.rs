@@ -62,6 +62,7 @@ pub(crate) fn load_scene_file(file: &SceneFile) -> Result<SceneData, SceneFileEr
     Ok(SceneData {
         camera: spec.camera.as_ref().map_or(CameraPlacement::Framed(FramedCamera::DEFAULT), |c| camera(c.get_ref())),
         lights,
+        lights_of: None,
         objects,
         background,
         ambient: vec3_or(&spec.ambient, defaults::AMBIENT),

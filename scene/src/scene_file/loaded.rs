@@ -19,6 +19,10 @@ pub struct SceneData {
     pub camera: CameraPlacement,
     /// The lights, in file order (possibly none).
     pub lights: Vec<SceneLight>,
+    /// The object whose model's own lights are [`Self::lights`] (a glTF model with lights, shown alone), placed
+    /// again from it when it is posed ([`SceneObject::own_lights`]); `None` when the lights are the file's or the
+    /// viewer's.
+    pub lights_of: Option<usize>,
     /// The objects, in file order (at least one).
     pub objects: Vec<SceneObject>,
     /// The background colour (the file's, or [`super::defaults::BACKGROUND`]).
@@ -216,6 +220,14 @@ pub struct SceneObject {
     pub material: ObjectMaterial,
     /// The animation of its own it plays, whatever is chosen for the others (`animation`, `time`).
     pub animation: Option<ObjectAnimation>,
+}
+
+impl SceneObject {
+    /// Its model's own lights ([`Model::lights`]) in the world, placed by its transform
+    /// ([`crate::model::ModelLight::scene_light`]); those the transform leaves no place or direction are left out.
+    pub fn own_lights(&self) -> Vec<SceneLight> {
+        self.model.lights.iter().filter_map(|light| light.scene_light(&self.transform)).collect()
+    }
 }
 
 /// An object's own animation ([`SceneObject::animation`]).

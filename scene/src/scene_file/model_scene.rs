@@ -16,15 +16,11 @@ impl SceneData {
     /// The scene of `model` alone, loaded from `mesh_path`: one object whose transform is the model's fit into the
     /// unit sphere ([`Model::fit`]), with the model's own materials; the viewer's framed camera
     /// ([`FramedCamera::DEFAULT`]), ambient light and background; the model's own lights, fitted with it
-    /// ([`ModelLight::scene_light`]), or the viewer's ([`VIEWER_LIGHTS`], which follow the camera) for a model
+    /// ([`SceneObject::own_lights`], [`ModelLight::scene_light`]; [`Self::lights_of`] is then `Some(0)`), or the
+    /// viewer's ([`VIEWER_LIGHTS`], which follow the camera) for a model
     /// that has none; linear light; no ambient occlusion. The model keeps its warnings ([`Model::warnings`]).
     pub fn from_model(model: Model, mesh_path: PathBuf) -> Self {
         let transform = model.fit();
-        let lights = if model.lights.is_empty() {
-            VIEWER_LIGHTS.to_vec()
-        } else {
-            model.lights.iter().filter_map(|light| light.scene_light(&transform)).collect()
-        };
         let object = SceneObject {
             mesh_path,
             model: Arc::new(model),
@@ -32,9 +28,15 @@ impl SceneData {
             material: ObjectMaterial::default(),
             animation: None,
         };
+        let (lights, lights_of) = if object.model.lights.is_empty() {
+            (VIEWER_LIGHTS.to_vec(), None)
+        } else {
+            (object.own_lights(), Some(0))
+        };
         Self {
             camera: CameraPlacement::Framed(FramedCamera::DEFAULT),
             lights,
+            lights_of,
             objects: vec![object],
             background: BACKGROUND,
             ambient: AMBIENT,

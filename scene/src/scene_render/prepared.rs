@@ -175,6 +175,10 @@ impl PreparedScene {
         if !moved {
             return Ok(());
         }
+        // Lights that belong to a model move with its nodes.
+        if let Some(object) = self.data.lights_of.and_then(|k| self.data.objects.get(k)) {
+            self.data.lights = object.own_lights();
+        }
         self.id = NEXT_ID.fetch_add(1, Ordering::Relaxed);
         Ok(())
     }

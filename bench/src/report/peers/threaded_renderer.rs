@@ -90,6 +90,7 @@ impl ThreadedRenderer {
         let data = SceneData {
             camera: CameraPlacement::Placed(camera),
             lights: vec![light],
+            lights_of: None,
             objects: vec![object],
             background: Vec3::ZERO,
             ambient: Vec3::splat(AMBIENT),
