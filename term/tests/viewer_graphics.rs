@@ -330,3 +330,30 @@ fn inside_tmux_without_pass_through_auto_draws_cells_and_kitty_says_how_to_allow
     assert!(shown.contains("allow-passthrough on"), "pane:\n{shown}");
     screen.close();
 }
+
+#[test]
+fn killing_the_tmux_session_ends_a_viewer_of_kitty_images_within_a_second() {
+    if !tmux_wanted() {
+        return;
+    }
+    for turntable in [false, true] {
+        let test = if turntable { "kitty-kill-turning" } else { "kitty-kill-idle" };
+        let (tmux, _client, mut screen, left) = kitty_outside_tmux(test, true, &[]);
+        let placed = format!("\x1b[1;{}H\x1b_Ga=T,", left + 1);
+        screen.wait_for("a kitty image at the pane", |out| out.windows(placed.len()).any(|w| w == placed.as_bytes()));
+        let pid = tmux.program_pid();
+        if turntable {
+            tmux.run(&["select-pane", "-t", "%0"]);
+            tmux.send_keys("Space");
+            let drawn = screen.len();
+            screen.wait_for("turntable images", |out| out.len() > drawn + 100_000);
+        }
+        let closed = Instant::now();
+        tmux.run(&["kill-session", "-t", SESSION.trim_end_matches(':')]);
+        let took =
+            tmux.wait_for("the viewer to end", || crate::common::tmux::process_gone(pid).then(|| closed.elapsed()));
+        eprintln!("turntable {turntable}: the viewer of kitty images ended {took:?} after its session was killed");
+        assert!(took < Duration::from_secs(1), "turntable {turntable}: took {took:?} to end");
+        screen.close();
+    }
+}

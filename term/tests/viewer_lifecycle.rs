@@ -92,3 +92,34 @@ fn sigterm_ends_a_viewer_whose_frame_cannot_be_written() {
     assert_eq!(after.local_modes, before.local_modes, "the terminal's local modes are restored");
     drop(master);
 }
+
+/// The rows the viewer addressed by cursor position (`ESC [ row ; col H`), the largest first.
+fn rows_addressed(out: &[u8]) -> Vec<u16> {
+    let text = String::from_utf8_lossy(out);
+    let mut rows: Vec<u16> = text
+        .split("\x1b[")
+        .skip(1)
+        .filter_map(|rest| {
+            let end = rest.find(|c: char| !(c.is_ascii_digit() || c == ';'))?;
+            (rest[end..].starts_with('H')).then(|| rest[..end].split(';').next()?.parse().ok()).flatten()
+        })
+        .collect();
+    rows.sort_unstable_by(|a, b| b.cmp(a));
+    rows
+}
+
+#[test]
+fn a_terminal_of_no_size_gets_a_picture_of_the_size_its_variables_or_the_default_give() {
+    for (vars, rows) in [(&[][..], 24), (&[("COLUMNS", "60"), ("LINES", "18")][..], 18)] {
+        let Pty { master, slave } = Pty::open(0, 0);
+        let mut viewer = Viewer::start_with_env(&slave, &[], vars);
+        drop(slave);
+        let screen = Screen::start(master);
+        screen.wait_for_picture();
+        let addressed = rows_addressed(&screen.output());
+        assert_eq!(addressed.first(), Some(&rows), "{vars:?}: rows addressed {addressed:?}");
+        viewer.signal("-TERM");
+        let (status, _) = viewer.wait_for_end(Instant::now());
+        assert_eq!(status.code(), Some(128 + 15), "{status}");
+    }
+}

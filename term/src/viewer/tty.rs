@@ -138,13 +138,15 @@ impl Tty {
         }
     }
 
-    /// The terminal's size in (columns, rows).
+    /// The terminal's size in (columns, rows); where it says 0 (a pseudo-terminal nobody sized), the size
+    /// [`usable_size`] falls back to.
     ///
     /// # Errors
     /// The terminal did not say.
     pub fn size(&self) -> io::Result<(u16, u16)> {
         let size = rustix::termios::tcgetwinsize(&self.output)?;
-        Ok((size.ws_col, size.ws_row))
+        let env = |name| std::env::var(name).ok();
+        Ok(usable_size((size.ws_col, size.ws_row), env("COLUMNS"), env("LINES")))
     }
 
     /// The terminal's text area in pixels (width, height), when the terminal says (the window size's pixel fields;
@@ -153,6 +155,18 @@ impl Tty {
         let size = rustix::termios::tcgetwinsize(&self.output).ok()?;
         (size.ws_xpixel > 0 && size.ws_ypixel > 0).then_some((size.ws_xpixel, size.ws_ypixel))
     }
+}
+
+/// The size to draw at, given the size a terminal `reported` (columns, rows) and the `COLUMNS` and `LINES`
+/// variables: the reported size where it is not 0; for a side reported as 0 (a pseudo-terminal nobody sized, as
+/// under `script` started without a terminal), the variable's value when it is a whole number from 1 to 65,535,
+/// else 80 columns or 24 rows, the size terminals start at (VT100).
+pub fn usable_size(reported: (u16, u16), columns: Option<String>, lines: Option<String>) -> (u16, u16) {
+    let side = |reported: u16, variable: Option<String>, default: u16| match reported {
+        0 => variable.and_then(|v| v.trim().parse::<u16>().ok()).filter(|&n| n > 0).unwrap_or(default),
+        n => n,
+    };
+    (side(reported.0, columns, 80), side(reported.1, lines, 24))
 }
 
 /// Writes all of `bytes` to the non-blocking `out`, waiting for room in steps of at most 20 ms, and asks
@@ -197,4 +211,19 @@ pub fn write_until(out: &File, bytes: &[u8], deadline: Instant) -> io::Result<us
 
 fn timespec(d: Duration) -> Timespec {
     Timespec { tv_sec: d.as_secs() as _, tv_nsec: d.subsec_nanos().into() }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::usable_size;
+
+    #[test]
+    fn a_size_of_zero_falls_back_to_the_variables_then_to_80_by_24() {
+        let some = |s: &str| Some(s.to_owned());
+        assert_eq!(usable_size((120, 40), some("10"), some("5")), (120, 40));
+        assert_eq!(usable_size((0, 0), None, None), (80, 24));
+        assert_eq!(usable_size((0, 0), some("132"), some(" 43 ")), (132, 43));
+        assert_eq!(usable_size((0, 30), some("0"), some("50")), (80, 30));
+        assert_eq!(usable_size((100, 0), some("x"), some("99999")), (100, 24));
+    }
 }

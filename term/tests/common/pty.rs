@@ -153,9 +153,18 @@ impl Viewer {
 
     /// As [`Self::start`], running `rastty ARGS...`.
     pub fn start_with(slave: &File, args: &[&str]) -> Self {
+        Self::start_with_env(slave, args, &[])
+    }
+
+    /// As [`Self::start_with`], with the environment variables `vars` set (`COLUMNS` and `LINES` are unset
+    /// unless given here).
+    pub fn start_with_env(slave: &File, args: &[&str], vars: &[(&str, &str)]) -> Self {
         let stdio = || Stdio::from(slave.as_fd().try_clone_to_owned().expect("dup the slave"));
         let child = Command::new(env!("CARGO_BIN_EXE_rastty"))
             .args(args)
+            .env_remove("COLUMNS")
+            .env_remove("LINES")
+            .envs(vars.iter().copied())
             .env("TERM", "xterm-256color")
             .env("COLORTERM", "truecolor")
             .env_remove("NO_COLOR")
