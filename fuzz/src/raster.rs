@@ -22,8 +22,8 @@ use rastty_core::pipeline::{
     MAX_SUBPIXEL_BITS, Shader, Slopes, Winding, draw, draw_wireframe,
 };
 use rastty_core::shading::{
-    Cone, Falloff, Light, LightKind, Lighting, Material, NormalMap, NormalSpace, Object, ShadingError, ShadingModel, Transforms,
-    Variant, draw_mesh,
+    Cone, Falloff, Light, LightKind, Lighting, Material, NormalMap, NormalSpace, Object, ShadingError, ShadingModel,
+    Transforms, Variant, draw_mesh,
 };
 use rastty_core::shadow::{
     ShadowBias, ShadowMap, ShadowView, WindowRanges, clear_shadow_depth, draw_shadow_caster, window_ranges_band,

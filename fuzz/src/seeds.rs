@@ -9,7 +9,8 @@
 //!   starts with `solid`, and one with bytes after the last triangle).
 //! - `corpus/gltf_load/`: a triangle as `.gltf` JSON with its buffer in a data URI (flat normals); a `.glb` of
 //!   squares placed by TRS, matrix, child and mirroring nodes, with normals, texture coordinates, colours, tangents,
-//!   a PNG in the binary chunk as base colour, normal and emissive map, a texture transform and two materials; and
+//!   a PNG in the binary chunk as base colour, normal and emissive map, a texture transform, two materials and a
+//!   point, a spot and a directional light; and
 //!   a `.glb` of a strip, a fan, a sparse accessor and a line primitive.
 //! - `corpus/gltf_animation/`: the target's skinned and morphed triangle with its joint turning a quarter turn,
 //!   for every pair of interpolations, one to four keys and each rotation component type.
@@ -342,7 +343,8 @@ fn floats(values: &[f32]) -> Vec<u8> {
     values.iter().flat_map(|v| v.to_le_bytes()).collect()
 }
 
-/// Squares placed by every kind of node, with every attribute and map read.
+/// Squares placed by every kind of node, with every attribute and map read, under a point, a spot and a
+/// directional light.
 fn gltf_squares() -> Vec<u8> {
     let mut bin = floats(&[0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 0.0]); // 0: 48 positions
     bin.extend(floats(&[0.0, 0.0, 1.0].repeat(4))); // 48: normals
@@ -356,10 +358,17 @@ fn gltf_squares() -> Vec<u8> {
     bin.resize(png_at, 0);
     bin.extend_from_slice(&png);
     let json = format!(
-        r#"{{"asset": {{"version": "2.0"}}, "extensionsUsed": ["KHR_texture_transform", "KHR_materials_emissive_strength"],
-"scene": 0, "scenes": [{{"nodes": [0, 1, 3]}}],
+        r#"{{"asset": {{"version": "2.0"}},
+"extensionsUsed": ["KHR_texture_transform", "KHR_materials_emissive_strength", "KHR_lights_punctual"],
+"extensions": {{"KHR_lights_punctual": {{"lights": [{{"type": "point", "intensity": 4, "range": 5}},
+  {{"type": "spot", "color": [1, 0.8, 0.6], "intensity": 9, "spot": {{"innerConeAngle": 0.2, "outerConeAngle": 0.6}}}},
+  {{"type": "directional", "intensity": 2}}]}}}},
+"scene": 0, "scenes": [{{"nodes": [0, 1, 3, 4, 5, 6]}}],
 "nodes": [{{"mesh": 0}}, {{"mesh": 1, "translation": [2, 0, 0], "children": [2]}},
-  {{"mesh": 0, "matrix": [0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1, 0, 0, 3, 0, 1]}}, {{"mesh": 1, "scale": [-1, 1, 1]}}],
+  {{"mesh": 0, "matrix": [0, 1, 0, 0, -1, 0, 0, 0, 0, 0, 1, 0, 0, 3, 0, 1]}}, {{"mesh": 1, "scale": [-1, 1, 1]}},
+  {{"extensions": {{"KHR_lights_punctual": {{"light": 0}}}}, "translation": [0.5, 0.5, 1]}},
+  {{"extensions": {{"KHR_lights_punctual": {{"light": 1}}}}, "translation": [1, 1, 2]}},
+  {{"extensions": {{"KHR_lights_punctual": {{"light": 2}}}}, "rotation": [-0.38268343, 0, 0, 0.9238795]}}],
 "buffers": [{{"byteLength": {}}}],
 "bufferViews": [{{"buffer": 0, "byteLength": 192}}, {{"buffer": 0, "byteOffset": 192, "byteLength": 16}},
   {{"buffer": 0, "byteOffset": 208, "byteLength": 12}}, {{"buffer": 0, "byteOffset": {png_at}, "byteLength": {}}}],
