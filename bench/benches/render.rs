@@ -150,6 +150,53 @@ fn sphere_2_5k_phong_lambert_800x800_unspecialised(bencher: Bencher) {
     });
 }
 
+/// The 2.5k sphere at 800x800 under one light of each kind, per-pixel Lambert: what a light costs that is worked
+/// out per fragment (a point light's direction), weakens with distance (the inverse square within a range), or has
+/// a cone (a spot lighting part of the sphere), against the directional light of the benchmarks above.
+mod lights {
+    use super::*;
+    use rastty_core::shading::{Cone, Falloff};
+
+    /// Where the point and spot lights are: up, right and in front of the sphere, 3 units from its centre.
+    const PLACE: Vec3 = Vec3::new(1.0, 2.0, 2.0);
+
+    fn lit(bencher: Bencher, kind: LightKind, color: Vec3) {
+        let sphere = Sphere::new(35, 36);
+        let mut frame = Frame::new(800, 800);
+        let o = object(sphere.mesh(), transforms(800, 800, 2.6), ShadingModel::Phong, None);
+        let lights = [Light { kind, color, shadow: None }];
+        let lighting = Lighting { ambient: Vec3::splat(0.1), lights: &lights, space: ShadingSpace::Linear };
+        bencher.bench_local(|| {
+            let mut target = Target::new(Rgb888(&mut frame.color), &mut frame.depth[..], 800, 800).unwrap();
+            target.clear(Vec3::ZERO);
+            black_box(draw_mesh(&mut target, &o, &lighting, &DrawState::default()).unwrap());
+        });
+    }
+
+    #[divan::bench]
+    fn directional(bencher: Bencher) {
+        lit(bencher, LIGHTS[0].kind, Vec3::ONE);
+    }
+
+    #[divan::bench]
+    fn point(bencher: Bencher) {
+        lit(bencher, LightKind::point(PLACE), Vec3::ONE);
+    }
+
+    #[divan::bench]
+    fn point_inverse_square_range(bencher: Bencher) {
+        let kind = LightKind::Point { position: PLACE, falloff: Falloff::inverse_square(Some(6.0)) };
+        lit(bencher, kind, Vec3::splat(9.0));
+    }
+
+    #[divan::bench]
+    fn spot_inverse_square_range(bencher: Bencher) {
+        let cone = Cone::new(-PLACE, 0.2, 0.35);
+        let kind = LightKind::Spot { position: PLACE, falloff: Falloff::inverse_square(Some(6.0)), cone };
+        lit(bencher, kind, Vec3::splat(9.0));
+    }
+}
+
 /// Fill rate: two triangles covering a 1024x1024 frame, in Mpx/s.
 mod fill_rate {
     use super::*;
