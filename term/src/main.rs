@@ -72,7 +72,8 @@ struct ViewerArgs {
     #[command(flatten)]
     scene: SceneArgs,
     /// How cells show pixels: `half` (2 pixels a cell, ▀), `quadrant` (2x2), `sextant` (2x3, needs a font with
-    /// Unicode 13's sextants), `braille` (2x4) or `ascii` (a character ramp, one pixel a cell).
+    /// Unicode 13's sextants), `octant` (2x4 blocks, needs a terminal and font that know Unicode 16's octants), `braille` (2x4 dots)
+    /// or `ascii` (a character ramp, one pixel a cell).
     #[arg(long, default_value = "half", value_parser = CellMode::from_str)]
     mode: CellMode,
     /// How the picture reaches the terminal: `auto` (asks the terminal: kitty, then iTerm2, then Sixel, else
@@ -96,6 +97,10 @@ struct ViewerArgs {
     /// within a colour tolerance on a slow link.
     #[arg(long)]
     no_pacing: bool,
+    /// The size of the pictures `c` saves (default: twice the terminal's size in pixels, at most 4096 on the
+    /// longer side).
+    #[arg(long, value_name = "WxH", value_parser = parse_size)]
+    size: Option<(u32, u32)>,
 }
 
 /// Options of `rastty render`.
@@ -532,6 +537,7 @@ fn view(args: &ViewerArgs) -> Result<ExitCode, String> {
         color: args.color,
         cell_aspect: args.cell_aspect,
         pacing: !args.no_pacing,
+        capture_size: args.size,
     };
     match crate::viewer::run(&mut scene, &name, &options).map_err(|e| e.to_string())? {
         // Killed by a signal: exit as the shell expects, 128 + the signal number.

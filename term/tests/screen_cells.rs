@@ -167,24 +167,52 @@ fn covered_parts(set: SymbolSet, ch: char) -> u8 {
         "LOWER HALF BLOCK" if set == SymbolSet::Quadrant => return 0b1100,
         _ => {}
     }
+    // An octant cell's rows are quarters of it: the blocks that cover whole quarters, by rows and columns.
+    if set == SymbolSet::Octant {
+        let rows = |from: u8, to: u8, columns: u8| (from..to).fold(0u8, |m, r| m | columns << (2 * r));
+        let (both, left, right) = (0b11, 0b01, 0b10);
+        let covered = match name.as_str() {
+            "UPPER HALF BLOCK" => Some(rows(0, 2, both)),
+            "LOWER HALF BLOCK" => Some(rows(2, 4, both)),
+            "UPPER ONE QUARTER BLOCK" => Some(rows(0, 1, both)),
+            "LOWER ONE QUARTER BLOCK" => Some(rows(3, 4, both)),
+            "UPPER THREE QUARTERS BLOCK" => Some(rows(0, 3, both)),
+            "LOWER THREE QUARTERS BLOCK" => Some(rows(1, 4, both)),
+            "MIDDLE LEFT ONE QUARTER BLOCK" => Some(rows(1, 3, left)),
+            "MIDDLE RIGHT ONE QUARTER BLOCK" => Some(rows(1, 3, right)),
+            "LEFT HALF UPPER ONE QUARTER BLOCK" => Some(rows(0, 1, left)),
+            "RIGHT HALF UPPER ONE QUARTER BLOCK" => Some(rows(0, 1, right)),
+            "LEFT HALF LOWER ONE QUARTER BLOCK" => Some(rows(3, 4, left)),
+            "RIGHT HALF LOWER ONE QUARTER BLOCK" => Some(rows(3, 4, right)),
+            _ => None,
+        };
+        if let Some(covered) = covered {
+            return covered;
+        }
+    }
     if let Some(quadrants) = name.strip_prefix("QUADRANT ") {
-        return quadrants.split(" AND ").fold(0, |m, part| {
-            m | match part {
-                "UPPER LEFT" => 1,
-                "UPPER RIGHT" => 2,
-                "LOWER LEFT" => 4,
-                "LOWER RIGHT" => 8,
+        // A quadrant is one part of a 2x2 cell, two rows of a 2x4 one.
+        let part = |bit: u8| if set == SymbolSet::Octant { (1 | 1 << 2) << (bit / 2 * 4 + bit % 2) } else { 1 << bit };
+        return quadrants.split(" AND ").fold(0, |m, q| {
+            m | match q {
+                "UPPER LEFT" => part(0),
+                "UPPER RIGHT" => part(1),
+                "LOWER LEFT" => part(2),
+                "LOWER RIGHT" => part(3),
                 _ => panic!("{ch:?}: unknown quadrant in {name:?}"),
             }
         });
     }
-    // Sextants number their parts 1 to 6 row by row; Braille numbers its dots 1-2-3 down the left column, 4-5-6
-    // down the right, then 7 (left) and 8 (right) below.
-    let (digits, part_of) = match (set, name.strip_prefix("BLOCK SEXTANT-"), name.strip_prefix("BRAILLE PATTERN DOTS-"))
-    {
-        (SymbolSet::Sextant, Some(d), _) => (d, [0u8, 1, 2, 3, 4, 5, 0, 0]),
-        (SymbolSet::Braille, _, Some(d)) => (d, [0u8, 2, 4, 1, 3, 5, 6, 7]),
-        _ => panic!("{ch:?} ({name:?}) is not a {set:?} character"),
+    // Sextants and octants number their parts 1 to 6 or 8 row by row; Braille numbers its dots 1-2-3 down the left
+    // column, 4-5-6 down the right, then 7 (left) and 8 (right) below.
+    let (digits, part_of) = if let (SymbolSet::Sextant, Some(d)) = (set, name.strip_prefix("BLOCK SEXTANT-")) {
+        (d, [0u8, 1, 2, 3, 4, 5, 0, 0])
+    } else if let (SymbolSet::Octant, Some(d)) = (set, name.strip_prefix("BLOCK OCTANT-")) {
+        (d, [0u8, 1, 2, 3, 4, 5, 6, 7])
+    } else if let (SymbolSet::Braille, Some(d)) = (set, name.strip_prefix("BRAILLE PATTERN DOTS-")) {
+        (d, [0u8, 2, 4, 1, 3, 5, 6, 7])
+    } else {
+        panic!("{ch:?} ({name:?}) is not a {set:?} character")
     };
     digits.bytes().fold(0, |m, d| m | 1 << part_of[usize::from(d - b'1')])
 }

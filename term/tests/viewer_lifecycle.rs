@@ -123,3 +123,21 @@ fn a_terminal_of_no_size_gets_a_picture_of_the_size_its_variables_or_the_default
         assert_eq!(status.code(), Some(128 + 15), "{status}");
     }
 }
+
+#[test]
+fn octant_mode_writes_octants_and_nothing_unsafe() {
+    // tmux 3.3 on glibc 2.36 does not know Unicode 16's octants (it drops them), so the viewer's own bytes are
+    // read here, on a terminal of the test's own.
+    let Pty { master, slave } = Pty::open(80, 24);
+    let mut viewer = Viewer::start_with(&slave, &["--mode", "octant"]);
+    drop(slave);
+    let screen = Screen::start(master);
+    let octants =
+        |out: &[u8]| String::from_utf8_lossy(out).chars().filter(|c| ('\u{1CD00}'..='\u{1CDE5}').contains(c)).count();
+    screen.wait_for("octants", |out| octants(out) > 20);
+    let text = String::from_utf8_lossy(&screen.output()).into_owned();
+    assert!(!text.contains('\u{FFFD}'), "a character replaced");
+    viewer.signal("-TERM");
+    let (status, _) = viewer.wait_for_end(Instant::now());
+    assert_eq!(status.code(), Some(128 + 15), "{status}");
+}

@@ -232,3 +232,46 @@ fn ascii_without_colour_leaves_the_background_blank() {
     assert_eq!(status, 0, "exit status after q");
     tmux.assert_restored(tty_same);
 }
+
+#[test]
+fn c_saves_the_view_as_a_new_png_and_says_where() {
+    if !tmux_wanted() {
+        return;
+    }
+    let out = tempfile::tempdir().expect("a folder for the captures");
+    let args = [Path::new("--size"), Path::new("320x200")];
+    let tmux = Tmux::start_in("capture", 80, 24, &args, out.path());
+    tmux.wait_for_picture();
+    for n in 1..=2 {
+        tmux.send_keys("c");
+        let name = format!("built-in_Spot-000{n}.png");
+        tmux.wait_for(&format!("the notice of {name}"), || {
+            let screen = tmux.screen();
+            (screen.contains(&name) && screen.contains("(320x200)")).then_some(())
+        });
+    }
+    // Both are the view at the start, which `rastty render` draws too.
+    let first = image::open(out.path().join("built-in_Spot-0001.png")).expect("a PNG").to_rgb8();
+    let second = image::open(out.path().join("built-in_Spot-0002.png")).expect("a PNG").to_rgb8();
+    assert_eq!(first.dimensions(), (320, 200));
+    assert_eq!(first, second);
+    let rendered = crate::common::rastty_in(out.path(), &["render", "-o", "rendered.png", "--size", "320x200"]);
+    assert!(rendered.status.success());
+    assert_eq!(first, image::open(out.path().join("rendered.png")).expect("a PNG").to_rgb8());
+    tmux.send_keys("q");
+    let (status, tty_same) = tmux.wait_for_exit();
+    assert_eq!(status, 0, "exit status after q");
+    tmux.assert_restored(tty_same);
+
+    // A folder it cannot write in: the notice says so, and the viewer goes on.
+    let tmux = Tmux::start_in("capture-refused", 80, 24, &[], Path::new("/proc"));
+    tmux.wait_for_picture();
+    tmux.send_keys("c");
+    let screen = tmux.wait_for("the refusal", || {
+        let screen = tmux.screen();
+        screen.contains("not saved: /proc").then_some(screen)
+    });
+    assert!(screen.contains('▀'), "the picture stays:\n{screen}");
+    tmux.send_keys("q");
+    assert_eq!(tmux.wait_for_exit().0, 0, "exit status after q");
+}

@@ -111,6 +111,27 @@ impl GraphicsProtocol {
         });
     }
 
+    /// Whether the terminal keeps an image it was sent, so that the same picture can be shown again by placing it
+    /// ([`Self::write_placement`]) rather than sending it: kitty only.
+    pub const fn keeps_images(self) -> bool {
+        matches!(self, GraphicsProtocol::Kitty)
+    }
+
+    /// Appends the bytes that show again, from the top-left cell, the image last sent with [`Self::write_image`]
+    /// (kitty: a placement of the image the terminal holds); nothing for a protocol that does not
+    /// [keep images](Self::keeps_images).
+    pub fn write_placement(self, out: &mut Vec<u8>, image: &FrameImage) {
+        if !self.keeps_images() {
+            return;
+        }
+        let (column, row) = image.passthrough.origin();
+        image.passthrough.write_with(out, |bytes| {
+            let placement =
+                kitty::KittyPlacement { image_id: IMAGE_ID, column, row, columns: image.columns, rows: image.rows };
+            kitty::write_placement(bytes, &placement);
+        });
+    }
+
     /// Appends what frees the terminal's memory of the viewer's image when the viewer ends (kitty: the image is
     /// deleted; the others keep nothing once the screen is cleared), through `passthrough`.
     pub fn write_end(self, out: &mut Vec<u8>, passthrough: Passthrough) {

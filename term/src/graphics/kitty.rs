@@ -7,8 +7,9 @@
 //! placement id of the viewer's own: the terminal replaces the image it showed under the same ids in place, so
 //! there is no blank frame between two pictures. The placement covers a rectangle of cells (`c`, `r`), leaves the
 //! cursor where it was (`C=1`) and lies under the text (`z=-1`), so the HUD and help drawn as cells stay on top;
-//! `q=2` asks the terminal not to answer, so no reply arrives among the keys. [`write_delete`] removes the image
-//! and frees its memory (`a=d,d=I`).
+//! `q=2` asks the terminal not to answer, so no reply arrives among the keys. [`write_placement`] shows the image
+//! the terminal holds again without sending it (`a=p`), and [`write_delete`] removes the image and frees its memory
+//! (`a=d,d=I`).
 
 use std::io::Write;
 
@@ -76,6 +77,20 @@ pub fn write_frame(out: &mut Vec<u8>, frame: PixelFrame<'_>, placement: &KittyPl
         out.extend_from_slice(chunk);
         out.extend_from_slice(b"\x1b\\");
     }
+}
+
+/// Appends the escape sequences that place the image the terminal already holds under `placement`'s id again, at
+/// `placement` (`a=p`, with the keys [`write_frame`] places with): no pixels cross the link.
+pub fn write_placement(out: &mut Vec<u8>, placement: &KittyPlacement) {
+    let _ = write!(
+        out,
+        "\x1b[{};{}H\x1b_Ga=p,i={},p={PLACEMENT_ID},c={},r={},C=1,z=-1,q=2\x1b\\",
+        u32::from(placement.row) + 1,
+        u32::from(placement.column) + 1,
+        placement.image_id,
+        placement.columns,
+        placement.rows
+    );
 }
 
 /// Appends the escape sequence that deletes image `image_id`, its placements and its data.
@@ -148,5 +163,12 @@ mod tests {
         let mut delete = Vec::new();
         write_delete(&mut delete, 9);
         assert_eq!(delete, b"\x1b_Ga=d,d=I,i=9,q=2\x1b\\");
+    }
+
+    #[test]
+    fn a_placement_shows_the_held_image_again_without_pixels() {
+        let mut out = Vec::new();
+        write_placement(&mut out, &KittyPlacement { image_id: 7, column: 3, row: 2, columns: 40, rows: 12 });
+        assert_eq!(out, b"\x1b[3;4H\x1b_Ga=p,i=7,p=1,c=40,r=12,C=1,z=-1,q=2\x1b\\");
     }
 }

@@ -26,15 +26,28 @@ impl Cell {
     }
 
     /// Whether `ch` is sent to the terminal as it is: printable ASCII (space to `~`), box drawing and block
-    /// elements (U+2500..=U+259F, which hold `▀` and the quadrants), Braille patterns (U+2800..=U+28FF) and the
-    /// sextants (U+1FB00..=U+1FB3B).
+    /// elements (U+2500..=U+259F, which hold `▀` and the quadrants), Braille patterns (U+2800..=U+28FF), the
+    /// sextants (U+1FB00..=U+1FB3B), the other legacy-computing blocks an octant cell draws (U+1FB82, U+1FB85,
+    /// U+1FBE6, U+1FBE7), the octants (U+1CD00..=U+1CDE5) and the quarter blocks beside them (U+1CEA0..=U+1CEAB).
     ///
     /// All of these are one column wide, so the encoder can track the cursor. Control characters, which
     /// could inject escape sequences, and zero-width or double-width characters, which would desynchronise
     /// the cursor, are not.
     #[inline]
     pub const fn is_safe_char(ch: char) -> bool {
-        matches!(ch, ' '..='~' | '\u{2500}'..='\u{259F}' | '\u{2800}'..='\u{28FF}' | '\u{1FB00}'..='\u{1FB3B}')
+        matches!(
+            ch,
+            ' '..='~'
+                | '\u{2500}'..='\u{259F}'
+                | '\u{2800}'..='\u{28FF}'
+                | '\u{1FB00}'..='\u{1FB3B}'
+                | '\u{1FB82}'
+                | '\u{1FB85}'
+                | '\u{1FBE6}'
+                | '\u{1FBE7}'
+                | '\u{1CD00}'..='\u{1CDE5}'
+                | '\u{1CEA0}'..='\u{1CEAB}'
+        )
     }
 
     /// The character actually sent for this cell: `ch` when [`Cell::is_safe_char`], else [`REPLACEMENT_CHAR`].

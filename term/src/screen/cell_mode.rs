@@ -18,7 +18,8 @@ pub enum CellMode {
     /// `▀` with two colours: a `W x H`-cell grid shows `W x 2H` pixels.
     #[default]
     HalfBlock,
-    /// A character of `SymbolSet` in two colours: 2x2 (quadrants), 2x3 (sextants) or 2x4 (Braille) pixels a cell.
+    /// A character of `SymbolSet` in two colours: 2x2 (quadrants), 2x3 (sextants) or 2x4 (octants, Braille) pixels
+    /// a cell.
     Symbols(SymbolSet),
     /// One pixel per cell, as a character of the ASCII lightness ramp.
     Ascii,
@@ -26,10 +27,11 @@ pub enum CellMode {
 
 impl CellMode {
     /// Every mode, coarsest symbols first, ASCII last.
-    pub const ALL: [CellMode; 5] = [
+    pub const ALL: [CellMode; 6] = [
         CellMode::HalfBlock,
         CellMode::Symbols(SymbolSet::Quadrant),
         CellMode::Symbols(SymbolSet::Sextant),
+        CellMode::Symbols(SymbolSet::Octant),
         CellMode::Symbols(SymbolSet::Braille),
         CellMode::Ascii,
     ];
@@ -78,6 +80,7 @@ impl CellMode {
             CellMode::HalfBlock => "half-block",
             CellMode::Symbols(SymbolSet::Quadrant) => "quadrant",
             CellMode::Symbols(SymbolSet::Sextant) => "sextant",
+            CellMode::Symbols(SymbolSet::Octant) => "octant",
             CellMode::Symbols(SymbolSet::Braille) => "braille",
             CellMode::Ascii => "ascii",
         }
@@ -96,7 +99,7 @@ pub struct UnknownCellMode(pub String);
 
 impl fmt::Display for UnknownCellMode {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "unknown cell mode {:?} (expected half-block, quadrant, sextant, braille or ascii)", self.0)
+        write!(f, "unknown cell mode {:?} (expected half-block, quadrant, sextant, octant, braille or ascii)", self.0)
     }
 }
 
@@ -105,13 +108,14 @@ impl std::error::Error for UnknownCellMode {}
 impl FromStr for CellMode {
     type Err = UnknownCellMode;
 
-    /// Accepts `half-block` (also `halfblock`, `half`, `block`), `quadrant`, `sextant`, `braille` and `ascii`
-    /// (case-insensitive).
+    /// Accepts `half-block` (also `halfblock`, `half`, `block`), `quadrant`, `sextant`, `octant`, `braille` and
+    /// `ascii` (case-insensitive).
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         match s.to_ascii_lowercase().as_str() {
             "half-block" | "halfblock" | "half" | "block" => Ok(CellMode::HalfBlock),
             "quadrant" => Ok(CellMode::Symbols(SymbolSet::Quadrant)),
             "sextant" => Ok(CellMode::Symbols(SymbolSet::Sextant)),
+            "octant" => Ok(CellMode::Symbols(SymbolSet::Octant)),
             "braille" => Ok(CellMode::Symbols(SymbolSet::Braille)),
             "ascii" => Ok(CellMode::Ascii),
             _ => Err(UnknownCellMode(s.to_owned())),

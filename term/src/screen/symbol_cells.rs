@@ -1,4 +1,4 @@
-//! Symbol modes: each cell shows a block of 2x2, 2x3 or 2x4 pixels as a quadrant, sextant or Braille character
+//! Symbol modes: each cell shows a block of 2x2, 2x3 or 2x4 pixels as a quadrant, sextant, octant or Braille character
 //! ([`SymbolSet`]) in two colours, chosen with the pattern to minimise the cell's error ([`split_two_colours`]).
 //!
 //! Without colour the pattern alone shows the picture: a pixel is lit when it is not the background and its

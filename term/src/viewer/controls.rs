@@ -48,6 +48,8 @@ pub enum Action {
     ToggleHud,
     /// Key help on / off.
     ToggleHelp,
+    /// Save the view as a PNG file.
+    Capture,
     /// The terminal was resized to (columns, rows).
     Resize(u16, u16),
     /// Leave.
@@ -71,6 +73,7 @@ pub const HELP: &[&str] = &[
     "o                     play / pause animation",
     ", .                   previous / next animation",
     "< >                   slower / faster animation",
+    "c                     save the view as a PNG",
     "i                     info (HUD)",
     "?                     this help",
     "q / Esc / Ctrl-C      quit",
@@ -119,6 +122,7 @@ fn key_action(key: Key) -> Option<Action> {
         Key::Char('<') => Some(Action::ChangeSpeed(-1)),
         Key::Char('i') => Some(Action::ToggleHud),
         Key::Char('?') => Some(Action::ToggleHelp),
+        Key::Char('c') => Some(Action::Capture),
         Key::Char(_) => None,
     }
 }

@@ -183,8 +183,11 @@ struct Writer {
     dither: Dither,
     /// Status requests and tolerances on; off, the meter never hears of a write and every frame is exact.
     pacing: bool,
-    /// The pixels and bytes of the last image frame.
+    /// The pixels and bytes of the last image frame whose pixels were sent.
     last_image: Option<(usize, usize)>,
+    /// The image the terminal shows and holds (kitty), to place again rather than send again when a frame brings
+    /// the same one.
+    shown_image: Option<FrameImage>,
 }
 
 fn write_loop(out: &File, shared: &Shared, (protocol, dither): (GraphicsProtocol, Dither), pacing: bool) {
@@ -199,6 +202,7 @@ fn write_loop(out: &File, shared: &Shared, (protocol, dither): (GraphicsProtocol
         dither,
         pacing,
         last_image: None,
+        shown_image: None,
     };
     while let Some(job) = writer.next_job(shared) {
         let start = Instant::now();
@@ -286,8 +290,10 @@ impl Writer {
                 self.last_frame = Instant::now();
                 let Frame { grid, image } = frame;
                 if let Some(image) = image {
-                    self.encode_image(&grid, &image);
-                    self.last_image = Some((image.pixels.len(), self.bytes.len()));
+                    let pixels = image.pixels.len();
+                    if self.encode_image(&grid, image) {
+                        self.last_image = Some((pixels, self.bytes.len()));
+                    }
                     self.inexact = None;
                     return self.with_status_request(Some(Tolerance::EXACT));
                 }
@@ -324,23 +330,39 @@ impl Writer {
         Some((rate * IMAGE_LINK_TIME.as_secs_f64() / bytes_per_pixel) as usize)
     }
 
-    /// Encodes an image frame: the image and the cells to show with it, both exact.
+    /// Encodes an image frame: the image and the cells to show with it, both exact. Returns whether the image's
+    /// pixels were sent (not when the terminal shows them already, or holds them to place again).
     ///
     /// A kitty image lies under the text: the cells go first (a full redraw clears the screen, which would take
-    /// the image with it), then the image. A Sixel or iTerm2 image replaces the cells under it: after a clear when
-    /// the screen is unknown, the image, then the cells that are not blank (the HUD), drawn over it.
-    fn encode_image(&mut self, grid: &CellGrid, image: &FrameImage) {
+    /// the image with it), then the image: nothing when it is the one on the screen and the screen was not cleared,
+    /// a placement of the image the terminal holds when it was, else the image. A Sixel or iTerm2 image replaces
+    /// the cells under it: after a clear when the screen is unknown, the image, then the cells that are not blank
+    /// (the HUD), drawn over it.
+    fn encode_image(&mut self, grid: &CellGrid, image: FrameImage) -> bool {
         if !self.protocol.covers_text() {
+            let cleared = self.encoder.shown().is_none_or(|shown| !shown.same_size(grid));
             self.encoder.encode(grid, &mut self.bytes);
-            self.protocol.write_image(&mut self.bytes, image, self.dither);
-            return;
+            let held = self.protocol.keeps_images() && self.shown_image.as_ref() == Some(&image);
+            match (held, cleared) {
+                (true, false) => return false,
+                (true, true) => {
+                    self.protocol.write_placement(&mut self.bytes, &image);
+                    return false;
+                }
+                (false, _) => self.protocol.write_image(&mut self.bytes, &image, self.dither),
+            }
+            self.shown_image = Some(image);
+            return true;
         }
+        let image = &image;
         if self.encoder.shown().is_none_or(|shown| !shown.same_size(grid)) {
             self.encoder.encode(&CellGrid::blank(grid.width, grid.height), &mut self.bytes);
         }
         self.protocol.write_image(&mut self.bytes, image, self.dither);
         self.encoder.assume_blank(grid.width, grid.height);
         self.encoder.encode(grid, &mut self.bytes);
+        self.shown_image = None;
+        true
     }
 
     /// Encodes `grid` with the smallest of [`TOLERANCES`] whose bytes fit the meter's budget (the largest that

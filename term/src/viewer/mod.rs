@@ -10,6 +10,7 @@
 //! `5`), so a switched-off effect is not computed, and the shadow maps are kept from frame to frame (they do not
 //! depend on the camera).
 
+mod capture;
 mod controls;
 mod frame_writer;
 mod graphics_probe;
@@ -21,6 +22,7 @@ mod terminal_session;
 mod tmux_client;
 mod tty;
 
+use capture::{capture_size, capture_stem, save_new};
 use controls::{Action, HELP, action_for};
 use frame_writer::{Frame, FrameWriter, REFINE_AFTER, WriterStats};
 use graphics_probe::ProbeAnswers;
@@ -31,6 +33,7 @@ use tty::{Gone, Tty, Woken, write_until};
 
 use std::fmt;
 use std::io::{self, IsTerminal};
+use std::path::PathBuf;
 use std::sync::atomic::Ordering;
 use std::time::{Duration, Instant};
 
@@ -42,9 +45,11 @@ use rastty::graphics::frame_palette::Dither;
 use rastty::graphics::{DEFAULT_CELL_ASPECT, image_size};
 use rastty::graphics::{FrameImage, GraphicsProtocol, MAX_IMAGE_PIXELS, Passthrough, moving_image_cap};
 use rastty::screen::{CellGrid, CellMode, ColorMode, PixelFrame};
-use rastty_scene::escaped::Escaped;
+use rastty_scene::escaped::{Escaped, path_text};
+use rastty_scene::png_file::encode_png;
 use rastty_scene::scene_render::{
     FrameReport, Orbit, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError, SceneRenderer,
+    render_scene_image_with,
 };
 
 /// Smallest terminal the viewer draws in; below it shows a notice.
@@ -57,6 +62,8 @@ const TURNTABLE_FRAME: Duration = Duration::from_millis(33);
 const IDLE_POLL: Duration = Duration::from_millis(500);
 /// How long the writer may go on with the frame it is writing once the viewer is leaving.
 const FINISH_TIME: Duration = Duration::from_millis(250);
+/// How long a notice (where a capture went) stays on the bottom row.
+const NOTICE_TIME: Duration = Duration::from_secs(4);
 
 /// Colours: detected or chosen.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -100,6 +107,8 @@ pub struct ViewerOptions {
     /// The animation to play, by number ([`PreparedScene::animations`]), and the time it starts at; `None` when
     /// nothing moves.
     pub animation: Option<(usize, f32)>,
+    /// The size of the pictures `c` saves (`--size`); `None`: twice the terminal's size in pixels.
+    pub capture_size: Option<(u32, u32)>,
 }
 
 /// Why the viewer stopped with an error.
@@ -212,6 +221,8 @@ pub fn run(scene: &mut PreparedScene, name: &str, options: &ViewerOptions) -> Re
         frame_times: FrameClock::default(),
         image_cap: MAX_IMAGE_PIXELS,
         sharpen_at: None,
+        capture_size: options.capture_size,
+        notice: None,
     };
     viewer.measure_cells(&session.tty);
     let result = viewer.run_loop(&session, &writer, typed);
@@ -297,6 +308,10 @@ struct Viewer<'a> {
     image_cap: usize,
     /// When a picture sent smaller than [`MAX_IMAGE_PIXELS`] is drawn again at full size if nothing moves it.
     sharpen_at: Option<Instant>,
+    /// `--size` for captures.
+    capture_size: Option<(u32, u32)>,
+    /// A line shown on the bottom row (where a capture went, or why it did not), and until when.
+    notice: Option<(String, Instant)>,
 }
 
 impl Viewer<'_> {
@@ -357,6 +372,11 @@ impl Viewer<'_> {
                 last_tick = now;
                 dirty |= !playback.paused;
             }
+            // A notice whose time is up goes.
+            if self.notice.as_ref().is_some_and(|(_, until)| Instant::now() >= *until) {
+                self.notice = None;
+                dirty = true;
+            }
             // A still picture that went out smaller (a slow link) is drawn again at full size.
             let sharpen = !dirty && self.sharpen_at.is_some_and(|at| Instant::now() >= at);
             if dirty || sharpen {
@@ -366,7 +386,7 @@ impl Viewer<'_> {
             }
             let moving = self.state.turntable || self.state.playback.is_some_and(|p| !p.paused);
             let mut timeout = if moving { TURNTABLE_FRAME } else { IDLE_POLL };
-            if let Some(at) = self.sharpen_at {
+            for at in [self.sharpen_at, self.notice.as_ref().map(|(_, until)| *until)].into_iter().flatten() {
                 timeout = timeout.min(at.saturating_duration_since(Instant::now()));
             }
             if decoder.is_waiting() {
@@ -394,6 +414,10 @@ impl Viewer<'_> {
                 actions.extend(action_for(&input));
             }
             for action in actions.drain(..) {
+                if action == Action::Capture {
+                    self.capture();
+                    dirty = true;
+                }
                 if let Action::Resize(cols, rows) = action {
                     self.size = (cols, rows);
                     self.measure_cells(&session.tty);
@@ -477,7 +501,32 @@ impl Viewer<'_> {
         if self.state.help {
             overlay::draw_centered_box(&mut grid, HELP);
         }
+        if let Some((text, _)) = &self.notice {
+            let row = grid.height.saturating_sub(1);
+            overlay::put_text(&mut grid, row, 0, &format!(" {text} "));
+        }
         Ok(Frame { grid, image })
+    }
+
+    /// Saves the view as a PNG file (`c`) and sets the notice that says where, or why not.
+    fn capture(&mut self) {
+        let size = capture_size(self.capture_size, self.size_in_pixels, self.size, self.cell_aspect);
+        let text = match self.save_capture(size) {
+            Ok(path) => format!("saved {} ({}x{})", path_text(&path), size.0, size.1),
+            Err(why) => format!("not saved: {why}"),
+        };
+        self.notice = Some((text, Instant::now() + NOTICE_TIME));
+    }
+
+    /// Renders the view at `size` and writes it to a new file in the current directory ([`save_new`]).
+    fn save_capture(&mut self, size: (u32, u32)) -> Result<PathBuf, String> {
+        let camera = self.state.orbit.camera;
+        let image = render_scene_image_with(&mut self.renderer, self.scene, &camera, size, 1, &self.state.options)
+            .map_err(|e| e.to_string())?;
+        let mut png = Vec::new();
+        encode_png(&mut png, image.width, image.height, &image.pixels).map_err(|e| e.to_string())?;
+        let dir = std::env::current_dir().map_err(|e| format!("no current directory ({e})"))?;
+        save_new(&dir, &capture_stem(&self.name), &png).map_err(|e| format!("{}: {e}", path_text(&dir)))
     }
 
     /// Poses the scene at the animation's time, unless it stands there already.

@@ -152,7 +152,8 @@ impl ViewerState {
             }
             Action::ToggleHud => self.hud = !self.hud,
             Action::ToggleHelp => self.help = !self.help,
-            Action::Resize(..) => {}
+            // The viewer saves the picture itself: nothing of the state changes.
+            Action::Resize(..) | Action::Capture => {}
             Action::Quit => return Effect::Quit,
         }
         Effect::Redraw

@@ -63,9 +63,22 @@ impl Tmux {
         tmux
     }
 
+    /// As [`Self::start_with`], the program's current directory `cwd`.
+    pub fn start_in(test: &str, cols: u16, rows: u16, args: &[&Path], cwd: &Path) -> Self {
+        let args: Vec<&OsStr> = args.iter().map(|a| a.as_os_str()).collect();
+        let tmux = Self::prepare_in(test, cols, rows, Path::new(env!("CARGO_BIN_EXE_rastty")), &args, Some(cwd));
+        tmux.go();
+        tmux
+    }
+
     /// Starts a server whose only pane (`cols` x `rows`) runs the wrapper, which waits for [`Self::go`] (up to
     /// [`TIMEOUT`]) before it runs `program ARGS...`: so that the test can first set up what watches the pane.
     pub fn prepare(test: &str, cols: u16, rows: u16, program: &Path, args: &[&OsStr]) -> Self {
+        Self::prepare_in(test, cols, rows, program, args, None)
+    }
+
+    /// As [`Self::prepare`], the pane's current directory `cwd` (else the tests').
+    pub fn prepare_in(test: &str, cols: u16, rows: u16, program: &Path, args: &[&OsStr], cwd: Option<&Path>) -> Self {
         let dir = tempfile::tempdir().expect("temporary directory");
         let socket = format!("rastty-test-{}-{test}", std::process::id());
         let mut tmux = Self { socket, socket_path: None, dir };
@@ -75,7 +88,13 @@ impl Tmux {
         let (cols, rows) = (cols.to_string(), rows.to_string());
         let command = format!("sh {}", shell_quote(&script));
         let session = SESSION.trim_matches(['=', ':']);
-        tmux.run(&["new-session", "-d", "-s", session, "-x", &cols, "-y", &rows, &command]);
+        let mut new = vec!["new-session", "-d", "-s", session, "-x", &cols, "-y", &rows];
+        let cwd = cwd.map(|c| c.to_string_lossy().into_owned());
+        if let Some(cwd) = &cwd {
+            new.extend(["-c", cwd.as_str()]);
+        }
+        new.push(&command);
+        tmux.run(&new);
         tmux.socket_path = Some(PathBuf::from(tmux.format("socket_path")));
         tmux
     }
