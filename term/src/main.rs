@@ -31,7 +31,8 @@ use std::str::FromStr;
 
 use crate::render_stats::{FrameStats, PassCounts, SceneCounts, TurntableFrameTimes, TurntableSummary};
 use crate::turntable_export::{DEFAULT_FPS, MAX_FPS, MAX_FRAMES, Turntable, TurntableError, TurntableOutput};
-use crate::viewer::{ColorChoice, GraphicsChoice, ViewerExit, ViewerOptions};
+use crate::viewer::file_list::FileList;
+use crate::viewer::{ColorChoice, Files, GraphicsChoice, Shown, ViewerExit, ViewerOptions};
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 use rastty::graphics::GraphicsProtocol;
 use rastty::graphics::frame_palette::Dither;
@@ -67,8 +68,9 @@ enum Command {
 /// Options of the interactive viewer.
 #[derive(Args, Debug)]
 struct ViewerArgs {
-    /// Model (OBJ, STL, glTF) or scene file (.toml) to show (default: the built-in model, Spot the cow).
-    model: Option<PathBuf>,
+    /// Models (OBJ, STL, glTF), scene files (.toml) or folders of them (their files, sorted by name) to show, one at
+    /// a time: `]` and `[` step to the next and previous (default: the built-in model, Spot the cow).
+    models: Vec<PathBuf>,
     #[command(flatten)]
     scene: SceneArgs,
     /// How cells show pixels: `half` (2 pixels a cell, ▀), `quadrant` (2x2), `sextant` (2x3, needs a font with
@@ -259,6 +261,15 @@ impl SceneArgs {
     /// prints the warnings, and prepares it. Returns it with its name and the look to draw it with: an image that
     /// cannot be loaded is a warning, and the scene is then drawn untextured.
     fn load(&self, path: Option<&Path>) -> Result<(PreparedScene, String, PlanOptions), String> {
+        let (scene, name, plan, warnings) = self.open(path)?;
+        for warning in &warnings {
+            eprintln!("rastty: warning: {warning}");
+        }
+        Ok((scene, name, plan))
+    }
+
+    /// [`Self::load`], the warnings returned (escaped, a line each) rather than printed.
+    fn open(&self, path: Option<&Path>) -> Result<(PreparedScene, String, PlanOptions, Vec<String>), String> {
         set_max_file_bytes(self.max_file_size);
         let mut opened = open(path, &ModelOptions { smooth_angle: self.smooth_angle }).map_err(|e| e.to_string())?;
         let mut textures = true;
@@ -272,21 +283,17 @@ impl SceneArgs {
         if let Some(camera) = &self.file_camera {
             opened.data.use_file_camera(camera).map_err(|e| format!("{}: {e}", opened.name))?;
         }
-        for warning in opened.warnings() {
-            eprintln!("rastty: warning: {}", Escaped(warning));
-        }
+        let mut warnings: Vec<String> = opened.warnings().map(|w| Escaped(w).to_string()).collect();
         let in_scene = |e: &dyn std::fmt::Display| format!("{}: {e}", opened.name);
         let mut scene = PreparedScene::new(opened.data).map_err(|e| in_scene(&e))?;
         if self.time.is_some() || self.animation.is_some() {
             let time = self.time.unwrap_or(0.0);
             match scene.choose_animation(self.animation.as_deref()).map_err(|e| in_scene(&e))? {
                 Some(animation) => scene.pose(Some(animation), time).map_err(|e| in_scene(&e))?,
-                None => {
-                    eprintln!("rastty: warning: nothing in {} moves: --time leaves it at rest", Escaped(&opened.name))
-                }
+                None => warnings.push(format!("nothing in {} moves: --time leaves it at rest", Escaped(&opened.name))),
             }
         }
-        Ok((scene, opened.name, self.plan(textures)))
+        Ok((scene, opened.name, self.plan(textures), warnings))
     }
 }
 
@@ -522,15 +529,46 @@ fn render_turntable(
 }
 
 fn view(args: &ViewerArgs) -> Result<ExitCode, String> {
+    let paths: Vec<Option<PathBuf>> = if args.models.is_empty() {
+        vec![None]
+    } else {
+        let list = FileList::new(&args.models).map_err(|e| e.to_string())?;
+        for note in &list.notes {
+            eprintln!("rastty: warning: {note}");
+        }
+        list.files.into_iter().map(Some).collect()
+    };
     // Before loading: a large model need not be read to learn that there is no terminal to show it in.
     crate::viewer::ensure_terminal().map_err(|e| e.to_string())?;
-    let (mut scene, name, plan) = args.scene.load(args.model.as_deref())?;
-    // The first animation (or --animation's), from --time or its start.
-    let animation = scene.choose_animation(args.scene.animation.as_deref())?;
+    // A scene with the camera, look and animation of the options; with several files, an animation named by
+    // --animation that a file does not have gives way to its first.
+    let several = paths.len() > 1;
+    let load = |path: Option<&Path>| -> Result<Shown, String> {
+        let (scene, name, plan, warnings) = args.scene.open(path)?;
+        let chosen = scene.choose_animation(args.scene.animation.as_deref());
+        let animation = match chosen {
+            Err(_) if several => scene.choose_animation(None)?,
+            chosen => chosen?,
+        };
+        Ok(Shown {
+            orbit: args.scene.camera().orbit(&scene),
+            animation: animation.map(|a| (a, args.scene.time.unwrap_or(0.0))),
+            scene,
+            name,
+            plan,
+            warnings,
+        })
+    };
+    // One file that cannot be shown is an error before the terminal is taken over; among several, a page of its own.
+    let first = load(paths[0].as_deref());
+    let first = if several { first } else { Ok(first?) };
+    if let Ok(shown) = &first {
+        for warning in &shown.warnings {
+            eprintln!("rastty: warning: {warning}");
+        }
+    }
+    let files = Files { paths, first, load: &load };
     let options = ViewerOptions {
-        animation: animation.map(|a| (a, args.scene.time.unwrap_or(0.0))),
-        orbit: args.scene.camera().orbit(&scene),
-        plan,
         cell_mode: args.mode,
         graphics: args.graphics,
         dither: if args.dither { Dither::FloydSteinberg } else { Dither::None },
@@ -539,7 +577,7 @@ fn view(args: &ViewerArgs) -> Result<ExitCode, String> {
         pacing: !args.no_pacing,
         capture_size: args.size,
     };
-    match crate::viewer::run(&mut scene, &name, &options).map_err(|e| e.to_string())? {
+    match crate::viewer::run(files, &options).map_err(|e| e.to_string())? {
         // Killed by a signal: exit as the shell expects, 128 + the signal number.
         ViewerExit::Signal(signal) => Ok(ExitCode::from(128u8.saturating_add(u8::try_from(signal).unwrap_or(0)))),
         ViewerExit::Quit | ViewerExit::TerminalGone => Ok(ExitCode::SUCCESS),

@@ -275,3 +275,47 @@ fn c_saves_the_view_as_a_new_png_and_says_where() {
     tmux.send_keys("q");
     assert_eq!(tmux.wait_for_exit().0, 0, "exit status after q");
 }
+
+#[test]
+fn several_files_are_stepped_through_and_one_that_fails_shows_why() {
+    if !tmux_wanted() {
+        return;
+    }
+    // A folder of two triangles and a file that is not a model, plus a folder with nothing to show.
+    let dir = tempfile::tempdir().expect("a folder");
+    let triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    std::fs::write(dir.path().join("a.obj"), triangle).unwrap();
+    std::fs::write(dir.path().join("b.obj"), triangle.replace("v 0 1 0", "v 0 2 0")).unwrap();
+    std::fs::write(dir.path().join("c.stl"), b"\x01\x02 not a model").unwrap();
+    std::fs::write(dir.path().join("notes.txt"), b"left out").unwrap();
+    let tmux = Tmux::start_with("files", 100, 30, &[dir.path()]);
+    let notice = |tmux: &Tmux, place: &str| {
+        tmux.wait_for(&format!("the notice {place}"), || {
+            let screen = tmux.screen();
+            screen.lines().last().is_some_and(|line| line.contains(place)).then_some(screen)
+        })
+    };
+    notice(&tmux, "1/3 ");
+    tmux.wait_for_picture();
+    tmux.send_keys("]");
+    notice(&tmux, "2/3 ");
+    tmux.send_keys("]");
+    // The file that is not a model: a page naming it and saying why, and the viewer goes on.
+    let page = notice(&tmux, "3/3 ");
+    assert!(page.contains("c.stl") && !page.contains('▀'), "{page}");
+    tmux.send_keys("]");
+    notice(&tmux, "1/3 ");
+    tmux.send_keys("[");
+    notice(&tmux, "3/3 ");
+    tmux.send_keys("q");
+    let (status, tty_same) = tmux.wait_for_exit();
+    assert_eq!(status, 0, "exit status after q");
+    tmux.assert_restored(tty_same);
+
+    // Nothing to show: an error before the terminal is taken over.
+    let empty = tempfile::tempdir().expect("a folder");
+    let output = crate::common::rastty_in(empty.path(), &["."]);
+    assert_eq!(output.status.code(), Some(1));
+    let stderr = String::from_utf8_lossy(&output.stderr);
+    assert!(stderr.contains("no model or scene file (.obj, .stl, .gltf, .glb, .toml) in ."), "{stderr}");
+}

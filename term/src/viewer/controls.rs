@@ -50,6 +50,8 @@ pub enum Action {
     ToggleHelp,
     /// Save the view as a PNG file.
     Capture,
+    /// Show the next (+1) or previous (-1) file.
+    StepFile(i32),
     /// The terminal was resized to (columns, rows).
     Resize(u16, u16),
     /// Leave.
@@ -73,6 +75,7 @@ pub const HELP: &[&str] = &[
     "o                     play / pause animation",
     ", .                   previous / next animation",
     "< >                   slower / faster animation",
+    "] [                   next / previous file",
     "c                     save the view as a PNG",
     "i                     info (HUD)",
     "?                     this help",
@@ -123,6 +126,8 @@ fn key_action(key: Key) -> Option<Action> {
         Key::Char('i') => Some(Action::ToggleHud),
         Key::Char('?') => Some(Action::ToggleHelp),
         Key::Char('c') => Some(Action::Capture),
+        Key::Char(']') => Some(Action::StepFile(1)),
+        Key::Char('[') => Some(Action::StepFile(-1)),
         Key::Char(_) => None,
     }
 }

@@ -12,6 +12,7 @@
 
 mod capture;
 mod controls;
+pub mod file_list;
 mod frame_writer;
 mod graphics_probe;
 mod input_decoder;
@@ -33,7 +34,7 @@ use tty::{Gone, Tty, Woken, write_until};
 
 use std::fmt;
 use std::io::{self, IsTerminal};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::atomic::Ordering;
 use std::time::{Duration, Instant};
 
@@ -86,10 +87,6 @@ pub enum GraphicsChoice {
 /// Everything the viewer is started with, besides the scene.
 #[derive(Clone, Debug)]
 pub struct ViewerOptions {
-    /// The camera at the start (and after a reset).
-    pub orbit: Orbit,
-    /// The shading mode, effects, textures, wireframe and background at the start (and after a reset).
-    pub plan: PlanOptions,
     /// Half-block, symbol or ASCII cells.
     pub cell_mode: CellMode,
     /// Cells, or an image in a pixel graphics protocol (the cells then carry only the HUD and help).
@@ -104,11 +101,35 @@ pub struct ViewerOptions {
     /// Pace the writer by the terminal's answers and send a moving picture within a tolerance on a slow link
     /// ([`FrameWriter`]); off, every frame is exact and written as fast as the terminal takes it.
     pub pacing: bool,
+    /// The size of the pictures `c` saves (`--size`); `None`: twice the terminal's size in pixels.
+    pub capture_size: Option<(u32, u32)>,
+}
+
+/// A scene ready to show, with how to start showing it.
+pub struct Shown {
+    /// The scene.
+    pub scene: PreparedScene,
+    /// Its name in the HUD and in messages (raw: escaped when shown).
+    pub name: String,
+    /// The camera at the start (and after a reset).
+    pub orbit: Orbit,
+    /// The shading mode, effects, textures, wireframe and background at the start (and after a reset).
+    pub plan: PlanOptions,
     /// The animation to play, by number ([`PreparedScene::animations`]), and the time it starts at; `None` when
     /// nothing moves.
     pub animation: Option<(usize, f32)>,
-    /// The size of the pictures `c` saves (`--size`); `None`: twice the terminal's size in pixels.
-    pub capture_size: Option<(u32, u32)>,
+    /// What loading it warned of, escaped, a line each.
+    pub warnings: Vec<String>,
+}
+
+/// The files the viewer steps through with `]` and `[`, and how it loads one.
+pub struct Files<'a> {
+    /// The files in order (`None`: the built-in model); at least one.
+    pub paths: Vec<Option<PathBuf>>,
+    /// The first, loaded (or why it could not be, shown as its page).
+    pub first: Result<Shown, String>,
+    /// Loads a file of [`Self::paths`]; the error is the message its page shows.
+    pub load: &'a dyn Fn(Option<&Path>) -> Result<Shown, String>,
 }
 
 /// Why the viewer stopped with an error.
@@ -159,17 +180,26 @@ fn terminal_error(e: io::Error) -> ViewerError {
     ViewerError::Terminal(e.to_string())
 }
 
-/// Shows `scene` (called `name` in the HUD and in errors) until the user quits, a signal arrives or the terminal
-/// goes away, playing its animation (posing the scene) when it has one.
+/// Shows the files' scenes, the first first, until the user quits, a signal arrives or the terminal goes away,
+/// playing each one's animation (posing the scene) when it has one; `]` and `[` step through the files, and a file
+/// that cannot be shown is a page that says why.
 ///
 /// # Errors
 /// [`ViewerError`]; the terminal is restored in every case.
-pub fn run(scene: &mut PreparedScene, name: &str, options: &ViewerOptions) -> Result<ViewerExit, ViewerError> {
+pub fn run(files: Files<'_>, options: &ViewerOptions) -> Result<ViewerExit, ViewerError> {
     ensure_terminal()?;
-    let orbit = options.orbit;
-    // The first frame is planned now, so a scene that cannot be drawn (a point light inside its bounds casting
-    // shadows) is reported before the terminal is taken over.
-    ScenePlan::new(scene, &orbit.camera, (64, 64), &options.plan).map_err(|e| ViewerError::Scene(name.into(), e))?;
+    let Files { paths, first, load } = files;
+    // The first frame is planned now, so that a scene that cannot be drawn (a point light inside its bounds casting
+    // shadows) is reported before the terminal is taken over when it is the only one; among several, its page says
+    // why.
+    let first = match first {
+        Ok(shown) => match ScenePlan::new(&shown.scene, &shown.orbit.camera, (64, 64), &shown.plan) {
+            Ok(_) => Ok(shown),
+            Err(e) if paths.len() > 1 => Err(ViewerError::Scene(shown.name, e).to_string()),
+            Err(e) => return Err(ViewerError::Scene(shown.name, e)),
+        },
+        Err(e) => Err(e),
+    };
     let colors = match options.color {
         ColorChoice::Auto => ColorMode::from_process_env(),
         ColorChoice::Fixed(mode) => mode,
@@ -193,16 +223,22 @@ pub fn run(scene: &mut PreparedScene, name: &str, options: &ViewerOptions) -> Re
     };
     let writer =
         FrameWriter::start(output.try_clone().map_err(terminal_error)?, (graphics, options.dither), options.pacing);
-    let animations = scene.animations();
-    let playback = options.animation.map(|(animation, time)| Playback::new(animation, animations.len(), time));
+    // Until a scene is shown: the view of a unit sphere, the default look.
+    let unit = rastty_core::math::BoundingSphere { centre: Vec3::ZERO, radius: 1.0 };
+    let orbit = Orbit::framed(&rastty_scene::scene_file::FramedCamera::DEFAULT, &unit);
     let mut viewer = Viewer {
-        scene,
-        animations,
+        scene: None,
+        page: None,
+        paths,
+        index: 0,
+        load,
+        warnings: Vec::new(),
+        animations: Vec::new(),
         posed: None,
         pose_time: Duration::ZERO,
         renderer: SceneRenderer::new(),
-        name: name.into(),
-        state: ViewerState::new(orbit, options.plan, DEFAULT_CELL_ASPECT, playback),
+        name: String::new(),
+        state: ViewerState::new(orbit, PlanOptions::default(), DEFAULT_CELL_ASPECT, None),
         canvas: Canvas::default(),
         cell_mode: options.cell_mode,
         graphics,
@@ -225,6 +261,7 @@ pub fn run(scene: &mut PreparedScene, name: &str, options: &ViewerOptions) -> Re
         notice: None,
     };
     viewer.measure_cells(&session.tty);
+    viewer.show(first, true);
     let result = viewer.run_loop(&session, &writer, typed);
     let viewer_passthrough = viewer.passthrough;
     let deadline = Instant::now() + FINISH_TIME;
@@ -269,7 +306,18 @@ impl FrameClock {
 }
 
 struct Viewer<'a> {
-    scene: &'a mut PreparedScene,
+    /// The scene shown; `None` on the page of a file that cannot be shown.
+    scene: Option<PreparedScene>,
+    /// Why the file shown cannot be shown (its page).
+    page: Option<String>,
+    /// The files stepped through (`None`: the built-in model).
+    paths: Vec<Option<PathBuf>>,
+    /// The one shown.
+    index: usize,
+    /// Loads one of them.
+    load: &'a dyn Fn(Option<&Path>) -> Result<Shown, String>,
+    /// What loading the one shown warned of.
+    warnings: Vec<String>,
     /// The scene's animations: label and length.
     animations: Vec<(String, f32)>,
     /// The animation and time the scene stands posed at.
@@ -414,9 +462,10 @@ impl Viewer<'_> {
                 actions.extend(action_for(&input));
             }
             for action in actions.drain(..) {
-                if action == Action::Capture {
-                    self.capture();
-                    dirty = true;
+                match action {
+                    Action::Capture => self.capture(),
+                    Action::StepFile(step) => self.step_file(step),
+                    _ => {}
                 }
                 if let Action::Resize(cols, rows) = action {
                     self.size = (cols, rows);
@@ -461,25 +510,23 @@ impl Viewer<'_> {
             let grid = overlay::notice(usize::from(cols), usize::from(rows), "terminal too small");
             return Ok(Frame { grid, image: None });
         }
-        self.pose()?;
-        let (width, height, aspect) = self.render_size();
-        let n = width * height;
-        self.canvas.pixels.resize(n, 0);
-        self.canvas.depth.resize(n, 0.0);
-        let start = Instant::now();
-        let mut target =
-            Target::new(Rgb888(&mut self.canvas.pixels), &mut self.canvas.depth[..], width as u32, height as u32)
-                .map_err(|e| ViewerError::Terminal(e.to_string()))?;
-        let size = (width as u32, height as u32);
-        let to_error = |e| ViewerError::Scene(self.name.clone(), e);
-        let plan = ScenePlan::with_aspect(self.scene, &self.state.orbit.camera, size, aspect, &self.state.options)
-            .map_err(to_error)?;
-        let report = self.renderer.render(self.scene, &plan, &mut target).map_err(to_error)?;
-        self.last_stats = report.forward;
-        self.last_report = Some(report);
-        self.background = plan.background;
-        self.render_time = start.elapsed();
-        self.frame_times.tick();
+        if let Err(e) = self.pose().and_then(|()| self.draw()) {
+            // Among several files, one that cannot be drawn becomes its page; alone, it ends the viewer.
+            if self.paths.len() == 1 {
+                return Err(e);
+            }
+            self.scene = None;
+            self.page = Some(e.to_string());
+        }
+        let Some(_) = &self.scene else {
+            let page = self.page.as_deref().unwrap_or("");
+            // The message names the file already.
+            let text = format!("{}/{}: {page}", self.index + 1, self.paths.len());
+            let mut grid = overlay::notice(usize::from(cols), usize::from(rows), &text);
+            self.draw_text(&mut grid, written);
+            return Ok(Frame { grid, image: None });
+        };
+        let (width, height, _) = self.render_size();
         let (mut grid, image) = if self.graphics == GraphicsProtocol::Cells {
             let background = rastty_core::color::pack_rgb888(self.background);
             let pixels = PixelFrame::new(&self.canvas.pixels, width, height);
@@ -495,21 +542,109 @@ impl Viewer<'_> {
             };
             (CellGrid::blank(usize::from(cols), usize::from(rows)), Some(image))
         };
+        self.draw_text(&mut grid, written);
+        Ok(Frame { grid, image })
+    }
+
+    /// Draws the scene into the canvas at the size the terminal takes ([`Self::render_size`]).
+    fn draw(&mut self) -> Result<(), ViewerError> {
+        let Some(scene) = &self.scene else { return Ok(()) };
+        let (width, height, aspect) = self.render_size();
+        let n = width * height;
+        self.canvas.pixels.resize(n, 0);
+        self.canvas.depth.resize(n, 0.0);
+        let start = Instant::now();
+        let mut target =
+            Target::new(Rgb888(&mut self.canvas.pixels), &mut self.canvas.depth[..], width as u32, height as u32)
+                .map_err(|e| ViewerError::Terminal(e.to_string()))?;
+        let size = (width as u32, height as u32);
+        let to_error = |e| ViewerError::Scene(self.name.clone(), e);
+        let plan = ScenePlan::with_aspect(scene, &self.state.orbit.camera, size, aspect, &self.state.options)
+            .map_err(to_error)?;
+        let report = self.renderer.render(scene, &plan, &mut target).map_err(to_error)?;
+        self.last_stats = report.forward;
+        self.last_report = Some(report);
+        self.background = plan.background;
+        self.render_time = start.elapsed();
+        self.frame_times.tick();
+        Ok(())
+    }
+
+    /// The HUD, the help and the notice, over the picture.
+    fn draw_text(&self, grid: &mut CellGrid, written: WriterStats) {
         if self.state.hud {
-            overlay::draw_hud(&mut grid, &self.hud_lines(written));
+            overlay::draw_hud(grid, &self.hud_lines(written));
         }
         if self.state.help {
-            overlay::draw_centered_box(&mut grid, HELP);
+            overlay::draw_centered_box(grid, HELP);
         }
         if let Some((text, _)) = &self.notice {
             let row = grid.height.saturating_sub(1);
-            overlay::put_text(&mut grid, row, 0, &format!(" {text} "));
+            overlay::put_text(grid, row, 0, &format!(" {text} "));
         }
-        Ok(Frame { grid, image })
+    }
+
+    /// `3/17 NAME` among several files, `NAME` alone (escaped).
+    fn place(&self) -> String {
+        match self.paths.len() {
+            1 => Escaped(&self.name).to_string(),
+            n => format!("{}/{n} {}", self.index + 1, Escaped(&self.name)),
+        }
+    }
+
+    /// Shows `shown` (or the page of why it cannot be shown), keeping the look and the toggles; `first`: the
+    /// viewer's start, whose look is the file's own.
+    fn show(&mut self, shown: Result<Shown, String>, first: bool) {
+        let path_name =
+            |p: &Option<PathBuf>| p.as_deref().map_or_else(String::new, |p| p.to_string_lossy().into_owned());
+        self.posed = None;
+        self.last_report = None;
+        self.last_stats = DrawStats::default();
+        match shown {
+            Ok(shown) => {
+                self.animations = shown.scene.animations();
+                let playback = shown.animation.map(|(a, time)| Playback::new(a, self.animations.len(), time));
+                let options = if first { shown.plan } else { self.state.options };
+                self.state.show(shown.orbit, options, playback);
+                self.name = shown.name;
+                self.warnings = shown.warnings;
+                self.scene = Some(shown.scene);
+                self.page = None;
+            }
+            Err(why) => {
+                self.animations = Vec::new();
+                self.state.show(self.state.orbit, self.state.options, None);
+                self.name = path_name(&self.paths[self.index]);
+                self.warnings = Vec::new();
+                self.scene = None;
+                self.page = Some(why);
+            }
+        }
+        if self.paths.len() > 1 {
+            let warned = match self.warnings.len() {
+                0 => String::new(),
+                n => format!("   {n} warning{}: {}", if n == 1 { "" } else { "s" }, self.warnings[0]),
+            };
+            self.notice = Some((format!("{}{warned}", self.place()), Instant::now() + NOTICE_TIME));
+        }
+    }
+
+    /// Shows the next (`step` 1) or previous (-1) file, round the list.
+    fn step_file(&mut self, step: i32) {
+        let count = self.paths.len() as i64;
+        if count < 2 {
+            return;
+        }
+        self.index = (self.index as i64 + i64::from(step)).rem_euclid(count) as usize;
+        let loaded = (self.load)(self.paths[self.index].as_deref());
+        self.show(loaded, false);
     }
 
     /// Saves the view as a PNG file (`c`) and sets the notice that says where, or why not.
     fn capture(&mut self) {
+        if self.scene.is_none() {
+            return;
+        }
         let size = capture_size(self.capture_size, self.size_in_pixels, self.size, self.cell_aspect);
         let text = match self.save_capture(size) {
             Ok(path) => format!("saved {} ({}x{})", path_text(&path), size.0, size.1),
@@ -520,8 +655,9 @@ impl Viewer<'_> {
 
     /// Renders the view at `size` and writes it to a new file in the current directory ([`save_new`]).
     fn save_capture(&mut self, size: (u32, u32)) -> Result<PathBuf, String> {
+        let Some(scene) = &self.scene else { return Err("nothing shown".to_owned()) };
         let camera = self.state.orbit.camera;
-        let image = render_scene_image_with(&mut self.renderer, self.scene, &camera, size, 1, &self.state.options)
+        let image = render_scene_image_with(&mut self.renderer, scene, &camera, size, 1, &self.state.options)
             .map_err(|e| e.to_string())?;
         let mut png = Vec::new();
         encode_png(&mut png, image.width, image.height, &image.pixels).map_err(|e| e.to_string())?;
@@ -536,7 +672,8 @@ impl Viewer<'_> {
             return Ok(());
         }
         let start = Instant::now();
-        self.scene.pose(Some(p.animation), p.time).map_err(|e| ViewerError::Scene(self.name.clone(), e))?;
+        let Some(scene) = &mut self.scene else { return Ok(()) };
+        scene.pose(Some(p.animation), p.time).map_err(|e| ViewerError::Scene(self.name.clone(), e))?;
         self.pose_time = start.elapsed();
         self.posed = Some((p.animation, p.time));
         Ok(())
@@ -549,7 +686,10 @@ impl Viewer<'_> {
         let lens = if self.state.orbit.is_orthographic() { "ortho" } else { "perspective" };
         let mode = a.shading.name();
         let mut lines = vec![
-            format!("{}", Escaped(&self.name)),
+            match self.warnings.len() {
+                0 => self.place(),
+                n => format!("{}   {n} warning{}: {}", self.place(), if n == 1 { "" } else { "s" }, self.warnings[0]),
+            },
             format!(
                 "{} fps   render {:.2} ms   encode {:.2} ms",
                 self.frame_times.fps().map_or("-".into(), |f| format!("{f:.0}")),

@@ -100,6 +100,15 @@ impl ViewerState {
         }
     }
 
+    /// Shows another scene: seen by `orbit` (also what a reset goes back to) with `options`, playing `playback`.
+    pub fn show(&mut self, orbit: Orbit, options: PlanOptions, playback: Option<Playback>) {
+        self.orbit = orbit;
+        self.options = options;
+        self.initial = (orbit, options);
+        self.playback = playback;
+        self.drag = None;
+    }
+
     /// Applies an action.
     pub fn apply(&mut self, action: Action) -> Effect {
         match action {
@@ -153,7 +162,7 @@ impl ViewerState {
             Action::ToggleHud => self.hud = !self.hud,
             Action::ToggleHelp => self.help = !self.help,
             // The viewer saves the picture itself: nothing of the state changes.
-            Action::Resize(..) | Action::Capture => {}
+            Action::Resize(..) | Action::Capture | Action::StepFile(_) => {}
             Action::Quit => return Effect::Quit,
         }
         Effect::Redraw
