@@ -6,10 +6,11 @@
 //! command line's `--max-file-size`). It bounds the memory a file can make the loaders take before they look at
 //! its contents; within it, each loader checks every count against the bytes that are really there.
 
+use std::cell::RefCell;
 use std::fs::{FileType, OpenOptions};
 use std::io::{self, Read};
 use std::os::unix::fs::{FileTypeExt, OpenOptionsExt};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
 
 use rustix::fs::OFlags;
@@ -30,6 +31,29 @@ pub fn max_file_bytes() -> u64 {
     MAX_FILE_BYTES.load(Ordering::Relaxed)
 }
 
+thread_local! {
+    /// The paths [`read_input_file`] was asked for on this thread while [`recording_reads`] runs.
+    static READS: RefCell<Option<Vec<PathBuf>>> = const { RefCell::new(None) };
+}
+
+/// Runs `f` and returns, with its result, every path [`read_input_file`] was asked for on this thread meanwhile, in
+/// order, whether it could be read or not (so that a missing file's appearing can be noticed): the files a model or
+/// scene is made of, for a viewer that follows them (`--watch`). Recordings nest: an inner one's paths are also the
+/// outer one's.
+pub fn recording_reads<T>(f: impl FnOnce() -> T) -> (T, Vec<PathBuf>) {
+    let outer = READS.with_borrow_mut(|reads| reads.replace(Vec::new()));
+    let result = f();
+    let read = READS.with_borrow_mut(|reads| {
+        let read = reads.take().unwrap_or_default();
+        if let Some(mut outer) = outer {
+            outer.extend(read.iter().cloned());
+            *reads = Some(outer);
+        }
+        read
+    });
+    (result, read)
+}
+
 /// Reads the whole file at `path`.
 ///
 /// # Errors
@@ -37,6 +61,11 @@ pub fn max_file_bytes() -> u64 {
 /// regular file (the message says what it is); [`io::ErrorKind::InvalidData`] when it is larger than
 /// [`max_file_bytes`] (the message gives both sizes and the option that raises the limit).
 pub fn read_input_file(path: &Path) -> io::Result<Vec<u8>> {
+    READS.with_borrow_mut(|reads| {
+        if let Some(reads) = reads {
+            reads.push(path.to_path_buf());
+        }
+    });
     // Looked at before opening: opening a FIFO to read waits for a writer.
     regular(std::fs::metadata(path)?.file_type())?;
     // Non-blocking, should the path have been replaced by a FIFO in between; then checked again on the file opened.
@@ -170,5 +199,23 @@ mod tests {
         std::fs::write(&path, b"v 0 0 0\n").unwrap();
         assert_eq!(read_input_file(&path).unwrap(), b"v 0 0 0\n");
         assert_eq!(read_input_file(&dir.path().join("missing")).unwrap_err().kind(), io::ErrorKind::NotFound);
+    }
+
+    #[test]
+    fn recordings_list_every_path_asked_for_and_nest() {
+        let dir = tempfile::tempdir().unwrap();
+        let (a, b) = (dir.path().join("a"), dir.path().join("b"));
+        std::fs::write(&a, b"a").unwrap();
+        let ((), outer) = recording_reads(|| {
+            let _ = read_input_file(&a);
+            let ((), inner) = recording_reads(|| {
+                let _ = read_input_file(&b);
+            });
+            assert_eq!(inner, std::slice::from_ref(&b));
+        });
+        assert_eq!(outer, [a.clone(), b.clone()]);
+        // Outside a recording nothing is kept.
+        let _ = read_input_file(&a);
+        assert_eq!(recording_reads(|| ()).1, Vec::<PathBuf>::new());
     }
 }

@@ -32,13 +32,14 @@ use std::str::FromStr;
 use crate::render_stats::{FrameStats, PassCounts, SceneCounts, TurntableFrameTimes, TurntableSummary};
 use crate::turntable_export::{DEFAULT_FPS, MAX_FPS, MAX_FRAMES, Turntable, TurntableError, TurntableOutput};
 use crate::viewer::file_list::FileList;
-use crate::viewer::{ColorChoice, Files, GraphicsChoice, Shown, ViewerExit, ViewerOptions};
+use crate::viewer::{ColorChoice, Files, GraphicsChoice, Loaded, Shown, ViewerExit, ViewerOptions};
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 use rastty::graphics::GraphicsProtocol;
 use rastty::graphics::frame_palette::Dither;
 use rastty::screen::{CellMode, ColorMode};
 use rastty_core::math::Vec3;
 use rastty_scene::escaped::Escaped;
+use rastty_scene::input_file::recording_reads;
 use rastty_scene::input_file::{parse_byte_size, set_max_file_bytes};
 use rastty_scene::model::{ModelLens, ModelLightKind, ModelOptions, RigListing};
 use rastty_scene::png_file::write_png;
@@ -103,6 +104,11 @@ struct ViewerArgs {
     /// longer side).
     #[arg(long, value_name = "WxH", value_parser = parse_size)]
     size: Option<(u32, u32)>,
+    /// Load the file shown again when it, or a file it read (material library, textures, buffers, a scene's
+    /// meshes), changes on disk, keeping the view and the toggles; while it does not load, the last picture that
+    /// did stays, with the reason.
+    #[arg(long)]
+    watch: bool,
 }
 
 /// Options of `rastty render`.
@@ -543,7 +549,7 @@ fn view(args: &ViewerArgs) -> Result<ExitCode, String> {
     // A scene with the camera, look and animation of the options; with several files, an animation named by
     // --animation that a file does not have gives way to its first.
     let several = paths.len() > 1;
-    let load = |path: Option<&Path>| -> Result<Shown, String> {
+    let show = |path: Option<&Path>| -> Result<Shown, String> {
         let (scene, name, plan, warnings) = args.scene.open(path)?;
         let chosen = scene.choose_animation(args.scene.animation.as_deref());
         let animation = match chosen {
@@ -559,14 +565,22 @@ fn view(args: &ViewerArgs) -> Result<ExitCode, String> {
             warnings,
         })
     };
+    // With the files it read, for --watch.
+    let load = |path: Option<&Path>| {
+        let (shown, read) = recording_reads(|| show(path));
+        Loaded { shown, read }
+    };
     // One file that cannot be shown is an error before the terminal is taken over; among several, a page of its own.
     let first = load(paths[0].as_deref());
-    let first = if several { first } else { Ok(first?) };
-    if let Ok(shown) = &first {
+    if let Ok(shown) = &first.shown {
         for warning in &shown.warnings {
             eprintln!("rastty: warning: {warning}");
         }
     }
+    let first = match first.shown {
+        Err(e) if !several => return Err(e),
+        shown => Loaded { shown, read: first.read },
+    };
     let files = Files { paths, first, load: &load };
     let options = ViewerOptions {
         cell_mode: args.mode,
@@ -576,6 +590,7 @@ fn view(args: &ViewerArgs) -> Result<ExitCode, String> {
         cell_aspect: args.cell_aspect,
         pacing: !args.no_pacing,
         capture_size: args.size,
+        watch: args.watch,
     };
     match crate::viewer::run(files, &options).map_err(|e| e.to_string())? {
         // Killed by a signal: exit as the shell expects, 128 + the signal number.

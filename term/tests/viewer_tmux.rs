@@ -319,3 +319,54 @@ fn several_files_are_stepped_through_and_one_that_fails_shows_why() {
     let stderr = String::from_utf8_lossy(&output.stderr);
     assert!(stderr.contains("no model or scene file (.obj, .stl, .gltf, .glb, .toml) in ."), "{stderr}");
 }
+
+#[test]
+fn watch_loads_changed_files_again_and_keeps_the_last_picture_while_one_is_broken() {
+    if !tmux_wanted() {
+        return;
+    }
+    let dir = tempfile::tempdir().expect("a folder");
+    let (obj, mtl) = (dir.path().join("m.obj"), dir.path().join("m.mtl"));
+    let triangle = "mtllib m.mtl\nusemtl paint\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    std::fs::write(&obj, triangle).unwrap();
+    std::fs::write(&mtl, "newmtl paint\nKd 1 0 0\n").unwrap();
+    let tmux = Tmux::start_with("watch", 80, 24, &[Path::new("--watch"), &obj]);
+    tmux.wait_for_picture();
+    let red = tmux.screen_escaped();
+    let error_row = "last picture kept: ";
+    // The material library is one of the files followed: its new colour shows.
+    std::fs::write(&mtl, "newmtl paint\nKd 0 0 1\n").unwrap();
+    tmux.wait_for("the blue picture", || {
+        (tmux.screen().contains("loaded again") && tmux.screen_escaped() != red).then_some(())
+    });
+    // Written in two steps, the first a broken file: the picture follows, and no error shows on the way.
+    std::fs::write(&obj, "mtllib m.mtl\nusemtl paint\nv 0 0 0\nv 2 0").unwrap();
+    let start = std::time::Instant::now();
+    let mut seen_error = false;
+    while start.elapsed() < Duration::from_millis(1500) {
+        if start.elapsed() > Duration::from_millis(300) && !std::fs::read_to_string(&obj).unwrap().contains("f 1") {
+            std::fs::write(&obj, triangle.replace("v 1 0 0", "v 2 0 0")).unwrap();
+        }
+        seen_error |= tmux.screen().contains(error_row);
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    assert!(!seen_error, "an error flashed while the file was written");
+    // A file that stays broken: the reason, under the last picture that loaded.
+    std::fs::write(&obj, "v 0 0 0\nf 1 2 9\n").unwrap();
+    let broken = tmux.wait_for("the reason", || {
+        let screen = tmux.screen();
+        screen.contains(error_row).then_some(screen)
+    });
+    assert!(broken.contains("m.obj") && broken.contains('▀'), "{broken}");
+    // Deleted, then written again: it loads, and the reason goes.
+    std::fs::remove_file(&obj).unwrap();
+    std::thread::sleep(Duration::from_millis(300));
+    std::fs::write(&obj, triangle).unwrap();
+    tmux.wait_for("the file loaded again", || (!tmux.screen().contains(error_row)).then_some(()));
+    tmux.send_keys("i");
+    tmux.wait_for("the HUD", || tmux.screen().contains("watching 2 files (notified by the system)").then_some(()));
+    tmux.send_keys("q");
+    let (status, tty_same) = tmux.wait_for_exit();
+    assert_eq!(status, 0, "exit status after q");
+    tmux.assert_restored(tty_same);
+}

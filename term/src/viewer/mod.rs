@@ -13,6 +13,7 @@
 mod capture;
 mod controls;
 pub mod file_list;
+mod file_watch;
 mod frame_writer;
 mod graphics_probe;
 mod input_decoder;
@@ -25,6 +26,7 @@ mod tty;
 
 use capture::{capture_size, capture_stem, save_new};
 use controls::{Action, HELP, action_for};
+use file_watch::FileWatch;
 use frame_writer::{Frame, FrameWriter, REFINE_AFTER, WriterStats};
 use graphics_probe::ProbeAnswers;
 use input_decoder::{ESCAPE_WAIT, Input, InputDecoder};
@@ -65,6 +67,11 @@ const IDLE_POLL: Duration = Duration::from_millis(500);
 const FINISH_TIME: Duration = Duration::from_millis(250);
 /// How long a notice (where a capture went) stays on the bottom row.
 const NOTICE_TIME: Duration = Duration::from_secs(4);
+/// How long the files followed must stay unchanged before the scene is loaded again: an exporter writes in steps.
+const RELOAD_QUIET: Duration = Duration::from_millis(150);
+/// How long after a reload that failed it is tried once more before the error is shown: a file may have been
+/// caught half written.
+const RELOAD_RETRY: Duration = Duration::from_millis(700);
 
 /// Colours: detected or chosen.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -103,6 +110,8 @@ pub struct ViewerOptions {
     pub pacing: bool,
     /// The size of the pictures `c` saves (`--size`); `None`: twice the terminal's size in pixels.
     pub capture_size: Option<(u32, u32)>,
+    /// Load the file shown again when a file it was made of changes (`--watch`).
+    pub watch: bool,
 }
 
 /// A scene ready to show, with how to start showing it.
@@ -122,14 +131,34 @@ pub struct Shown {
     pub warnings: Vec<String>,
 }
 
+/// A file loaded, or why it could not be, and the files reading it asked for (what `--watch` follows).
+pub struct Loaded {
+    /// The scene, or the message its page shows.
+    pub shown: Result<Shown, String>,
+    /// Every file read or asked for ([`rastty_scene::input_file::recording_reads`]).
+    pub read: Vec<PathBuf>,
+}
+
 /// The files the viewer steps through with `]` and `[`, and how it loads one.
 pub struct Files<'a> {
     /// The files in order (`None`: the built-in model); at least one.
     pub paths: Vec<Option<PathBuf>>,
-    /// The first, loaded (or why it could not be, shown as its page).
-    pub first: Result<Shown, String>,
-    /// Loads a file of [`Self::paths`]; the error is the message its page shows.
-    pub load: &'a dyn Fn(Option<&Path>) -> Result<Shown, String>,
+    /// The first, loaded.
+    pub first: Loaded,
+    /// Loads a file of [`Self::paths`].
+    pub load: &'a dyn Fn(Option<&Path>) -> Loaded,
+}
+
+/// How a scene comes to be shown.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum ShowAs {
+    /// The first: with its own look.
+    First,
+    /// Stepped to (`]`, `[`): its own view, the look and toggles kept.
+    Step,
+    /// Loaded again after its files changed (`--watch`): the view, look and toggles kept, and the last good
+    /// picture kept while it fails to load.
+    Reload,
 }
 
 /// Why the viewer stopped with an error.
@@ -192,7 +221,8 @@ pub fn run(files: Files<'_>, options: &ViewerOptions) -> Result<ViewerExit, View
     // The first frame is planned now, so that a scene that cannot be drawn (a point light inside its bounds casting
     // shadows) is reported before the terminal is taken over when it is the only one; among several, its page says
     // why.
-    let first = match first {
+    let Loaded { shown, read } = first;
+    let shown = match shown {
         Ok(shown) => match ScenePlan::new(&shown.scene, &shown.orbit.camera, (64, 64), &shown.plan) {
             Ok(_) => Ok(shown),
             Err(e) if paths.len() > 1 => Err(ViewerError::Scene(shown.name, e).to_string()),
@@ -200,6 +230,7 @@ pub fn run(files: Files<'_>, options: &ViewerOptions) -> Result<ViewerExit, View
         },
         Err(e) => Err(e),
     };
+    let first = Loaded { shown, read };
     let colors = match options.color {
         ColorChoice::Auto => ColorMode::from_process_env(),
         ColorChoice::Fixed(mode) => mode,
@@ -259,9 +290,19 @@ pub fn run(files: Files<'_>, options: &ViewerOptions) -> Result<ViewerExit, View
         sharpen_at: None,
         capture_size: options.capture_size,
         notice: None,
+        watch: None,
+        changed_at: None,
+        retry_at: None,
+        watch_error: None,
     };
     viewer.measure_cells(&session.tty);
-    viewer.show(first, true);
+    if options.watch {
+        match session.waker().map_err(notify::Error::io).and_then(FileWatch::new) {
+            Ok(watch) => viewer.watch = Some(watch),
+            Err(e) => viewer.watch_error = Some(format!("cannot watch the files: {e}")),
+        }
+    }
+    viewer.show(first, ShowAs::First);
     let result = viewer.run_loop(&session, &writer, typed);
     let viewer_passthrough = viewer.passthrough;
     let deadline = Instant::now() + FINISH_TIME;
@@ -315,7 +356,7 @@ struct Viewer<'a> {
     /// The one shown.
     index: usize,
     /// Loads one of them.
-    load: &'a dyn Fn(Option<&Path>) -> Result<Shown, String>,
+    load: &'a dyn Fn(Option<&Path>) -> Loaded,
     /// What loading the one shown warned of.
     warnings: Vec<String>,
     /// The scene's animations: label and length.
@@ -360,6 +401,14 @@ struct Viewer<'a> {
     capture_size: Option<(u32, u32)>,
     /// A line shown on the bottom row (where a capture went, or why it did not), and until when.
     notice: Option<(String, Instant)>,
+    /// The files of the scene shown, followed (`--watch`).
+    watch: Option<FileWatch>,
+    /// When a followed file last changed, until the scene is loaded again ([`RELOAD_QUIET`] later).
+    changed_at: Option<Instant>,
+    /// When to try once more a reload that failed (a file half written), before saying so.
+    retry_at: Option<Instant>,
+    /// Why the files followed do not load (shown, with the last picture that loaded, until they do).
+    watch_error: Option<String>,
 }
 
 impl Viewer<'_> {
@@ -420,6 +469,16 @@ impl Viewer<'_> {
                 last_tick = now;
                 dirty |= !playback.paused;
             }
+            // Files followed that changed are loaded again once they have been quiet for a moment.
+            if self.watch.as_ref().is_some_and(FileWatch::take_change) {
+                self.changed_at = Some(Instant::now());
+            }
+            let now = Instant::now();
+            let settled = self.changed_at.is_some_and(|at| now >= at + RELOAD_QUIET);
+            if settled || self.retry_at.is_some_and(|at| now >= at) {
+                self.reload(!settled);
+                dirty = true;
+            }
             // A notice whose time is up goes.
             if self.notice.as_ref().is_some_and(|(_, until)| Instant::now() >= *until) {
                 self.notice = None;
@@ -434,7 +493,9 @@ impl Viewer<'_> {
             }
             let moving = self.state.turntable || self.state.playback.is_some_and(|p| !p.paused);
             let mut timeout = if moving { TURNTABLE_FRAME } else { IDLE_POLL };
-            for at in [self.sharpen_at, self.notice.as_ref().map(|(_, until)| *until)].into_iter().flatten() {
+            let reload_at = self.changed_at.map(|at| at + RELOAD_QUIET);
+            let notice_until = self.notice.as_ref().map(|(_, until)| *until);
+            for at in [self.sharpen_at, notice_until, reload_at, self.retry_at].into_iter().flatten() {
                 timeout = timeout.min(at.saturating_duration_since(Instant::now()));
             }
             if decoder.is_waiting() {
@@ -578,8 +639,12 @@ impl Viewer<'_> {
         if self.state.help {
             overlay::draw_centered_box(grid, HELP);
         }
+        let mut row = grid.height.saturating_sub(1);
+        if let Some(why) = &self.watch_error {
+            overlay::put_text(grid, row, 0, &format!(" last picture kept: {why} "));
+            row = row.saturating_sub(1);
+        }
         if let Some((text, _)) = &self.notice {
-            let row = grid.height.saturating_sub(1);
             overlay::put_text(grid, row, 0, &format!(" {text} "));
         }
     }
@@ -592,20 +657,32 @@ impl Viewer<'_> {
         }
     }
 
-    /// Shows `shown` (or the page of why it cannot be shown), keeping the look and the toggles; `first`: the
-    /// viewer's start, whose look is the file's own.
-    fn show(&mut self, shown: Result<Shown, String>, first: bool) {
+    /// Shows what `loaded` gives as `how` says: the scene, or the page of why it cannot be shown; and follows
+    /// the files it read (`--watch`).
+    fn show(&mut self, loaded: Loaded, how: ShowAs) {
+        if let Some(watch) = &mut self.watch {
+            watch.follow(&loaded.read);
+        }
         let path_name =
             |p: &Option<PathBuf>| p.as_deref().map_or_else(String::new, |p| p.to_string_lossy().into_owned());
         self.posed = None;
         self.last_report = None;
         self.last_stats = DrawStats::default();
-        match shown {
+        match loaded.shown {
             Ok(shown) => {
                 self.animations = shown.scene.animations();
-                let playback = shown.animation.map(|(a, time)| Playback::new(a, self.animations.len(), time));
-                let options = if first { shown.plan } else { self.state.options };
-                self.state.show(shown.orbit, options, playback);
+                let count = self.animations.len();
+                let fresh = shown.animation.map(|(a, time)| Playback::new(a, count, time));
+                match how {
+                    ShowAs::First => self.state.show(shown.orbit, shown.plan, fresh),
+                    ShowAs::Step => self.state.show(shown.orbit, self.state.options, fresh),
+                    ShowAs::Reload => {
+                        // Where the animation stood, when the file still has it.
+                        let playing =
+                            self.state.playback.filter(|p| p.animation < count).map(|p| Playback { count, ..p });
+                        self.state.playback = playing.or(fresh);
+                    }
+                }
                 self.name = shown.name;
                 self.warnings = shown.warnings;
                 self.scene = Some(shown.scene);
@@ -620,12 +697,40 @@ impl Viewer<'_> {
                 self.page = Some(why);
             }
         }
-        if self.paths.len() > 1 {
-            let warned = match self.warnings.len() {
-                0 => String::new(),
-                n => format!("   {n} warning{}: {}", if n == 1 { "" } else { "s" }, self.warnings[0]),
-            };
-            self.notice = Some((format!("{}{warned}", self.place()), Instant::now() + NOTICE_TIME));
+        let warned = match self.warnings.len() {
+            0 => String::new(),
+            n => format!("   {n} warning{}: {}", if n == 1 { "" } else { "s" }, self.warnings[0]),
+        };
+        let said = match how {
+            ShowAs::Reload => Some(format!("loaded again: {}{warned}", self.place())),
+            _ if self.paths.len() > 1 => Some(format!("{}{warned}", self.place())),
+            _ => None,
+        };
+        self.notice = said.map(|text| (text, Instant::now() + NOTICE_TIME)).or(self.notice.take());
+    }
+
+    /// Loads the file shown again (`--watch`). A failure while a picture of it is shown keeps the picture: the
+    /// first is tried again [`RELOAD_RETRY`] later (`retry` false), the second (`retry` true) is shown as the
+    /// reason, until a change loads.
+    fn reload(&mut self, retry: bool) {
+        self.changed_at = None;
+        self.retry_at = None;
+        let loaded = (self.load)(self.paths[self.index].as_deref());
+        match &loaded.shown {
+            Err(why) if self.scene.is_some() => {
+                if let Some(watch) = &mut self.watch {
+                    watch.follow(&loaded.read);
+                }
+                if retry {
+                    self.watch_error = Some(why.clone());
+                } else {
+                    self.retry_at = Some(Instant::now() + RELOAD_RETRY);
+                }
+            }
+            _ => {
+                self.watch_error = None;
+                self.show(loaded, ShowAs::Reload);
+            }
         }
     }
 
@@ -637,7 +742,9 @@ impl Viewer<'_> {
         }
         self.index = (self.index as i64 + i64::from(step)).rem_euclid(count) as usize;
         let loaded = (self.load)(self.paths[self.index].as_deref());
-        self.show(loaded, false);
+        self.watch_error = None;
+        (self.changed_at, self.retry_at) = (None, None);
+        self.show(loaded, ShowAs::Step);
     }
 
     /// Saves the view as a PNG file (`c`) and sets the notice that says where, or why not.
@@ -730,6 +837,10 @@ impl Viewer<'_> {
             ),
             format!("cell aspect {:.2} ({})", self.cell_aspect, self.cell_aspect_source()),
         ];
+        if let Some(watch) = &self.watch {
+            let how = if watch.notified { "notified by the system" } else { "looked at every 0.5 s" };
+            lines.push(format!("watching {} files ({how})", watch.followed()));
+        }
         if let Some(p) = self.state.playback {
             let (label, length) = self.animations.get(p.animation).map_or(("", 0.0), |(l, t)| (l.as_str(), *t));
             lines.push(format!(

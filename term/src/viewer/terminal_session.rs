@@ -45,6 +45,8 @@ pub struct TerminalSession {
     /// Set by SIGWINCH: the window changed size.
     pub resized: Arc<AtomicBool>,
     signals: Vec<signal_hook::SigId>,
+    /// The write end of the pipe that wakes the main loop's `poll`.
+    wake_write: UnixStream,
 }
 
 impl TerminalSession {
@@ -69,7 +71,7 @@ impl TerminalSession {
         for signal in [SIGINT, SIGTERM, SIGHUP, SIGWINCH] {
             signals.push(signal_hook::low_level::pipe::register(signal, wake_write.try_clone()?)?);
         }
-        let session = Self { tty: Tty::open(wake)?, stop, resized, signals };
+        let session = Self { tty: Tty::open(wake)?, stop, resized, signals, wake_write };
         let input = session.tty.input_file()?;
         let settings = tcgetattr(&input)?;
         *SAVED.lock().unwrap_or_else(PoisonError::into_inner) =
@@ -82,6 +84,14 @@ impl TerminalSession {
             return Err(io::Error::new(io::ErrorKind::TimedOut, "the terminal took no output"));
         }
         Ok(session)
+    }
+
+    /// A handle that wakes the main loop's `poll` when a byte is written to it (non-blocking).
+    ///
+    /// # Errors
+    /// The pipe could not be duplicated.
+    pub fn waker(&self) -> io::Result<UnixStream> {
+        self.wake_write.try_clone()
     }
 
     /// The signal that asked the viewer to stop, if one did.
