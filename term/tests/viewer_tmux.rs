@@ -37,10 +37,7 @@ fn draws_turns_shows_the_hud_and_quits_cleanly() {
     // Inside tmux, `--graphics auto` keeps to cells without asking.
     assert!(hud.contains("100x32 half-block (auto) truecolor"), "HUD:\n{hud}");
 
-    tmux.send_keys("q");
-    let (status, tty_same) = tmux.wait_for_exit();
-    assert_eq!(status, 0, "exit status after q");
-    tmux.assert_restored(tty_same);
+    tmux.quit_cleanly();
 }
 
 #[test]
@@ -105,10 +102,7 @@ fn tiny_pane_shows_the_notice_and_still_quits() {
         (screen.contains("small") && !screen.contains('▀')).then_some(())
     });
 
-    tmux.send_keys("q");
-    let (status, tty_same) = tmux.wait_for_exit();
-    assert_eq!(status, 0, "exit status after q");
-    tmux.assert_restored(tty_same);
+    tmux.quit_cleanly();
 }
 
 #[test]
@@ -172,10 +166,7 @@ fn a_scene_file_shows_and_its_effects_switch_off() {
     tmux.send_keys("i");
     tmux.wait_for("the HUD to say msaa 4x", || tmux.screen().contains("wire off msaa 4x").then_some(()));
 
-    tmux.send_keys("q");
-    let (status, tty_same) = tmux.wait_for_exit();
-    assert_eq!(status, 0, "exit status after q");
-    tmux.assert_restored(tty_same);
+    tmux.quit_cleanly();
 }
 
 #[test]
@@ -227,10 +218,7 @@ fn ascii_without_colour_leaves_the_background_blank() {
     }
     let colons = screen.chars().filter(|&c| c == ':').count();
     assert!(colons < 80 * 24 / 4, "{colons} colons:\n{screen}");
-    tmux.send_keys("q");
-    let (status, tty_same) = tmux.wait_for_exit();
-    assert_eq!(status, 0, "exit status after q");
-    tmux.assert_restored(tty_same);
+    tmux.quit_cleanly();
 }
 
 #[test]
@@ -258,10 +246,7 @@ fn c_saves_the_view_as_a_new_png_and_says_where() {
     let rendered = crate::common::rastty_in(out.path(), &["render", "-o", "rendered.png", "--size", "320x200"]);
     assert!(rendered.status.success());
     assert_eq!(first, image::open(out.path().join("rendered.png")).expect("a PNG").to_rgb8());
-    tmux.send_keys("q");
-    let (status, tty_same) = tmux.wait_for_exit();
-    assert_eq!(status, 0, "exit status after q");
-    tmux.assert_restored(tty_same);
+    tmux.quit_cleanly();
 
     // A folder it cannot write in: the notice says so, and the viewer goes on.
     let tmux = Tmux::start_in("capture-refused", 80, 24, &[], Path::new("/proc"));
@@ -307,10 +292,7 @@ fn several_files_are_stepped_through_and_one_that_fails_shows_why() {
     notice(&tmux, "1/3 ");
     tmux.send_keys("[");
     notice(&tmux, "3/3 ");
-    tmux.send_keys("q");
-    let (status, tty_same) = tmux.wait_for_exit();
-    assert_eq!(status, 0, "exit status after q");
-    tmux.assert_restored(tty_same);
+    tmux.quit_cleanly();
 
     // Nothing to show: an error before the terminal is taken over.
     let empty = tempfile::tempdir().expect("a folder");
@@ -365,8 +347,5 @@ fn watch_loads_changed_files_again_and_keeps_the_last_picture_while_one_is_broke
     tmux.wait_for("the file loaded again", || (!tmux.screen().contains(error_row)).then_some(()));
     tmux.send_keys("i");
     tmux.wait_for("the HUD", || tmux.screen().contains("watching 2 files (notified by the system)").then_some(()));
-    tmux.send_keys("q");
-    let (status, tty_same) = tmux.wait_for_exit();
-    assert_eq!(status, 0, "exit status after q");
-    tmux.assert_restored(tty_same);
+    tmux.quit_cleanly();
 }

@@ -182,6 +182,14 @@ impl Tmux {
         })
     }
 
+    /// Types `q` and checks that the program ended with status 0 and gave the terminal back as it found it.
+    pub fn quit_cleanly(&self) {
+        self.send_keys("q");
+        let (status, tty_same) = self.wait_for_exit();
+        assert_eq!(status, 0, "exit status after q");
+        self.assert_restored(tty_same);
+    }
+
     /// Polls `probe` until it gives a value; fails the test with the screen when [`TIMEOUT`] passes first.
     pub fn wait_for<T>(&self, what: &str, mut probe: impl FnMut() -> Option<T>) -> T {
         let start = Instant::now();
