@@ -10,7 +10,7 @@ use std::path::PathBuf;
 
 use rastty_bench::reference::{
     Camera, ReferenceError, ReferenceImage, ReferenceLight, ReferenceLighting, ReferenceMaterial, ReferenceObject,
-    ReferenceProjection, ReferenceScene, Renderer, SAMPLES_PER_AXIS, Shading, render, srgb,
+    ReferencePlace, ReferenceProjection, ReferenceScene, Renderer, SAMPLES_PER_AXIS, Shading, render, srgb,
 };
 use rastty_core::camera::CameraError;
 use rastty_core::color::ShadingSpace;
@@ -431,8 +431,8 @@ fn a_flat_quad_facing_the_light_is_lit_exactly() {
     let (w, h) = (4, 4);
     let albedo = [0.8, 0.5, 0.25];
     let ambient = [0.1, 0.2, 0.05];
-    let light = ReferenceLight { to_light: [0.0, 0.0, 1.0], color: [0.5, 0.6, 0.7] };
-    let behind = ReferenceLight { to_light: [0.0, 0.0, -1.0], color: [1.0; 3] };
+    let light = ReferenceLight { to_light: [0.0, 0.0, 1.0], color: [0.5, 0.6, 0.7], place: None };
+    let behind = ReferenceLight { to_light: [0.0, 0.0, -1.0], color: [1.0; 3], place: None };
     let mut quad = rectangle(-1.0, 5.0, -5.0, 1.0, 0.0, albedo);
     quad.shading = Shading::Lit;
     quad.normals = Some(vec![[0.0, 0.0, 1.0]; 4]);
@@ -734,15 +734,25 @@ fn from_scene_draws_a_scene_file_as_rastty_does() {
         assert!(compared > 50, "{size:?}: {compared}");
         println!("{size:?}: {compared} pixel centres within {worst:.2} levels");
     }
+    // Point and spot lights, falling off by the inverse square within a range, the spot in camera space.
+    let lamps = TWO_SPOTS.replace(
+        "type = \"directional\"\ndirection = [-1, -2, -1.5]\ncolor = [1, 0.9, 0.8]\nintensity = 0.8",
+        "type = \"point\"\nposition = [0, 3, 2]\nfalloff = \"inverse-square\"\nrange = 9\nintensity = 6\n\n\
+         [[lights]]\ntype = \"spot\"\nposition = [0.5, 0.5, 1]\ndirection = [0, -0.3, -1]\ninner_angle = 10\n\
+         outer_angle = 25\nfalloff = \"inverse-square\"\nintensity = 4\nspace = \"camera\"",
+    );
+    let scene = scene_file(&lamps);
+    let camera = scene.camera();
+    let reference = ReferenceScene::from_scene(&scene, &camera, &options, (40, 30), 40.0 / 30.0).unwrap();
+    assert!(reference.lighting.lights.iter().filter(|l| l.place.is_some()).count() == 2);
+    let (compared, worst) = agree(&scene, (40, 30), &camera, &options, 2.0);
+    assert!(compared > 50, "{compared}");
+    println!("point and spot lights: {compared} pixel centres within {worst:.2} levels");
     // What the reference does not draw.
-    let point = TWO_SPOTS
-        .replace("type = \"directional\"\ndirection = [-1, -2, -1.5]", "type = \"point\"\nposition = [0, 3, 2]");
     let shadows = TWO_SPOTS.replace("intensity = 0.8", "intensity = 0.8\nshadows = true");
-    for (text, what) in [(point, "point lights"), (shadows, "shadows")] {
-        let scene = scene_file(&text);
-        let refused = ReferenceScene::from_scene(&scene, &scene.camera(), &PlanOptions::default(), (8, 8), 1.0);
-        assert_eq!(refused.unwrap_err(), ReferenceError::Unsupported(what));
-    }
+    let scene = scene_file(&shadows);
+    let refused = ReferenceScene::from_scene(&scene, &scene.camera(), &PlanOptions::default(), (8, 8), 1.0);
+    assert_eq!(refused.unwrap_err(), ReferenceError::Unsupported("shadows"));
 }
 
 #[test]
@@ -784,4 +794,22 @@ fn builtin_model_320x240() {
         .unwrap();
     rastty_scene::png_file::write_png(std::path::Path::new("/tmp/rastty_default.png"), 320, 240, &pixels).unwrap();
     assert!(psnr > 25.0, "{psnr}");
+}
+
+#[test]
+fn a_placed_light_weakens_by_the_inverse_square_its_range_and_its_cone() {
+    let place = |inverse_square, cone| ReferencePlace { position: [0.0, 2.0, 0.0], inverse_square, cone };
+    let light = |place| ReferenceLight { to_light: [0.0; 3], color: [1.0; 3], place: Some(place) };
+    // 2 units below the light: 1/4; with range 4, the window 1 - (2/4)^4 = 15/16 too.
+    assert_eq!(light(place(None, None)).toward([0.0, 0.0, 0.0]), ([0.0, 1.0, 0.0], 1.0));
+    assert_eq!(light(place(Some(None), None)).toward([0.0, 0.0, 0.0]), ([0.0, 1.0, 0.0], 0.25));
+    assert_eq!(light(place(Some(Some(4.0)), None)).toward([0.0, 0.0, 0.0]).1, 0.25 * 15.0 / 16.0);
+    assert_eq!(light(place(Some(Some(2.0)), None)).toward([0.0, -1.0, 0.0]).1, 0.0);
+    // A spot pointing down with inner 0 and outer 60 degrees: on the axis all of it; at 41.4 degrees (cosine 3/4)
+    // a quarter; beyond 60 degrees nothing.
+    let cone = Some(([0.0, -1.0, 0.0], 0.0, std::f64::consts::FRAC_PI_3));
+    assert!((light(place(None, cone)).toward([0.0, 0.0, 0.0]).1 - 1.0).abs() < 1e-12);
+    let sin = (1.0f64 - 0.75 * 0.75).sqrt();
+    assert!((light(place(None, cone)).toward([2.0 * sin / 0.75, 0.0, 0.0]).1 - 0.25).abs() < 1e-12);
+    assert_eq!(light(place(None, cone)).toward([4.0, 0.0, 0.0]).1, 0.0);
 }

@@ -6,11 +6,13 @@ use rastty_core::texture::FilterMode;
 
 use super::math::{self, DMat4, V3};
 use super::{
-    Camera, ReferenceError, ReferenceLight, ReferenceLighting, ReferenceMaterial, ReferenceObject, ReferenceProjection,
-    ReferenceScene, Shading,
+    Camera, ReferenceError, ReferenceLight, ReferenceLighting, ReferenceMaterial, ReferenceObject, ReferencePlace,
+    ReferenceProjection, ReferenceScene, Shading,
 };
 use rastty_scene::model::Model;
-use rastty_scene::scene_file::{LightSpace, SceneCamera, SceneLight, SceneLightKind, SceneProjection as Lens};
+use rastty_scene::scene_file::{
+    LightFalloff, LightSpace, SceneCamera, SceneLight, SceneLightKind, SceneProjection as Lens,
+};
 use rastty_scene::scene_render::{PlanOptions, PreparedScene, ScenePlan, SceneRenderError, ShadingMode, part_material};
 
 fn widen(v: rastty_core::math::Vec3) -> [f64; 3] {
@@ -34,7 +36,7 @@ fn widen_matrix(m: &rastty_core::math::Mat4) -> DMat4 {
 
 /// The direction toward a directional light as rastty's `core_light` gives it, in `f64`: the file's direction of
 /// travel reversed, and for a light in camera space turned into the world by the transpose of `view`'s rotation
-/// and renormalised. `None` for a point light.
+/// and renormalised. `None` for a point or spot light ([`place`]).
 fn to_light(light: &SceneLight, view: &DMat4) -> Option<[f64; 3]> {
     let SceneLightKind::Directional { direction } = light.kind else { return None };
     let toward = widen(-direction);
@@ -47,6 +49,32 @@ fn to_light(light: &SceneLight, view: &DMat4) -> Option<[f64; 3]> {
             math::apply3(&to_world, V3::from_array(toward)).normalize_or_zero().to_array()
         }
     })
+}
+
+/// Where a point or spot light is, in `f64`, as rastty's `core_light` places it: a light in camera space moved by
+/// the eye and turned into the world by the transpose of `view`'s rotation. `None` for a directional light.
+fn place(light: &SceneLight, view: &DMat4, camera: &Camera) -> Option<ReferencePlace> {
+    let to_world = [0, 1, 2].map(|r| V3::new(view[0][r], view[1][r], view[2][r]));
+    let (position, axis, falloff, cone) = match light.kind {
+        SceneLightKind::Directional { .. } => return None,
+        SceneLightKind::Point { position, falloff } => (position, None, falloff, None),
+        SceneLightKind::Spot { position, direction, inner, outer, falloff } => {
+            (position, Some(direction), falloff, Some((f64::from(inner), f64::from(outer))))
+        }
+    };
+    let (position, axis) = match light.space {
+        LightSpace::World => (V3::from_array(widen(position)), axis.map(|a| V3::from_array(widen(a)))),
+        LightSpace::Camera => (
+            V3::from_array(camera.eye) + math::apply3(&to_world, V3::from_array(widen(position))),
+            axis.map(|a| math::apply3(&to_world, V3::from_array(widen(a)))),
+        ),
+    };
+    let inverse_square = match falloff {
+        LightFalloff::None => None,
+        LightFalloff::InverseSquare { range } => Some(range.map(f64::from)),
+    };
+    let cone = axis.zip(cone).map(|(a, (inner, outer))| (a.normalize_or_zero().to_array(), inner, outer));
+    Some(ReferencePlace { position: position.to_array(), inverse_square, cone })
 }
 
 impl ReferenceScene {
@@ -72,7 +100,7 @@ impl ReferenceScene {
     ///
     /// # Errors
     /// [`ReferenceError::Unsupported`] for what the reference does not draw: the depth and normals views,
-    /// wireframe lines, point lights, shadows, ambient occlusion, normal, specular and glow maps, and nearest
+    /// wireframe lines, shadows, ambient occlusion, normal, specular and glow maps, and nearest
     /// texture filtering. [`ReferenceError::Camera`] when rastty would refuse the camera,
     /// [`ReferenceError::Plan`] when it would refuse the frame otherwise.
     pub fn from_scene(
@@ -115,10 +143,14 @@ impl ReferenceScene {
 
         let mut lights = Vec::with_capacity(plan.lights.len());
         for planned in &plan.lights {
-            let to_light =
-                to_light(&planned.source, &view_matrix).ok_or(ReferenceError::Unsupported("point lights"))?;
             // The colour as rastty lights with it: decoded in linear light, times the intensity.
-            lights.push(ReferenceLight { to_light, color: widen(planned.color) });
+            let color = widen(planned.color);
+            lights.push(match to_light(&planned.source, &view_matrix) {
+                Some(to_light) => ReferenceLight { to_light, color, place: None },
+                None => {
+                    ReferenceLight { to_light: [0.0; 3], color, place: place(&planned.source, &view_matrix, &view) }
+                }
+            });
         }
 
         let objects_data = &scene.data().objects;

@@ -35,8 +35,9 @@
 //! space) when the object has one and has texture coordinates. [`Shading::Unlit`] draws the albedo; [`Shading::Lit`] is rastty's
 //! per-pixel Blinn-Phong (`ShadingModel::Phong` of [`rastty_core::draw_mesh`]) in `f64`, with the interpolated vertex normal
 //! renormalised:
-//! `albedo * (ambient + sum c max(0, n.l)) + specular * sum over lights with n.l > 0 of c max(0, n.h)^shininess`,
-//! `h = normalize(l + v)`, `v = normalize(eye - p)`.
+//! `albedo * (ambient + sum c s max(0, n.l)) + specular * sum over lights with n.l > 0 of c s max(0, n.h)^shininess`,
+//! `h = normalize(l + v)`, `v = normalize(eye - p)`, `l` toward the light and `s` the share of it arriving (1 for a
+//! directional light; the fall-off and cone of a point or spot light, [`ReferenceLight::toward`]).
 //!
 //! # Use
 //!
@@ -182,23 +183,58 @@ impl ReferenceProjection {
 pub struct ReferenceLighting {
     /// ReferenceLight reaching every surface from every direction.
     pub ambient: [f64; 3],
-    /// Directional lights.
+    /// The lights: directional, point and spot.
     pub lights: Vec<ReferenceLight>,
 }
 
-/// A directional light.
+/// A light: directional, or at a place (a point or spot light).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ReferenceLight {
-    /// Unit vector from the surface toward the light, in world space (used as given).
+    /// Unit vector from the surface toward a directional light, in world space (used as given); not read for a
+    /// light with a [`Self::place`].
     pub to_light: [f64; 3],
     /// Colour and intensity.
     pub color: [f64; 3],
+    /// Where a point or spot light is and how its light weakens; `None` for a directional light.
+    pub place: Option<ReferencePlace>,
+}
+
+/// Where a point or spot light is, and how its light weakens: the core's `LightKind::toward` in `f64`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ReferencePlace {
+    /// The light's position in world space.
+    pub position: [f64; 3],
+    /// `Some(range)` for the inverse square of the distance `d`, windowed by `clamp(1 - (d / range)^4, 0, 1)`
+    /// (`Some(None)`: no range); `None` for no fall-off.
+    pub inverse_square: Option<Option<f64>>,
+    /// A spot's cone: its unit axis (the way it shines) and its inner and outer angles in radians; the share
+    /// `clamp((cos a - cos outer) / max(cos inner - cos outer, 0.001), 0, 1)²` at angle `a` from the axis.
+    pub cone: Option<([f64; 3], f64, f64)>,
 }
 
 impl ReferenceLight {
     /// A light shining from `to_light`, normalised here (a zero vector gives a light that adds nothing).
     pub fn directional(to_light: [f64; 3], color: [f64; 3]) -> Self {
-        Self { to_light: math::V3::from_array(to_light).normalize_or_zero().to_array(), color }
+        Self { to_light: math::V3::from_array(to_light).normalize_or_zero().to_array(), color, place: None }
+    }
+
+    /// The unit direction from `point` toward the light and the share of its colour that arrives there.
+    pub fn toward(&self, point: [f64; 3]) -> ([f64; 3], f64) {
+        let Some(place) = &self.place else { return (self.to_light, 1.0) };
+        let d = math::V3::from_array(place.position) - math::V3::from_array(point);
+        let squared = d.dot(d);
+        let l = d.normalize_or_zero();
+        let mut share = 1.0;
+        if let Some(range) = place.inverse_square {
+            let ratio = range.map_or(0.0, |r| squared / (r * r));
+            share *= (1.0 - ratio * ratio).clamp(0.0, 1.0) / squared.max(f64::MIN_POSITIVE);
+        }
+        if let Some((axis, inner, outer)) = place.cone {
+            let cos = -math::V3::from_array(axis).dot(l);
+            let t = ((cos - outer.cos()) / (inner.cos() - outer.cos()).max(0.001)).clamp(0.0, 1.0);
+            share *= t * t;
+        }
+        (l.to_array(), share)
     }
 }
 

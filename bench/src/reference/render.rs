@@ -582,8 +582,13 @@ impl<'a> Renderer<'a> {
     fn light(&self, albedo: V3, n: V3, world: V3, material: &super::ReferenceMaterial) -> V3 {
         let lighting = &self.scene.lighting;
         let mut diffuse = V3::from_array(lighting.ambient);
+        let toward = |light: &super::ReferenceLight| {
+            let (l, share) = light.toward(world.to_array());
+            (V3::from_array(l), share)
+        };
         for light in &lighting.lights {
-            diffuse += V3::from_array(light.color) * n.dot(V3::from_array(light.to_light)).max(0.0);
+            let (l, share) = toward(light);
+            diffuse += V3::from_array(light.color) * (n.dot(l).max(0.0) * share);
         }
         let lit = albedo.mul_elem(diffuse);
         let specular_color = V3::from_array(material.specular);
@@ -593,10 +598,10 @@ impl<'a> Renderer<'a> {
         let to_eye = (self.eye - world).normalize_or_zero();
         let mut specular = V3::ZERO;
         for light in &lighting.lights {
-            let l = V3::from_array(light.to_light);
+            let (l, share) = toward(light);
             if n.dot(l) > 0.0 {
                 let h = (l + to_eye).normalize_or_zero();
-                specular += V3::from_array(light.color) * n.dot(h).max(0.0).powf(material.shininess);
+                specular += V3::from_array(light.color) * (n.dot(h).max(0.0).powf(material.shininess) * share);
             }
         }
         lit + specular_color.mul_elem(specular)

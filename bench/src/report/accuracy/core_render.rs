@@ -9,7 +9,7 @@ use rastty_core::math::{Mat4, Vec2, Vec3, Vec4};
 use rastty_core::mesh::{Indices, Mesh, MeshError};
 use rastty_core::pipeline::DrawState;
 use rastty_core::shading::{
-    Light, LightKind, Lighting, Material, Object, ShadingError, ShadingModel, Transforms, draw_mesh,
+    Cone, Falloff, Light, LightKind, Lighting, Material, Object, ShadingError, ShadingModel, Transforms, draw_mesh,
 };
 use rastty_core::target::{
     ColorBuffer, DepthBuffer, Rgb888, Samples, Target, TargetError, downsample_rgb888, resolve_rgb888,
@@ -17,7 +17,7 @@ use rastty_core::target::{
 use rastty_core::texture::{MipContent, MipFilter};
 
 use super::settings::{DepthFormat, LitShading, Setting};
-use crate::reference::{self, ReferenceProjection, ReferenceScene, Shading};
+use crate::reference::{self, ReferenceLight, ReferenceProjection, ReferenceScene, Shading};
 
 /// Why a scene could not be drawn.
 #[derive(Debug)]
@@ -30,6 +30,22 @@ pub enum CoreRenderError {
     Draw(ShadingError),
     /// The image size is not usable.
     Target(TargetError),
+}
+
+/// A reference light as the core takes it.
+fn core_kind(light: &ReferenceLight) -> LightKind {
+    let Some(place) = &light.place else { return LightKind::Directional { to_light: narrow(light.to_light) } };
+    let position = narrow(place.position);
+    let falloff = match place.inverse_square {
+        None => Falloff::None,
+        Some(range) => Falloff::inverse_square(range.map(|r| r as f32)),
+    };
+    match place.cone {
+        None => LightKind::Point { position, falloff },
+        Some((axis, inner, outer)) => {
+            LightKind::Spot { position, falloff, cone: Cone::new(narrow(axis), inner as f32, outer as f32) }
+        }
+    }
 }
 
 impl std::fmt::Display for CoreRenderError {
@@ -115,11 +131,7 @@ impl<'a> CoreScene<'a> {
             .lights
             .iter()
             // As given (the reference's lights are unit already): not normalised again in `f32`.
-            .map(|l| Light {
-                kind: LightKind::Directional { to_light: narrow(l.to_light) },
-                color: narrow(l.color),
-                shadow: None,
-            })
+            .map(|l| Light { kind: core_kind(l), color: narrow(l.color), shadow: None })
             .collect();
         let encoded_lights =
             lights.iter().map(|l| Light { color: in_space(l.color, ShadingSpace::Encoded), ..*l }).collect();
