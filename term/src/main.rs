@@ -39,8 +39,7 @@ use rastty::graphics::frame_palette::Dither;
 use rastty::screen::{CellMode, ColorMode};
 use rastty_core::math::Vec3;
 use rastty_scene::escaped::Escaped;
-use rastty_scene::input_file::recording_reads;
-use rastty_scene::input_file::{parse_byte_size, set_max_file_bytes};
+use rastty_scene::input_file::{parse_byte_size, recording_reads, set_max_file_bytes};
 use rastty_scene::model::{ModelLens, ModelLightKind, ModelOptions, RigListing};
 use rastty_scene::png_file::write_png;
 use rastty_scene::scene_file::{SceneData, open, parse_hex_color};
@@ -75,8 +74,8 @@ struct ViewerArgs {
     #[command(flatten)]
     scene: SceneArgs,
     /// How cells show pixels: `half` (2 pixels a cell, ▀), `quadrant` (2x2), `sextant` (2x3, needs a font with
-    /// Unicode 13's sextants), `octant` (2x4 blocks, needs a terminal and font that know Unicode 16's octants), `braille` (2x4 dots)
-    /// or `ascii` (a character ramp, one pixel a cell).
+    /// Unicode 13's sextants), `octant` (2x4 blocks, needs a terminal and font that know Unicode 16's octants),
+    /// `braille` (2x4 dots) or `ascii` (a character ramp, one pixel a cell).
     #[arg(long, default_value = "half", value_parser = CellMode::from_str)]
     mode: CellMode,
     /// How the picture reaches the terminal: `auto` (asks the terminal: kitty, then iTerm2, then Sixel, else

@@ -43,18 +43,21 @@ fn to_light(light: &SceneLight, view: &DMat4) -> Option<[f64; 3]> {
     Some(match light.space {
         LightSpace::World => toward,
         LightSpace::Camera => {
-            // Row r of the view's rotation is the camera's axis r in world coordinates: the columns of its
-            // transpose, which takes camera coordinates to the world.
-            let to_world = [0, 1, 2].map(|r| V3::new(view[0][r], view[1][r], view[2][r]));
-            math::apply3(&to_world, V3::from_array(toward)).normalize_or_zero().to_array()
+            math::apply3(&camera_to_world(view), V3::from_array(toward)).normalize_or_zero().to_array()
         }
     })
+}
+
+/// The rotation that takes camera coordinates to the world: row r of `view`'s rotation is the camera's axis r in
+/// world coordinates, so these are the columns of its transpose.
+fn camera_to_world(view: &DMat4) -> [V3; 3] {
+    [0, 1, 2].map(|r| V3::new(view[0][r], view[1][r], view[2][r]))
 }
 
 /// Where a point or spot light is, in `f64`, as rastty's `core_light` places it: a light in camera space moved by
 /// the eye and turned into the world by the transpose of `view`'s rotation. `None` for a directional light.
 fn place(light: &SceneLight, view: &DMat4, camera: &Camera) -> Option<ReferencePlace> {
-    let to_world = [0, 1, 2].map(|r| V3::new(view[0][r], view[1][r], view[2][r]));
+    let to_world = camera_to_world(view);
     let (position, axis, falloff, cone) = match light.kind {
         SceneLightKind::Directional { .. } => return None,
         SceneLightKind::Point { position, falloff } => (position, None, falloff, None),

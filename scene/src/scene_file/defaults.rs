@@ -11,6 +11,10 @@ pub const BACKGROUND: Vec3 = Vec3::new(22.0 / 255.0, 25.0 / 255.0, 31.0 / 255.0)
 pub const AMBIENT: Vec3 = Vec3::new(0.14, 0.14, 0.16);
 /// The specular colour of a material that gives none.
 pub const SPECULAR: Vec3 = Vec3::new(0.22, 0.22, 0.22);
+/// A spot light's inner cone angle when its table gives none, in degrees (`KHR_lights_punctual`'s default).
+pub const SPOT_INNER_DEGREES: f32 = 0.0;
+/// A spot light's outer cone angle when its table gives none, in degrees (`KHR_lights_punctual`'s pi / 4).
+pub const SPOT_OUTER_DEGREES: f32 = 45.0;
 /// The Blinn-Phong exponent of a material that gives none.
 pub const SHININESS: f32 = 28.0;
 

@@ -106,15 +106,13 @@ fn camera(c: &CameraSpec) -> CameraPlacement {
 
 fn light(l: &LightSpec) -> SceneLight {
     let kind = match l.kind.get_ref() {
-        LightType::Directional => SceneLightKind::Directional {
-            direction: l.direction.as_ref().and_then(|d| unit(*d.get_ref())).unwrap_or(-Vec3::Y),
-        },
+        LightType::Directional => SceneLightKind::Directional { direction: direction(l) },
         LightType::Point => SceneLightKind::Point { position: vec3_or(&l.position, Vec3::ZERO), falloff: falloff(l) },
         LightType::Spot => SceneLightKind::Spot {
             position: vec3_or(&l.position, Vec3::ZERO),
-            direction: l.direction.as_ref().and_then(|d| unit(*d.get_ref())).unwrap_or(-Vec3::Y),
-            inner: l.inner_angle.as_ref().map_or(0.0, |a| a.get_ref().to_radians()),
-            outer: l.outer_angle.as_ref().map_or(core::f32::consts::FRAC_PI_4, |a| a.get_ref().to_radians()),
+            direction: direction(l),
+            inner: l.inner_angle.as_ref().map_or(defaults::SPOT_INNER_DEGREES, |a| *a.get_ref()).to_radians(),
+            outer: l.outer_angle.as_ref().map_or(defaults::SPOT_OUTER_DEGREES, |a| *a.get_ref()).to_radians(),
             falloff: falloff(l),
         },
     };
@@ -125,6 +123,11 @@ fn light(l: &LightSpec) -> SceneLight {
         shadows: l.shadows,
         space: l.space,
     }
+}
+
+/// A directional or spot light's unit direction of travel (checked: given and not zero).
+fn direction(l: &LightSpec) -> Vec3 {
+    l.direction.as_ref().and_then(|d| unit(*d.get_ref())).unwrap_or(-Vec3::Y)
 }
 
 /// A point or spot light's fall-off, as its keys give it (checked: a range only with the inverse square).

@@ -305,7 +305,7 @@ fn light(c: &Checker<'_>, spec: &Spanned<LightSpec>, key: &str) -> Result<(), Sc
 
 /// A spot's angles in degrees: the inner from 0 and below the outer, the outer at most 90 (as glTF allows them).
 fn spot_angles(c: &Checker<'_>, l: &LightSpec, key: &str) -> Result<(), SceneFileError> {
-    let inner = l.inner_angle.as_ref().map_or(0.0, |a| *a.get_ref());
+    let inner = l.inner_angle.as_ref().map_or(super::defaults::SPOT_INNER_DEGREES, |a| *a.get_ref());
     if let Some(outer) = &l.outer_angle {
         let v = *outer.get_ref();
         if !(v > 0.0 && v <= 90.0) {
@@ -313,7 +313,7 @@ fn spot_angles(c: &Checker<'_>, l: &LightSpec, key: &str) -> Result<(), SceneFil
             return Err(c.invalid(&outer.span(), format!("{key}.outer_angle"), message));
         }
     }
-    let outer = l.outer_angle.as_ref().map_or(45.0, |a| *a.get_ref());
+    let outer = l.outer_angle.as_ref().map_or(super::defaults::SPOT_OUTER_DEGREES, |a| *a.get_ref());
     if let Some(given) = &l.inner_angle {
         if !(inner >= 0.0 && inner < outer) {
             let message =

@@ -258,8 +258,7 @@ pub fn run(files: Files<'_>, options: &ViewerOptions) -> Result<ViewerExit, View
     let unit = rastty_core::math::BoundingSphere { centre: Vec3::ZERO, radius: 1.0 };
     let orbit = Orbit::framed(&rastty_scene::scene_file::FramedCamera::DEFAULT, &unit);
     let mut viewer = Viewer {
-        scene: None,
-        page: None,
+        scene: Err(String::new()),
         paths,
         index: 0,
         load,
@@ -347,10 +346,8 @@ impl FrameClock {
 }
 
 struct Viewer<'a> {
-    /// The scene shown; `None` on the page of a file that cannot be shown.
-    scene: Option<PreparedScene>,
-    /// Why the file shown cannot be shown (its page).
-    page: Option<String>,
+    /// The scene shown, or why the file shown cannot be shown (its page).
+    scene: Result<PreparedScene, String>,
     /// The files stepped through (`None`: the built-in model).
     paths: Vec<Option<PathBuf>>,
     /// The one shown.
@@ -576,17 +573,15 @@ impl Viewer<'_> {
             if self.paths.len() == 1 {
                 return Err(e);
             }
-            self.scene = None;
-            self.page = Some(e.to_string());
+            self.scene = Err(e.to_string());
         }
-        let Some(_) = &self.scene else {
-            let page = self.page.as_deref().unwrap_or("");
+        if let Err(page) = &self.scene {
             // The message names the file already.
             let text = format!("{}/{}: {page}", self.index + 1, self.paths.len());
             let mut grid = overlay::notice(usize::from(cols), usize::from(rows), &text);
             self.draw_text(&mut grid, written);
             return Ok(Frame { grid, image: None });
-        };
+        }
         let (width, height, _) = self.render_size();
         let (mut grid, image) = if self.graphics == GraphicsProtocol::Cells {
             let background = rastty_core::color::pack_rgb888(self.background);
@@ -609,7 +604,7 @@ impl Viewer<'_> {
 
     /// Draws the scene into the canvas at the size the terminal takes ([`Self::render_size`]).
     fn draw(&mut self) -> Result<(), ViewerError> {
-        let Some(scene) = &self.scene else { return Ok(()) };
+        let Ok(scene) = &self.scene else { return Ok(()) };
         let (width, height, aspect) = self.render_size();
         let n = width * height;
         self.canvas.pixels.resize(n, 0);
@@ -657,6 +652,14 @@ impl Viewer<'_> {
         }
     }
 
+    /// [`Self::place`], and how many warnings loading the file gave with the first of them.
+    fn place_and_warnings(&self) -> String {
+        match self.warnings.len() {
+            0 => self.place(),
+            n => format!("{}   {n} warning{}: {}", self.place(), if n == 1 { "" } else { "s" }, self.warnings[0]),
+        }
+    }
+
     /// Shows what `loaded` gives as `how` says: the scene, or the page of why it cannot be shown; and follows
     /// the files it read (`--watch`).
     fn show(&mut self, loaded: Loaded, how: ShowAs) {
@@ -685,25 +688,19 @@ impl Viewer<'_> {
                 }
                 self.name = shown.name;
                 self.warnings = shown.warnings;
-                self.scene = Some(shown.scene);
-                self.page = None;
+                self.scene = Ok(shown.scene);
             }
             Err(why) => {
                 self.animations = Vec::new();
                 self.state.show(self.state.orbit, self.state.options, None);
                 self.name = path_name(&self.paths[self.index]);
                 self.warnings = Vec::new();
-                self.scene = None;
-                self.page = Some(why);
+                self.scene = Err(why);
             }
         }
-        let warned = match self.warnings.len() {
-            0 => String::new(),
-            n => format!("   {n} warning{}: {}", if n == 1 { "" } else { "s" }, self.warnings[0]),
-        };
         let said = match how {
-            ShowAs::Reload => Some(format!("loaded again: {}{warned}", self.place())),
-            _ if self.paths.len() > 1 => Some(format!("{}{warned}", self.place())),
+            ShowAs::Reload => Some(format!("loaded again: {}", self.place_and_warnings())),
+            _ if self.paths.len() > 1 => Some(self.place_and_warnings()),
             _ => None,
         };
         self.notice = said.map(|text| (text, Instant::now() + NOTICE_TIME)).or(self.notice.take());
@@ -717,7 +714,7 @@ impl Viewer<'_> {
         self.retry_at = None;
         let loaded = (self.load)(self.paths[self.index].as_deref());
         match &loaded.shown {
-            Err(why) if self.scene.is_some() => {
+            Err(why) if self.scene.is_ok() => {
                 if let Some(watch) = &mut self.watch {
                     watch.follow(&loaded.read);
                 }
@@ -749,9 +746,6 @@ impl Viewer<'_> {
 
     /// Saves the view as a PNG file (`c`) and sets the notice that says where, or why not.
     fn capture(&mut self) {
-        if self.scene.is_none() {
-            return;
-        }
         let size = capture_size(self.capture_size, self.size_in_pixels, self.size, self.cell_aspect);
         let text = match self.save_capture(size) {
             Ok(path) => format!("saved {} ({}x{})", path_text(&path), size.0, size.1),
@@ -762,7 +756,7 @@ impl Viewer<'_> {
 
     /// Renders the view at `size` and writes it to a new file in the current directory ([`save_new`]).
     fn save_capture(&mut self, size: (u32, u32)) -> Result<PathBuf, String> {
-        let Some(scene) = &self.scene else { return Err("nothing shown".to_owned()) };
+        let Ok(scene) = &self.scene else { return Err("nothing shown".to_owned()) };
         let camera = self.state.orbit.camera;
         let image = render_scene_image_with(&mut self.renderer, scene, &camera, size, 1, &self.state.options)
             .map_err(|e| e.to_string())?;
@@ -779,7 +773,7 @@ impl Viewer<'_> {
             return Ok(());
         }
         let start = Instant::now();
-        let Some(scene) = &mut self.scene else { return Ok(()) };
+        let Ok(scene) = &mut self.scene else { return Ok(()) };
         scene.pose(Some(p.animation), p.time).map_err(|e| ViewerError::Scene(self.name.clone(), e))?;
         self.pose_time = start.elapsed();
         self.posed = Some((p.animation, p.time));
@@ -793,10 +787,7 @@ impl Viewer<'_> {
         let lens = if self.state.orbit.is_orthographic() { "ortho" } else { "perspective" };
         let mode = a.shading.name();
         let mut lines = vec![
-            match self.warnings.len() {
-                0 => self.place(),
-                n => format!("{}   {n} warning{}: {}", self.place(), if n == 1 { "" } else { "s" }, self.warnings[0]),
-            },
+            self.place_and_warnings(),
             format!(
                 "{} fps   render {:.2} ms   encode {:.2} ms",
                 self.frame_times.fps().map_or("-".into(), |f| format!("{f:.0}")),
