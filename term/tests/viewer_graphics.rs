@@ -7,6 +7,7 @@ use std::time::{Duration, Instant};
 
 use base64::Engine;
 use rastty::graphics::{GraphicsProtocol, MAX_IMAGE_PIXELS, MIN_IMAGE_PIXELS, image_size, moving_image_cap};
+use rastty::screen::image_placeholder::{DIACRITICS, PLACEHOLDER};
 
 use crate::common::pty::{Pty, Screen, Viewer};
 use crate::common::tmux::{SESSION, Tmux, tmux_wanted};
@@ -239,16 +240,32 @@ impl Drop for TmuxClientProcess {
     }
 }
 
-/// A private tmux server whose window is split in two, the viewer (`rastty ARGS...`, waiting for
-/// [`Tmux::go`]) in the right pane, with pass-through `allowed` or not, and a client attached on a 100 x 30
-/// pseudo-terminal of the test's own that tells tmux it is kitty (XTVERSION). Returns tmux, the client, the
-/// screen of the terminal outside tmux, and the viewer's pane's first column on that terminal.
-fn kitty_outside_tmux(test: &str, allowed: bool, args: &[&str]) -> (Tmux, TmuxClientProcess, Screen, u16) {
+/// The terminal names a test's terminal gives tmux (XTVERSION): kitty, which shows Unicode placeholders, and
+/// WezTerm, which speaks kitty's graphics protocol without them.
+const KITTY: &str = "kitty(0.35.2)";
+const WEZTERM: &str = "WezTerm 20240203-110809-5046fc22";
+
+/// The size of the test's terminal outside tmux: two panes of 50 columns and the border between them, over the
+/// status line.
+const OUTSIDE: (u16, u16) = (101, 30);
+
+/// A private tmux server whose window is split in two panes of equal size, the viewer (`rastty ARGS...`, waiting
+/// for [`Tmux::go`]) in the right one (`%0`) and a resting program in the left (`%1`), with pass-through `allowed`
+/// or not, and a client attached on a pseudo-terminal of the test's own ([`OUTSIDE`]) that tells tmux it is
+/// `terminal` (XTVERSION). Returns tmux, the client, the screen of the terminal outside tmux, and the viewer's
+/// pane's first column on that terminal.
+fn kitty_outside_tmux(
+    test: &str,
+    terminal: &str,
+    allowed: bool,
+    args: &[&str],
+) -> (Tmux, TmuxClientProcess, Screen, u16) {
     let args: Vec<&std::ffi::OsStr> = args.iter().map(std::ffi::OsStr::new).collect();
-    let tmux = Tmux::prepare(test, 100, 30, std::path::Path::new(env!("CARGO_BIN_EXE_rastty")), &args);
+    let (cols, rows) = OUTSIDE;
+    let tmux = Tmux::prepare(test, cols, rows, std::path::Path::new(env!("CARGO_BIN_EXE_rastty")), &args);
     tmux.run(&["set", "-g", "allow-passthrough", if allowed { "on" } else { "off" }]);
-    tmux.run(&["split-window", "-h", "-b", "-d", "-l", "20", "-t", SESSION, "sleep 60"]);
-    let Pty { master, slave } = Pty::open(100, 30);
+    tmux.run(&["split-window", "-h", "-b", "-d", "-l", "50", "-t", SESSION, "sleep 60"]);
+    let Pty { master, slave } = Pty::open(cols, rows);
     let stdio = || std::process::Stdio::from(slave.try_clone().expect("dup the slave"));
     let client = tmux
         .command()
@@ -263,15 +280,15 @@ fn kitty_outside_tmux(test: &str, allowed: bool, args: &[&str]) -> (Tmux, TmuxCl
     drop(slave);
     let screen = Screen::start(master);
     screen.wait_for("tmux's XTVERSION query", |out| out.windows(4).any(|w| w == b"\x1b[>q"));
-    screen.type_bytes(b"\x1bP>|kitty(0.35.2)\x1b\\");
+    screen.type_bytes(format!("\x1bP>|{terminal}\x1b\\").as_bytes());
     let name = tmux.wait_for("tmux to know the terminal", || {
         let name = tmux.run(&["display-message", "-p", "-t", SESSION, "#{client_termtype}"]);
-        (name.trim() == "kitty(0.35.2)").then_some(name)
+        (name.trim() == terminal).then_some(name)
     });
-    assert_eq!(name.trim(), "kitty(0.35.2)");
+    assert_eq!(name.trim(), terminal);
     let left = tmux.run(&["display-message", "-p", "-t", "%0", "#{pane_left}"]);
     let left: u16 = left.trim().parse().expect("the viewer's pane's column");
-    assert!(left > 0, "the viewer's pane is the right one");
+    assert_eq!(left, 51, "the viewer's pane is the right one");
     tmux.go();
     (tmux, client, screen, left)
 }
@@ -286,7 +303,7 @@ fn inside_tmux_kitty_images_pass_through_to_the_pane_on_the_terminal() {
     if !tmux_wanted() {
         return;
     }
-    let (tmux, _client, mut screen, left) = kitty_outside_tmux("kitty-pass", true, &[]);
+    let (tmux, _client, mut screen, left) = kitty_outside_tmux("kitty-pass", WEZTERM, true, &[]);
     // tmux unwraps the image and writes it to the terminal, placed at the pane's top-left cell.
     let placed = format!("\x1b[1;{}H\x1b_Ga=T,", left + 1);
     screen.wait_for("a kitty image at the pane", |out| out.windows(placed.len()).any(|w| w == placed.as_bytes()));
@@ -316,7 +333,8 @@ fn inside_tmux_kitty_images_pass_through_to_the_pane_on_the_terminal() {
     assert!(colours(rgb.chunks_exact(3).map(|c| [c[0], c[1], c[2]])) > 20);
     tmux.run(&["select-pane", "-t", "%0"]);
     tmux.send_keys("i");
-    tmux.wait_for("the HUD", || pane(&tmux).contains("kitty (auto)").then_some(()));
+    // The HUD over the image (its line naming the protocol is cut at the pane's 50 columns).
+    tmux.wait_for("the HUD", || pane(&tmux).contains("cell aspect").then_some(()));
     tmux.send_keys("q");
     let (status, _) = tmux.wait_for_exit();
     assert_eq!(status, 0, "exit status after q");
@@ -325,12 +343,108 @@ fn inside_tmux_kitty_images_pass_through_to_the_pane_on_the_terminal() {
     screen.close();
 }
 
+/// How many kitty images for placeholders (`a=T,U=1`) `out` holds the start of.
+fn images_sent(out: &[u8]) -> usize {
+    const START: &[u8] = b"\x1b_Ga=T,U=1,";
+    out.windows(START.len()).filter(|w| *w == START).count()
+}
+
+/// A placeholder cell on the terminal: its place (row, column), the image it names (its foreground colour) and
+/// the piece of the image it shows (row, column, from its marks).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Placeholder {
+    at: (u16, u16),
+    image: u8,
+    piece: (usize, usize),
+}
+
+/// The placeholder cells the terminal shows after `out`, as the terminal emulator of the `vt100` crate reads
+/// tmux's output, row by row; a placeholder without marks is the piece after the one to its left, if that is a
+/// placeholder of the same image (kitty's rule).
+fn placeholders(out: &[u8]) -> Vec<Placeholder> {
+    let (cols, rows) = OUTSIDE;
+    let dim = |n| std::num::NonZeroU16::new(n).expect("a terminal of some size");
+    let mut terminal = vt100::Parser::new(dim(rows), dim(cols), 0);
+    terminal.process(out);
+    let mut found = Vec::new();
+    for row in 0..rows {
+        for col in 0..cols {
+            let Some(cell) = terminal.screen().cell(row, col) else { continue };
+            let mut chars = cell.contents().chars();
+            if chars.next() != Some(PLACEHOLDER) {
+                continue;
+            }
+            let mut mark = || chars.next().and_then(|c| DIACRITICS.iter().position(|&d| d == c));
+            let marks = (mark(), mark());
+            let image = match cell.fgcolor() {
+                vt100::Color::Idx(n) => n,
+                _ => 0,
+            };
+            let left = found.last().filter(|p: &&Placeholder| p.at == (row, col.wrapping_sub(1)) && p.image == image);
+            let piece = match (marks, left) {
+                ((Some(piece_row), Some(piece_col)), _) => (piece_row, piece_col),
+                ((None, _), Some(left)) => (left.piece.0, left.piece.1 + 1),
+                _ => continue,
+            };
+            found.push(Placeholder { at: (row, col), image, piece });
+        }
+    }
+    found
+}
+
+/// The placeholders of image `image` over a pane of `width` x `height` cells whose first column is `left`.
+fn over_pane(image: u8, left: u16, (width, height): (u16, u16)) -> Vec<Placeholder> {
+    (0..height)
+        .flat_map(|row| (0..width).map(move |col| (row, col)))
+        .map(|(row, col)| Placeholder { at: (row, left + col), image, piece: (usize::from(row), usize::from(col)) })
+        .collect()
+}
+
+#[test]
+fn inside_tmux_kitty_images_are_shown_by_placeholders_that_follow_their_pane() {
+    if !tmux_wanted() {
+        return;
+    }
+    let (tmux, _client, mut screen, left) = kitty_outside_tmux("kitty-placeholders", KITTY, true, &[]);
+    let size = tmux.run(&["display-message", "-p", "-t", "%0", "#{pane_width} #{pane_height}"]);
+    let (width, height) = size.trim().split_once(' ').expect("width height");
+    let pane: (u16, u16) = (width.parse().unwrap(), height.parse().unwrap());
+    // Pane %0's image is 16 + 0.
+    let image = 16;
+    screen.wait_for("placeholders over the viewer's pane", |out| placeholders(out) == over_pane(image, left, pane));
+    let text = String::from_utf8_lossy(&screen.output()).into_owned();
+    let (keys, rgb) = kitty_image(&text[text.rfind("\x1b_Ga=T,U=1,").expect("an image")..]);
+    let sized = format!(",i={image},c={},r={},q=2,", pane.0, pane.1);
+    assert!(keys.starts_with("a=T,U=1,f=24,o=z,") && keys.contains(&sized), "{keys}");
+    assert!(colours(rgb.chunks_exact(3).map(|c| [c[0], c[1], c[2]])) > 20);
+    let sent = images_sent(&screen.output());
+
+    // Another window: tmux draws it instead, and with the placeholders the image goes.
+    tmux.run(&["new-window", "-t", SESSION, "sleep 60"]);
+    screen.wait_for("the other window", |out| placeholders(out).is_empty());
+    // Back: tmux draws the pane's text again, and with it the image, which the viewer did not send again.
+    tmux.run(&["select-window", "-t", &format!("{SESSION}0")]);
+    screen.wait_for("the viewer's window again", |out| placeholders(out) == over_pane(image, left, pane));
+    // The panes change places: the image moves with the text.
+    tmux.run(&["swap-pane", "-d", "-s", "%0", "-t", "%1"]);
+    screen.wait_for("the image in the pane's new place", |out| placeholders(out) == over_pane(image, 0, pane));
+    assert_eq!(images_sent(&screen.output()), sent, "the image was sent again");
+
+    tmux.run(&["select-pane", "-t", "%0"]);
+    tmux.send_keys("q");
+    let (status, _) = tmux.wait_for_exit();
+    assert_eq!(status, 0, "exit status after q");
+    let delete = format!("\x1b_Ga=d,d=I,i={image},q=2\x1b\\");
+    screen.wait_for("the image deleted", |out| out.windows(delete.len()).any(|w| w == delete.as_bytes()));
+    screen.close();
+}
+
 #[test]
 fn inside_tmux_without_pass_through_auto_draws_cells_and_kitty_says_how_to_allow_it() {
     if !tmux_wanted() {
         return;
     }
-    let (tmux, _client, mut screen, _) = kitty_outside_tmux("kitty-closed", false, &[]);
+    let (tmux, _client, mut screen, _) = kitty_outside_tmux("kitty-closed", KITTY, false, &[]);
     tmux.run(&["select-pane", "-t", "%0"]);
     tmux.wait_for("a picture of cells", || pane(&tmux).contains('▀').then_some(()));
     tmux.send_keys("q");
@@ -339,7 +453,7 @@ fn inside_tmux_without_pass_through_auto_draws_cells_and_kitty_says_how_to_allow
     screen.close();
     drop(tmux);
 
-    let (tmux, _client, mut screen, _) = kitty_outside_tmux("kitty-refused", false, &["--graphics", "kitty"]);
+    let (tmux, _client, mut screen, _) = kitty_outside_tmux("kitty-refused", KITTY, false, &["--graphics", "kitty"]);
     let (status, _) = tmux.wait_for_exit();
     assert_eq!(status, 1, "exit status of a kitty image that cannot pass");
     let shown = pane(&tmux);
@@ -354,9 +468,8 @@ fn killing_the_tmux_session_ends_a_viewer_of_kitty_images_within_a_second() {
     }
     for turntable in [false, true] {
         let test = if turntable { "kitty-kill-turning" } else { "kitty-kill-idle" };
-        let (tmux, _client, mut screen, left) = kitty_outside_tmux(test, true, &[]);
-        let placed = format!("\x1b[1;{}H\x1b_Ga=T,", left + 1);
-        screen.wait_for("a kitty image at the pane", |out| out.windows(placed.len()).any(|w| w == placed.as_bytes()));
+        let (tmux, _client, mut screen, _) = kitty_outside_tmux(test, KITTY, true, &[]);
+        screen.wait_for("a kitty image for placeholders", |out| images_sent(out) > 0);
         let pid = tmux.program_pid();
         if turntable {
             tmux.run(&["select-pane", "-t", "%0"]);

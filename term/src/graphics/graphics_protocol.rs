@@ -9,7 +9,8 @@ use super::passthrough::Passthrough;
 use super::{iterm2, kitty, sixel};
 use crate::screen::PixelFrame;
 
-/// The image id the viewer shows its frames under (kitty).
+/// The image id the viewer shows its frames under (kitty), unless they are shown by placeholders
+/// ([`Passthrough::TmuxPlaceholders`], which names its own).
 pub const IMAGE_ID: u32 = 1;
 
 /// The way the picture reaches the terminal.
@@ -39,7 +40,8 @@ pub struct FrameImage {
     pub columns: u16,
     /// Rows covered.
     pub rows: u16,
-    /// Directly to the terminal, or through tmux (kitty and iTerm2 only: tmux draws Sixel itself, when it can).
+    /// Directly to the terminal, or through tmux (kitty and iTerm2 only: tmux draws Sixel itself, when it can; by
+    /// placeholders, kitty only).
     pub passthrough: Passthrough,
 }
 
@@ -89,22 +91,26 @@ impl GraphicsProtocol {
     }
 
     /// Appends the bytes that show `image` from the top-left cell (nothing for [`GraphicsProtocol::Cells`]);
-    /// `dither` is how a Sixel frame maps to its palette.
+    /// `dither` is how a Sixel frame maps to its palette. A kitty image shown by placeholders is sent without a
+    /// place: the grid's [placeholder cells](crate::screen::image_placeholder) show it.
     pub fn write_image(self, out: &mut Vec<u8>, image: &FrameImage, dither: Dither) {
         let frame = PixelFrame::new(&image.pixels, image.width, image.height);
-        let (column, row) = image.passthrough.origin();
-        image.passthrough.write_with(out, |bytes| match self {
-            GraphicsProtocol::Cells => {}
-            GraphicsProtocol::Kitty => {
+        let (column, row) = image.passthrough.origin().unwrap_or((0, 0));
+        image.passthrough.write_with(out, |bytes| match (self, image.passthrough) {
+            (GraphicsProtocol::Cells, _) => {}
+            (GraphicsProtocol::Kitty, Passthrough::TmuxPlaceholders { image_id }) => {
+                kitty::write_virtual_frame(bytes, frame, image_id.into(), image.columns, image.rows);
+            }
+            (GraphicsProtocol::Kitty, _) => {
                 let placement =
                     kitty::KittyPlacement { image_id: IMAGE_ID, column, row, columns: image.columns, rows: image.rows };
                 kitty::write_frame(bytes, frame, &placement);
             }
-            GraphicsProtocol::Sixel => {
+            (GraphicsProtocol::Sixel, _) => {
                 write_cursor_move(bytes, column, row);
                 sixel::write_image(bytes, &reduce(frame, 256, dither, Learning::Quick));
             }
-            GraphicsProtocol::Iterm2 => {
+            (GraphicsProtocol::Iterm2, _) => {
                 write_cursor_move(bytes, column, row);
                 iterm2::write_image(bytes, frame, image.columns, image.rows);
             }
@@ -119,12 +125,9 @@ impl GraphicsProtocol {
 
     /// Appends the bytes that show again, from the top-left cell, the image last sent with [`Self::write_image`]
     /// (kitty: a placement of the image the terminal holds); nothing for a protocol that does not
-    /// [keep images](Self::keeps_images).
+    /// [keep images](Self::keeps_images), nor for an image shown by placeholders, which show it again themselves.
     pub fn write_placement(self, out: &mut Vec<u8>, image: &FrameImage) {
-        if !self.keeps_images() {
-            return;
-        }
-        let (column, row) = image.passthrough.origin();
+        let Some((column, row)) = image.passthrough.origin().filter(|_| self.keeps_images()) else { return };
         image.passthrough.write_with(out, |bytes| {
             let placement =
                 kitty::KittyPlacement { image_id: IMAGE_ID, column, row, columns: image.columns, rows: image.rows };
@@ -136,7 +139,11 @@ impl GraphicsProtocol {
     /// deleted; the others keep nothing once the screen is cleared), through `passthrough`.
     pub fn write_end(self, out: &mut Vec<u8>, passthrough: Passthrough) {
         if self == GraphicsProtocol::Kitty {
-            passthrough.write_with(out, |bytes| kitty::write_delete(bytes, IMAGE_ID));
+            let image_id = match passthrough {
+                Passthrough::TmuxPlaceholders { image_id } => image_id.into(),
+                Passthrough::Direct | Passthrough::Tmux { .. } => IMAGE_ID,
+            };
+            passthrough.write_with(out, |bytes| kitty::write_delete(bytes, image_id));
         }
     }
 }
@@ -212,5 +219,25 @@ mod tests {
         out.clear();
         GraphicsProtocol::Kitty.write_image(&mut out, &image, Dither::None);
         assert!(out.starts_with(b"\x1bPtmux;\x1b\x1b[2;41H\x1b\x1b_Ga=T,"));
+    }
+
+    #[test]
+    fn a_kitty_image_by_placeholders_has_no_place_and_its_own_id() {
+        let image = FrameImage {
+            pixels: vec![0x00FF00; 12],
+            width: 4,
+            height: 3,
+            columns: 2,
+            rows: 1,
+            passthrough: Passthrough::TmuxPlaceholders { image_id: 42 },
+        };
+        let mut out = Vec::new();
+        GraphicsProtocol::Kitty.write_image(&mut out, &image, Dither::None);
+        assert!(out.starts_with(b"\x1bPtmux;\x1b\x1b_Ga=T,U=1,f=24,o=z,s=4,v=3,i=42,c=2,r=1,q=2,m=0;"), "{out:?}");
+        out.clear();
+        GraphicsProtocol::Kitty.write_placement(&mut out, &image);
+        assert!(out.is_empty(), "the placeholders show the held image again");
+        GraphicsProtocol::Kitty.write_end(&mut out, image.passthrough);
+        assert_eq!(out, b"\x1bPtmux;\x1b\x1b_Ga=d,d=I,i=42,q=2\x1b\x1b\\\x1b\\");
     }
 }

@@ -9,7 +9,8 @@
 //! cursor where it was (`C=1`) and lies under the text (`z=-1`), so the HUD and help drawn as cells stay on top;
 //! `q=2` asks the terminal not to answer, so no reply arrives among the keys. [`write_placement`] shows the image
 //! the terminal holds again without sending it (`a=p`), and [`write_delete`] removes the image and frees its memory
-//! (`a=d,d=I`).
+//! (`a=d,d=I`). Inside tmux, [`write_virtual_frame`] sends a frame to be shown by Unicode placeholders instead
+//! ([`crate::screen::image_placeholder`]).
 
 use std::io::Write;
 
@@ -47,6 +48,34 @@ pub fn write_frame(out: &mut Vec<u8>, frame: PixelFrame<'_>, placement: &KittyPl
     if frame.pixels().is_empty() {
         return;
     }
+    // Cursor position (CUP) is 1-based.
+    let _ = write!(out, "\x1b[{};{}H", u32::from(placement.row) + 1, u32::from(placement.column) + 1);
+    let keys = format!(
+        "a=T,f=24,o=z,s={},v={},i={},p={PLACEMENT_ID},c={},r={},C=1,z=-1,q=2,",
+        frame.width(),
+        frame.height(),
+        placement.image_id,
+        placement.columns,
+        placement.rows
+    );
+    write_chunks(out, frame, &keys);
+}
+
+/// Appends to `out` the escape sequences that send `frame` as image `image_id` with a virtual placement of
+/// `columns` x `rows` cells (`U=1`), for Unicode placeholders to show
+/// ([`crate::screen::image_placeholder`]); it replaces the image sent under the same id, and the placeholders on the
+/// screen show the new one. The cursor does not move. An empty frame sends nothing.
+pub fn write_virtual_frame(out: &mut Vec<u8>, frame: PixelFrame<'_>, image_id: u32, columns: u16, rows: u16) {
+    if frame.pixels().is_empty() {
+        return;
+    }
+    let keys =
+        format!("a=T,U=1,f=24,o=z,s={},v={},i={image_id},c={columns},r={rows},q=2,", frame.width(), frame.height());
+    write_chunks(out, frame, &keys);
+}
+
+/// Appends `frame` as zlib-compressed RGB in base64 chunks, the first one with `keys` (which end with a comma).
+fn write_chunks(out: &mut Vec<u8>, frame: PixelFrame<'_>, keys: &str) {
     let mut rgb = Vec::with_capacity(frame.pixels().len() * 3);
     for &pixel in frame.pixels() {
         let [_, r, g, b] = pixel.to_be_bytes();
@@ -56,22 +85,12 @@ pub fn write_frame(out: &mut Vec<u8>, frame: PixelFrame<'_>, placement: &KittyPl
     let mut zlib = ZlibEncoder::new(Vec::with_capacity(rgb.len() / 4), Compression::fast());
     let compressed = zlib.write_all(&rgb).and_then(|()| zlib.finish()).expect("writing into memory cannot fail");
     let payload = BASE64.encode(compressed);
-    // Cursor position (CUP) is 1-based.
-    let _ = write!(out, "\x1b[{};{}H", u32::from(placement.row) + 1, u32::from(placement.column) + 1);
     let chunks = payload.as_bytes().chunks(CHUNK_BYTES);
     let last = chunks.len().saturating_sub(1);
     for (i, chunk) in chunks.enumerate() {
         out.extend_from_slice(b"\x1b_G");
         if i == 0 {
-            let _ = write!(
-                out,
-                "a=T,f=24,o=z,s={},v={},i={},p={PLACEMENT_ID},c={},r={},C=1,z=-1,q=2,",
-                frame.width(),
-                frame.height(),
-                placement.image_id,
-                placement.columns,
-                placement.rows
-            );
+            out.extend_from_slice(keys.as_bytes());
         }
         let _ = write!(out, "m={};", u8::from(i < last));
         out.extend_from_slice(chunk);
@@ -170,5 +189,24 @@ mod tests {
         let mut out = Vec::new();
         write_placement(&mut out, &KittyPlacement { image_id: 7, column: 3, row: 2, columns: 40, rows: 12 });
         assert_eq!(out, b"\x1b[3;4H\x1b_Ga=p,i=7,p=1,c=40,r=12,C=1,z=-1,q=2\x1b\\");
+    }
+
+    #[test]
+    fn a_virtual_frame_keeps_the_cursor_and_names_its_cells() {
+        let pixels: Vec<u32> = (0..6 * 4).map(|i| i * 0x010203).collect();
+        let mut out = Vec::new();
+        write_virtual_frame(&mut out, PixelFrame::new(&pixels, 6, 4), 42, 3, 2);
+        assert!(out.starts_with(b"\x1b_G"), "no cursor move: {:?}", &out[..8]);
+        let sequences = sequences(&out);
+        assert_eq!(sequences.len(), 1);
+        assert_eq!(sequences[0].0, "a=T,U=1,f=24,o=z,s=6,v=4,i=42,c=3,r=2,q=2,m=0");
+        let compressed = BASE64.decode(&sequences[0].1).expect("base64");
+        let mut rgb = Vec::new();
+        flate2::read::ZlibDecoder::new(&compressed[..]).read_to_end(&mut rgb).expect("zlib");
+        let decoded: Vec<u32> = rgb.chunks_exact(3).map(|c| u32::from_be_bytes([0, c[0], c[1], c[2]])).collect();
+        assert_eq!(decoded, pixels);
+        let mut empty = Vec::new();
+        write_virtual_frame(&mut empty, PixelFrame::new(&[], 0, 0), 42, 3, 2);
+        assert!(empty.is_empty());
     }
 }

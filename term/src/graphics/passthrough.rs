@@ -8,6 +8,12 @@
 //! the first wrapped string as an absolute cursor move to the pane's top-left cell on the terminal. Each string is
 //! wrapped on its own, so that no wrapped string outgrows tmux's input buffer, however large the image.
 //!
+//! kitty's images can also be shown by text instead ([`Passthrough::TmuxPlaceholders`]): the image goes through
+//! the pass-through with a virtual placement and no position, and the pane's cells hold kitty's Unicode
+//! placeholders ([`crate::screen::image_placeholder`]), which tmux keeps with the pane's text. So the image follows
+//! the pane when it moves, goes when another window is shown and comes back with it, and is clipped with the pane;
+//! an image placed by position stays where it was put until the viewer draws again.
+//!
 //! Sixel is not wrapped: tmux 3.4 and later, built with Sixel, draw it themselves into the pane, and say so in their
 //! device attributes; other builds answer without Sixel, so the viewer does not send it.
 
@@ -27,14 +33,23 @@ pub enum Passthrough {
         /// The pane's first row on the terminal.
         row: u16,
     },
+    /// Through tmux's pass-through, a kitty image shown by Unicode placeholders in the pane's cells, whose
+    /// foreground colour names the image: image `image_id` (a 256-colour index from 16 to 255, so that tmux passes
+    /// it on unchanged). Its place is the pane's, wherever tmux shows it.
+    TmuxPlaceholders {
+        /// The image's id, the placeholders' foreground colour.
+        image_id: u8,
+    },
 }
 
 impl Passthrough {
-    /// Where the image's top-left cell is on the terminal that draws it (column, row, from 0).
-    pub const fn origin(self) -> (u16, u16) {
+    /// Where the image's top-left cell is on the terminal that draws it (column, row, from 0); `None` for an image
+    /// placed by placeholders, whose place is the placeholders'.
+    pub const fn origin(self) -> Option<(u16, u16)> {
         match self {
-            Passthrough::Direct => (0, 0),
-            Passthrough::Tmux { column, row } => (column, row),
+            Passthrough::Direct => Some((0, 0)),
+            Passthrough::Tmux { column, row } => Some((column, row)),
+            Passthrough::TmuxPlaceholders { .. } => None,
         }
     }
 
@@ -91,7 +106,7 @@ mod tests {
         let mut out = Vec::new();
         Passthrough::Direct.write(&mut out, b"\x1b[1;1H\x1b_Ga=T;AAAA\x1b\\");
         assert_eq!(out, b"\x1b[1;1H\x1b_Ga=T;AAAA\x1b\\");
-        assert_eq!(Passthrough::Direct.origin(), (0, 0));
+        assert_eq!(Passthrough::Direct.origin(), Some((0, 0)));
     }
 
     #[test]
@@ -103,6 +118,12 @@ mod tests {
             \x1bPtmux;\x1b\x1b_Gm=0;BB\x1b\x1b\\\x1b\\\
             \x1bPtmux;\x1b\x1b]1337;File=:CC\x07\x1b\\";
         assert_eq!(out, expected, "{}", String::from_utf8_lossy(&out).escape_debug());
-        assert_eq!(tmux.origin(), (40, 2));
+        assert_eq!(tmux.origin(), Some((40, 2)));
+        // Placeholders: the same wrapping, no position.
+        let placeholders = Passthrough::TmuxPlaceholders { image_id: 42 };
+        let mut wrapped = Vec::new();
+        placeholders.write(&mut wrapped, b"\x1b_Gm=0;BB\x1b\\");
+        assert_eq!(wrapped, b"\x1bPtmux;\x1b\x1b_Gm=0;BB\x1b\x1b\\\x1b\\");
+        assert_eq!(placeholders.origin(), None);
     }
 }

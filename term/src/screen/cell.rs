@@ -1,6 +1,7 @@
 //! One terminal cell: a character and its foreground and background colours.
 
 use super::color::Color;
+use super::image_placeholder;
 
 /// The character the encoder sends in place of a cell character that is not [`Cell::is_safe_char`].
 pub const REPLACEMENT_CHAR: char = '?';
@@ -28,7 +29,8 @@ impl Cell {
     /// Whether `ch` is sent to the terminal as it is: printable ASCII (space to `~`), box drawing and block
     /// elements (U+2500..=U+259F, which hold `▀` and the quadrants), Braille patterns (U+2800..=U+28FF), the
     /// sextants (U+1FB00..=U+1FB3B), the other legacy-computing blocks an octant cell draws (U+1FB82, U+1FB85,
-    /// U+1FBE6, U+1FBE7), the octants (U+1CD00..=U+1CDE5) and the quarter blocks beside them (U+1CEA0..=U+1CEAB).
+    /// U+1FBE6, U+1FBE7), the octants (U+1CD00..=U+1CDE5), the quarter blocks beside them (U+1CEA0..=U+1CEAB), and
+    /// kitty's image placeholder (U+10EEEE, which the encoder follows with the marks that place it).
     ///
     /// All of these are one column wide, so the encoder can track the cursor. Control characters, which
     /// could inject escape sequences, and zero-width or double-width characters, which would desynchronise
@@ -47,6 +49,7 @@ impl Cell {
                 | '\u{1FBE7}'
                 | '\u{1CD00}'..='\u{1CDE5}'
                 | '\u{1CEA0}'..='\u{1CEAB}'
+                | image_placeholder::PLACEHOLDER
         )
     }
 

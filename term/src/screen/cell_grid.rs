@@ -32,6 +32,14 @@ impl CellGrid {
         self.cells.resize(width * height, cell);
     }
 
+    /// Sets the cells of the top-left `columns` x `rows` (at most the grid) to `cell`.
+    pub fn fill(&mut self, columns: usize, rows: usize, cell: Cell) {
+        let columns = columns.min(self.width);
+        for row in self.cells.chunks_exact_mut(self.width.max(1)).take(rows) {
+            row[..columns].fill(cell);
+        }
+    }
+
     /// Whether the grid has `width` x `height` cells.
     pub fn same_size(&self, other: &CellGrid) -> bool {
         self.width == other.width && self.height == other.height

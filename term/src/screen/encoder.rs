@@ -4,6 +4,7 @@
 use super::cell::Cell;
 use super::cell_grid::CellGrid;
 use super::cursor_move::CursorMove;
+use super::image_placeholder::{self, PLACEHOLDER};
 use super::sgr::{MAX_SGR_LEN, Pen, SGR_RESET, sgr_change_len, write_sgr_change};
 use super::tolerance::Tolerance;
 
@@ -158,7 +159,7 @@ impl FrameWriter<'_> {
                 }
                 let cell = tolerance.cheaper(&wanted[col]);
                 self.go_to(row, col, shown, wanted);
-                self.put(&cell);
+                self.put(&cell, row, col);
                 shown[col] = cell;
             }
         }
@@ -182,8 +183,8 @@ impl FrameWriter<'_> {
             let target = Pen::of(&wanted[col]);
             let budget = jump.len() + sgr_change_len(self.pen, target);
             if resend_cost(&wanted[at_col..col], self.pen, target, budget).is_some() {
-                for (shown, cell) in shown[at_col..col].iter_mut().zip(&wanted[at_col..col]) {
-                    self.put(cell);
+                for (at, (shown, cell)) in shown[at_col..col].iter_mut().zip(&wanted[at_col..col]).enumerate() {
+                    self.put(cell, row, at_col + at);
                     *shown = *cell;
                 }
                 return;
@@ -193,11 +194,13 @@ impl FrameWriter<'_> {
         self.cursor = Some((row, col));
     }
 
-    /// Writes one cell at the cursor and advances it.
+    /// Writes one cell at the cursor, which is at `row`, `col`, and advances it. An image placeholder is followed by
+    /// the marks of its place ([`image_placeholder::write_marks`]), which is its place on the grid: the image starts
+    /// at the top-left cell.
     #[inline]
-    fn put(&mut self, cell: &Cell) {
+    fn put(&mut self, cell: &Cell, row: usize, col: usize) {
         // One reservation per cell keeps the pushes below free of reallocation.
-        self.out.reserve(MAX_SGR_LEN + 4);
+        self.out.reserve(MAX_SGR_LEN + 4 + image_placeholder::MAX_MARKS_LEN);
         self.drawn = true;
         let pen = Pen::of(cell);
         write_sgr_change(self.out, self.pen, pen);
@@ -209,6 +212,9 @@ impl FrameWriter<'_> {
             let mut utf8 = [0u8; 4];
             for &b in ch.encode_utf8(&mut utf8).as_bytes() {
                 self.out.push(b);
+            }
+            if ch == PLACEHOLDER {
+                image_placeholder::write_marks(self.out, row, col, self.width);
             }
         }
         self.cursor = match self.cursor {
@@ -224,7 +230,7 @@ fn resend_cost(cells: &[Cell], mut pen: Pen, target: Pen, budget: usize) -> Opti
     let mut cost = 0;
     for cell in cells {
         let next = Pen::of(cell);
-        cost += sgr_change_len(pen, next) + cell.safe_ch().len_utf8();
+        cost += sgr_change_len(pen, next) + sent_len(cell);
         pen = next;
         if cost >= budget {
             return None;
@@ -232,6 +238,16 @@ fn resend_cost(cells: &[Cell], mut pen: Pen, target: Pen, budget: usize) -> Opti
     }
     cost += sgr_change_len(pen, target);
     (cost < budget).then_some(cost)
+}
+
+/// The bytes of a cell's character as [`FrameWriter::put`] sends it, at most (a placeholder's marks vary with its
+/// place).
+#[inline]
+fn sent_len(cell: &Cell) -> usize {
+    match cell.safe_ch() {
+        PLACEHOLDER => PLACEHOLDER.len_utf8() + image_placeholder::MAX_MARKS_LEN,
+        ch => ch.len_utf8(),
+    }
 }
 
 #[cfg(test)]
@@ -311,5 +327,28 @@ mod tests {
         grid.get_mut(0, 1).ch = '\n';
         let bytes = encode(&mut Encoder::new(), &grid);
         assert!(bytes.ends_with("\x1b[H??\x1b[?2026l"), "{bytes:?}");
+    }
+
+    #[test]
+    fn image_placeholders_carry_their_row_and_column() {
+        let mut grid = CellGrid::blank(4, 2);
+        for (row, col) in [(0, 0), (0, 1), (1, 1), (1, 2), (1, 3)] {
+            *grid.get_mut(row, col) = image_placeholder::cell(42);
+        }
+        let mut encoder = Encoder::new();
+        let bytes = encode(&mut encoder, &grid);
+        let p = "\u{10EEEE}";
+        let (m0, m1, m2) = ("\u{0305}", "\u{030D}", "\u{030E}");
+        // The last column's placeholder goes without marks (the piece after its neighbour's).
+        let expected = format!(
+            "\x1b[?2026h\x1b[0m\x1b[2J\x1b[H\x1b[38;5;42m{p}{m0}{m0}{p}{m0}{m1}\x1b[2;2H{p}{m1}{m1}{p}{m1}{m2}{p}\x1b[0m\x1b[?2026l"
+        );
+        assert_eq!(bytes, expected);
+        // A placeholder between two changed cells costs more to re-send than a cursor move over it.
+        let mut next = grid.clone();
+        next.get_mut(0, 0).ch = 'x';
+        next.get_mut(0, 2).ch = 'y';
+        let bytes = encode(&mut encoder, &next);
+        assert_eq!(bytes, "\x1b[?2026h\x1b[H\x1b[38;5;42mx\x1b[C\x1b[0my\x1b[?2026l");
     }
 }

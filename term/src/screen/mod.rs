@@ -17,6 +17,7 @@ mod cursor_move;
 mod decimal;
 pub mod encoder;
 pub mod half_block;
+pub mod image_placeholder;
 pub mod naive_frame;
 pub mod oklab;
 pub mod palette;

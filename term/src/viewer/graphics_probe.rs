@@ -113,10 +113,13 @@ pub fn choose(
         return direct(GraphicsProtocol::Cells);
     }
     if env.inside_tmux() {
-        let through = tmux.and_then(|client| Some((client, client.passthrough()?)));
-        return match through {
-            Some((client, passthrough)) if client.kitty() => (GraphicsProtocol::Kitty, passthrough),
-            Some((client, passthrough)) if client.iterm2() => (GraphicsProtocol::Iterm2, passthrough),
+        let protocol = match tmux {
+            Some(client) if client.kitty() => GraphicsProtocol::Kitty,
+            Some(client) if client.iterm2() => GraphicsProtocol::Iterm2,
+            _ => GraphicsProtocol::Cells,
+        };
+        return match tmux.and_then(|client| client.passthrough(protocol)) {
+            Some(passthrough) if protocol != GraphicsProtocol::Cells => (protocol, passthrough),
             _ if answers.sixel => direct(GraphicsProtocol::Sixel),
             _ => direct(GraphicsProtocol::Cells),
         };
@@ -188,7 +191,7 @@ pub(super) fn route(protocol: GraphicsProtocol) -> Result<Passthrough, String> {
     else {
         return Ok(Passthrough::Direct);
     };
-    TmuxClient::query(pane).and_then(|client| client.passthrough()).ok_or_else(|| {
+    TmuxClient::query(pane).and_then(|client| client.passthrough(protocol)).ok_or_else(|| {
         format!(
             "inside tmux, {protocol} images need the pane to allow pass-through \
              (`tmux set -g allow-passthrough on`, tmux 3.3 or later)"
@@ -201,8 +204,10 @@ pub(super) fn route(protocol: GraphicsProtocol) -> Result<Passthrough, String> {
 pub(super) fn moved(passthrough: Passthrough) -> Passthrough {
     let Passthrough::Tmux { .. } = passthrough else { return passthrough };
     let process = ProcessEnv::read();
-    let client = process.env().tmux_pane.and_then(TmuxClient::query);
-    client.and_then(|client| client.passthrough()).unwrap_or(passthrough)
+    match process.env().tmux_pane.and_then(TmuxClient::query) {
+        Some(TmuxClient { passthrough: true, origin: (column, row), .. }) => Passthrough::Tmux { column, row },
+        _ => passthrough,
+    }
 }
 
 /// Writes `queries` ([`PROBE`] or [`MULTIPLEXER_PROBE`]) and reads the terminal's answers until the device
@@ -314,16 +319,22 @@ mod tests {
         assert!(!env.cells_without_asking() && env.inside_tmux());
         let tmux_attributes = answers(b"\x1b[?1;2c");
         let client = |answer: &str| TmuxClient::parse(answer).expect("an answer");
-        let kitty = client("1\tkitty(0.35.2)\txterm-256color\t40\t1\ton\tbottom");
+        // kitty shows its images by placeholders; WezTerm takes them placed on its screen.
+        let kitty = client("1\tkitty(0.35.2)\txterm-256color\t40\t1\ton\tbottom\t%3");
         assert_eq!(
             choose(&env, &tmux_attributes, Some(&kitty)),
+            (GraphicsProtocol::Kitty, Passthrough::TmuxPlaceholders { image_id: 19 })
+        );
+        let wezterm = client("1\tWezTerm 20240203-110809-5046fc22\txterm-256color\t40\t1\ton\tbottom\t%3");
+        assert_eq!(
+            choose(&env, &tmux_attributes, Some(&wezterm)),
             (GraphicsProtocol::Kitty, Passthrough::Tmux { column: 40, row: 1 })
         );
-        let iterm2 = client("1\tiTerm2 3.5.0\txterm-256color\t0\t0\ton\tbottom");
+        let iterm2 = client("1\tiTerm2 3.5.0\txterm-256color\t0\t0\ton\tbottom\t%3");
         assert_eq!(choose(&env, &tmux_attributes, Some(&iterm2)).0, GraphicsProtocol::Iterm2);
         // Not allowed, an unknown terminal, or no answer from tmux: cells.
-        let closed = client("0\tkitty(0.35.2)\txterm-256color\t0\t0\ton\tbottom");
-        let unknown = client("1\t\txterm-256color\t0\t0\ton\tbottom");
+        let closed = client("0\tkitty(0.35.2)\txterm-256color\t0\t0\ton\tbottom\t%3");
+        let unknown = client("1\t\txterm-256color\t0\t0\ton\tbottom\t%3");
         for tmux in [Some(&closed), Some(&unknown), None] {
             assert_eq!(choose(&env, &tmux_attributes, tmux), (GraphicsProtocol::Cells, Passthrough::Direct));
         }

@@ -47,7 +47,7 @@ use rastty_core::target::{Rgb888, Target};
 use rastty::graphics::frame_palette::Dither;
 use rastty::graphics::{DEFAULT_CELL_ASPECT, image_size};
 use rastty::graphics::{FrameImage, GraphicsProtocol, MAX_IMAGE_PIXELS, Passthrough, moving_image_cap};
-use rastty::screen::{CellGrid, CellMode, ColorMode, PixelFrame};
+use rastty::screen::{CellGrid, CellMode, ColorMode, PixelFrame, image_placeholder};
 use rastty_scene::escaped::{Escaped, path_text};
 use rastty_scene::png_file::encode_png;
 use rastty_scene::scene_render::{
@@ -552,9 +552,23 @@ impl Viewer<'_> {
             // A cell is `cell_aspect` times taller than wide.
             return (width, height, f32::from(cols) / (f32::from(rows) * self.cell_aspect));
         }
-        let (width, height) =
-            image_size(self.graphics, self.size, self.size_in_pixels, self.cell_aspect, self.image_cap);
+        let (cells, pixels) = self.image_area();
+        let (width, height) = image_size(self.graphics, cells, pixels, self.cell_aspect, self.image_cap);
         (width, height, width as f32 / height.max(1) as f32)
+    }
+
+    /// The terminal area an image is made for, in cells (columns, rows) and in pixels when the terminal says: the
+    /// whole terminal, but at most [`image_placeholder::MAX_SPAN`] cells each way when placeholders show the image
+    /// (beyond that they cannot say which piece a cell shows).
+    fn image_area(&self) -> ((u16, u16), Option<(u16, u16)>) {
+        let Passthrough::TmuxPlaceholders { .. } = self.passthrough else { return (self.size, self.size_in_pixels) };
+        let (cols, rows) = self.size;
+        let (columns, lines) = (cols.min(image_placeholder::MAX_SPAN), rows.min(image_placeholder::MAX_SPAN));
+        let part = |pixels: u16, of: u16, all: u16| {
+            u16::try_from(u32::from(pixels) * u32::from(of) / u32::from(all.max(1))).unwrap_or(pixels)
+        };
+        let pixels = self.size_in_pixels.map(|(width, height)| (part(width, columns, cols), part(height, lines, rows)));
+        ((columns, lines), pixels)
     }
 
     /// Renders the current state into a frame for the terminal: cells the size of the terminal, and the image,
@@ -588,15 +602,20 @@ impl Viewer<'_> {
             let pixels = PixelFrame::new(&self.canvas.pixels, width, height);
             (self.cell_mode.to_cells(pixels, self.colors, background), None)
         } else {
+            let ((columns, lines), _) = self.image_area();
             let image = FrameImage {
                 pixels: self.canvas.pixels.clone(),
                 width,
                 height,
-                columns: cols,
-                rows: self.graphics.image_rows(rows),
+                columns,
+                rows: self.graphics.image_rows(lines),
                 passthrough: self.passthrough,
             };
-            (CellGrid::blank(usize::from(cols), usize::from(rows)), Some(image))
+            let mut grid = CellGrid::blank(usize::from(cols), usize::from(rows));
+            if let Passthrough::TmuxPlaceholders { image_id } = self.passthrough {
+                grid.fill(usize::from(image.columns), usize::from(image.rows), image_placeholder::cell(image_id));
+            }
+            (grid, Some(image))
         };
         self.draw_text(&mut grid, written);
         Ok(Frame { grid, image })
@@ -812,12 +831,11 @@ impl Viewer<'_> {
                 if a.multisample { "4x" } else { "off" },
                 cols,
                 rows,
-                match self.graphics {
-                    GraphicsProtocol::Cells => self.cell_mode.name(),
-                    protocol => protocol.name(),
-                }
-                .to_owned()
-                    + if self.graphics_chosen { " (auto)" } else { "" },
+                match (self.graphics, self.passthrough) {
+                    (GraphicsProtocol::Cells, _) => self.cell_mode.name().to_owned(),
+                    (protocol, Passthrough::TmuxPlaceholders { .. }) => format!("{protocol} placeholders"),
+                    (protocol, _) => protocol.name().to_owned(),
+                } + if self.graphics_chosen { " (auto)" } else { "" },
                 match self.graphics {
                     GraphicsProtocol::Cells => self.colors.name().to_owned(),
                     _ => {
