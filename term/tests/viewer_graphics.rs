@@ -335,6 +335,15 @@ fn inside_tmux_kitty_images_pass_through_to_the_pane_on_the_terminal() {
     tmux.send_keys("i");
     // The HUD over the image (its line naming the protocol is cut at the pane's 50 columns).
     tmux.wait_for("the HUD", || pane(&tmux).contains("cell aspect").then_some(()));
+    // The left pane narrows: the viewer's pane moves left and widens, and its image goes to its new place.
+    let sent = screen.len();
+    tmux.run(&["resize-pane", "-t", "%1", "-x", "30"]);
+    let moved = "\x1b[1;32H\x1b_Ga=T,f=24,o=z,";
+    let widened = ",c=70,r=29,";
+    screen.wait_for("the image at the pane's new place", |out| {
+        let text = String::from_utf8_lossy(&out[sent..]);
+        text.find(moved).is_some_and(|at| text[at..].split("\x1b\\").next().is_some_and(|s| s.contains(widened)))
+    });
     tmux.send_keys("q");
     let (status, _) = tmux.wait_for_exit();
     assert_eq!(status, 0, "exit status after q");
@@ -466,10 +475,12 @@ fn killing_the_tmux_session_ends_a_viewer_of_kitty_images_within_a_second() {
     if !tmux_wanted() {
         return;
     }
-    for turntable in [false, true] {
-        let test = if turntable { "kitty-kill-turning" } else { "kitty-kill-idle" };
-        let (tmux, _client, mut screen, _) = kitty_outside_tmux(test, KITTY, true, &[]);
-        screen.wait_for("a kitty image for placeholders", |out| images_sent(out) > 0);
+    // kitty's images by placeholders, idle and turning; and WezTerm's, placed by position, when the pane is
+    // resized as the session goes (the viewer then asks tmux where the pane went, of a server that is going away).
+    for (terminal, turntable, resized) in [(KITTY, false, false), (KITTY, true, false), (WEZTERM, false, true)] {
+        let test = format!("kitty-kill-{}-{turntable}-{resized}", if terminal == KITTY { "kitty" } else { "wezterm" });
+        let (tmux, _client, mut screen, _) = kitty_outside_tmux(&test, terminal, true, &[]);
+        screen.wait_for("a kitty image", |out| out.windows(7).any(|w| w == b"\x1b_Ga=T,"));
         let pid = tmux.program_pid();
         if turntable {
             tmux.run(&["select-pane", "-t", "%0"]);
@@ -477,12 +488,17 @@ fn killing_the_tmux_session_ends_a_viewer_of_kitty_images_within_a_second() {
             let drawn = screen.len();
             screen.wait_for("turntable images", |out| out.len() > drawn + 100_000);
         }
+        let kill = ["kill-session", "-t", SESSION.trim_end_matches(':')];
         let closed = Instant::now();
-        tmux.run(&["kill-session", "-t", SESSION.trim_end_matches(':')]);
+        if resized {
+            tmux.run(&[&["resize-pane", "-t", "%1", "-x", "30", ";"][..], &kill].concat());
+        } else {
+            tmux.run(&kill);
+        }
         let took =
             tmux.wait_for("the viewer to end", || crate::common::tmux::process_gone(pid).then(|| closed.elapsed()));
-        eprintln!("turntable {turntable}: the viewer of kitty images ended {took:?} after its session was killed");
-        assert!(took < Duration::from_secs(1), "turntable {turntable}: took {took:?} to end");
+        eprintln!("{test}: the viewer of kitty images ended {took:?} after its session was killed");
+        assert!(took < Duration::from_secs(1), "{test}: took {took:?} to end");
         screen.close();
     }
 }

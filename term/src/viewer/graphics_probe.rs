@@ -14,6 +14,10 @@
 //! `TERM=dumb` the viewer uses cells without asking.
 
 use std::fs::File;
+use std::io::Write;
+use std::os::unix::net::UnixStream;
+use std::sync::mpsc;
+use std::thread;
 use std::time::{Duration, Instant};
 
 use super::input_decoder::{Input, InputDecoder};
@@ -199,14 +203,43 @@ pub(super) fn route(protocol: GraphicsProtocol) -> Result<Passthrough, String> {
     })
 }
 
-/// The pane's top-left cell on the terminal again (after a resize, the panes may have moved); `passthrough`
-/// as it was when tmux does not answer.
-pub(super) fn moved(passthrough: Passthrough) -> Passthrough {
-    let Passthrough::Tmux { .. } = passthrough else { return passthrough };
-    let process = ProcessEnv::read();
-    match process.env().tmux_pane.and_then(TmuxClient::query) {
-        Some(TmuxClient { passthrough: true, origin: (column, row), .. }) => Passthrough::Tmux { column, row },
-        _ => passthrough,
+/// The pane's top-left cell on the terminal again (after a resize, the panes may have moved), asked of tmux on a
+/// thread of its own: tmux may take up to [`TMUX_QUERY_TIMEOUT`](super::tmux_client::TMUX_QUERY_TIMEOUT) to
+/// answer (or never, when its server is going away), and the viewer's loop must answer a key, a resize or a hangup
+/// at once meanwhile.
+pub(super) struct PaneQuery {
+    answer: mpsc::Receiver<Passthrough>,
+    /// What the answer is when tmux gives none.
+    before: Passthrough,
+}
+
+impl PaneQuery {
+    /// Asks where the pane is now when images go through tmux to its place (`passthrough` is
+    /// [`Passthrough::Tmux`]); `None` otherwise, as there is nothing to ask. A byte written to `wake` says that the
+    /// answer came.
+    pub(super) fn start(passthrough: Passthrough, wake: UnixStream) -> Option<Self> {
+        let Passthrough::Tmux { .. } = passthrough else { return None };
+        let (send, answer) = mpsc::channel();
+        thread::spawn(move || {
+            let process = ProcessEnv::read();
+            let moved = match process.env().tmux_pane.and_then(TmuxClient::query) {
+                Some(TmuxClient { passthrough: true, origin: (column, row), .. }) => Passthrough::Tmux { column, row },
+                _ => passthrough,
+            };
+            if send.send(moved).is_ok() {
+                let _ = (&wake).write(&[1]);
+            }
+        });
+        Some(Self { answer, before: passthrough })
+    }
+
+    /// The way images go now, once tmux answered (as before when it could not); `None` while it has not.
+    pub(super) fn answer(&self) -> Option<Passthrough> {
+        match self.answer.try_recv() {
+            Ok(passthrough) => Some(passthrough),
+            Err(mpsc::TryRecvError::Empty) => None,
+            Err(mpsc::TryRecvError::Disconnected) => Some(self.before),
+        }
     }
 }
 

@@ -28,7 +28,7 @@ use capture::{capture_size, capture_stem, save_new};
 use controls::{Action, HELP, action_for};
 use file_watch::FileWatch;
 use frame_writer::{Frame, FrameWriter, REFINE_AFTER, WriterStats};
-use graphics_probe::ProbeAnswers;
+use graphics_probe::{PaneQuery, ProbeAnswers};
 use input_decoder::{ESCAPE_WAIT, Input, InputDecoder};
 use state::{Effect, Playback, ViewerState};
 use terminal_session::TerminalSession;
@@ -273,6 +273,7 @@ pub fn run(files: Files<'_>, options: &ViewerOptions) -> Result<ViewerExit, View
         cell_mode: options.cell_mode,
         graphics,
         passthrough,
+        pane_query: None,
         graphics_chosen: options.graphics == GraphicsChoice::Auto,
         cell_pixels: answers.cell_pixels,
         colors,
@@ -371,6 +372,9 @@ struct Viewer<'a> {
     graphics: GraphicsProtocol,
     /// How images reach the terminal: directly or through tmux.
     passthrough: Passthrough,
+    /// Where the pane went after a resize, while tmux has not said (no image is drawn meanwhile: it would go to
+    /// the old place), and whether the terminal was resized again since it was asked.
+    pane_query: Option<(PaneQuery, bool)>,
     /// `graphics` was chosen by asking the terminal.
     graphics_chosen: bool,
     /// The cell size in pixels the terminal answered, if it did.
@@ -423,6 +427,13 @@ impl Viewer<'_> {
         });
         self.cell_aspect = self.cell_aspect_given.or(measured).unwrap_or(DEFAULT_CELL_ASPECT);
         self.state.set_cell_aspect(self.cell_aspect);
+    }
+
+    /// Asks tmux where the pane is when images go to its place ([`PaneQuery`]); `None` when there is nothing to
+    /// ask, or no way to hear the answer.
+    fn ask_where_the_pane_is(&self, session: &TerminalSession, passthrough: Passthrough) -> Option<(PaneQuery, bool)> {
+        let wake = session.waker().ok()?;
+        PaneQuery::start(passthrough, wake).map(|query| (query, false))
     }
 
     /// Where the cell aspect came from, for the HUD.
@@ -481,9 +492,18 @@ impl Viewer<'_> {
                 self.notice = None;
                 dirty = true;
             }
+            // The pane's place after a resize, once tmux said it; asked again if the terminal changed meanwhile.
+            if let Some((query, again)) = &self.pane_query
+                && let Some(passthrough) = query.answer()
+            {
+                self.pane_query = again.then(|| self.ask_where_the_pane_is(session, passthrough)).flatten();
+                self.passthrough = passthrough;
+                writer.invalidate();
+                dirty = true;
+            }
             // A still picture that went out smaller (a slow link) is drawn again at full size.
             let sharpen = !dirty && self.sharpen_at.is_some_and(|at| Instant::now() >= at);
-            if dirty || sharpen {
+            if (dirty || sharpen) && self.pane_query.is_none() {
                 let frame = self.frame(writer, sharpen)?;
                 writer.send(frame);
                 dirty = false;
@@ -528,7 +548,10 @@ impl Viewer<'_> {
                 if let Action::Resize(cols, rows) = action {
                     self.size = (cols, rows);
                     self.measure_cells(&session.tty);
-                    self.passthrough = graphics_probe::moved(self.passthrough);
+                    match &mut self.pane_query {
+                        Some((_, again)) => *again = true,
+                        None => self.pane_query = self.ask_where_the_pane_is(session, self.passthrough),
+                    }
                     writer.invalidate();
                 }
                 match self.state.apply(action) {
