@@ -1,6 +1,6 @@
 //! (Part of `rastty-bench terminal`.) Every cell mode and pixel graphics protocol at one terminal size: the same
-//! turntable of the built-in model as the main table, drawn as half-blocks, quadrants, sextants, Braille and
-//! ASCII, and as kitty, Sixel and iTerm2 images, with the bytes each sends and the time each frame takes to render,
+//! turntable of the built-in model as the main table, drawn as half-blocks, quadrants, sextants, octants, Braille
+//! and ASCII, and as kitty, Sixel and iTerm2 images, with the bytes each sends and the time each frame takes to render,
 //! to turn into cells and to encode (an image: its whole bytes, every frame).
 //!
 //! The frame rate is the program's own: one over the median of render + cells + encode per frame, what one
