@@ -26,6 +26,12 @@ impl Cell {
         Cell { ch, fg, bg }
     }
 
+    /// A placeholder cell of kitty image `image_id` ([`image_placeholder`]): a 256-colour index; 16 to 255 pass
+    /// every multiplexer unchanged.
+    pub const fn image_placeholder(image_id: u8) -> Self {
+        Cell { ch: image_placeholder::PLACEHOLDER, fg: Color::Indexed(image_id), bg: Color::Default }
+    }
+
     /// Whether `ch` is sent to the terminal as it is: printable ASCII (space to `~`), box drawing and block
     /// elements (U+2500..=U+259F, which hold `▀` and the quadrants), Braille patterns (U+2800..=U+28FF), the
     /// sextants (U+1FB00..=U+1FB3B), the other legacy-computing blocks an octant cell draws (U+1FB82, U+1FB85,

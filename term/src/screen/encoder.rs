@@ -333,7 +333,7 @@ mod tests {
     fn image_placeholders_carry_their_row_and_column() {
         let mut grid = CellGrid::blank(4, 2);
         for (row, col) in [(0, 0), (0, 1), (1, 1), (1, 2), (1, 3)] {
-            *grid.get_mut(row, col) = image_placeholder::cell(42);
+            *grid.get_mut(row, col) = Cell::image_placeholder(42);
         }
         let mut encoder = Encoder::new();
         let bytes = encode(&mut encoder, &grid);

@@ -3,16 +3,13 @@
 //! (<https://sw.kovidgoyal.net/kitty/graphics-protocol/#unicode-placeholders>).
 //!
 //! The image is sent with a virtual placement (`U=1`) of so many columns and rows; each cell that shows a piece of
-//! it is the character [`PLACEHOLDER`] (U+10EEEE, private use, one column wide) in a foreground colour that names
+//! it is the character [`PLACEHOLDER`] (U+10EEEE, private use, one column wide; [`Cell::image_placeholder`](super::Cell::image_placeholder)) in a foreground colour that names
 //! the image (a 256-colour index, `38;5;N`, which tmux passes on as it is), followed by two combining marks: the
 //! piece's row, then its column, each as the mark at that index of [`DIACRITICS`]. Every cell names its row and
 //! column itself, so a cell redrawn alone (as tmux does) still shows the right piece; except a cell in the last
 //! column, which is the character alone: tmux (3.3 at least) keeps its cursor on the last column after writing
 //! there, so marks that follow would join the cell to the left, and kitty takes a placeholder without marks for the
 //! piece after the one to its left.
-
-use super::cell::Cell;
-use super::color::Color;
 
 /// The placeholder character.
 pub const PLACEHOLDER: char = '\u{10EEEE}';
@@ -324,11 +321,6 @@ pub const DIACRITICS: [char; 297] = [
     '\u{1D243}',
     '\u{1D244}',
 ];
-
-/// A placeholder cell of image `image_id` (a 256-colour index; 16 to 255 pass every multiplexer unchanged).
-pub const fn cell(image_id: u8) -> Cell {
-    Cell::new(PLACEHOLDER, Color::Indexed(image_id), Color::Default)
-}
 
 /// Appends the marks that make a placeholder the piece at `row`, `column` of its image, in a grid of `columns`
 /// columns; nothing in the grid's last column (but the first), nor where `row` or `column` is [`MAX_SPAN`] or more

@@ -47,7 +47,7 @@ use rastty_core::target::{Rgb888, Target};
 use rastty::graphics::frame_palette::Dither;
 use rastty::graphics::{DEFAULT_CELL_ASPECT, image_size};
 use rastty::graphics::{FrameImage, GraphicsProtocol, MAX_IMAGE_PIXELS, Passthrough, moving_image_cap};
-use rastty::screen::{CellGrid, CellMode, ColorMode, PixelFrame, image_placeholder};
+use rastty::screen::{Cell, CellGrid, CellMode, ColorMode, PixelFrame, image_placeholder};
 use rastty_scene::escaped::{Escaped, path_text};
 use rastty_scene::png_file::encode_png;
 use rastty_scene::scene_render::{
@@ -636,7 +636,7 @@ impl Viewer<'_> {
             };
             let mut grid = CellGrid::blank(usize::from(cols), usize::from(rows));
             if let Passthrough::TmuxPlaceholders { image_id } = self.passthrough {
-                grid.fill(usize::from(image.columns), usize::from(image.rows), image_placeholder::cell(image_id));
+                grid.fill(usize::from(image.columns), usize::from(image.rows), Cell::image_placeholder(image_id));
             }
             (grid, Some(image))
         };
