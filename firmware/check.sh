@@ -3,8 +3,8 @@
 #
 # Builds the firmware, boots it on QEMU's mps2-an386 (Cortex-M4) with -icount shift=0 (so the instruction counts
 # it prints are exact), runs the host test tests/tests/firmware_checksum.rs, and fails unless both print the same
-# `frame N in B KiB: checksum 0x..., S strips, F fragments` lines, in the same order, at least two of them. Neither side's
-# values are written down anywhere: each run computes both.
+# `frame N in B KiB: checksum 0x..., depth 0x..., S bands, F fragments` lines (colour and depth), in the same order, at
+# least two of them. Neither side's values are written down anywhere: each run computes both.
 #
 # Installs nothing: needs qemu-system-arm, and the thumbv7em-none-eabihf target (rustup target add).
 set -euo pipefail
@@ -39,7 +39,7 @@ if [ "$status" -ne 0 ]; then
     exit 1
 fi
 
-line='frame [0-9]+ in [0-9]+ KiB: checksum 0x[0-9a-f]{8}, [0-9]+ bands, [0-9]+ fragments'
+line='frame [0-9]+ in [0-9]+ KiB: checksum 0x[0-9a-f]{8}, depth 0x[0-9a-f]{8}, [0-9]+ bands, [0-9]+ fragments'
 grep -oE "$line" "$out/firmware.txt" >"$out/firmware.lines" || true
 grep -oE "$line" "$out/host.txt" >"$out/host.lines" || true
 sed 's/^/  host     | /' "$out/host.lines"

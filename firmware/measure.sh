@@ -95,11 +95,12 @@ awk '
     }' "$out"
 
 if [ "$stages" = 1 ]; then
-    frames=$(grep -cE '^frame [0-9]+ in [0-9]+ KiB: checksum' "$out")
-    echo "== instructions by stage over the run's $frames frames: qemu-system-arm ... -d in_asm,exec,nochain," \
+    # Each frame is drawn twice: timed, then checked with its depths.
+    renders=$((2 * $(grep -cE '^frame [0-9]+ in [0-9]+ KiB: checksum' "$out")))
+    echo "== instructions by stage over the run's $renders renders: qemu-system-arm ... -d in_asm,exec,nochain," \
         "read by stages.py"
     mkfifo "$pipe"
-    python3 stages.py "$elf" "$pipe" "$frames" &
+    python3 stages.py "$elf" "$pipe" "$renders" &
     reader=$!
     timeout 900 qemu-system-arm -cpu cortex-m4 -machine mps2-an386 -nographic \
         -semihosting-config enable=on,target=native -icount shift=0 -d in_asm,exec,nochain -D "$pipe" \

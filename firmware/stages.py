@@ -9,12 +9,20 @@ functions inlined at it, innermost first, and charged to the first stage whose f
 the position stage inlined into binning counts as the vertex stage, not as binning). Instructions outside the
 frames (start-up, stack painting, the timer check, printing) fall in no stage.
 
-Usage: stages.py ELF LOG_PIPE FRAMES -- prints instructions per stage, in total and per frame (divided by FRAMES).
+The firmware draws each frame twice, the same way: timed, then untimed with its depths folded into a second
+checksum (the only work the second adds, a stage of its own left out of the shares). So every stage's count per
+render is its count per frame.
+
+Usage: stages.py ELF LOG_PIPE RENDERS -- prints instructions per stage, in total and per render (divided by
+RENDERS).
 """
 import collections
 import re
 import subprocess
 import sys
+
+# The checked renders' depth checksum: no part of a frame a product draws, so in no share.
+CHECKING = "checking, untimed renders only: the depths' FNV-1a"
 
 # (stage, functions that mark it), tried in order on each inlined function, innermost first.
 STAGES = [
@@ -29,7 +37,8 @@ STAGES = [
     ("clearing the band", ["Target::clear"]),
     ("binning: the triangle loop, rejections, entries", ["BandBins::bin", "BinRun"]),
     ("band draws: the triangle loop, block and entry scan", ["draw::run", "draw_walk", "Walk"]),
-    ("display: colours sent, FNV-1a", ["draw_frame", "ChecksumDisplay", "Fnv1a"]),
+    ("display: colours sent, FNV-1a", ["draw_frame", "ChecksumDisplay"]),
+    (CHECKING, ["fold_depths"]),
     ("scene: shader variant, matrices", ["Scene::", "Variant::", "Transforms"]),
 ]
 
@@ -96,14 +105,15 @@ def stage_of(elf, counts):
 
 
 def main():
-    elf, log, frames = sys.argv[1], sys.argv[2], int(sys.argv[3])
+    elf, log, renders = sys.argv[1], sys.argv[2], int(sys.argv[3])
     stages = stage_of(elf, read_log(log))
-    inside = sum(v for k, v in stages.items() if k != "outside the frames")
-    print(f"{'instructions':>13} {'per frame':>11} {'share':>6}  stage ({frames} frames)")
+    apart = ("outside the frames", CHECKING)
+    inside = sum(v for k, v in stages.items() if k not in apart)
+    print(f"{'instructions':>13} {'per render':>11} {'share':>6}  stage ({renders} renders)")
     for name, _ in STAGES + [("outside the frames", [])]:
         v = stages.get(name, 0)
-        share = f"{100 * v / inside:5.1f}%" if name != "outside the frames" else ""
-        print(f"{v:>13,} {v // frames:>11,} {share:>6}  {name}")
+        share = f"{100 * v / inside:5.1f}%" if name not in apart else ""
+        print(f"{v:>13,} {v // renders:>11,} {share:>6}  {name}")
 
 
 if __name__ == "__main__":

@@ -2,7 +2,8 @@
 //! 320x240 RGB565, `u16` depth) in bands, its triangles binned once a frame, in each memory layout (16, 32 and
 //! 64 KiB for the band buffers and the bins together), folds every band into an FNV-1a checksum, and prints,
 //! through semihosting, one line per frame and layout that the host must reproduce exactly (`check.sh` compares
-//! them), then the instructions each took, the frame memory's RAM and the peak stack.
+//! them), then the instructions each took, the frame memory's RAM and the peak stack. Each frame is drawn twice:
+//! timed, as a product would draw it into its display; then untimed, its depths folded into a second checksum.
 //! It exits through semihosting: status 0, or 1 after a panic or a hard fault.
 //!
 //! Built for QEMU's `mps2-an386` machine (`memory.x`); `cargo run --release` runs it there (`.cargo/config.toml`),
@@ -20,8 +21,8 @@ use core::panic::PanicInfo;
 
 use cortex_m_rt::{ExceptionFrame, entry, exception};
 use cortex_m_semihosting::{debug, hio};
+use rastty_firmware_scene::{ChecksumDisplay, checksum_frame, render_frame, spot};
 use rastty_firmware_scene::{FRAME_MEMORY_BYTES, FRAMES, FrameMemory, HEIGHT, LAYOUTS, WIDTH};
-use rastty_firmware_scene::{checksum_frame, spot};
 
 /// The band buffers and the bins, in `.bss`: the only frame memory.
 static mut MEMORY: FrameMemory = FrameMemory::new();
@@ -43,9 +44,14 @@ fn main() -> ! {
     let mut instructions = [[0u64; FRAMES]; LAYOUTS.len()];
     for (layout, counts) in LAYOUTS.iter().zip(&mut instructions) {
         for (frame, count) in counts.iter_mut().enumerate() {
+            // Timed: the frame as a product would draw it, into its display.
+            let mut display = ChecksumDisplay::new();
             let t0 = timer::now();
-            let report = checksum_frame(frame, *layout, memory).unwrap_or_else(|e| panic!("frame {frame}: {e}"));
+            render_frame(frame, *layout, memory, &mut display, None).unwrap_or_else(|e| panic!("frame {frame}: {e}"));
             *count = timer::instructions_since(t0);
+            // Checked, untimed: the same frame again, its depths folded too.
+            let report = checksum_frame(frame, *layout, memory).unwrap_or_else(|e| panic!("frame {frame}: {e}"));
+            assert_eq!(display.checksum(), report.checksum, "frame {frame}: the same pixels twice");
             let _ = writeln!(out, "{report}");
         }
     }

@@ -1,8 +1,9 @@
 //! The firmware's scene (`firmware/scene`) rendered on the host: the lines it prints are the ones the firmware
 //! must print under QEMU. `firmware/check.sh` runs both and compares the `frame N: checksum ...` lines; this
-//! test checks what the host alone can: the two frames differ from each other and from a blank frame, every memory
-//! layout gives the same frames within its budget, the bands cover the frame top to bottom, and the bands add up
-//! to the frame rendered whole, both by the scene's specialised draw and by `draw_mesh`.
+//! test checks what the host alone can: the two frames differ from each other and from a blank frame, in colour and
+//! in depth, every memory layout gives the same frames within its budget, the bands cover the frame top to bottom,
+//! and the bands add up to the frame rendered whole, colours and depths, both by the scene's specialised draw and
+//! by `draw_mesh`.
 //!
 //! Run `cargo test -p rastty-tests --test integration firmware_checksum:: -- --nocapture` to see the lines.
 
@@ -28,14 +29,15 @@ fn reports() -> Vec<FrameChecksum> {
         .collect()
 }
 
-/// FNV-1a of a whole frame rendered at once by `draw`, and what `draw` returns.
-fn whole_frame(draw: impl FnOnce(&mut Target<Rgb565<'_>, &mut [u16]>) -> DrawStats) -> (u32, DrawStats) {
+/// FNV-1a of a whole frame's colours and depths, rendered at once by `draw`, and what `draw` returns.
+fn whole_frame(draw: impl FnOnce(&mut Target<Rgb565<'_>, &mut [u16]>) -> DrawStats) -> ([u32; 2], DrawStats) {
     let n = (WIDTH * HEIGHT) as usize;
     let (mut color, mut depth) = (vec![0u16; n], vec![0u16; n]);
     let stats = draw(&mut Target::new(Rgb565(&mut color), &mut depth[..], WIDTH, HEIGHT).unwrap());
-    let mut checksum = Fnv1a::new();
-    checksum.write_rgb565(&color);
-    (checksum.finish(), stats)
+    let [mut colors, mut depths] = [Fnv1a::new(); 2];
+    colors.write_words(&color);
+    depths.write_words(&depth);
+    ([colors.finish(), depths.finish()], stats)
 }
 
 #[test]
@@ -49,14 +51,18 @@ fn the_firmware_scene_gives_two_distinct_checksums() {
         target.clear(BACKGROUND);
         DrawStats::default()
     });
-    println!("blank frame: checksum 0x{blank:08x}");
+    let [blank, blank_depth] = blank;
+    println!("blank frame: checksum 0x{blank:08x}, depth 0x{blank_depth:08x}");
 
     assert_eq!(reports.len(), FRAMES * LAYOUTS.len());
     assert_ne!(reports[0].checksum, reports[1].checksum, "the checksum depends on the rotation");
+    assert_ne!(reports[0].depth, reports[1].depth, "the depths depend on the rotation");
     for report in &reports {
         let first = &reports[report.frame];
-        assert_eq!((report.checksum, report.stats), (first.checksum, first.stats), "every layout, the same frame");
+        let same = |r: &FrameChecksum| (r.checksum, r.depth, r.stats);
+        assert_eq!(same(report), same(first), "every layout, the same frame");
         assert_ne!(report.checksum, blank, "frame {} is not blank", report.frame);
+        assert_ne!(report.depth, blank_depth, "frame {}'s depths are not the cleared ones", report.frame);
         assert_eq!(report.bands, HEIGHT.div_ceil(report.layout.band_rows));
         // Binning saw every triangle once; about half face away.
         assert_eq!(report.stats.triangles_in, spot::TRIANGLE_COUNT as u64);
@@ -119,7 +125,7 @@ fn the_bands_cover_the_frame_top_to_bottom() {
     let mut memory = Box::new(FrameMemory::new());
     for layout in LAYOUTS {
         let mut display = Recording::default();
-        let (bands, _) = render_frame(0, layout, &mut memory, &mut display).unwrap();
+        let (bands, _) = render_frame(0, layout, &mut memory, &mut display, None).unwrap();
         assert_eq!(bands, HEIGHT.div_ceil(layout.band_rows));
         assert_eq!(display.0.len(), bands as usize);
         let mut next_row = 0;
@@ -140,8 +146,9 @@ fn the_bands_add_up_to_the_whole_frame_and_draw_mesh_agrees() {
         let scene = Scene::new(report.frame).unwrap();
         let direct = whole_frame(|target| scene.draw(target).unwrap());
         let through_draw_mesh = whole_frame(|target| scene.draw_through_draw_mesh(target).unwrap());
-        for (checksum, stats) in [direct, through_draw_mesh] {
+        for ([checksum, depth], stats) in [direct, through_draw_mesh] {
             assert_eq!(checksum, report.checksum, "frame {}: bands and whole frame agree", report.frame);
+            assert_eq!(depth, report.depth, "frame {}: bands and whole frame agree on depth", report.frame);
             assert_eq!(stats.fragments, report.stats.fragments, "frame {}: the same fragments", report.frame);
         }
     }
@@ -155,7 +162,7 @@ fn the_checksum_is_fnv1a_over_little_endian_words() {
     a.write_u8(b'a');
     assert_eq!(a.finish(), 0xe40c_292c);
     let mut ab = Fnv1a::new();
-    ab.write_rgb565(&[0x6261]);
+    ab.write_words(&[0x6261]);
     assert_eq!(ab.finish(), 0x4d25_05ca);
 }
 

@@ -11,7 +11,7 @@ use embedded_graphics_core::primitives::Rectangle;
 use crate::{Fnv1a, HEIGHT, WIDTH};
 
 /// A [`WIDTH`]x[`HEIGHT`] RGB565 display that keeps no pixels: it folds each one it is sent, in the order sent,
-/// into an [`Fnv1a`] checksum ([`Fnv1a::write_rgb565`]). Sent a frame's bands top to bottom, as
+/// into an [`Fnv1a`] checksum ([`Fnv1a::write_words`]). Sent a frame's bands top to bottom, as
 /// [`rastty_embedded_graphics::draw_frame`] sends them, it holds the checksum of the frame.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct ChecksumDisplay {
@@ -39,7 +39,7 @@ impl ChecksumDisplay {
     }
 
     fn write(&mut self, color: Rgb565) {
-        self.checksum.write_rgb565(&[color.into_storage()]);
+        self.checksum.write_words(&[color.into_storage()]);
         self.pixels += 1;
     }
 }

@@ -2,8 +2,8 @@
 
 /// 32-bit FNV-1a (offset basis `0x811C9DC5`, prime `0x01000193`).
 ///
-/// A frame's checksum is this hash of its RGB565 words in frame order (row 0 first, left to right), each word fed
-/// as its two little-endian bytes: low byte, then high byte ([`Fnv1a::write_rgb565`]).
+/// A frame's checksums are this hash of its RGB565 words, and of its `u16` depths, in frame order (row 0 first,
+/// left to right), each word fed as its two little-endian bytes: low byte, then high byte ([`Fnv1a::write_words`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Fnv1a(u32);
 
@@ -24,8 +24,8 @@ impl Fnv1a {
         self.0 = (self.0 ^ u32::from(byte)).wrapping_mul(Self::PRIME);
     }
 
-    /// Folds in RGB565 words, each as its little-endian bytes.
-    pub fn write_rgb565(&mut self, words: &[u16]) {
+    /// Folds in 16-bit words (RGB565 colours, `u16` depths), each as its little-endian bytes.
+    pub fn write_words(&mut self, words: &[u16]) {
         for &word in words {
             let [low, high] = word.to_le_bytes();
             self.write_u8(low);

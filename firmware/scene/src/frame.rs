@@ -10,7 +10,7 @@ use rastty_core::pipeline::{Bands, DrawStats};
 use rastty_core::target::Samples;
 use rastty_embedded_graphics::{BandMemory, FrameError, draw_frame};
 
-use crate::{ChecksumDisplay, FrameMemory, MemoryLayout, Scene, SceneError};
+use crate::{ChecksumDisplay, Fnv1a, FrameMemory, MemoryLayout, Scene, SceneError};
 
 /// Frame width in pixels.
 pub const WIDTH: u32 = 320;
@@ -19,7 +19,8 @@ pub const HEIGHT: u32 = 240;
 
 /// Renders frame `frame` in the bands of `layout` through `memory` into `display`, band by band, top to bottom,
 /// through [`draw_frame`] (one `fill_contiguous` a band): bins the triangles once, then draws each band from the
-/// bins. Returns the number of bands and the draw counts: binning's, with the bands' fragments.
+/// bins, and folds each band's depths into `depths`, when given, once it is drawn. Returns the number of bands and
+/// the draw counts: binning's, with the bands' fragments.
 ///
 /// # Panics
 /// If `frame >= FRAMES`.
@@ -31,6 +32,7 @@ pub fn render_frame(
     layout: MemoryLayout,
     memory: &mut FrameMemory,
     display: &mut impl DrawTarget<Color = Rgb565, Error = Infallible>,
+    mut depths: Option<&mut Fnv1a>,
 ) -> Result<(u32, DrawStats), SceneError> {
     let scene = Scene::new(frame)?;
     let bands = Bands::new(WIDTH, HEIGHT, layout.band_rows, Samples::One).map_err(SceneError::Target)?;
@@ -40,6 +42,9 @@ pub fn render_frame(
     let band_memory = BandMemory::<Rgb565, u16> { color, depth };
     draw_frame(display, bands, band_memory, |band| {
         stats.fragments += scene.draw_band(band, &bins)?.fragments;
+        if let Some(depths) = depths.as_deref_mut() {
+            fold_depths(depths, band.depth());
+        }
         Ok(())
     })
     .map_err(|e| match e {
@@ -51,8 +56,15 @@ pub fn render_frame(
     Ok((bands.count(), stats))
 }
 
+/// Folds a drawn band's depths into `depths`: out of line, so that the firmware's count of instructions by stage
+/// (`firmware/stages.py`) can tell it from the display's checksum.
+#[inline(never)]
+fn fold_depths(depths: &mut Fnv1a, band: &[u16]) {
+    depths.write_words(band);
+}
+
 /// Renders frame `frame` into a [`ChecksumDisplay`], which folds every band, as it is sent, into the frame's
-/// [`crate::Fnv1a`] checksum: the checksum is the firmware's display.
+/// [`crate::Fnv1a`] checksum: the checksum is the firmware's display; and the band's depths into a second one.
 ///
 /// # Panics
 /// If `frame >= FRAMES`.
@@ -64,9 +76,9 @@ pub fn checksum_frame(
     layout: MemoryLayout,
     memory: &mut FrameMemory,
 ) -> Result<FrameChecksum, SceneError> {
-    let mut display = ChecksumDisplay::new();
-    let (bands, stats) = render_frame(frame, layout, memory, &mut display)?;
-    Ok(FrameChecksum { frame, layout, checksum: display.checksum(), bands, stats })
+    let (mut display, mut depths) = (ChecksumDisplay::new(), Fnv1a::new());
+    let (bands, stats) = render_frame(frame, layout, memory, &mut display, Some(&mut depths))?;
+    Ok(FrameChecksum { frame, layout, checksum: display.checksum(), depth: depths.finish(), bands, stats })
 }
 
 /// What rendering a frame did.
@@ -78,6 +90,8 @@ pub struct FrameChecksum {
     pub layout: MemoryLayout,
     /// [`crate::Fnv1a`] of the frame's pixels.
     pub checksum: u32,
+    /// [`crate::Fnv1a`] of the frame's depths, as the depth test left them.
+    pub depth: u32,
     /// Bands rendered and checksummed.
     pub bands: u32,
     /// Triangle counts from binning, fragments summed over the bands.
@@ -86,12 +100,12 @@ pub struct FrameChecksum {
 
 impl fmt::Display for FrameChecksum {
     /// The line that the firmware and the host both print, and `check.sh` compares:
-    /// `frame 0 in 16 KiB: checksum 0x1234abcd, 60 bands, 24680 fragments`.
+    /// `frame 0 in 16 KiB: checksum 0x1234abcd, depth 0x5678ef01, 60 bands, 24680 fragments`.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "frame {} in {} KiB: checksum 0x{:08x}, {} bands, {} fragments",
-            self.frame, self.layout.budget_kib, self.checksum, self.bands, self.stats.fragments
+            "frame {} in {} KiB: checksum 0x{:08x}, depth 0x{:08x}, {} bands, {} fragments",
+            self.frame, self.layout.budget_kib, self.checksum, self.depth, self.bands, self.stats.fragments
         )
     }
 }
