@@ -27,6 +27,9 @@ pub const HEIGHT: u32 = 240;
 ///
 /// # Errors
 /// A [`SceneError`] if the mesh, the camera, a band or a draw fails (none does).
+// Out of line: the firmware calls it twice (timed, then checked), and inlined in both places the whole draw
+// would be compiled twice (12 KB of the core's code).
+#[inline(never)]
 pub fn render_frame(
     frame: usize,
     layout: MemoryLayout,
