@@ -40,6 +40,16 @@ pub fn inv_sqrt(x: f32) -> f32 {
     if subnormal { y * 4096.0 } else { y }
 }
 
+/// Whether `0 < x < inf` (false for NaN), as one comparison of the bits: a positive finite `f32`'s bits, less one,
+/// are below those of the largest finite one, and no other value's are (zero's wrap round; the infinities', NaNs'
+/// and negative values' are not below). A target without SIMD compares floats through its status flags, several
+/// instructions a comparison.
+#[inline(always)]
+#[must_use]
+pub fn positive_finite(x: f32) -> bool {
+    x.to_bits().wrapping_sub(1) < f32::MAX.to_bits()
+}
+
 /// Sine of `x` radians.
 #[inline(always)]
 #[must_use]
@@ -331,6 +341,18 @@ const fn exp_f64(x: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// [`positive_finite`] is `0 < x < inf` for every `f32` bit pattern at the edges of each class, and a spread of
+    /// all of them.
+    #[test]
+    fn positive_finite_is_the_two_comparisons() {
+        let edges = [0, 1, 0x007F_FFFF, 0x0080_0000, 0x3F80_0000, 0x7F7F_FFFF, 0x7F80_0000, 0x7F80_0001, 0x7FFF_FFFF];
+        let spread = (0..=u32::MAX).step_by(65_521);
+        for bits in edges.into_iter().flat_map(|b| [b, b | 0x8000_0000]).chain(spread) {
+            let x = f32::from_bits(bits);
+            assert_eq!(positive_finite(x), x > 0.0 && x < f32::INFINITY, "{bits:#010x}");
+        }
+    }
 
     /// The series agree with the platform's `powf` to a few units in the last place of an `f64` per unit of
     /// `|y ln x|` (the error of `y ln x` grows through the exponential), over the range the sRGB tables use and

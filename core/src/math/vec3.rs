@@ -69,7 +69,7 @@ impl Vec3 {
     #[must_use]
     pub fn try_normalize(self) -> Option<Self> {
         let squared = self.dot(self);
-        if squared > 0.0 && squared < f32::INFINITY { Some(self * float::inv_sqrt(squared)) } else { None }
+        float::positive_finite(squared).then(|| self * float::inv_sqrt(squared))
     }
 
     /// The coordinate axis with the smallest absolute dot product with `self` (X for the zero vector): crossed

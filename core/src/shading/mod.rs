@@ -33,6 +33,7 @@ mod lights;
 mod maps;
 mod material;
 mod normals;
+mod one_fragment;
 mod scratch;
 mod shader;
 mod shading_model;

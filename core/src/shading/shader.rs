@@ -43,6 +43,9 @@ pub struct SurfaceShader<'a, A, B, U, T, C = Absent, const CAPS: u32 = { capabil
     /// [`Shader::shade_batch`] takes `&self`, so they are borrowed for the length of one batch, which calls
     /// nothing that borrows them again.
     scratch: RefCell<[Scratch; KEPT_SCRATCH]>,
+    /// Each fragment is lit per pixel in scalar maths ([`Surface::per_pixel_one`]) rather than as a batch of one:
+    /// decided once, for the draw.
+    one_fragment: bool,
     _varyings: PhantomData<(A, B, U, T, C)>,
 }
 
@@ -102,11 +105,15 @@ where
             return Err(ShadingError::Unsupported);
         }
         let shininess = Exponent::new(material.shininess);
+        let surface = Surface { transforms, material, shininess, lights, variant, layout };
+        let per_pixel = variant.shading == ShadingModel::Phong && has(CAPS, capabilities::PER_PIXEL);
+        let one_fragment = per_pixel && surface.one_fragment(U::PRESENT && layout.uvs);
         Ok(Self {
-            surface: Surface { transforms, material, shininess, lights, variant, layout },
+            surface,
             tangent_frame: TangentFrame::new(&transforms),
             tangents,
             scratch: RefCell::new(core::array::from_fn(|_| Scratch::new())),
+            one_fragment,
             _varyings: PhantomData,
         })
     }
@@ -263,6 +270,19 @@ where
         };
         const COARSE: u32 = capabilities::UNLIT | capabilities::FLAT | capabilities::GOURAUD;
         match v.shading {
+            // Where batches hold one fragment (a constant: elsewhere this is not compiled), if the draw said so.
+            ShadingModel::Phong if BATCH_SIZE == 1 && self.one_fragment => {
+                let varyings = batch.varyings(0);
+                let albedo = match varyings.color.get() {
+                    Some(color) if v.vertex_colors => m.color.mul_elem(color),
+                    _ => m.color,
+                };
+                let two_sided = has(CAPS, capabilities::TWO_SIDED) && v.two_sided;
+                let facing = two_sided.then(|| if batch.fragment(0).front_facing { 1.0 } else { -1.0 });
+                let normal = varyings.first.get().unwrap_or(Vec3::ZERO);
+                let world = if layout.second { varyings.second.get().unwrap_or(Vec3::ZERO) } else { Vec3::ZERO };
+                colors[0] = self.surface.per_pixel_one(normal, world, albedo, facing);
+            }
             ShadingModel::Phong if has(CAPS, capabilities::PER_PIXEL) => {
                 self.with_scratch(len, |s| {
                     s.albedo = base_albedo();

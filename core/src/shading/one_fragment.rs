@@ -1,0 +1,192 @@
+//! Per-pixel lighting of one fragment in scalar maths: what a target without SIMD registers runs in place of its
+//! batch of one ([`BATCH_SIZE`] is 1 there) for the draws it covers ([`Surface::one_fragment`]: lit per pixel, no
+//! maps, no shadow maps).
+//!
+//! The batch's stages ([`super::surface`], [`super::lighting`]) fill working columns, loop over lanes and decide,
+//! for each batch, which stages run; with one fragment a batch, each of those costs as much as the arithmetic
+//! (on the firmware's frame, 528 instructions a fragment). Here the decision is made once per draw, and the
+//! fragment's values stay in registers. The operations are the batch's, in the same order, so the bits are the
+//! same: the tests below compare the two over every variant covered, and the firmware's checksums compare this
+//! path (the target's) with the batch's (the host's).
+
+use super::capabilities::{self, has};
+use super::surface::Surface;
+use super::{LightKind, NormalSource, SpecularSource};
+use crate::color::{ShadingSpace, encode_srgb};
+use crate::math::Vec3;
+use crate::math::float;
+use crate::pipeline::BATCH_SIZE;
+
+impl<const CAPS: u32> Surface<'_, CAPS> {
+    /// Whether the draw's per-pixel fragments go through [`Self::per_pixel_one`], decided once per draw: where a
+    /// batch holds one fragment, for a draw that reads no map (`maps`: its shader carries texture coordinates and
+    /// the variant reads them) and no shadow map, with interpolated normals.
+    pub fn one_fragment(&self, maps: bool) -> bool {
+        let v = &self.variant;
+        BATCH_SIZE == 1 && !maps && v.normals == NormalSource::Interpolated && v.shadowed_lights == 0
+    }
+
+    /// The colour of one fragment lit per pixel, as the draw stores it ([`Self::one_fragment`] must hold):
+    /// `normal` and `world` as interpolated, `albedo` the material colour (times the vertex colour), and `facing`
+    /// its sign under two-sided lighting (`None` without). The batch's stages, operation for operation:
+    /// [`super::normals::interpolated`], [`super::normals::face_the_viewer`], [`super::lighting::light`], the
+    /// sum of the lit albedo and highlights, [`super::maps::stored`].
+    #[inline(always)]
+    pub fn per_pixel_one(&self, normal: Vec3, world: Vec3, albedo: Vec3, facing: Option<f32>) -> Vec3 {
+        let n = normal.normalize_or_zero();
+        let n = match facing {
+            Some(sign) if has(CAPS, capabilities::TWO_SIDED) => n * sign,
+            _ => n,
+        };
+        let specular = self.variant.specular != SpecularSource::None;
+        let view = if specular { (self.transforms.eye - world).normalize_or_zero() } else { Vec3::ZERO };
+        let mut diffuse = self.lights.ambient;
+        let mut highlights = Vec3::ZERO;
+        for light in self.lights.lights {
+            let (to_light, share) = match light.kind {
+                LightKind::Directional { to_light } => (to_light, None),
+                _ if has(CAPS, capabilities::POINT_LIGHTS) => light.kind.toward(world),
+                // A shader compiled without point lights has had its variant checked to have none.
+                _ => (Vec3::ZERO, None),
+            };
+            let n_dot_l = n.dot(to_light);
+            let mut arriving = float::max(n_dot_l, 0.0);
+            if let Some(share) = share {
+                arriving *= share;
+            }
+            diffuse += light.color * arriving;
+            if specular {
+                let h = (to_light + view).normalize_or_zero();
+                let mut k = self.shininess.raise(float::max(n.dot(h), 0.0));
+                if let Some(share) = share {
+                    k *= share;
+                }
+                // Unlit, the batch adds +0.0, which leaves the sum as it was.
+                if n_dot_l > 0.0 {
+                    highlights += light.color * k;
+                }
+            }
+        }
+        let lit = albedo.mul_elem(diffuse);
+        let color = if specular { lit + self.material.specular.mul_elem(highlights) } else { lit };
+        match self.space() {
+            ShadingSpace::Linear => encode_srgb(color),
+            ShadingSpace::Encoded => color,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::Mat4;
+    use crate::math::float::Exponent;
+    use crate::pipeline::DrawState;
+    use crate::pipeline::columns::{Column, Column3};
+    use crate::shading::scratch::Scratch;
+    use crate::shading::{Cone, Falloff, Layout, Light, Lighting, Material, Transforms, Variant};
+    use crate::shading::{Cutout, ShadingModel, capabilities::ALL};
+    use crate::texture::{FilterMode, MipFilter, WrapMode};
+
+    /// A per-pixel variant lit by `lights` in `space`, with or without highlights, vertex colours and two sides.
+    fn variant(specular: bool, colors: bool, two_sided: bool, space: ShadingSpace, lights: &[Light<'_>]) -> Variant {
+        let points = lights.iter().filter(|l| !matches!(l.kind, LightKind::Directional { .. })).count();
+        Variant {
+            shading: ShadingModel::Phong,
+            vertex_colors: colors,
+            world: true,
+            uvs: false,
+            tangents: false,
+            albedo_map: false,
+            normals: NormalSource::Interpolated,
+            specular: if specular { SpecularSource::Constant } else { SpecularSource::None },
+            glow_map: false,
+            occlusion_map: false,
+            cutout: Cutout::None,
+            two_sided,
+            space,
+            filter: FilterMode::Nearest,
+            wrap: WrapMode::Repeat,
+            mip_filter: MipFilter::Off,
+            directional_lights: lights.len() - points,
+            point_lights: points,
+            shadowed_lights: 0,
+            pcf_radius: 0,
+            state: DrawState::DEFAULT,
+        }
+    }
+
+    /// The batch's colour of one fragment: its stages over working columns of one filled lane.
+    fn batch_color(surface: &Surface<'_, ALL>, normal: Vec3, world: Vec3, albedo: Vec3, facing: f32) -> Vec3 {
+        let mut s = Scratch::new();
+        s.len = 1;
+        s.normal = Column3::splat(normal);
+        s.world = Column3::splat(world);
+        s.albedo = Column3::splat(albedo);
+        s.facing = Column::splat(facing);
+        let mut colors = [Vec3::ZERO; BATCH_SIZE];
+        surface.per_pixel::<false>(&mut s, &mut colors);
+        colors[0]
+    }
+
+    /// Every covered variant, over normals, points and albedos that include the degenerate ones (a zero normal, a
+    /// point at the eye, a light at the point), gives the batch's bits.
+    #[test]
+    fn one_fragment_gives_the_batch_bits() {
+        let cone = Cone::new(Vec3::new(0.0, -1.0, 0.2), 0.3, 0.7);
+        let light_sets: [&[Light<'_>]; 4] = [
+            &[Light::directional(Vec3::new(0.3, 0.8, 0.5), Vec3::new(1.0, 0.95, 0.9))],
+            &[
+                Light::directional(Vec3::new(-0.6, 0.2, 0.7), Vec3::splat(0.6)),
+                Light::directional(Vec3::new(0.1, -0.9, 0.3), Vec3::new(0.2, 0.3, 0.9)),
+            ],
+            &[Light { kind: LightKind::point(Vec3::new(1.0, 2.0, 1.5)), ..Light::directional(Vec3::Y, Vec3::ONE) }],
+            &[Light {
+                kind: LightKind::Spot {
+                    position: Vec3::new(0.2, 3.0, 0.4),
+                    falloff: Falloff::inverse_square(Some(6.0)),
+                    cone,
+                },
+                ..Light::directional(Vec3::Y, Vec3::new(2.0, 1.5, 1.0))
+            }],
+        ];
+        let normals = [Vec3::new(0.2, 0.9, 0.1), Vec3::new(-3.0, 0.5, 2.0), Vec3::ZERO, Vec3::new(1e-30, 0.0, 0.0)];
+        let worlds = [Vec3::new(0.1, 0.2, 0.3), Vec3::new(-1.0, 0.0, 2.5), Vec3::new(0.0, 0.0, 5.0)];
+        let identity = Transforms::new(Mat4::IDENTITY, Mat4::IDENTITY, Mat4::IDENTITY);
+        let transforms = Transforms { eye: Vec3::new(0.0, 0.0, 5.0), ..identity };
+        let mut compared = 0;
+        for lights in light_sets {
+            for (specular, colors, two_sided) in
+                [(true, false, false), (false, false, false), (true, true, false), (true, false, true)]
+            {
+                for space in [ShadingSpace::Encoded, ShadingSpace::Linear] {
+                    let variant = variant(specular, colors, two_sided, space, lights);
+                    let material =
+                        Material { specular: Vec3::splat(0.35), shininess: 24.0, ..Material::plain(Vec3::splat(0.8)) };
+                    let surface = Surface::<ALL> {
+                        transforms,
+                        material,
+                        shininess: Exponent::new(material.shininess),
+                        lights: Lighting { ambient: Vec3::splat(0.1), lights, space },
+                        variant,
+                        layout: Layout { first: true, second: true, uvs: false, tangents: false, colors },
+                    };
+                    assert!(surface.one_fragment(false) == (BATCH_SIZE == 1));
+                    for (&normal, &world) in normals.iter().zip(worlds.iter().cycle()) {
+                        for facing in [1.0, -1.0] {
+                            let albedo = if colors { Vec3::new(0.8, 0.4, 0.2) } else { material.color };
+                            let sign = two_sided.then_some(facing);
+                            let one = surface.per_pixel_one(normal, world, albedo, sign);
+                            let batch =
+                                batch_color(&surface, normal, world, albedo, if two_sided { facing } else { 1.0 });
+                            let bits = |c: Vec3| [c.x, c.y, c.z].map(f32::to_bits);
+                            assert_eq!(bits(one), bits(batch), "{variant:?} n {normal:?} world {world:?} {facing}");
+                            compared += 1;
+                        }
+                    }
+                }
+            }
+        }
+        assert_eq!(compared, 4 * 4 * 2 * 4 * 2);
+    }
+}
