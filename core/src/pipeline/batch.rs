@@ -71,6 +71,19 @@ impl<V: Varyings, F: Copy> Triangles<V, F> {
         }
     }
 
+    /// The varyings of the triangle in slot 0 (where a batch holds one fragment, the one being rasterized: the pixel
+    /// loops hand its fragments over one at a time, [`super::fragment_stage::FragmentStage::one`]), at a fragment of
+    /// weight fractions `[n1, n2, d]`, their screen-space slopes (zero, in a draw that reads none), and its face:
+    /// [`super::fragments::Fragments::resolve`] and [`Self::resolve`]'s arithmetic, and [`FragmentBatch::slopes`]'.
+    #[inline(always)]
+    pub fn one(&self, [n1, n2, d]: [f32; 3]) -> (V, Slopes<V>, &F) {
+        let r = 1.0 / d;
+        let (w1, w2) = (n1 * r, n2 * r);
+        let [v0, d1, d2] = &self.varyings[0];
+        let slopes = Slopes::of(d1, d2, FractionSteps::default().weight_slopes(w1, w2, r));
+        (v0.interpolate(d1, w1, d2, w2), slopes, &self.faces[0])
+    }
+
     /// The batch of `fragments` as a shader sees it.
     #[inline(always)]
     pub fn batch<'b>(&'b self, fragments: &'b Fragments) -> FragmentBatch<'b, V, F> {

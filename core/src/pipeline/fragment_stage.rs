@@ -4,12 +4,13 @@
 //! through a `dyn` reference per batch. [`ShaderStage`] is the one implementation, for each shader type: it keeps
 //! the varyings and faces of the batch's triangles ([`Triangles`]), interpolates them, runs
 //! [`Shader::shade_batch`] (and, in a draw that discards fragments, [`Shader::kept_batch`]), and writes the
-//! colours with [`write_batch`], which is compiled once for every shader.
+//! colours with [`write_batch`], which is compiled once for every shader. Where a batch holds one fragment, most
+//! draws skip the batch: [`FragmentStage::one`] shades each fragment as the pixel loop finds it.
 
 use super::BATCH_SIZE;
 use super::batch::Triangles;
 use super::fragments::Fragments;
-use super::{Shader, Varyings};
+use super::{Fragment, Shader, Varyings};
 use crate::math::Vec3;
 use crate::target::{ColorBuffer, ColorView, DepthBuffer, DepthView, SAMPLE_COUNT, Samples};
 
@@ -32,6 +33,22 @@ pub(crate) trait FragmentStage {
     /// are written, depth and colour, and their number is returned; 0 otherwise (the pixel loops count those when
     /// they push them).
     fn flush(&mut self, fragments: &mut Fragments, writes: Writes<'_, '_>) -> u64;
+
+    /// Shades `fragment`, of weight fractions `fractions`, and writes its colour at `index` of `color`, without
+    /// the batch: where a batch holds one fragment ([`BATCH_SIZE`] is 1), in a draw of one sample per pixel that
+    /// neither discards fragments nor reads slopes ([`one_at_a_time`]), the pixel loops hand each fragment over as
+    /// it passes the depth test, so that its place, weights and index are not stored in the batch and read back.
+    /// The arithmetic of a batch of it ([`Triangles::one`], the shader's [`Shader::fragment`], the colour view's
+    /// write).
+    fn one(&mut self, fragment: &Fragment, fractions: [f32; 3], index: usize, color: &mut ColorView<'_>);
+}
+
+/// Whether the pixel loops hand fragments to the fragment stage one at a time ([`FragmentStage::one`]) in a draw
+/// that discards fragments (`cutout`) or not and reads slopes or not: a constant false where batches hold more
+/// than one fragment.
+#[inline(always)]
+pub(crate) const fn one_at_a_time(cutout: bool, slopes: bool) -> bool {
+    BATCH_SIZE == 1 && !cutout && !slopes
 }
 
 /// The fragment stage of a draw with shader `S`.
@@ -57,7 +74,8 @@ impl<'s, S: Shader> ShaderStage<'s, S> {
         self.cutout
     }
 
-    /// Puts a triangle that reaches the pixel loop into the batch's next slot, before its fragments: its
+    /// Puts a triangle that reaches the pixel loop into the batch's next slot (slot 0 where fragments go one at a
+    /// time: none is pushed), before its fragments: its
     /// varyings given in its oriented order, and its face.
     #[inline(always)]
     pub fn start_triangle(&mut self, fragments: &Fragments, [v0, v1, v2]: [&S::Varyings; 3], face: S::Face) {
@@ -92,6 +110,14 @@ impl<S: Shader> FragmentStage for ShaderStage<'_, S> {
         let current = fragments.clear();
         triangles.keep_current(current);
         written
+    }
+
+    /// Out of line, as [`Self::flush`].
+    #[inline(never)]
+    fn one(&mut self, fragment: &Fragment, fractions: [f32; 3], index: usize, color: &mut ColorView<'_>) {
+        let Some(triangles) = &self.triangles else { return };
+        let (varyings, slopes, face) = triangles.one(fractions);
+        color.write(index, self.shader.fragment(fragment, face, &varyings, &slopes));
     }
 }
 

@@ -17,11 +17,11 @@
 mod multisample;
 
 use super::edges::{CentreEdges, DynamicEdges, Edges, FixedEdges, FloatEdges, NarrowEdges};
-use super::fragment_stage::{FragmentStage, Writes};
+use super::fragment_stage::{FragmentStage, Writes, one_at_a_time};
 use super::fragments::Fragments;
 use super::interpolator::{Affine, DynamicInterpolator, Interpolator, PerspectiveCorrect};
 use super::slopes::FractionSteps;
-use super::{Cull, Interpolation, Winding};
+use super::{Cull, Fragment, Interpolation, Winding};
 use crate::camera::Viewport;
 use crate::math::{Lanes, Vec4, float};
 use crate::target::{
@@ -674,7 +674,9 @@ impl<E: Edges> Covered<'_, E> {
 /// fragments that passed the depth test (in a cut-out draw, the fragments written when a batch was shaded).
 ///
 /// With `CUTOUT` (a draw whose shader discards fragments) a fragment is pushed when it is nearer than the stored
-/// depth, which is written only when its batch is shaded, for the fragments kept.
+/// depth, which is written only when its batch is shaded, for the fragments kept. Where a batch holds one fragment,
+/// a draw that neither discards fragments nor reads slopes hands each fragment to the fragment stage as it passes
+/// ([`FragmentStage::one`]) rather than through the batch.
 ///
 /// Where a target has no 64-bit registers, the edge values are walked in `i32` where they fit (the same values).
 #[inline(always)]
@@ -771,7 +773,8 @@ impl<E: Edges> Covered<'_, E> {
 
     /// [`fill_single`]'s walk with the triangle's edges as `edges` (in `i64`, or in `i32` where they fit,
     /// [`NarrowEdges`]): the covered centres of each row in order, each depth-tested (in a cut-out draw, compared)
-    /// and pushed into the batch, which is handed to the fragment stage whenever it fills.
+    /// and pushed into the batch, which is handed to the fragment stage whenever it fills (or handed over one at a
+    /// time, [`one_at_a_time`]).
     ///
     /// Out of line where it has two kinds of edges ([`NARROW`]): inlined, each kind was copied into each of the
     /// draw loop's calls (on the firmware, 12 KB more code).
@@ -790,6 +793,8 @@ impl<E: Edges> Covered<'_, E> {
         let width = target.width() as usize;
         let row0 = target.rows().start as i32;
         let samples = target.samples();
+        // Decided once per triangle (a constant false where batches hold several fragments).
+        let one = one_at_a_time(CUTOUT, pass.slopes) && samples == Samples::One;
         // At most one fragment per pixel of the frame, which has fewer than 2^32.
         let mut shaded = 0u32;
         for y in f.y0..=f.y1 {
@@ -807,7 +812,10 @@ impl<E: Edges> Covered<'_, E> {
                 let passed = if CUTOUT { depth.nearer(index, z) } else { depth.test_and_set(index, z) };
                 if passed {
                     let fractions = interpolator.fractions(&setup, ef);
-                    if fragments.push(x as u32, y as u32, z, fractions, index) {
+                    if one {
+                        let fragment = Fragment { x: x as u32, y: y as u32, depth: z, front_facing: f.front_facing };
+                        stage.one(&fragment, fractions, index, &mut target.color);
+                    } else if fragments.push(x as u32, y as u32, z, fractions, index) {
                         // A cut-out draw counts its fragments as written, and lends the fragment stage its depth
                         // buffer for those it keeps ([`Writes`]); the others count them as they pass.
                         if CUTOUT {

@@ -9,7 +9,7 @@ use super::light_terms::{face_light, vertex_light};
 use super::scratch::{Coordinates, Scratch};
 use super::surface::Surface;
 use super::varyings::{Absent, Slot, SurfaceVaryings};
-use super::{Cutout, Lighting, Material, ShadingError, Variant, coarse, views};
+use super::{Cutout, Lighting, Material, NormalSource, ShadingError, Variant, coarse, views};
 use crate::color::ShadingSpace;
 use crate::math::float::Exponent;
 use crate::math::{Mat4, Vec2, Vec3, Vec4};
@@ -72,8 +72,9 @@ where
     ///
     /// # Errors
     /// [`ShadingError::Unsupported`] when the slot types do not carry the variant's [`Variant::layout`]
-    /// (they may carry more), or `CAPS` ([`capabilities`]) leaves out its shading model, point lights, shadow
-    /// maps, two-sided lighting, cut-outs, mipmaps or linear light.
+    /// (they may carry more), `CAPS` ([`capabilities`]) leaves out its shading model, point lights, shadow
+    /// maps, two-sided lighting, cut-outs, mipmaps or linear light, or its per-pixel lighting takes normals from
+    /// anything but the interpolated ones or a map read through texture coordinates (no resolved variant does).
     pub fn new(
         variant: Variant,
         transforms: Transforms,
@@ -101,7 +102,12 @@ where
             && (variant.cutout == Cutout::None || has(CAPS, capabilities::CUTOUT))
             && (variant.mip_filter == MipFilter::Off || has(CAPS, capabilities::MIPMAPS))
             && (variant.space == ShadingSpace::Encoded || has(CAPS, capabilities::LINEAR_LIGHT));
-        if !(carried && compiled) {
+        // A normal map is read through texture coordinates: without them, per-pixel lighting has interpolated
+        // normals (as every resolved variant does), which `ALWAYS_ONE_FRAGMENT` relies on.
+        let normals = variant.shading != ShadingModel::Phong
+            || variant.normals == NormalSource::Interpolated
+            || (layout.uvs && matches!(variant.normals, NormalSource::TangentMap | NormalSource::ObjectMap));
+        if !(carried && compiled && normals) {
             return Err(ShadingError::Unsupported);
         }
         let shininess = Exponent::new(material.shininess);
@@ -132,6 +138,34 @@ where
         let mut fresh = Scratch::new();
         fresh.len = len;
         stages(&mut fresh);
+    }
+
+    /// Whether every fragment this shader lights per pixel goes through [`Self::lit_one`], known from its type:
+    /// where batches hold one fragment, for a shader that carries no texture coordinates (so reads no map, and
+    /// [`Self::new`] accepts no normal map) and is compiled without shadow maps. Then its batch stages for per-pixel
+    /// lighting are not compiled in (on the firmware, most of the core's code they would add).
+    const ALWAYS_ONE_FRAGMENT: bool = BATCH_SIZE == 1 && !U::PRESENT && !has(CAPS, capabilities::SHADOWS);
+
+    /// Whether this draw lights its fragments per pixel one at a time, in scalar maths ([`Self::lit_one`]).
+    #[inline(always)]
+    fn lights_one_fragment(&self) -> bool {
+        BATCH_SIZE == 1 && (Self::ALWAYS_ONE_FRAGMENT || self.one_fragment)
+    }
+
+    /// One fragment of a draw lit per pixel in scalar maths ([`Surface::per_pixel_one`]): its albedo, facing and
+    /// varyings as the batch's stages gather them.
+    #[inline(always)]
+    fn lit_one(&self, fragment: &Fragment, varyings: &SurfaceVaryings<A, B, U, T, C>) -> Vec3 {
+        let (m, v, layout) = (&self.surface.material, &self.surface.variant, &self.surface.layout);
+        let albedo = match varyings.color.get() {
+            Some(color) if v.vertex_colors => m.color.mul_elem(color),
+            _ => m.color,
+        };
+        let two_sided = has(CAPS, capabilities::TWO_SIDED) && v.two_sided;
+        let facing = two_sided.then(|| if fragment.front_facing { 1.0 } else { -1.0 });
+        let normal = varyings.first.get().unwrap_or(Vec3::ZERO);
+        let world = if layout.second { varyings.second.get().unwrap_or(Vec3::ZERO) } else { Vec3::ZERO };
+        self.surface.per_pixel_one(normal, world, albedo, facing)
     }
 
     /// The batch's texture coordinates, with their slopes when the variant mipmaps.
@@ -246,8 +280,12 @@ where
         face_light(&f.transforms, &f.lights, f.material.shininess, &f.variant, mesh, triangle)
     }
 
-    /// One fragment as a batch of one.
+    /// One fragment: lit per pixel in scalar maths where batches hold one fragment and the draw allows it
+    /// (`core/src/shading/one_fragment.rs`), else as a batch of one.
     fn fragment(&self, f: &Fragment, face: &LightTerms, v: &Self::Varyings, slopes: &Slopes<Self::Varyings>) -> Vec3 {
+        if self.surface.variant.shading == ShadingModel::Phong && self.lights_one_fragment() {
+            return self.lit_one(f, v);
+        }
         let mut colors = [Vec3::ZERO; BATCH_SIZE];
         self.shade_batch(&OneFragment::new(f, *face, *v, slopes).batch(), &mut colors);
         colors[0]
@@ -271,17 +309,8 @@ where
         const COARSE: u32 = capabilities::UNLIT | capabilities::FLAT | capabilities::GOURAUD;
         match v.shading {
             // Where batches hold one fragment (a constant: elsewhere this is not compiled), if the draw said so.
-            ShadingModel::Phong if BATCH_SIZE == 1 && self.one_fragment => {
-                let varyings = batch.varyings(0);
-                let albedo = match varyings.color.get() {
-                    Some(color) if v.vertex_colors => m.color.mul_elem(color),
-                    _ => m.color,
-                };
-                let two_sided = has(CAPS, capabilities::TWO_SIDED) && v.two_sided;
-                let facing = two_sided.then(|| if batch.fragment(0).front_facing { 1.0 } else { -1.0 });
-                let normal = varyings.first.get().unwrap_or(Vec3::ZERO);
-                let world = if layout.second { varyings.second.get().unwrap_or(Vec3::ZERO) } else { Vec3::ZERO };
-                colors[0] = self.surface.per_pixel_one(normal, world, albedo, facing);
+            ShadingModel::Phong if self.lights_one_fragment() => {
+                colors[0] = self.lit_one(&batch.fragment(0), batch.varyings(0));
             }
             ShadingModel::Phong if has(CAPS, capabilities::PER_PIXEL) => {
                 self.with_scratch(len, |s| {
