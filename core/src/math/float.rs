@@ -26,18 +26,44 @@ pub fn sqrt(x: f32) -> f32 {
 /// Newton-Raphson steps for `y^-2 = x` (each squares the error: 2e-3, 5e-6, below rounding), each written as a
 /// correction `y + y (1 - x y^2) / 2` so that its rounding stays below the correction's size. Subnormal inputs
 /// are scaled by 2^24 first (exact), and their result by 2^12.
+///
+/// Where the target has SIMD registers the subnormal case is two selects, which a lane loop widens
+/// ([`inv_sqrt_selecting`]); elsewhere it is a branch around them ([`inv_sqrt_branching`]: on the Cortex-M4 a float
+/// comparison and a select cost several instructions each). The same operations either way.
 #[inline(always)]
 #[must_use]
 pub fn inv_sqrt(x: f32) -> f32 {
-    const SCALE: f32 = 16_777_216.0; // 2^24: an even power, so its square root 2^12 is exact
-    let subnormal = x < f32::MIN_POSITIVE;
-    let x = if subnormal { x * SCALE } else { x };
+    const SELECTS: bool = cfg!(any(target_feature = "sse2", target_feature = "neon", target_feature = "simd128"));
+    if SELECTS { inv_sqrt_selecting(x) } else { inv_sqrt_branching(x) }
+}
+
+/// 2^24: an even power, so its square root 2^12 is exact; a subnormal times it is normal.
+const SUBNORMAL_SCALE: f32 = 16_777_216.0;
+
+/// [`inv_sqrt`] of a normal `x` (or of a subnormal scaled by [`SUBNORMAL_SCALE`]): the estimate and three Newton
+/// steps.
+#[inline(always)]
+fn inv_sqrt_normal(x: f32) -> f32 {
     let mut y = f32::from_bits(0x5F37_5A86_u32.wrapping_sub(x.to_bits() >> 1));
     for _ in 0..3 {
         let residual = 1.0 - x * y * y;
         y += y * (0.5 * residual);
     }
+    y
+}
+
+/// [`inv_sqrt`] with the subnormal case chosen by selects.
+#[inline(always)]
+pub(crate) fn inv_sqrt_selecting(x: f32) -> f32 {
+    let subnormal = x < f32::MIN_POSITIVE;
+    let y = inv_sqrt_normal(if subnormal { x * SUBNORMAL_SCALE } else { x });
     if subnormal { y * 4096.0 } else { y }
+}
+
+/// [`inv_sqrt`] with the subnormal case behind a branch.
+#[inline(always)]
+pub(crate) fn inv_sqrt_branching(x: f32) -> f32 {
+    if x < f32::MIN_POSITIVE { inv_sqrt_normal(x * SUBNORMAL_SCALE) * 4096.0 } else { inv_sqrt_normal(x) }
 }
 
 /// Whether `0 < x < inf` (false for NaN), as one comparison of the bits: a positive finite `f32`'s bits, less one,
@@ -341,6 +367,19 @@ const fn exp_f64(x: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The two forms of [`inv_sqrt`] give the same bits, for every subnormal, across the exponents and for the
+    /// values its callers refuse (zero, negative, infinite, NaN).
+    #[test]
+    fn inverse_square_roots_by_selects_and_by_branches_agree() {
+        let spread = (0..=u32::MAX).step_by(4_099);
+        let subnormals = (1..0x0080_0000).step_by(7);
+        let edges = [0, 0x8000_0000, 0x7F80_0000, 0xFF80_0000, 0x7FC0_0000, 0x0080_0000, 0x007F_FFFF, 0x3F80_0000];
+        for bits in spread.chain(subnormals).chain(edges) {
+            let x = f32::from_bits(bits);
+            assert_eq!(inv_sqrt_selecting(x).to_bits(), inv_sqrt_branching(x).to_bits(), "{bits:#010x}");
+        }
+    }
 
     /// [`positive_finite`] is `0 < x < inf` for every `f32` bit pattern at the edges of each class, and a spread of
     /// all of them.
