@@ -27,9 +27,9 @@ pub fn sqrt(x: f32) -> f32 {
 /// correction `y + y (1 - x y^2) / 2` so that its rounding stays below the correction's size. Subnormal inputs
 /// are scaled by 2^24 first (exact), and their result by 2^12.
 ///
-/// Where the target has SIMD registers the subnormal case is two selects, which a lane loop widens
-/// ([`inv_sqrt_selecting`]); elsewhere it is a branch around them ([`inv_sqrt_branching`]: on the Cortex-M4 a float
-/// comparison and a select cost several instructions each). The same operations either way.
+/// Where the target has SIMD registers the subnormal case is two selects, which a lane loop widens; elsewhere it
+/// is a branch around them (on the Cortex-M4 a float comparison and a select cost several instructions each). The
+/// same operations either way: a test compares the two forms bit for bit.
 #[inline(always)]
 #[must_use]
 pub fn inv_sqrt(x: f32) -> f32 {
