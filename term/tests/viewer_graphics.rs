@@ -421,9 +421,15 @@ fn inside_tmux_kitty_images_are_shown_by_placeholders_that_follow_their_pane() {
     // Pane %0's image is 16 + 0.
     let image = 16;
     screen.wait_for("placeholders over the viewer's pane", |out| placeholders(out) == over_pane(image, left, pane));
-    let text = String::from_utf8_lossy(&screen.output()).into_owned();
-    let (keys, rgb) = kitty_image(&text[text.rfind("\x1b_Ga=T,U=1,").expect("an image")..]);
+    // The last image sent is for the pane's cells, and has arrived whole: its last chunk (`m=0`) up to its string
+    // terminator. (On a loaded machine an image made before tmux settled the pane's size may come first.)
     let sized = format!(",i={image},c={},r={},q=2,", pane.0, pane.1);
+    let last_image = |text: &str| text.rfind("\x1b_Ga=T,U=1,").map(|at| text[at..].to_owned());
+    let whole = |image: &str| image.find("m=0;").is_some_and(|last| image[last..].contains("\x1b\\"));
+    screen.wait_for("the pane's whole image", |out| {
+        last_image(&String::from_utf8_lossy(out)).is_some_and(|image| image.contains(&sized) && whole(&image))
+    });
+    let (keys, rgb) = kitty_image(&last_image(&String::from_utf8_lossy(&screen.output())).expect("an image"));
     assert!(keys.starts_with("a=T,U=1,f=24,o=z,") && keys.contains(&sized), "{keys}");
     assert!(colours(rgb.chunks_exact(3).map(|c| [c[0], c[1], c[2]])) > 20);
     let sent = images_sent(&screen.output());
