@@ -115,7 +115,9 @@ fn a_terminal_of_no_size_gets_a_picture_of_the_size_its_variables_or_the_default
         let mut viewer = Viewer::start_with_env(&slave, &[], vars);
         drop(slave);
         let screen = Screen::start(master);
-        screen.wait_for_picture();
+        // The frame may arrive in pieces: wait until its lowest row has come (or time out, failing).
+        let lowest = |out: &[u8]| rows_addressed(out).first().copied();
+        screen.wait_for("the picture's last row", |out| lowest(out).is_some_and(|row| row >= rows));
         let addressed = rows_addressed(&screen.output());
         assert_eq!(addressed.first(), Some(&rows), "{vars:?}: rows addressed {addressed:?}");
         viewer.signal("-TERM");
