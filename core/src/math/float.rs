@@ -33,9 +33,13 @@ pub fn sqrt(x: f32) -> f32 {
 #[inline(always)]
 #[must_use]
 pub fn inv_sqrt(x: f32) -> f32 {
-    const SELECTS: bool = cfg!(any(target_feature = "sse2", target_feature = "neon", target_feature = "simd128"));
-    if SELECTS { inv_sqrt_selecting(x) } else { inv_sqrt_branching(x) }
+    if SIMD { inv_sqrt_selecting(x) } else { inv_sqrt_branching(x) }
 }
+
+/// True where the target has SIMD registers (x86-64, AArch64, WebAssembly with `simd128`): lane loops then run
+/// over every lane, a constant count the compiler widens to SIMD instructions ([`crate::pipeline::columns`]), and
+/// choices inside them are selects rather than branches.
+pub(crate) const SIMD: bool = cfg!(any(target_feature = "sse2", target_feature = "neon", target_feature = "simd128"));
 
 /// 2^24: an even power, so its square root 2^12 is exact; a subnormal times it is normal.
 const SUBNORMAL_SCALE: f32 = 16_777_216.0;

@@ -13,12 +13,8 @@
 // Lane loops index every column they touch by the same lane, which iterators would hide.
 #![allow(clippy::needless_range_loop)]
 
-use crate::math::float::{self, Exponent};
+use crate::math::float::{self, Exponent, SIMD};
 use crate::math::{Lanes, Vec2, Vec3};
-
-/// True where the target has SIMD registers (x86-64, AArch64, WebAssembly with `simd128`): lane loops then run
-/// over every lane, a constant count the compiler widens to SIMD instructions.
-const SIMD: bool = cfg!(any(target_feature = "sse2", target_feature = "neon", target_feature = "simd128"));
 
 /// The most fragments a [`FragmentBatch`](super::FragmentBatch) holds: 32 where the target has SIMD registers, 1 elsewhere.
 ///

@@ -282,6 +282,11 @@ where
 
     /// One fragment: lit per pixel in scalar maths where batches hold one fragment and the draw allows it
     /// (`core/src/shading/one_fragment.rs`), else as a batch of one.
+    ///
+    /// Inlined where there is no SIMD, into the pixel loops' one-at-a-time calls, which hand over slopes only
+    /// because the signature has them: then the slopes, unread, are not computed (on the firmware 8 instructions a
+    /// fragment, and 760 bytes of the core's code).
+    #[cfg_attr(not(any(target_feature = "sse2", target_feature = "neon", target_feature = "simd128")), inline(always))]
     fn fragment(&self, f: &Fragment, face: &LightTerms, v: &Self::Varyings, slopes: &Slopes<Self::Varyings>) -> Vec3 {
         if self.surface.variant.shading == ShadingModel::Phong && self.lights_one_fragment() {
             return self.lit_one(f, v);
