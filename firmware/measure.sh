@@ -7,22 +7,32 @@
 #   instruction per cycle;
 # - with --stages, from a second run logging every translated block and every block executed
 #   (-d in_asm,exec,nochain, read through a pipe by stages.py): the instructions of each pipeline stage.
+# With --look plain or --look textured, all of this for a firmware built with that look's frames alone (in a target
+# folder of its own), which links that look's pipeline alone: the code a product showing that look would carry.
 # Needs arm-none-eabi-size, -nm and -addr2line (Debian: binutils-arm-none-eabi), qemu-system-arm and, for --stages,
 # python3; check.sh, which CI runs, needs none of them but QEMU.
-# Usage: firmware/measure.sh [--no-build] [--stages]
+# Usage: firmware/measure.sh [--no-build] [--stages] [--look plain|textured]
 set -euo pipefail
 cd "$(dirname "$0")"
-elf=target/thumbv7em-none-eabihf/release/rastty-firmware
-build=1 stages=0
-for arg in "$@"; do
-    case $arg in
+usage() { echo "usage: $0 [--no-build] [--stages] [--look plain|textured]" >&2; exit 2; }
+build=1 stages=0 look=
+while [ $# -gt 0 ]; do
+    case $1 in
         --no-build) build=0 ;;
         --stages) stages=1 ;;
-        *) echo "usage: $0 [--no-build] [--stages]" >&2; exit 2 ;;
+        --look) [ $# -ge 2 ] || usage; look=$2; shift ;;
+        *) usage ;;
     esac
+    shift
 done
+case $look in
+    '') target=target features=() ;;
+    plain | textured) target=target/look-$look features=(--no-default-features --features "$look") ;;
+    *) usage ;;
+esac
+elf=$target/thumbv7em-none-eabihf/release/rastty-firmware
 if [ "$build" = 1 ]; then
-    cargo build --release --locked
+    cargo build --release --locked --target-dir "$target" "${features[@]}"
 fi
 out=$(mktemp)
 pipe=$(mktemp -u)
@@ -86,12 +96,17 @@ echo "== qemu-system-arm -cpu cortex-m4 -machine mps2-an386 -nographic -semihost
 timeout 300 qemu-system-arm -cpu cortex-m4 -machine mps2-an386 -nographic \
     -semihosting-config enable=on,target=native -icount shift=0 -kernel "$elf" | tee "$out"
 
-echo "== estimate: the frame rate at 168 MHz, assuming 1 instruction per cycle (a Cortex-M4 often needs more)"
+echo "== estimate: the frame rate at 168 MHz, assuming 1 instruction per cycle (a Cortex-M4 often needs more);" \
+    "the model's triangles and the shaded fragments per million instructions"
 awk '
     match($0, /[0-9]+x[0-9]+ RGB565/) { split(substr($0, RSTART, RLENGTH - 7), wh, "x"); pixels = wh[1] * wh[2] }
+    match($0, /Spot \([0-9]+ vertices, [0-9]+ triangles/) { split(substr($0, RSTART, RLENGTH), w, " "); triangles = w[4] }
     /^frame [0-9]+ in [0-9]+ KiB: [0-9]+ instructions/ {
-        printf "%s %s in %s KiB: %d instructions, %.1f per pixel: %.2f frames per second, %.1f ms per frame\n",
-            $1, $2, $4, $6, $6 / pixels, 168e6 / $6, $6 / 168e3
+        match($0, /\([a-z]+: [0-9]+ fragments\)/)
+        split(substr($0, RSTART + 1, RLENGTH - 2), f, " ")
+        printf "%s %s in %s KiB, %s %d instructions, %.1f per pixel: %.2f frames per second, %.1f ms per frame; " \
+            "%.0f triangles and %.0f fragments per million instructions\n",
+            $1, $2, $4, f[1], $6, $6 / pixels, 168e6 / $6, $6 / 168e3, triangles * 1e6 / $6, f[2] * 1e6 / $6
     }' "$out"
 
 if [ "$stages" = 1 ]; then

@@ -1,9 +1,9 @@
 //! rastty-core on a Cortex-M4: renders the shared scene (`rastty-firmware-scene`: Spot the cow, Phong-lit,
-//! 320x240 RGB565, `u16` depth) in bands, its triangles binned once a frame, in each memory layout (16, 32 and
-//! 64 KiB for the band buffers and the bins together), folds every band into an FNV-1a checksum, and prints,
-//! through semihosting, one line per frame and layout that the host must reproduce exactly (`check.sh` compares
-//! them), then the instructions each took and each layout's peak stack, the frame memory's RAM and the peak stack
-//! of the whole run. Each frame is drawn twice: timed, as a product would draw it into its display; then untimed,
+//! plain or textured, 320x240 RGB565, `u16` depth) in bands, its triangles binned once a frame, in each memory
+//! layout (16, 32 and 64 KiB for the band buffers and the bins together), folds every band into an FNV-1a
+//! checksum, and prints, through semihosting, one line per frame and layout that the host must reproduce exactly
+//! (`check.sh` compares them), then the instructions each took (a frame, a pixel, a triangle of the model and a
+//! shaded fragment) and each layout's peak stack, the frame memory's RAM and the peak stack of the whole run. Each frame is drawn twice: timed, as a product would draw it into its display; then untimed,
 //! its depths folded into a second checksum.
 //! It exits through semihosting: status 0, or 1 after a panic or a hard fault.
 //!
@@ -23,7 +23,7 @@ use core::panic::PanicInfo;
 use cortex_m_rt::{ExceptionFrame, entry, exception};
 use cortex_m_semihosting::{debug, hio};
 use rastty_firmware_scene::{ChecksumDisplay, checksum_frame, render_frame, spot};
-use rastty_firmware_scene::{FRAME_MEMORY_BYTES, FRAMES, FrameMemory, HEIGHT, LAYOUTS, WIDTH};
+use rastty_firmware_scene::{FRAME_MEMORY_BYTES, FRAMES, FrameMemory, HEIGHT, LAYOUTS, Look, VIEWS, WIDTH};
 
 /// The band buffers and the bins, in `.bss`: the only frame memory.
 static mut MEMORY: FrameMemory = FrameMemory::new();
@@ -38,11 +38,15 @@ fn main() -> ! {
 
     let _ = writeln!(
         out,
-        "rastty-core on a Cortex-M4: Spot ({} vertices, {} triangles), {WIDTH}x{HEIGHT} RGB565 + u16 depth",
+        "rastty-core on a Cortex-M4: Spot ({} vertices, {} triangles; textured, {} vertices and {s}x{s} texels), \
+         {WIDTH}x{HEIGHT} RGB565 + u16 depth",
         spot::VERTEX_COUNT,
         spot::TRIANGLE_COUNT,
+        spot::textured::VERTEX_COUNT,
+        s = spot::textured::TEXTURE_SIZE,
     );
-    let mut instructions = [[0u64; FRAMES]; LAYOUTS.len()];
+    // Each frame's instructions and shaded fragments in each layout.
+    let mut instructions = [[(0u64, 0u64); FRAMES]; LAYOUTS.len()];
     let mut stacks = [0usize; LAYOUTS.len()];
     let start_up = stack::peak_bytes();
     for ((layout, counts), stack) in LAYOUTS.iter().zip(&mut instructions).zip(&mut stacks) {
@@ -51,8 +55,9 @@ fn main() -> ! {
             // Timed: the frame as a product would draw it, into its display.
             let mut display = ChecksumDisplay::new();
             let t0 = timer::now();
-            render_frame(frame, *layout, memory, &mut display, None).unwrap_or_else(|e| panic!("frame {frame}: {e}"));
-            *count = timer::instructions_since(t0);
+            let (_, stats) = render_frame(frame, *layout, memory, &mut display, None)
+                .unwrap_or_else(|e| panic!("frame {frame}: {e}"));
+            *count = (timer::instructions_since(t0), stats.fragments);
             // Checked, untimed: the same frame again, its depths folded too.
             let report = checksum_frame(frame, *layout, memory).unwrap_or_else(|e| panic!("frame {frame}: {e}"));
             assert_eq!(display.checksum(), report.checksum, "frame {frame}: the same pixels twice");
@@ -70,12 +75,20 @@ fn main() -> ! {
             layout.band_rows,
             layout.bytes()
         );
-        for (frame, &count) in counts.iter().enumerate() {
+        for (frame, &(count, fragments)) in counts.iter().enumerate() {
             let per_pixel = count / u64::from(WIDTH * HEIGHT);
+            let triangles = spot::TRIANGLE_COUNT as u64;
+            let look = match VIEWS[frame].look {
+                Look::Plain => "plain",
+                Look::Textured => "textured",
+            };
             let _ = writeln!(
                 out,
-                "frame {frame} in {} KiB: {count} instructions, {per_pixel} per pixel (under -icount shift=0)",
-                layout.budget_kib
+                "frame {frame} in {} KiB: {count} instructions, {per_pixel} per pixel, {} per triangle, {} per shaded \
+                 fragment ({look}: {fragments} fragments)",
+                layout.budget_kib,
+                count / triangles,
+                count / fragments.max(1),
             );
         }
     }

@@ -1,9 +1,9 @@
 //! The firmware's scene (`firmware/scene`) rendered on the host: the lines it prints are the ones the firmware
 //! must print under QEMU. `firmware/check.sh` runs both and compares the `frame N: checksum ...` lines; this
-//! test checks what the host alone can: the two frames differ from each other and from a blank frame, in colour and
+//! test checks what the host alone can: the frames differ from each other and from a blank frame, in colour and
 //! in depth, every memory layout gives the same frames within its budget, the bands cover the frame top to bottom,
-//! and the bands add up to the frame rendered whole, colours and depths, both by the scene's specialised draw and
-//! by `draw_mesh`.
+//! the bands add up to the frame rendered whole, colours and depths, both by the scene's specialised draw and
+//! by `draw_mesh`, and the textured frame shows the texture the build script reduced from `spot_texture.png`.
 //!
 //! Run `cargo test -p rastty-tests --test integration firmware_checksum:: -- --nocapture` to see the lines.
 
@@ -15,8 +15,8 @@ use rastty_core::mesh::{Attributes, Indices, Mesh};
 use rastty_core::pipeline::{Cull, DrawState, DrawStats, Fragment, Shader, Slopes, draw};
 use rastty_core::target::{NoColor, NoDepth, Rgb565, Target};
 use rastty_firmware_scene::{
-    BACKGROUND, BIN_ENTRIES, FRAME_MEMORY_BYTES, FRAMES, Fnv1a, FrameChecksum, FrameMemory, HEIGHT, LAYOUTS, Scene,
-    WIDTH, checksum_frame, render_frame, spot,
+    BACKGROUND, BIN_ENTRIES, FRAME_MEMORY_BYTES, FRAMES, Fnv1a, FrameChecksum, FrameMemory, HEIGHT, LAYOUTS, Look,
+    Scene, VIEWS, WIDTH, checksum_frame, render_frame, spot,
 };
 
 /// Every frame's report in every layout, rendered in bands as the firmware renders them, in its order.
@@ -41,7 +41,7 @@ fn whole_frame(draw: impl FnOnce(&mut Target<Rgb565<'_>, &mut [u16]>) -> DrawSta
 }
 
 #[test]
-fn the_firmware_scene_gives_two_distinct_checksums() {
+fn the_firmware_scene_gives_distinct_checksums() {
     let reports = reports();
     for report in &reports {
         // The line check.sh compares with the firmware's.
@@ -55,8 +55,10 @@ fn the_firmware_scene_gives_two_distinct_checksums() {
     println!("blank frame: checksum 0x{blank:08x}, depth 0x{blank_depth:08x}");
 
     assert_eq!(reports.len(), FRAMES * LAYOUTS.len());
-    assert_ne!(reports[0].checksum, reports[1].checksum, "the checksum depends on the rotation");
-    assert_ne!(reports[0].depth, reports[1].depth, "the depths depend on the rotation");
+    for (a, b) in [(0, 1), (0, 2), (1, 2)] {
+        assert_ne!(reports[a].checksum, reports[b].checksum, "frames {a} and {b}: the checksum depends on the view");
+        assert_ne!(reports[a].depth, reports[b].depth, "frames {a} and {b}: the depths depend on the view");
+    }
     for report in &reports {
         let first = &reports[report.frame];
         let same = |r: &FrameChecksum| (r.checksum, r.depth, r.stats);
@@ -67,7 +69,12 @@ fn the_firmware_scene_gives_two_distinct_checksums() {
         // Binning saw every triangle once; about half face away.
         assert_eq!(report.stats.triangles_in, spot::TRIANGLE_COUNT as u64);
         assert!(report.stats.culled > 2_000, "frame {}: {:?}", report.frame, report.stats);
-        assert!(report.stats.fragments > 10_000, "frame {}: Spot covers a good part of the frame", report.frame);
+        let covered = report.stats.fragments as f64 / f64::from(WIDTH * HEIGHT);
+        let range = match VIEWS[report.frame].look {
+            Look::Plain => 0.15..0.35,
+            Look::Textured => 0.4..0.6,
+        };
+        assert!(range.contains(&covered), "frame {}: Spot covers {covered:.3} of the frame", report.frame);
     }
 }
 
@@ -79,6 +86,7 @@ fn every_layout_fits_its_budget_and_the_bins_hold_every_kept_triangle() {
         assert!(layout.bytes() <= layout.budget_kib * 1024);
     }
     assert_eq!(FRAME_MEMORY_BYTES, LAYOUTS[2].bytes());
+    assert_eq!(spot::textured::TRIANGLE_COUNT, spot::TRIANGLE_COUNT);
     for frame in 0..FRAMES {
         let scene = Scene::new(frame).unwrap();
         let mut bins = vec![rastty_core::pipeline::BinnedTriangle::UNSET; BIN_ENTRIES];
@@ -180,6 +188,85 @@ fn the_model_arrays_are_spot() {
     // build script cannot cheaply depend on `rastty`): the two must agree bit for bit.
     let indices: Vec<u32> = spot::INDICES.iter().map(|&i| u32::from(i)).collect();
     assert!(rastty_scene::model::smooth_normals(&spot::POSITIONS, &indices) == spot::NORMALS, "the viewer's normals");
+}
+
+#[test]
+fn the_textured_arrays_are_spot_with_its_texture_coordinates() {
+    use spot::textured as t;
+    assert_eq!((t::VERTEX_COUNT, t::TRIANGLE_COUNT), (3225, 5856), "a vertex for each (v, vt) pair of the file");
+    assert_eq!(
+        (t::POSITIONS.len(), t::NORMALS.len(), t::UVS.len()),
+        (t::VERTEX_COUNT, t::VERTEX_COUNT, t::VERTEX_COUNT)
+    );
+    // The file's coordinates reach a little outside the unit square (u down to -0.052, v up to 1.0007): the
+    // texture repeats.
+    assert!(t::UVS.iter().all(|uv| (-0.06..=1.01).contains(&uv.x) && (-0.06..=1.01).contains(&uv.y)));
+    // The same triangles as the untextured mesh, corner by corner by position, each vertex with the normal the
+    // untextured mesh has at its place.
+    let key = |p: Vec3| [p.x, p.y, p.z].map(f32::to_bits);
+    let normal_at: std::collections::HashMap<[u32; 3], Vec3> =
+        spot::POSITIONS.iter().zip(&spot::NORMALS).map(|(&p, &n)| (key(p), n)).collect();
+    for (p, n) in t::POSITIONS.iter().zip(&t::NORMALS) {
+        assert_eq!(normal_at.get(&key(*p)), Some(n), "the normal at {p:?}");
+    }
+    let triangles = |positions: &[Vec3], indices: &[u16]| {
+        let mut list: Vec<[[u32; 3]; 3]> =
+            indices.chunks_exact(3).map(|c| [0, 1, 2].map(|k| key(positions[usize::from(c[k])]))).collect();
+        list.sort_unstable();
+        list
+    };
+    assert!(triangles(&t::POSITIONS, &t::INDICES) == triangles(&spot::POSITIONS, &spot::INDICES));
+}
+
+/// The texture is `spot_texture.png` averaged in linear light over blocks of 4x4 texels, decoded here by the
+/// `image` crate (the build script reads it with `png`).
+#[test]
+fn the_texture_is_spot_texture_png_averaged_in_linear_light() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../assets/spot/spot_texture.png");
+    let image = image::open(path).expect("the texture decodes").to_rgb8();
+    let size = spot::textured::TEXTURE_SIZE;
+    assert_eq!((image.width(), image.height()), (4 * size, 4 * size));
+    let to_linear = |c: u8| {
+        let c = f64::from(c) / 255.0;
+        if c <= 0.04045 { c / 12.92 } else { ((c + 0.055) / 1.055).powf(2.4) }
+    };
+    let to_code = |l: f64| {
+        let c = if l <= 0.0031308 { l * 12.92 } else { 1.055 * l.powf(1.0 / 2.4) - 0.055 };
+        (c * 255.0).round() as u32
+    };
+    let mut differing = 0;
+    for (i, &texel) in spot::textured::TEXELS.iter().enumerate() {
+        let (x, y) = (i as u32 % size, i as u32 / size);
+        let mut sum = [0f64; 3];
+        for (dx, dy) in (0..16).map(|k| (k % 4, k / 4)) {
+            let pixel = image.get_pixel(4 * x + dx, 4 * y + dy);
+            for (s, &c) in sum.iter_mut().zip(&pixel.0) {
+                *s += to_linear(c);
+            }
+        }
+        let [r, g, b] = sum.map(|s| to_code(s / 16.0));
+        differing += usize::from(texel != (r << 16 | g << 8 | b));
+    }
+    assert_eq!(differing, 0, "texels that differ from the average");
+    let distinct: std::collections::HashSet<u32> = spot::textured::TEXELS.iter().copied().collect();
+    assert!(distinct.len() > 500, "{} distinct texels", distinct.len());
+}
+
+/// The textured frame shows the texture: its pixels take many more colours than a plain frame's (617 against 132:
+/// a white material would give about as few as the plain one).
+#[test]
+fn the_textured_frame_shows_the_texture() {
+    let frame = VIEWS.iter().position(|v| v.look == Look::Textured).expect("a textured frame");
+    let scene = Scene::new(frame).unwrap();
+    let n = (WIDTH * HEIGHT) as usize;
+    let (mut color, mut depth) = (vec![0u16; n], vec![0u16; n]);
+    scene.draw(&mut Target::new(Rgb565(&mut color), &mut depth[..], WIDTH, HEIGHT).unwrap()).unwrap();
+    let textured: std::collections::HashSet<u16> = color.iter().copied().collect();
+    let plain = Scene::new(VIEWS.iter().position(|v| v.look == Look::Plain).unwrap()).unwrap();
+    plain.draw(&mut Target::new(Rgb565(&mut color), &mut depth[..], WIDTH, HEIGHT).unwrap()).unwrap();
+    let untextured: std::collections::HashSet<u16> = color.iter().copied().collect();
+    println!("{} colours textured, {} plain", textured.len(), untextured.len());
+    assert!(textured.len() > 2 * untextured.len(), "{} colours against {}", textured.len(), untextured.len());
 }
 
 /// Counts the vertex stage's position runs; the position is Spot's, scaled into the view volume.

@@ -2,8 +2,9 @@
 //!
 //! [`super::SurfaceShader`]'s last parameter is a set of these bits (by default [`ALL`]). A draw compiled for
 //! fewer leaves the other stages out of the program: a firmware that draws one kind of surface links the code of
-//! that one (its variant is checked against the set when the shader is made). Maps need no bit: a draw without
-//! texture coordinates (`U` absent) compiles no map code at all; mipmapped maps need [`MIPMAPS`].
+//! that one (its variant is checked against the set when the shader is made). A draw without texture coordinates
+//! (`U` absent) compiles no map code at all; with them, a diffuse map needs no bit, mipmapped maps need
+//! [`MIPMAPS`] and the other maps [`LIGHTING_MAPS`].
 
 /// Unlit shading (material or vertex colours).
 pub const UNLIT: u32 = 1;
@@ -30,9 +31,24 @@ pub const MIPMAPS: u32 = 1 << 9;
 /// Shading in linear light ([`crate::color::ShadingSpace::Linear`]): the sRGB decoding of colour maps and the
 /// encoding of each pixel, and their tables.
 pub const LINEAR_LIGHT: u32 = 1 << 10;
+/// The maps beyond the diffuse (albedo) map: normal, specular, glow and occlusion maps. A shader that carries
+/// texture coordinates without it reads a diffuse map alone; where batches hold one fragment and it is compiled
+/// without [`MIPMAPS`] and [`SHADOWS`] too, it then lights every fragment in scalar maths and compiles no batch
+/// stages for per-pixel lighting.
+pub const LIGHTING_MAPS: u32 = 1 << 11;
 /// Everything: what [`super::draw_mesh`] compiles.
-pub const ALL: u32 =
-    UNLIT | FLAT | GOURAUD | PER_PIXEL | VIEWS | POINT_LIGHTS | SHADOWS | CUTOUT | TWO_SIDED | MIPMAPS | LINEAR_LIGHT;
+pub const ALL: u32 = UNLIT
+    | FLAT
+    | GOURAUD
+    | PER_PIXEL
+    | VIEWS
+    | POINT_LIGHTS
+    | SHADOWS
+    | CUTOUT
+    | TWO_SIDED
+    | MIPMAPS
+    | LINEAR_LIGHT
+    | LIGHTING_MAPS;
 
 /// True when `caps` holds `bit`: a constant in a shader compiled for `caps`, so the code it guards is left out
 /// when false.

@@ -1,6 +1,6 @@
 //! Per-pixel lighting of one fragment in scalar maths: what a target without SIMD registers runs in place of its
 //! batch of one ([`BATCH_SIZE`] is 1 there) for the draws it covers ([`Surface::one_fragment`]: lit per pixel, no
-//! maps, no shadow maps).
+//! map but a diffuse map without levels of detail, no shadow maps).
 //!
 //! The batch's stages ([`super::surface`], [`super::lighting`]) fill working columns, loop over lanes and decide,
 //! for each batch, which stages run; with one fragment a batch, each of those costs as much as the arithmetic
@@ -12,18 +12,37 @@
 use super::capabilities::{self, has};
 use super::surface::Surface;
 use super::{LightKind, NormalSource, SpecularSource};
-use crate::color::{ShadingSpace, encode_srgb};
-use crate::math::Vec3;
+use crate::color::{ShadingSpace, encode_srgb, unpack_rgb888};
 use crate::math::float;
+use crate::math::{Vec2, Vec3};
 use crate::pipeline::BATCH_SIZE;
+use crate::texture::{Bilinear, Clamp, Filter, FilterMode, MipFilter, Nearest, Repeat, Texture, Wrap, WrapMode};
 
 impl<const CAPS: u32> Surface<'_, CAPS> {
     /// Whether the draw's per-pixel fragments go through [`Self::per_pixel_one`], decided once per draw: where a
-    /// batch holds one fragment, for a draw that reads no map (`maps`: its shader carries texture coordinates and
-    /// the variant reads them) and no shadow map, with interpolated normals.
+    /// batch holds one fragment, for a draw with interpolated normals that reads no shadow map and no map, or a
+    /// diffuse map alone without levels of detail (`maps`: its shader carries texture coordinates and the variant
+    /// reads them).
     pub fn one_fragment(&self, maps: bool) -> bool {
         let v = &self.variant;
-        BATCH_SIZE == 1 && !maps && v.normals == NormalSource::Interpolated && v.shadowed_lights == 0
+        let maps_covered = !maps || (!v.lighting_maps() && v.mip_filter == MipFilter::Off);
+        BATCH_SIZE == 1 && maps_covered && v.normals == NormalSource::Interpolated && v.shadowed_lights == 0
+    }
+
+    /// The albedo `base` (the material colour, times the vertex colour) times the diffuse map at `uv`, as the
+    /// batch's stage computes it ([`super::maps::albedo`] without levels of detail): the texel filtered as stored
+    /// and unpacked, or, in linear light, its texels decoded and then filtered. `base` without a diffuse map.
+    #[inline(always)]
+    pub fn albedo_one(&self, base: Vec3, uv: Vec2) -> Vec3 {
+        let Some(map) = &self.material.diffuse else { return base };
+        let linear = self.space() == ShadingSpace::Linear;
+        let sample = |map: &Texture<'_>| match (self.variant.filter, self.variant.wrap) {
+            (FilterMode::Nearest, WrapMode::Repeat) => texel::<Nearest, Repeat>(map, uv, linear),
+            (FilterMode::Nearest, WrapMode::Clamp) => texel::<Nearest, Clamp>(map, uv, linear),
+            (FilterMode::Bilinear, WrapMode::Repeat) => texel::<Bilinear, Repeat>(map, uv, linear),
+            (FilterMode::Bilinear, WrapMode::Clamp) => texel::<Bilinear, Clamp>(map, uv, linear),
+        };
+        base.mul_elem(sample(map))
     }
 
     /// The colour of one fragment lit per pixel, as the draw stores it ([`Self::one_fragment`] must hold):
@@ -76,13 +95,19 @@ impl<const CAPS: u32> Surface<'_, CAPS> {
     }
 }
 
+/// `map`'s value at `uv` with filter `F` and wrap mode `W`: in linear light when `linear`, else as stored.
+#[inline(always)]
+fn texel<F: Filter, W: Wrap>(map: &Texture<'_>, uv: Vec2, linear: bool) -> Vec3 {
+    if linear { F::sample_light::<W>(map, uv) } else { unpack_rgb888(F::sample_packed::<W>(map, uv)) }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::math::Mat4;
     use crate::math::float::Exponent;
     use crate::pipeline::DrawState;
-    use crate::pipeline::columns::{Column, Column3};
+    use crate::pipeline::columns::{Column, Column2, Column3};
     use crate::shading::scratch::Scratch;
     use crate::shading::{Cone, Falloff, Layout, Light, Lighting, Material, Transforms, Variant};
     use crate::shading::{Cutout, ShadingModel, capabilities::ALL};
@@ -188,5 +213,75 @@ mod tests {
             }
         }
         assert_eq!(compared, 4 * 4 * 2 * 4 * 2);
+    }
+
+    /// The albedo times a diffuse map, for both filters, wrap modes and spaces, at coordinates inside, on the
+    /// edges of and outside the map, gives the batch's bits; a map beyond it, or levels of detail, leave the
+    /// one-fragment path.
+    #[test]
+    fn a_diffuse_map_gives_the_batch_bits() {
+        let texels: [u32; 20] = core::array::from_fn(|i| (i as u32).wrapping_mul(0x0931_5F27) & 0xFF_FFFF);
+        let map = Texture::new(&texels, 5, 4).unwrap();
+        let lights = [Light::directional(Vec3::new(0.3, 0.8, 0.5), Vec3::new(1.0, 0.95, 0.9))];
+        let identity = Transforms::new(Mat4::IDENTITY, Mat4::IDENTITY, Mat4::IDENTITY);
+        let transforms = Transforms { eye: Vec3::new(0.0, 0.0, 5.0), ..identity };
+        let uvs = [(0.31, 0.77), (0.0, 0.0), (1.0, 1.0), (-0.052, 1.0007), (2.6, -3.1), (0.5, 0.5)];
+        let mut compared = 0;
+        for filter in [FilterMode::Nearest, FilterMode::Bilinear] {
+            for wrap in [WrapMode::Repeat, WrapMode::Clamp] {
+                for space in [ShadingSpace::Encoded, ShadingSpace::Linear] {
+                    let variant = Variant {
+                        uvs: true,
+                        albedo_map: true,
+                        filter,
+                        wrap,
+                        ..variant(true, false, false, space, &lights)
+                    };
+                    let material = Material {
+                        specular: Vec3::splat(0.35),
+                        shininess: 24.0,
+                        diffuse: Some(map),
+                        filter,
+                        wrap,
+                        ..Material::plain(Vec3::new(0.9, 0.8, 1.0))
+                    };
+                    let surface = Surface::<ALL> {
+                        transforms,
+                        material,
+                        shininess: Exponent::new(material.shininess),
+                        lights: Lighting { ambient: Vec3::splat(0.1), lights: &lights, space },
+                        variant,
+                        layout: Layout { first: true, second: true, uvs: true, tangents: false, colors: false },
+                    };
+                    assert!(surface.one_fragment(true) == (BATCH_SIZE == 1));
+                    for &(u, v) in &uvs {
+                        let (normal, world) = (Vec3::new(0.2, 0.9, 0.1), Vec3::new(0.1, 0.2, 0.3));
+                        let one = surface.per_pixel_one(
+                            normal,
+                            world,
+                            surface.albedo_one(material.color, Vec2::new(u, v)),
+                            None,
+                        );
+                        let mut s = Scratch::new();
+                        s.len = 1;
+                        s.normal = Column3::splat(normal);
+                        s.world = Column3::splat(world);
+                        s.albedo = Column3::splat(material.color);
+                        s.at.uv = Column2 { x: Column::splat(u), y: Column::splat(v) };
+                        let mut colors = [Vec3::ZERO; BATCH_SIZE];
+                        surface.per_pixel::<true>(&mut s, &mut colors);
+                        let bits = |c: Vec3| [c.x, c.y, c.z].map(f32::to_bits);
+                        assert_eq!(bits(one), bits(colors[0]), "{filter:?} {wrap:?} {space:?} at ({u}, {v})");
+                        compared += 1;
+                    }
+                    let with = |variant: Variant| Surface { variant, ..surface }.one_fragment(true);
+                    assert!(!with(Variant { specular: SpecularSource::Map, ..variant }));
+                    assert!(!with(Variant { glow_map: true, ..variant }));
+                    assert!(!with(Variant { occlusion_map: true, ..variant }));
+                    assert!(!with(Variant { mip_filter: MipFilter::Linear, ..variant }));
+                }
+            }
+        }
+        assert_eq!(compared, 2 * 2 * 2 * uvs.len());
     }
 }

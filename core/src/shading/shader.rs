@@ -73,7 +73,8 @@ where
     /// # Errors
     /// [`ShadingError::Unsupported`] when the slot types do not carry the variant's [`Variant::layout`]
     /// (they may carry more), `CAPS` ([`capabilities`]) leaves out its shading model, point lights, shadow
-    /// maps, two-sided lighting, cut-outs, mipmaps or linear light, or its per-pixel lighting takes normals from
+    /// maps, two-sided lighting, cut-outs, mipmaps, linear light or lighting maps, or its per-pixel lighting takes
+    /// normals from
     /// anything but the interpolated ones or a map read through texture coordinates (no resolved variant does).
     pub fn new(
         variant: Variant,
@@ -101,7 +102,8 @@ where
             && (!variant.two_sided || has(CAPS, capabilities::TWO_SIDED))
             && (variant.cutout == Cutout::None || has(CAPS, capabilities::CUTOUT))
             && (variant.mip_filter == MipFilter::Off || has(CAPS, capabilities::MIPMAPS))
-            && (variant.space == ShadingSpace::Encoded || has(CAPS, capabilities::LINEAR_LIGHT));
+            && (variant.space == ShadingSpace::Encoded || has(CAPS, capabilities::LINEAR_LIGHT))
+            && (!variant.lighting_maps() || has(CAPS, capabilities::LIGHTING_MAPS));
         // A normal map is read through texture coordinates: without them, per-pixel lighting has interpolated
         // normals (as every resolved variant does), which `ALWAYS_ONE_FRAGMENT` relies on.
         let normals = variant.shading != ShadingModel::Phong
@@ -141,10 +143,14 @@ where
     }
 
     /// Whether every fragment this shader lights per pixel goes through [`Self::lit_one`], known from its type:
-    /// where batches hold one fragment, for a shader that carries no texture coordinates (so reads no map, and
-    /// [`Self::new`] accepts no normal map) and is compiled without shadow maps. Then its batch stages for per-pixel
-    /// lighting are not compiled in (on the firmware, most of the core's code they would add).
-    const ALWAYS_ONE_FRAGMENT: bool = BATCH_SIZE == 1 && !U::PRESENT && !has(CAPS, capabilities::SHADOWS);
+    /// where batches hold one fragment, for a shader compiled without shadow maps that carries no texture
+    /// coordinates (so reads no map, and [`Self::new`] accepts no normal map) or reads at most a diffuse map
+    /// without levels of detail (compiled without [`capabilities::LIGHTING_MAPS`] and [`capabilities::MIPMAPS`]).
+    /// Then its batch stages for per-pixel lighting are not compiled in (on the firmware, most of the core's code
+    /// they would add).
+    const ALWAYS_ONE_FRAGMENT: bool = BATCH_SIZE == 1
+        && !has(CAPS, capabilities::SHADOWS)
+        && (!U::PRESENT || !has(CAPS, capabilities::LIGHTING_MAPS | capabilities::MIPMAPS));
 
     /// Whether this draw lights its fragments per pixel one at a time, in scalar maths ([`Self::lit_one`]).
     #[inline(always)]
@@ -152,14 +158,18 @@ where
         BATCH_SIZE == 1 && (Self::ALWAYS_ONE_FRAGMENT || self.one_fragment)
     }
 
-    /// One fragment of a draw lit per pixel in scalar maths ([`Surface::per_pixel_one`]): its albedo, facing and
-    /// varyings as the batch's stages gather them.
+    /// One fragment of a draw lit per pixel in scalar maths ([`Surface::per_pixel_one`]): its albedo (times the
+    /// diffuse map's texel, [`Surface::albedo_one`]), facing and varyings as the batch's stages gather them.
     #[inline(always)]
     fn lit_one(&self, fragment: &Fragment, varyings: &SurfaceVaryings<A, B, U, T, C>) -> Vec3 {
         let (m, v, layout) = (&self.surface.material, &self.surface.variant, &self.surface.layout);
         let albedo = match varyings.color.get() {
             Some(color) if v.vertex_colors => m.color.mul_elem(color),
             _ => m.color,
+        };
+        let albedo = match varyings.uv.get() {
+            Some(uv) if layout.uvs && v.albedo_map => self.surface.albedo_one(albedo, uv),
+            _ => albedo,
         };
         let two_sided = has(CAPS, capabilities::TWO_SIDED) && v.two_sided;
         let facing = two_sided.then(|| if fragment.front_facing { 1.0 } else { -1.0 });

@@ -284,6 +284,16 @@ impl Variant {
         })
     }
 
+    /// Whether the draw reads a map beyond the diffuse map: a normal, specular, glow or occlusion map (what
+    /// [`super::capabilities::LIGHTING_MAPS`] compiles).
+    #[must_use]
+    pub fn lighting_maps(&self) -> bool {
+        matches!(self.normals, NormalSource::TangentMap | NormalSource::ObjectMap)
+            || self.specular == SpecularSource::Map
+            || self.glow_map
+            || self.occlusion_map
+    }
+
     /// The varying slots this variant's draw carries.
     #[must_use]
     pub fn layout(&self) -> Layout {

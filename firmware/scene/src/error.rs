@@ -6,6 +6,7 @@ use rastty_core::camera::CameraError;
 use rastty_core::mesh::MeshError;
 use rastty_core::pipeline::DrawError;
 use rastty_core::target::TargetError;
+use rastty_core::texture::TextureError;
 
 /// Why the scene could not be rendered (never, with these constants; returned rather than unwrapped so that the
 /// firmware reports it).
@@ -15,6 +16,8 @@ pub enum SceneError {
     Camera(CameraError),
     /// The model arrays do not make a mesh.
     Mesh(MeshError),
+    /// The texture's arrays do not make a texture.
+    Texture(TextureError),
     /// A band's buffers do not fit its rows.
     Target(TargetError),
     /// A draw failed.
@@ -30,6 +33,7 @@ impl fmt::Display for SceneError {
         match self {
             Self::Camera(e) => write!(f, "camera: {e}"),
             Self::Mesh(e) => write!(f, "mesh: {e}"),
+            Self::Texture(e) => write!(f, "texture: {e}"),
             Self::Target(e) => write!(f, "target: {e}"),
             Self::Draw(e) => write!(f, "draw: {e}"),
             Self::Multisampled => f.write_str("the bands have more than one sample a pixel"),
