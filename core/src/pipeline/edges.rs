@@ -19,6 +19,14 @@ pub(crate) trait CentreEdges: Copy {
     fn at(&self, x: i32, y: i32) -> Self::At;
     /// The values one pixel to the right.
     fn step(&self, at: Self::At) -> Self::At;
+    /// The values at the centre of pixel `(x, y + 1)`, from `at`, those at `(x, y)`: what [`Self::at`] gives
+    /// there. Exact edges add a step; the default works the row out from its coordinates, as `f32` edges must
+    /// (so that a band's rows get the frame's values).
+    #[inline(always)]
+    fn down(&self, at: Self::At, x: i32, y: i32) -> Self::At {
+        let _ = at;
+        self.at(x, y + 1)
+    }
     /// Whether the centre is covered, fill rule included.
     fn covered(&self, at: &Self::At) -> bool;
     /// The three values as non-negative weights: barycentric coordinates times twice the area.
@@ -93,6 +101,11 @@ impl CentreEdges for NarrowEdges {
     }
 
     #[inline(always)]
+    fn down(&self, e: [i32; 3], _: i32, _: i32) -> [i32; 3] {
+        [0, 1, 2].map(|k| e[k].wrapping_add(self.step_y[k]))
+    }
+
+    #[inline(always)]
     fn covered(&self, e: &[i32; 3]) -> bool {
         (e[0] | e[1] | e[2]) >= 0
     }
@@ -127,6 +140,11 @@ impl CentreEdges for FixedEdges {
     #[inline(always)]
     fn step(&self, e: [i64; 3]) -> [i64; 3] {
         [e[0] + self.step_x[0], e[1] + self.step_x[1], e[2] + self.step_x[2]]
+    }
+
+    #[inline(always)]
+    fn down(&self, e: [i64; 3], _: i32, _: i32) -> [i64; 3] {
+        [e[0] + self.step_y[0], e[1] + self.step_y[1], e[2] + self.step_y[2]]
     }
 
     #[inline(always)]
@@ -332,6 +350,15 @@ impl CentreEdges for DynamicEdges {
         match (self, at) {
             (Self::Fixed(e), DynamicAt::Fixed(v)) => DynamicAt::Fixed(e.step(v)),
             (Self::Float(e), DynamicAt::Float(v)) => DynamicAt::Float(e.step(v)),
+            (_, at) => at,
+        }
+    }
+
+    #[inline(always)]
+    fn down(&self, at: DynamicAt, x: i32, y: i32) -> DynamicAt {
+        match (self, at) {
+            (Self::Fixed(e), DynamicAt::Fixed(v)) => DynamicAt::Fixed(e.down(v, x, y)),
+            (Self::Float(e), DynamicAt::Float(v)) => DynamicAt::Float(e.down(v, x, y)),
             (_, at) => at,
         }
     }

@@ -196,25 +196,31 @@ impl Rasterizer {
     #[inline(always)]
     pub fn setup_fixed(&self, v: [Snapped; 3]) -> Setup<FixedEdges> {
         // Element by element, not with array maps: `perf` put 8 to 15 % of sphere1m's samples in `try_map`.
-        let fixed = |p: &Snapped| (i64::from(p.x), i64::from(p.y));
+        let fixed = |p: &Snapped| (p.x, p.y);
         let (a, b, c) = (fixed(&v[0]), fixed(&v[1]), fixed(&v[2]));
+        // Coordinates are within ±2^24 (`SNAP_LIMIT_PX`), so their differences fit `i32`, and each product of two is
+        // one 32 x 32 -> 64-bit multiply (on a 32-bit target one instruction, where an `i64` product takes three).
+        let wide = |p: i32, q: i32| i64::from(p) * i64::from(q);
         // Twice the signed area in fixed-point units.
-        let area = (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0);
+        let area = wide(b.0 - a.0, c.1 - a.1) - wide(b.1 - a.1, c.0 - a.0);
         if area == 0 {
             return Setup::Degenerate;
         }
         let Some(front_facing) = self.facing(area > 0) else { return Setup::Culled };
 
         let shift = self.shift;
-        let half = 1i64 << (shift - 1);
+        let half = 1i32 << (shift - 1);
         // Pixel centres inside the bounding box widened by the samples' reach (none with one sample): i with
         // (i << shift) + half in [min - reach, max + reach]. (Rounded up, the reach may take in a pixel none of whose
         // samples is inside: the pixel loop tests each.)
         let reach = self.reach.0;
-        let (min_x, max_x) = (a.0.min(b.0).min(c.0) - reach, a.0.max(b.0).max(c.0) + reach);
-        let (min_y, max_y) = (a.1.min(b.1).min(c.1) - reach, a.1.max(b.1).max(c.1) + reach);
-        let first_centre = |lo: i64| ((lo - half + (1 << shift) - 1) >> shift) as i32;
-        let last_centre = |hi: i64| ((hi - half) >> shift) as i32;
+        let min = |p: i32, q: i32, r: i32| i64::from(p.min(q).min(r));
+        let max = |p: i32, q: i32, r: i32| i64::from(p.max(q).max(r));
+        let (min_x, max_x) = (min(a.0, b.0, c.0) - reach, max(a.0, b.0, c.0) + reach);
+        let (min_y, max_y) = (min(a.1, b.1, c.1) - reach, max(a.1, b.1, c.1) + reach);
+        let half_wide = i64::from(half);
+        let first_centre = |lo: i64| ((lo - half_wide + (1 << shift) - 1) >> shift) as i32;
+        let last_centre = |hi: i64| ((hi - half_wide) >> shift) as i32;
         let (x0, x1) = self.centres(first_centre(min_x), last_centre(max_x), false);
         let (y0, y1) = self.centres(first_centre(min_y), last_centre(max_y), true);
         if x0 > x1 || y0 > y1 {
@@ -234,9 +240,9 @@ impl Rasterizer {
             // it and "top" when it is horizontal running to +x.
             let top_left = dy < 0 || (dy == 0 && dx > 0);
             edges.bias[k] = if top_left { 0 } else { -1 };
-            edges.origin[k] = dx * (half - p.1) - dy * (half - p.0) + edges.bias[k];
-            edges.step_x[k] = -dy << shift;
-            edges.step_y[k] = dx << shift;
+            edges.origin[k] = wide(dx, half - p.1) - wide(dy, half - p.0) + edges.bias[k];
+            edges.step_x[k] = -i64::from(dy) << shift;
+            edges.step_y[k] = i64::from(dx) << shift;
         }
         let frame = Frame::new([x0, x1, y0, y1], front_facing, swapped, v, float::from_i64(area.abs()), self.samples);
         Setup::Ready(Coverage { edges, frame })
@@ -708,8 +714,12 @@ pub(super) fn fill_depth_only<E: Edges, St: FragmentStage + ?Sized, D: DepthBuff
         return c.fill_depth(narrow, width, row0, depth);
     }
     let mut passed = 0u64;
+    let mut row = edges.at(f.x0, f.y0);
     for y in f.y0..=f.y1 {
-        let mut e = edges.at(f.x0, y);
+        let mut e = row;
+        if y < f.y1 {
+            row = edges.down(row, f.x0, y);
+        }
         let mut x = f.x0;
         // The covered centres of a row are contiguous (a triangle is convex): skip to them, run, stop.
         while x <= f.x1 && !edges.covered(&e) {
@@ -797,8 +807,14 @@ impl<E: Edges> Covered<'_, E> {
         let one = one_at_a_time(CUTOUT, pass.slopes) && samples == Samples::One;
         // At most one fragment per pixel of the frame, which has fewer than 2^32.
         let mut shaded = 0u32;
+        // Each row's first values from the last row's by an addition (for exact edges), not worked out anew; as
+        // a loop over `y`, which compiles to less than an iterator of rows.
+        let mut row = edges.at(f.x0, f.y0);
         for y in f.y0..=f.y1 {
-            let mut e = edges.at(f.x0, y);
+            let mut e = row;
+            if y < f.y1 {
+                row = edges.down(row, f.x0, y);
+            }
             let mut x = f.x0;
             while x <= f.x1 && !edges.covered(&e) {
                 e = edges.step(e);

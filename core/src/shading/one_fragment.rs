@@ -58,7 +58,8 @@ impl<const CAPS: u32> Surface<'_, CAPS> {
             _ => n,
         };
         let specular = self.variant.specular != SpecularSource::None;
-        let view = if specular { (self.transforms.eye - world).normalize_or_zero() } else { Vec3::ZERO };
+        // Toward the eye: worked out for the first light that lights the fragment, and not at all when none does.
+        let mut view = None;
         let mut diffuse = self.lights.ambient;
         let mut highlights = Vec3::ZERO;
         for light in self.lights.lights {
@@ -74,16 +75,16 @@ impl<const CAPS: u32> Surface<'_, CAPS> {
                 arriving *= share;
             }
             diffuse += light.color * arriving;
-            if specular {
+            // Unlit, the batch adds +0.0 (its highlight times zero), which leaves the sum as it was: so the
+            // highlight is worked out only where the light arrives.
+            if specular && n_dot_l > 0.0 {
+                let view = *view.get_or_insert_with(|| (self.transforms.eye - world).normalize_or_zero());
                 let h = (to_light + view).normalize_or_zero();
                 let mut k = self.shininess.raise(float::max(n.dot(h), 0.0));
                 if let Some(share) = share {
                     k *= share;
                 }
-                // Unlit, the batch adds +0.0, which leaves the sum as it was.
-                if n_dot_l > 0.0 {
-                    highlights += light.color * k;
-                }
+                highlights += light.color * k;
             }
         }
         let lit = albedo.mul_elem(diffuse);
