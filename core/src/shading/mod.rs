@@ -23,6 +23,7 @@
 //! zero-strength light, a shadow map nothing was drawn into) gives the pixels of leaving it out
 //! (`core/tests/effects.rs`).
 
+pub mod brdf;
 pub mod capabilities;
 mod coarse;
 mod draw;

@@ -4,13 +4,11 @@
 use gltf::texture::Info;
 use rastty_core::color::{SRGB_DECODE, linear_to_srgb, linear_to_srgb8};
 use rastty_core::math::{Vec2, Vec3};
+use rastty_core::shading::brdf::DIELECTRIC_F0;
 
 use super::material::ModelMaterial;
 use super::texture_image::TextureImage;
 
-/// The reflectance of a dielectric seen head-on, which metallic-roughness materials use for non-metals (glTF 2.0
-/// specification, appendix B: `F0 = 0.04`).
-const DIELECTRIC_F0: f32 = 0.04;
 /// The Blinn-Phong exponent's range: a roughness of 0 would give an infinite exponent.
 const SHININESS_RANGE: (f32, f32) = (1.0, 1024.0);
 
