@@ -14,6 +14,7 @@ mod effects;
 mod fill_rule;
 mod inverse_sqrt;
 mod math;
+mod metallic_roughness;
 mod mipmaps;
 mod multisample;
 mod robustness;

@@ -152,6 +152,8 @@ fn every_choice_of_a_variant_equals_the_general_path() {
         color: Vec3::new(0.9, 0.7, 0.5),
         specular: Vec3::splat(0.6),
         shininess: 24.0,
+        metallic: 0.6,
+        roughness: 0.35,
         ..Material::plain(Vec3::ONE)
     };
     let mut materials = vec![base, Material { specular: Vec3::ZERO, ..base }];
@@ -225,6 +227,7 @@ fn every_choice_of_a_variant_equals_the_general_path() {
         ShadingModel::Flat,
         ShadingModel::Gouraud,
         ShadingModel::Phong,
+        ShadingModel::MetallicRoughness,
         ShadingModel::Depth { near: 0.2, far: 0.9 },
         ShadingModel::Normals,
     ];
@@ -270,8 +273,8 @@ fn every_choice_of_a_variant_equals_the_general_path() {
             }
         }
     }
-    assert_eq!(draws, 2 * 6 * 3 * 17 * 7);
-    assert_eq!(multisampled, 1071);
+    assert_eq!(draws, 2 * 7 * 3 * 17 * 7);
+    assert_eq!(multisampled, 1250);
     assert!(clipped > 0);
     seen.assert_every_choice();
     // docs/stability.md describes this matrix: its counts must be the ones run here.
@@ -366,14 +369,14 @@ impl Seen {
 
     fn assert_every_choice(&self) {
         assert!(self.albedo_map && self.glow_map && self.point_lights && self.affine);
-        assert_eq!(self.vertex_colors.len(), 4, "models with vertex colours: {:?}", self.vertex_colors);
+        assert_eq!(self.vertex_colors.len(), 5, "models with vertex colours: {:?}", self.vertex_colors);
         assert!(self.occlusion_map);
         assert_eq!(self.normals.len(), 6, "normal sources: {:?}", self.normals);
         assert_eq!(self.specular.len(), 3, "specular sources: {:?}", self.specular);
         assert_eq!(self.filters.len(), 4, "filter and wrap modes: {:?}", self.filters);
         assert_eq!(self.mip_filters.len(), 4, "filters between levels: {:?}", self.mip_filters);
         // The four models that colour in both spaces, the two views in the stored one only.
-        assert_eq!(self.spaces.len(), 4 * 2 + 2, "spaces: {:?}", self.spaces);
+        assert_eq!(self.spaces.len(), 5 * 2 + 2, "spaces: {:?}", self.spaces);
         assert_eq!(self.shadows.len(), 3, "shadow filter radii: {:?}", self.shadows);
         assert_eq!(self.cutouts.len(), 3, "cut-outs: {:?}", self.cutouts);
         assert_eq!(self.two_sided, [true, true], "one- and two-sided lighting");

@@ -196,8 +196,8 @@ fn unknown_keys_are_named_with_their_table() {
     assert_eq!(
         error(&format!("{CAMERA}{SPOT}{SPOT}[objects.material]\ncolour = [1, 0, 0]\n")),
         "scene.toml:10:1: objects[1].material.colour: unknown key, expected one of `color`, `diffuse`, \
-         `normal_map`, `normal_space`, `specular`, `shininess`, `specular_map`, `glow_map`, `filter`, `wrap`, \
-         `mipmaps`"
+         `normal_map`, `normal_space`, `specular`, `shininess`, `metallic`, `roughness`, `specular_map`, \
+         `glow_map`, `filter`, `wrap`, `mipmaps`"
     );
     // A key holding control characters is escaped in the message.
     let text = error(&format!("{CAMERA}{SPOT}\"evil\\u001b[2J\" = 1\n"));
@@ -438,6 +438,14 @@ fn invalid_objects_and_materials_name_the_key() {
     assert_eq!(
         object("[objects.material]\nshininess = 0\n"),
         "scene.toml:8:13: objects[0].material.shininess: must be positive, got 0"
+    );
+    assert_eq!(
+        object("[objects.material]\nmetallic = 1.5\n"),
+        "scene.toml:8:12: objects[0].material.metallic: must be between 0 and 1, got 1.5"
+    );
+    assert_eq!(
+        object("[objects.material]\nroughness = -0.1\n"),
+        "scene.toml:8:13: objects[0].material.roughness: must be between 0 and 1, got -0.1"
     );
     assert_eq!(
         object("[objects.material]\ndiffuse = \"a.png\"\nnormal_space = \"object\"\n"),
@@ -746,11 +754,12 @@ fn defaults_and_values_arrive_as_written() {
     let m = &scene.objects[0].material;
     assert_eq!((m.filter, m.wrap, m.mip_filter), (FilterMode::Bilinear, WrapMode::Repeat, MipFilter::Linear));
     assert_eq!((m.color, m.specular, m.shininess), (None, None, None));
+    assert_eq!((m.metallic, m.roughness), (None, None));
 
     let text = format!(
         "background = \"#102030\"\nambient = [0.2, 0.2, 0.2]\nambient_occlusion = true\n{CAMERA}{SPOT}\
-         [objects.material]\nspecular = 0.25\nshininess = 12\nfilter = \"nearest\"\nwrap = \"clamp\"\n\
-         mipmaps = \"nearest\"\n"
+         [objects.material]\nspecular = 0.25\nshininess = 12\nmetallic = 0.75\nroughness = 0.5\n\
+         filter = \"nearest\"\nwrap = \"clamp\"\nmipmaps = \"nearest\"\n"
     );
     let scene = parse(&text, "scene.toml").unwrap().load().unwrap();
     assert!(close(scene.background, Vec3::new(16.0, 32.0, 48.0) / 255.0));
@@ -758,6 +767,7 @@ fn defaults_and_values_arrive_as_written() {
     assert!(scene.ambient_occlusion);
     let m = &scene.objects[0].material;
     assert_eq!((m.specular, m.shininess), (Some(Vec3::splat(0.25)), Some(12.0)));
+    assert_eq!((m.metallic, m.roughness), (Some(0.75), Some(0.5)));
     assert_eq!((m.filter, m.wrap, m.mip_filter), (FilterMode::Nearest, WrapMode::Clamp, MipFilter::Nearest));
     let read = |mipmaps: &str| {
         let text = text.replace("mipmaps = \"nearest\"", &format!("mipmaps = \"{mipmaps}\""));
@@ -768,7 +778,7 @@ fn defaults_and_values_arrive_as_written() {
     assert_eq!(read("anisotropic16"), MipFilter::Anisotropic(Anisotropy::X16));
     let wrong = text.replace("mipmaps = \"nearest\"", "mipmaps = \"trilinear\"");
     let error = parse(wrong, "scene.toml").unwrap_err().to_string();
-    let expected = "scene.toml:15:11: objects[0].material.mipmaps: unknown variant `trilinear`, expected one of \
+    let expected = "scene.toml:17:11: objects[0].material.mipmaps: unknown variant `trilinear`, expected one of \
                     `off`, `nearest`, `linear`, `anisotropic2`, `anisotropic4`, `anisotropic8`, `anisotropic16`";
     assert_eq!(error, expected);
 }

@@ -192,7 +192,7 @@ struct SceneArgs {
     /// Far clipping plane distance, in radii (default: just behind the scene).
     #[arg(long, allow_negative_numbers = true, value_parser = positive)]
     far: Option<f32>,
-    /// unlit, flat, gouraud, phong, depth or normals.
+    /// unlit, flat, gouraud, phong, metallic-roughness, depth or normals.
     #[arg(long, default_value = "phong", value_parser = ShadingMode::from_str)]
     shading: ShadingMode,
     /// Use this image as the texture of every object.

@@ -10,6 +10,7 @@ use std::process::Command;
 use std::time::{Duration, Instant};
 
 use common::tmux::{SESSION, Tmux, process_gone, tmux_wanted};
+use rastty_scene::scene_render::ShadingMode;
 
 #[test]
 fn draws_turns_shows_the_hud_and_quits_cleanly() {
@@ -141,8 +142,8 @@ fn a_scene_file_shows_and_its_effects_switch_off() {
     });
     assert_ne!(plain, first, "switching shadows off changed nothing");
     tmux.send_keys("m");
-    tmux.wait_for("the depth view after m", || (tmux.screen_escaped() != plain).then_some(()));
-    for _ in 0..5 {
+    tmux.wait_for("the metallic-roughness model after m", || (tmux.screen_escaped() != plain).then_some(()));
+    for _ in 1..ShadingMode::ALL.len() {
         tmux.send_keys("m");
     }
     let mut last = String::new();

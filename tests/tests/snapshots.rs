@@ -155,6 +155,11 @@ fn phong_untextured() {
 }
 
 #[test]
+fn metallic_roughness_textured() {
+    Shot::new(ShadingMode::MetallicRoughness, true).check("metallic_roughness_textured");
+}
+
+#[test]
 fn depth() {
     Shot::new(ShadingMode::Depth, true).check("depth");
 }

@@ -102,7 +102,8 @@ impl ReferenceScene {
     /// Blinn-Phong.
     ///
     /// # Errors
-    /// [`ReferenceError::Unsupported`] for what the reference does not draw: the depth and normals views,
+    /// [`ReferenceError::Unsupported`] for what the reference does not draw: the metallic-roughness model, the
+    /// depth and normals views,
     /// wireframe lines, shadows, ambient occlusion, normal, specular and glow maps, and nearest
     /// texture filtering. [`ReferenceError::Camera`] when rastty would refuse the camera,
     /// [`ReferenceError::Plan`] when it would refuse the frame otherwise.
@@ -116,6 +117,7 @@ impl ReferenceScene {
         let shading = match options.shading {
             ShadingMode::Unlit => Shading::Unlit,
             ShadingMode::Flat | ShadingMode::Gouraud | ShadingMode::Phong => Shading::Lit,
+            ShadingMode::MetallicRoughness => return Err(ReferenceError::Unsupported("the metallic-roughness model")),
             ShadingMode::Depth => return Err(ReferenceError::Unsupported("the depth view")),
             ShadingMode::Normals => return Err(ReferenceError::Unsupported("the normals view")),
         };

@@ -7,7 +7,7 @@
 //! distribution's peak is kept finite by a least roughness ([`MIN_ROUGHNESS`]), and the visibility term by
 //! keeping `n . v` above [`MIN_N_DOT_V`] (a normal interpolated away from the viewer still reflects).
 
-use core::f32::consts::FRAC_1_PI;
+use core::f32::consts::{FRAC_1_PI, PI};
 
 use crate::math::{Vec3, float};
 
@@ -121,6 +121,21 @@ impl MetallicRoughness {
         let specular = f * (distribution(alpha, n.dot(h)) * visibility(alpha, n_dot_l, n_dot_v));
         let diffuse = (Vec3::ONE - f).mul_elem(self.diffuse_color()) * FRAC_1_PI;
         (diffuse + specular) * n_dot_l
+    }
+
+    /// The light that a light of colour `color` reflects toward `v`, `share` of it arriving (1: all of it): pi
+    /// times `color`, `share` and [`Self::reflected`]. The factor pi gives a light of colour 1 shining head-on on a
+    /// white Lambertian surface the brightness 1 it has under the other models' Lambert term, which has no `1 / pi`
+    /// (as a light of irradiance pi).
+    #[inline(always)]
+    pub fn lit_by(&self, n: Vec3, v: Vec3, l: Vec3, color: Vec3, share: f32) -> Vec3 {
+        self.reflected(n, v, l).mul_elem(color) * (PI * share)
+    }
+
+    /// The ambient light `ambient` reflected: by the diffuse lobe alone, `ambient` times the diffuse colour.
+    #[inline(always)]
+    pub fn ambient(&self, ambient: Vec3) -> Vec3 {
+        ambient.mul_elem(self.diffuse_color())
     }
 }
 

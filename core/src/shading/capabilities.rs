@@ -36,6 +36,8 @@ pub const LINEAR_LIGHT: u32 = 1 << 10;
 /// without [`MIPMAPS`] and [`SHADOWS`] too, it then lights every fragment in scalar maths and compiles no batch
 /// stages for per-pixel lighting.
 pub const LIGHTING_MAPS: u32 = 1 << 11;
+/// glTF's metallic-roughness model ([`super::ShadingModel::MetallicRoughness`]), lit per pixel.
+pub const METALLIC_ROUGHNESS: u32 = 1 << 12;
 /// Everything: what [`super::draw_mesh`] compiles.
 pub const ALL: u32 = UNLIT
     | FLAT
@@ -48,7 +50,8 @@ pub const ALL: u32 = UNLIT
     | TWO_SIDED
     | MIPMAPS
     | LINEAR_LIGHT
-    | LIGHTING_MAPS;
+    | LIGHTING_MAPS
+    | METALLIC_ROUGHNESS;
 
 /// True when `caps` holds `bit`: a constant in a shader compiled for `caps`, so the code it guards is left out
 /// when false.

@@ -11,7 +11,7 @@ use super::TangentFrame;
 use super::light_terms::{face_light, vertex_light};
 use super::material::decode_normal;
 use super::{
-    Cutout, LightTerms, Lighting, Material, NormalSource, ShadingModel, SpecularSource, Transforms, Variant,
+    Cutout, Light, LightTerms, Lighting, Material, NormalSource, ShadingModel, SpecularSource, Transforms, Variant,
     world_normal,
 };
 use crate::color::{ShadingSpace, encode_srgb, texel_alpha, unpack_rgb888};
@@ -147,6 +147,19 @@ impl<'a> GeneralShader<'a> {
         }
     }
 
+    /// The direction toward `light` from the point `world` of geometric normal `geometric`, and the share of its
+    /// colour arriving (`None`: all of it): the share that reaches the point times the share its shadow map lets
+    /// through, from the geometric normal's offset.
+    fn share(&self, light: &Light<'_>, world: Vec3, geometric: Vec3) -> (Vec3, Option<f32>) {
+        let (to_light, reaching) = light.kind.toward(world);
+        let shadowed = light.shadow.as_ref().map(|map| map.light_reaching(world, geometric, geometric.dot(to_light)));
+        let share = match (reaching, shadowed) {
+            (Some(r), Some(s)) => Some(r * s),
+            (reaching, shadowed) => reaching.or(shadowed),
+        };
+        (to_light, share)
+    }
+
     /// Per-pixel lighting: the shading normal (interpolated or from a map), then each light with its shadow map.
     ///
     /// Two-sided, a back-facing fragment's geometric and shading normals are turned round.
@@ -174,18 +187,23 @@ impl<'a> GeneralShader<'a> {
             Some(map) if variant.occlusion_map => self.lights.ambient.mul_elem(unpack_rgb888(self.texel(&map, uv))),
             _ => self.lights.ambient,
         };
+        if variant.shading == ShadingModel::MetallicRoughness {
+            // The BRDF's reflected light, the base colour in it, and the glow.
+            let surface = m.metallic_roughness(self.albedo(v.color, uv));
+            let mut reflected = surface.ambient(diffuse);
+            for light in self.lights.lights {
+                let (to_light, share) = self.share(light, v.world, geometric);
+                reflected += surface.lit_by(shading, to_eye, to_light, light.color, share.unwrap_or(1.0));
+            }
+            return match self.material.glow_map {
+                Some(map) if self.variant.glow_map => reflected + self.color(&map, uv),
+                _ => reflected,
+            };
+        }
         let mut specular = Vec3::ZERO;
         for light in self.lights.lights {
-            let (to_light, reaching) = light.kind.toward(v.world);
+            let (to_light, share) = self.share(light, v.world, geometric);
             let n_dot_l = shading.dot(to_light);
-            // The share of the light its shadow map lets through, from the geometric normal's offset, times the
-            // share that reaches the point.
-            let shadowed =
-                light.shadow.as_ref().map(|map| map.light_reaching(v.world, geometric, geometric.dot(to_light)));
-            let share = match (reaching, shadowed) {
-                (Some(r), Some(s)) => Some(r * s),
-                (reaching, shadowed) => reaching.or(shadowed),
-            };
             let arriving = float::max(n_dot_l, 0.0);
             diffuse += light.color * share.map_or(arriving, |s| arriving * s);
             if highlights && n_dot_l > 0.0 {
@@ -243,7 +261,7 @@ impl Shader for GeneralShader<'_> {
                 let light = vertex_light(t, &self.lights, self.material.shininess, v, mesh, i);
                 (out.diffuse, out.specular) = (light.diffuse, light.specular);
             }
-            ShadingModel::Phong => {
+            ShadingModel::Phong | ShadingModel::MetallicRoughness => {
                 out.normal = world_normal(&t.normal, mesh.normal(i));
                 if v.world {
                     out.world = t.model.transform_point(mesh.position(i));
@@ -278,7 +296,7 @@ impl Shader for GeneralShader<'_> {
             ShadingModel::Gouraud => {
                 self.stored(self.finish(self.albedo(v.color, uv).mul_elem(v.diffuse), v.specular, uv))
             }
-            ShadingModel::Phong => self.stored(self.per_pixel(v, uv, f.front_facing)),
+            ShadingModel::Phong | ShadingModel::MetallicRoughness => self.stored(self.per_pixel(v, uv, f.front_facing)),
             ShadingModel::Depth { near, far } => {
                 let scale = 1.0 / (far - near);
                 let scale = if scale.is_finite() { scale } else { 0.0 };

@@ -1,5 +1,5 @@
-//! Light over a batch: ambient, Lambert diffuse and Blinn-Phong highlights from each light, times the share of
-//! it that its shadow map lets through.
+//! Light over a batch: ambient, Lambert diffuse and Blinn-Phong highlights from each light, or glTF's
+//! metallic-roughness BRDF, times the share of it that its shadow map lets through.
 //!
 //! Each light is a few passes over the batch's columns, chosen per light and batch: the direction to the light
 //! (constant, or one per fragment for a point light), the share of it that arrives (shadow lookups only for a light
@@ -8,7 +8,7 @@
 
 use super::capabilities::{self, has};
 use super::scratch::Scratch;
-use super::{Cone, Falloff, LightKind, Lighting};
+use super::{Cone, Falloff, Light, LightKind, Lighting, Material};
 use crate::math::Vec3;
 use crate::math::float::{self, Exponent};
 use crate::pipeline::columns::{self, Column, Column3};
@@ -39,38 +39,7 @@ pub(crate) fn light<const CAPS: u32>(
         s.view.normalize(len);
     }
     for light in lights.lights {
-        // The direction toward the light and, for a light that weakens with distance or has a cone, the share of
-        // its colour arriving: as `LightKind::toward` computes it, lane by lane.
-        let (to_light, reaching) = match light.kind {
-            LightKind::Directional { to_light } => (Column3::splat(to_light), None),
-            LightKind::Point { position, falloff } if has(CAPS, capabilities::POINT_LIGHTS) => {
-                toward(s, position, falloff, None)
-            }
-            LightKind::Spot { position, falloff, cone } if has(CAPS, capabilities::POINT_LIGHTS) => {
-                toward(s, position, falloff, Some(cone))
-            }
-            LightKind::Point { .. } | LightKind::Spot { .. } => (Column3::ZERO, None),
-        };
-        let mut n_dot_l = Column::ZERO;
-        s.shading.dot(&to_light, &mut n_dot_l, len);
-        // The share of the light its shadow map lets through, if it has one.
-        let shadowed = light.shadow.as_ref().filter(|_| has(CAPS, capabilities::SHADOWS)).map(|map| {
-            let mut n_dot_geometric = Column::ZERO;
-            s.geometric.dot(&to_light, &mut n_dot_geometric, len);
-            let mut shares = Column::ZERO;
-            map.light_reaching_lanes(&s.world, &s.geometric, &n_dot_geometric, len, &mut shares);
-            shares
-        });
-        // What arrives of the light: the share reaching the point times the share its shadow lets through.
-        let shares = match (reaching, shadowed) {
-            (Some(mut reaching), Some(shadowed)) => {
-                for i in 0..lanes(len) {
-                    reaching[i] *= shadowed[i];
-                }
-                Some(reaching)
-            }
-            (reaching, shadowed) => reaching.or(shadowed),
-        };
+        let (to_light, n_dot_l, shares) = toward_light::<CAPS>(s, light);
         // max(0, n . l) times the share: the diffuse factor.
         let mut arriving = Column::ZERO;
         for i in 0..lanes(len) {
@@ -87,6 +56,80 @@ pub(crate) fn light<const CAPS: u32>(
             highlight(s.len, &s.shading, &s.view, &to_light, &n_dot_l, shares, light.color, shininess, &mut s.specular);
         }
     }
+}
+
+/// Fills `s.diffuse` with the light each fragment reflects under glTF's metallic-roughness model, its base colour
+/// `s.albedo`: the ambient light (`s.ambient` when `occluded`, else the lights' own) reflected by the diffuse lobe
+/// ([`MetallicRoughness::ambient`]), then each light's ([`MetallicRoughness::lit_by`], times the share that
+/// arrives and that its shadow map lets through), fragment by fragment in scalar maths.
+pub(crate) fn light_metallic_roughness<const CAPS: u32>(
+    s: &mut Scratch,
+    lights: &Lighting<'_>,
+    eye: Vec3,
+    material: &Material<'_>,
+    occluded: bool,
+) {
+    let len = s.len;
+    let ambient = if occluded { s.ambient } else { Column3::splat(lights.ambient) };
+    for i in 0..lanes(len) {
+        s.diffuse.set(i, material.metallic_roughness(s.albedo.get(i)).ambient(ambient.get(i)));
+    }
+    if lights.lights.is_empty() {
+        return;
+    }
+    s.view = Column3::toward(eye, &s.world, len);
+    s.view.normalize(len);
+    for light in lights.lights {
+        let (to_light, _, shares) = toward_light::<CAPS>(s, light);
+        for i in 0..lanes(len) {
+            let surface = material.metallic_roughness(s.albedo.get(i));
+            let share = shares.as_ref().map_or(1.0, |shares| shares[i]);
+            let lit = surface.lit_by(s.shading.get(i), s.view.get(i), to_light.get(i), light.color, share);
+            s.diffuse.set(i, s.diffuse.get(i) + lit);
+        }
+    }
+}
+
+/// The direction toward `light` from each fragment, `n . l` with the shading normal, and the share of the light's
+/// colour arriving (`None`: all of it): the share that reaches the point (a light that weakens with distance or has
+/// a cone) times the share its shadow map lets through (a light with one). Point lights and shadow maps only where
+/// `CAPS` holds them.
+#[inline(always)]
+fn toward_light<const CAPS: u32>(s: &Scratch, light: &Light<'_>) -> (Column3, Column, Option<Column>) {
+    let len = s.len;
+    // The direction toward the light and, for a light that weakens with distance or has a cone, the share of its
+    // colour arriving: as `LightKind::toward` computes it, lane by lane.
+    let (to_light, reaching) = match light.kind {
+        LightKind::Directional { to_light } => (Column3::splat(to_light), None),
+        LightKind::Point { position, falloff } if has(CAPS, capabilities::POINT_LIGHTS) => {
+            toward(s, position, falloff, None)
+        }
+        LightKind::Spot { position, falloff, cone } if has(CAPS, capabilities::POINT_LIGHTS) => {
+            toward(s, position, falloff, Some(cone))
+        }
+        LightKind::Point { .. } | LightKind::Spot { .. } => (Column3::ZERO, None),
+    };
+    let mut n_dot_l = Column::ZERO;
+    s.shading.dot(&to_light, &mut n_dot_l, len);
+    // The share of the light its shadow map lets through, if it has one.
+    let shadowed = light.shadow.as_ref().filter(|_| has(CAPS, capabilities::SHADOWS)).map(|map| {
+        let mut n_dot_geometric = Column::ZERO;
+        s.geometric.dot(&to_light, &mut n_dot_geometric, len);
+        let mut shares = Column::ZERO;
+        map.light_reaching_lanes(&s.world, &s.geometric, &n_dot_geometric, len, &mut shares);
+        shares
+    });
+    // What arrives of the light: the share reaching the point times the share its shadow lets through.
+    let shares = match (reaching, shadowed) {
+        (Some(mut reaching), Some(shadowed)) => {
+            for i in 0..lanes(len) {
+                reaching[i] *= shadowed[i];
+            }
+            Some(reaching)
+        }
+        (reaching, shadowed) => reaching.or(shadowed),
+    };
+    (to_light, n_dot_l, shares)
 }
 
 /// Adds `color * max(0, n . h)^shininess * share` to `specular` where `n . l > 0`, with `h` the unit half vector

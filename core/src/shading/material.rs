@@ -1,5 +1,6 @@
 //! A surface's material with its maps: what a draw colours its pixels with.
 
+use super::brdf::MetallicRoughness;
 use crate::math::Vec3;
 use crate::texture::{FilterMode, MipFilter, Texture, WrapMode};
 
@@ -41,6 +42,12 @@ pub struct Material<'a> {
     pub specular: Vec3,
     /// Blinn-Phong exponent.
     pub shininess: f32,
+    /// How much of a metal the surface is under the metallic-roughness model, 0 to 1 (read by it alone; glTF's
+    /// `metallicFactor`).
+    pub metallic: f32,
+    /// The surface's perceptual roughness under the metallic-roughness model, 0 (a mirror) to 1 (read by it alone;
+    /// glTF's `roughnessFactor`).
+    pub roughness: f32,
     /// The diffuse (albedo) texture.
     pub diffuse: Option<Texture<'a>>,
     /// The normal map.
@@ -78,12 +85,14 @@ impl Default for Material<'_> {
 
 impl Material<'_> {
     /// A plain material: `color`, no highlights, no maps (bilinear, repeating and blending levels of detail when
-    /// some are given).
+    /// some are given); under the metallic-roughness model a dielectric of roughness 1.
     pub const fn plain(color: Vec3) -> Self {
         Self {
             color,
             specular: Vec3::ZERO,
             shininess: 32.0,
+            metallic: 0.0,
+            roughness: 1.0,
             diffuse: None,
             normal_map: None,
             specular_map: None,
@@ -103,6 +112,15 @@ impl Material<'_> {
     #[inline(always)]
     pub(crate) fn keeps(&self, texel_alpha: u32, cutoff: f32) -> bool {
         texel_alpha as f32 * (self.opacity * (1.0 / 255.0)) >= cutoff
+    }
+}
+
+impl Material<'_> {
+    /// The surface under the metallic-roughness model with base colour `base` (the material colour, times the
+    /// vertex colour and the diffuse map where a draw reads them).
+    #[inline(always)]
+    pub(crate) fn metallic_roughness(&self, base: Vec3) -> MetallicRoughness {
+        MetallicRoughness { base_color: base, metallic: self.metallic, roughness: self.roughness }
     }
 }
 

@@ -94,6 +94,7 @@ where
             ShadingModel::Flat => capabilities::FLAT,
             ShadingModel::Gouraud => capabilities::GOURAUD,
             ShadingModel::Phong => capabilities::PER_PIXEL,
+            ShadingModel::MetallicRoughness => capabilities::METALLIC_ROUGHNESS,
             ShadingModel::Depth { .. } | ShadingModel::Normals => capabilities::VIEWS,
         };
         let compiled = has(CAPS, model)
@@ -106,7 +107,7 @@ where
             && (!variant.lighting_maps() || has(CAPS, capabilities::LIGHTING_MAPS));
         // A normal map is read through texture coordinates: without them, per-pixel lighting has interpolated
         // normals (as every resolved variant does), which `ALWAYS_ONE_FRAGMENT` relies on.
-        let normals = variant.shading != ShadingModel::Phong
+        let normals = !variant.shading.per_pixel()
             || variant.normals == NormalSource::Interpolated
             || (layout.uvs && matches!(variant.normals, NormalSource::TangentMap | NormalSource::ObjectMap));
         if !(carried && compiled && normals) {
@@ -151,6 +152,17 @@ where
     const ALWAYS_ONE_FRAGMENT: bool = BATCH_SIZE == 1
         && !has(CAPS, capabilities::SHADOWS)
         && (!U::PRESENT || !has(CAPS, capabilities::LIGHTING_MAPS | capabilities::MIPMAPS));
+
+    /// Whether this shader lights fragments of `model` per pixel: [`ShadingModel::Phong`] or
+    /// [`ShadingModel::MetallicRoughness`], where it is compiled for it.
+    #[inline(always)]
+    fn lights_per_pixel(model: ShadingModel) -> bool {
+        match model {
+            ShadingModel::Phong => has(CAPS, capabilities::PER_PIXEL),
+            ShadingModel::MetallicRoughness => has(CAPS, capabilities::METALLIC_ROUGHNESS),
+            _ => false,
+        }
+    }
 
     /// Whether this draw lights its fragments per pixel one at a time, in scalar maths ([`Self::lit_one`]).
     #[inline(always)]
@@ -251,7 +263,7 @@ where
     fn varyings(&self, mesh: &Mesh<'_>, i: usize) -> Self::Varyings {
         let (t, v, layout) = (&self.surface.transforms, &self.surface.variant, &self.surface.layout);
         let (first, second) = match v.shading {
-            ShadingModel::Phong if has(CAPS, capabilities::PER_PIXEL) => (
+            model if Self::lights_per_pixel(model) => (
                 A::capture(|| world_normal(&t.normal, mesh.normal(i))),
                 B::capture(|| if layout.second { t.model.transform_point(mesh.position(i)) } else { Vec3::ZERO }),
             ),
@@ -327,7 +339,7 @@ where
             ShadingModel::Phong if self.lights_one_fragment() => {
                 colors[0] = self.lit_one(&batch.fragment(0), batch.varyings(0));
             }
-            ShadingModel::Phong if has(CAPS, capabilities::PER_PIXEL) => {
+            model if Self::lights_per_pixel(model) => {
                 self.with_scratch(len, |s| {
                     s.albedo = base_albedo();
                     s.normal = first();

@@ -11,6 +11,10 @@ pub enum ShadingModel {
     Gouraud,
     /// Lighting per pixel with the interpolated normal.
     Phong,
+    /// Lighting per pixel by glTF's metallic-roughness BRDF ([`super::brdf`]), from the material's base colour,
+    /// [`super::Material::metallic`] and [`super::Material::roughness`]. The ambient light reaches its diffuse
+    /// lobe alone.
+    MetallicRoughness,
     /// The depth buffer as grey levels: NDC depth `near` white to `far` black.
     Depth {
         /// NDC depth shown white.
@@ -23,6 +27,12 @@ pub enum ShadingModel {
 }
 
 impl ShadingModel {
+    /// Whether the model lights each pixel: [`Self::Phong`] and [`Self::MetallicRoughness`].
+    #[must_use]
+    pub fn per_pixel(&self) -> bool {
+        matches!(self, Self::Phong | Self::MetallicRoughness)
+    }
+
     /// A short lowercase name (`"phong"`, `"depth"`...).
     pub fn name(&self) -> &'static str {
         match self {
@@ -30,6 +40,7 @@ impl ShadingModel {
             Self::Flat => "flat",
             Self::Gouraud => "gouraud",
             Self::Phong => "phong",
+            Self::MetallicRoughness => "metallic-roughness",
             Self::Depth { .. } => "depth",
             Self::Normals => "normals",
         }

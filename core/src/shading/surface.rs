@@ -11,7 +11,7 @@ use super::coarse;
 use super::maps::{MapReader, Texels, albedo, glow, occluded_ambient, specular_color, stored};
 use super::normals::{self, object_map, tangent_map};
 use super::scratch::{Coordinates, Scratch};
-use super::{Cutout, Layout, Lighting, Material, NormalSource, SpecularSource, Variant, lighting};
+use super::{Cutout, Layout, Lighting, Material, NormalSource, ShadingModel, SpecularSource, Variant, lighting};
 use crate::color::{ShadingSpace, texel_alpha};
 use crate::math::Vec3;
 use crate::math::float::Exponent;
@@ -106,6 +106,18 @@ impl<const CAPS: u32> Surface<'_, CAPS> {
             }
             _ => false,
         };
+        if v.shading == ShadingModel::MetallicRoughness {
+            // The reflected light, the base colour in it: plus the glow, and stored.
+            lighting::light_metallic_roughness::<CAPS>(s, &self.lights, self.transforms.eye, m, occluded);
+            if let (true, true, Some(map)) = (MAPS, v.glow_map, m.glow_map) {
+                glow(s, maps, &map, texels);
+            }
+            let out = &mut colors[..s.len];
+            for (i, c) in out.iter_mut().enumerate() {
+                *c = if v.glow_map { s.diffuse.get(i) + s.emission.get(i) } else { s.diffuse.get(i) };
+            }
+            return stored(out, self.space());
+        }
         lighting::light::<CAPS>(s, &self.lights, self.transforms.eye, self.shininess, specular, occluded);
         match (v.specular, m.specular_map) {
             (SpecularSource::Map, Some(map)) if MAPS => specular_color(s, maps, &map, texels, m.specular),

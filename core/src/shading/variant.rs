@@ -178,7 +178,8 @@ impl Variant {
     ///   decides for the whole draw ([`Cutout`]).
     /// - Back faces, where a draw keeps them, are lit with their normal turned round: per-pixel lighting only
     ///   (flat and Gouraud light both faces alike).
-    /// - Highlights only for a non-zero [`super::Material::specular`] with at least one light.
+    /// - Highlights only for a non-zero [`super::Material::specular`] with at least one light; the metallic-roughness
+    ///   model's specular lobe with any light, of its own colour (no specular map).
     /// - The world position only for per-pixel point or spot lights, highlights or shadows.
     /// - Affine interpolation under an orthographic projection, and the front face flipped for a mirroring model
     ///   matrix ([`crate::shading::Transforms::adapt`]).
@@ -194,8 +195,8 @@ impl Variant {
     ) -> Result<Self, ShadingError> {
         let (mesh, material, shading) = (&object.mesh, &object.material, object.shading);
         let present = mesh.attributes();
-        let per_pixel = shading == ShadingModel::Phong;
-        let lit = matches!(shading, ShadingModel::Flat | ShadingModel::Gouraud | ShadingModel::Phong);
+        let per_pixel = shading.per_pixel();
+        let lit = per_pixel || matches!(shading, ShadingModel::Flat | ShadingModel::Gouraud);
         let colored = lit || shading == ShadingModel::Unlit;
         let reads_normals = per_pixel || matches!(shading, ShadingModel::Gouraud | ShadingModel::Normals);
         if reads_normals && !present.normals {
@@ -208,7 +209,7 @@ impl Variant {
             ShadingModel::Flat => NormalSource::Face,
             ShadingModel::Gouraud => NormalSource::Vertex,
             ShadingModel::Normals => NormalSource::Interpolated,
-            ShadingModel::Phong => match material.normal_map {
+            ShadingModel::Phong | ShadingModel::MetallicRoughness => match material.normal_map {
                 Some(map) if uvs => match map.space {
                     super::NormalSpace::Tangent => {
                         let actual = object.tangents.map_or(0, <[Vec4]>::len);
@@ -234,7 +235,13 @@ impl Variant {
                 pcf_radius = pcf_radius.max(r);
             }
         }
-        let specular = if directional_lights + point_lights == 0 || material.specular == Vec3::ZERO {
+        // The metallic-roughness model always has its specular lobe, of its own colour.
+        let metallic_roughness = shading == ShadingModel::MetallicRoughness;
+        let specular = if directional_lights + point_lights == 0 {
+            SpecularSource::None
+        } else if metallic_roughness {
+            SpecularSource::Constant
+        } else if material.specular == Vec3::ZERO {
             SpecularSource::None
         } else if material.specular_map.is_some() && uvs {
             SpecularSource::Map
@@ -299,11 +306,13 @@ impl Variant {
     pub fn layout(&self) -> Layout {
         let first = match self.shading {
             ShadingModel::Unlit | ShadingModel::Flat | ShadingModel::Depth { .. } => false,
-            ShadingModel::Gouraud | ShadingModel::Phong | ShadingModel::Normals => true,
+            ShadingModel::Gouraud | ShadingModel::Phong | ShadingModel::MetallicRoughness | ShadingModel::Normals => {
+                true
+            }
         };
         let second = match self.shading {
             ShadingModel::Gouraud => self.specular != SpecularSource::None,
-            ShadingModel::Phong => self.world,
+            ShadingModel::Phong | ShadingModel::MetallicRoughness => self.world,
             _ => false,
         };
         Layout { first, second, uvs: self.uvs, tangents: self.tangents, colors: self.vertex_colors }

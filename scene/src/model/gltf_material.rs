@@ -126,6 +126,8 @@ pub(crate) fn convert(
         occlusion_map,
         specular: Some(specular.map(linear_to_srgb)),
         shininess: Some(shininess),
+        metallic: Some(metallic),
+        roughness: Some(roughness),
         double_sided: material.double_sided(),
         opacity: finite_unit(a, 1.0),
         alpha_cutoff,

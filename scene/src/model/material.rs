@@ -34,6 +34,12 @@ pub struct ModelMaterial {
     pub specular: Option<Vec3>,
     /// The highlight's Blinn-Phong exponent, when the file gives one (glTF: from roughness).
     pub shininess: Option<f32>,
+    /// How much of a metal the surface is, 0 to 1, under the metallic-roughness model (glTF's `metallicFactor`);
+    /// `None` keeps the renderer's default (a dielectric).
+    pub metallic: Option<f32>,
+    /// The perceptual roughness, 0 to 1, under the metallic-roughness model (glTF's `roughnessFactor`); `None`
+    /// keeps the renderer's default (1).
+    pub roughness: Option<f32>,
     /// Both faces of each triangle are drawn (glTF's `doubleSided`); otherwise back faces are culled.
     pub double_sided: bool,
     /// The surface's alpha (glTF's base colour factor's), times the texture's; read only with `alpha_cutoff`.
@@ -54,6 +60,8 @@ impl Default for ModelMaterial {
             occlusion_map: None,
             specular: None,
             shininess: None,
+            metallic: None,
+            roughness: None,
             double_sided: false,
             opacity: 1.0,
             alpha_cutoff: None,

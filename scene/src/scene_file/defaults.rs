@@ -18,6 +18,12 @@ pub const SPOT_OUTER_DEGREES: f32 = 45.0;
 /// The Blinn-Phong exponent of a material that gives none.
 pub const SHININESS: f32 = 28.0;
 
+/// The metallic factor of a part whose file and scene give none: a dielectric.
+pub const METALLIC: f32 = 0.0;
+
+/// The roughness of a part whose file and scene give none: the roughest.
+pub const ROUGHNESS: f32 = 1.0;
+
 /// The viewer's lights (`viewer_lights = true`, and every model shown without a scene file), in camera space so
 /// that they follow the camera: a warm key light from the upper left and a cool fill light from the right,
 /// without shadows.

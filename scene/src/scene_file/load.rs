@@ -233,6 +233,8 @@ impl Loader<'_> {
             normal_map: normal_map.map(|image| ObjectNormalMap { image, space }),
             specular: m.specular.as_ref().map(|s| vec3(s.get_ref().triple())),
             shininess: m.shininess.as_ref().map(|s| *s.get_ref()),
+            metallic: m.metallic.as_ref().map(|s| *s.get_ref()),
+            roughness: m.roughness.as_ref().map(|s| *s.get_ref()),
             specular_map,
             glow_map,
             filter: match m.filter {

@@ -243,8 +243,9 @@ pub struct ObjectAnimation {
 ///
 /// Each key given overrides the model's own materials (an OBJ file's MTL entries, a glTF file's materials) for
 /// every part; a key left out keeps the part's own value when its material has one ([`Self::color_over`],
-/// [`Self::diffuse_over`], [`Self::normal_over`], [`Self::glow_over`], [`Self::specular_over`] and
-/// [`Self::shininess_over`] say which wins), else the renderer's default.
+/// [`Self::diffuse_over`], [`Self::normal_over`], [`Self::glow_over`], [`Self::specular_over`],
+/// [`Self::shininess_over`], [`Self::metallic_over`] and [`Self::roughness_over`] say which wins), else the
+/// renderer's default.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct ObjectMaterial {
     /// The diffuse colour (components from 0 to 1).
@@ -257,6 +258,10 @@ pub struct ObjectMaterial {
     pub specular: Option<Vec3>,
     /// The Blinn-Phong exponent (positive).
     pub shininess: Option<f32>,
+    /// The metallic factor (0 to 1).
+    pub metallic: Option<f32>,
+    /// The roughness (0 to 1).
+    pub roughness: Option<f32>,
     /// The specular map, as decoded (a grey image has its level in all three channels).
     pub specular_map: Option<Arc<TextureImage>>,
     /// The glow (emission) map, as decoded.
@@ -315,6 +320,18 @@ impl ObjectMaterial {
     /// (the renderer's default).
     pub fn shininess_over(&self, mtl: Option<&model::ModelMaterial>) -> Option<f32> {
         self.shininess.or(mtl.and_then(|m| m.shininess))
+    }
+
+    /// The metallic factor of a part whose material is `mtl`: the scene's, else the model's own (glTF), else
+    /// `None` (the renderer's default).
+    pub fn metallic_over(&self, mtl: Option<&model::ModelMaterial>) -> Option<f32> {
+        self.metallic.or(mtl.and_then(|m| m.metallic))
+    }
+
+    /// The roughness of a part whose material is `mtl`: the scene's, else the model's own (glTF), else `None` (the
+    /// renderer's default).
+    pub fn roughness_over(&self, mtl: Option<&model::ModelMaterial>) -> Option<f32> {
+        self.roughness.or(mtl.and_then(|m| m.roughness))
     }
 }
 

@@ -268,6 +268,11 @@ pub struct MaterialSpec {
     pub specular: Option<Spanned<NumberOrTriple>>,
     /// `shininess = NUMBER`: the Blinn-Phong exponent, positive: larger is a smaller, sharper highlight.
     pub shininess: Option<Spanned<f32>>,
+    /// `metallic = NUMBER`: under the metallic-roughness model (`--shading metallic-roughness`), how much of a
+    /// metal the surface is, from 0 (a dielectric) to 1.
+    pub metallic: Option<Spanned<f32>>,
+    /// `roughness = NUMBER`: under the metallic-roughness model, the surface's roughness, from 0 (a mirror) to 1.
+    pub roughness: Option<Spanned<f32>>,
     /// `specular_map = "PATH"`: an image that scales the specular colour per texel (a grey image scales all
     /// channels alike).
     pub specular_map: Option<Spanned<String>>,

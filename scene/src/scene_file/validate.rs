@@ -387,6 +387,12 @@ fn material(c: &Checker<'_>, m: &MaterialSpec, key: &str) -> Result<(), SceneFil
     if let Some(shininess) = &m.shininess {
         c.positive(shininess, &format!("{key}.shininess"), "")?;
     }
+    for (value, name) in [(&m.metallic, "metallic"), (&m.roughness, "roughness")] {
+        if let Some(v) = value {
+            let x = *v.get_ref();
+            c.unit_interval(&v.span(), [x; 3], &num(x), &format!("{key}.{name}"))?;
+        }
+    }
     c.path(&m.specular_map, &format!("{key}.specular_map"), "an image file")?;
     c.path(&m.glow_map, &format!("{key}.glow_map"), "an image file")?;
     Ok(())

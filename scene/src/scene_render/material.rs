@@ -10,7 +10,7 @@ use rastty_core::texture::TextureError;
 use super::interleaved::{MapRole, PartMaps};
 use super::{PlanOptions, lit_color};
 use crate::model::TextureImage;
-use crate::scene_file::defaults::{SHININESS, SPECULAR};
+use crate::scene_file::defaults::{METALLIC, ROUGHNESS, SHININESS, SPECULAR};
 use crate::scene_file::{NormalSpaceSpec, SceneObject};
 
 /// The material of part `part` of `object`:
@@ -22,6 +22,8 @@ use crate::scene_file::{NormalSpaceSpec, SceneObject};
 ///   and no specular map) when the specular effect is off;
 /// - both colours as lit in `space` ([`lit_color`]: the scene's and the model's colours are sRGB-encoded);
 /// - shininess: the scene's, else the part's own, else [`SHININESS`];
+/// - metallic and roughness (read by the metallic-roughness model alone): the scene's, else the part's own
+///   (glTF), else [`METALLIC`] and [`ROUGHNESS`];
 /// - normal and glow maps: the scene's, else the part's own (glTF), unless their effect is off;
 /// - filter, wrap and filter between levels of detail: the scene's, for every map (each map with its levels).
 ///
@@ -77,6 +79,8 @@ pub fn part_material<'a>(
         color: lit_color(m.color_over(mtl), space),
         specular,
         shininess: m.shininess_over(mtl).unwrap_or(SHININESS),
+        metallic: m.metallic_over(mtl).unwrap_or(METALLIC),
+        roughness: m.roughness_over(mtl).unwrap_or(ROUGHNESS),
         diffuse,
         normal_map,
         specular_map,

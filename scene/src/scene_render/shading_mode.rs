@@ -15,6 +15,8 @@ pub enum ShadingMode {
     /// Lit per pixel.
     #[default]
     Phong,
+    /// Lit per pixel by glTF's metallic-roughness model.
+    MetallicRoughness,
     /// The depth buffer as grey levels.
     Depth,
     /// Surface normals as colours.
@@ -23,7 +25,8 @@ pub enum ShadingMode {
 
 impl ShadingMode {
     /// All modes, in the viewer's cycling order.
-    pub const ALL: [Self; 6] = [Self::Unlit, Self::Flat, Self::Gouraud, Self::Phong, Self::Depth, Self::Normals];
+    pub const ALL: [Self; 7] =
+        [Self::Unlit, Self::Flat, Self::Gouraud, Self::Phong, Self::MetallicRoughness, Self::Depth, Self::Normals];
 
     /// The mode's name as given on the command line.
     pub fn name(self) -> &'static str {
@@ -32,6 +35,7 @@ impl ShadingMode {
             Self::Flat => "flat",
             Self::Gouraud => "gouraud",
             Self::Phong => "phong",
+            Self::MetallicRoughness => "metallic-roughness",
             Self::Depth => "depth",
             Self::Normals => "normals",
         }
@@ -63,6 +67,7 @@ impl ShadingMode {
             Self::Flat => ShadingModel::Flat,
             Self::Gouraud => ShadingModel::Gouraud,
             Self::Phong => ShadingModel::Phong,
+            Self::MetallicRoughness => ShadingModel::MetallicRoughness,
             Self::Depth => ShadingModel::Depth { near, far },
             Self::Normals => ShadingModel::Normals,
         }

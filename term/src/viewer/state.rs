@@ -235,7 +235,7 @@ mod tests {
         let mut state = state();
         assert_eq!(state.options.shading, ShadingMode::Phong);
         assert_eq!(state.apply(Action::CycleShading), Effect::Redraw);
-        assert_eq!(state.options.shading, ShadingMode::Depth);
+        assert_eq!(state.options.shading, ShadingMode::MetallicRoughness);
         for _ in 1..ShadingMode::ALL.len() {
             state.apply(Action::CycleShading);
         }
