@@ -6,25 +6,28 @@
 
 use rastty_core::camera::{look_at, perspective};
 use rastty_core::color::ShadingSpace;
-use rastty_core::math::{Mat4, Vec3};
+use rastty_core::math::{Mat4, Vec2, Vec3};
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::DrawState;
 use rastty_core::shading::{Light, Lighting, Material, Object, ShadingModel, Transforms, draw_mesh};
 use rastty_core::target::Target;
+use rastty_core::texture::Texture;
 
 use crate::common::ExactColor;
 
 /// An odd size: the middle pixel's centre is on the camera's axis.
 const SIZE: u32 = 33;
 
-/// The middle pixel of a square of `material` facing a camera on +z, lit head-on by a light of colour 1 and by
-/// `ambient`, in `f32` as the draw computes it.
-fn centre(material: Material<'_>, ambient: Vec3) -> Vec3 {
+/// A square of `material` facing a camera on +z, lit head-on by a light of colour 1 and by `ambient`: every
+/// pixel, in `f32` as the draw computes it.
+fn square(material: Material<'_>, ambient: Vec3) -> Vec<[u32; 3]> {
     let positions =
         [Vec3::new(-1.0, -1.0, 0.0), Vec3::new(1.0, -1.0, 0.0), Vec3::new(1.0, 1.0, 0.0), Vec3::new(-1.0, 1.0, 0.0)];
     let normals = [Vec3::Z; 4];
+    let uvs = [Vec2::new(0.0, 0.0), Vec2::new(1.0, 0.0), Vec2::new(1.0, 1.0), Vec2::new(0.0, 1.0)];
     let indices = [0u16, 1, 2, 0, 2, 3];
     let mesh = Mesh::new(&positions, Indices::U16(&indices)).unwrap().with_normals(&normals).unwrap();
+    let mesh = mesh.with_uvs(&uvs).unwrap();
     let view = look_at(Vec3::new(0.0, 0.0, 3.0), Vec3::ZERO, Vec3::Y).unwrap();
     let transforms = Transforms::new(Mat4::IDENTITY, view, perspective(0.8, 1.0, 0.5, 10.0).unwrap());
     let object = Object { mesh, tangents: None, transforms, shading: ShadingModel::MetallicRoughness, material };
@@ -36,8 +39,14 @@ fn centre(material: Material<'_>, ambient: Vec3) -> Vec3 {
     target.clear(Vec3::ZERO);
     let (variant, stats) = draw_mesh(&mut target, &object, &lighting, &DrawState::DEFAULT).unwrap();
     assert_eq!(variant.shading, ShadingModel::MetallicRoughness);
+    assert_eq!(variant.metallic_roughness_map, material.metallic_roughness_map.is_some());
     assert!(stats.fragments > 100);
-    let [r, g, b] = color[(SIZE * SIZE / 2) as usize].map(f32::from_bits);
+    color
+}
+
+/// The middle pixel of [`square`].
+fn centre(material: Material<'_>, ambient: Vec3) -> Vec3 {
+    let [r, g, b] = square(material, ambient)[(SIZE * SIZE / 2) as usize].map(f32::from_bits);
     Vec3::new(r, g, b)
 }
 
@@ -78,4 +87,29 @@ fn the_specular_lobe_narrows_and_brightens_as_roughness_falls() {
     assert!(peaks.windows(2).all(|p| p[1] > p[0]), "{peaks:?}");
     // Roughness 0.5: alpha = 0.25, D = 1 / (pi alpha^2), V = 1 / 4: pi D V = 4.
     assert!((peaks[1] - 4.0).abs() < 1e-5, "{peaks:?}");
+}
+
+/// The metallic-roughness map scales the factors by its blue (metallic) and green (roughness) channels: a white map
+/// changes no pixel, and a map of no blue makes a metal a dielectric, pixel for pixel.
+#[test]
+fn the_metallic_roughness_map_scales_metallic_by_blue_and_roughness_by_green() {
+    let c = Vec3::new(0.9, 0.6, 0.3);
+    let metal = Material { metallic: 1.0, roughness: 0.6, ..Material::plain(c) };
+    let (white, green) = ([0xFF_FFFF], [0x00_FF00]);
+    let white = Texture::new(&white, 1, 1).unwrap();
+    let green = Texture::new(&green, 1, 1).unwrap();
+    let plain = square(metal, Vec3::splat(0.1));
+    assert_eq!(square(Material { metallic_roughness_map: Some(white), ..metal }, Vec3::splat(0.1)), plain);
+    let dielectric = square(Material { metallic: 0.0, ..metal }, Vec3::splat(0.1));
+    assert_ne!(dielectric, plain);
+    assert_eq!(square(Material { metallic_roughness_map: Some(green), ..metal }, Vec3::splat(0.1)), dielectric);
+    // Half the green: the roughness times 128 / 255.
+    let half = [0x00_8000];
+    let half = Texture::new(&half, 1, 1).unwrap();
+    // The texel unpacked as the core unpacks it: 128 times 1 / 255.
+    let smoother = Material { roughness: 0.6 * (128.0 * (1.0 / 255.0)), ..metal };
+    assert_eq!(
+        square(Material { metallic_roughness_map: Some(half), ..metal }, Vec3::ZERO)[(SIZE * SIZE / 2) as usize],
+        square(Material { metallic: 0.0, ..smoother }, Vec3::ZERO)[(SIZE * SIZE / 2) as usize],
+    );
 }

@@ -245,6 +245,11 @@ fn texture_transforms_move_texture_coordinates() {
 /// a material of alpha mode `mode` (`"MASK"` or `"OPAQUE"`) and with `more` material keys. Bilinear filtering
 /// blends the halves only near where they meet.
 fn half_clear_square(mode: &str, more: &str) -> Vec<u8> {
+    textured_square(mode, "", more)
+}
+
+/// [`half_clear_square`] with `pbr` after the base colour texture in `pbrMetallicRoughness`.
+fn textured_square(mode: &str, pbr: &str, more: &str) -> Vec<u8> {
     let mut png = Vec::new();
     let mut encoder = png::Encoder::new(&mut png, 16, 1);
     encoder.set_color(png::ColorType::Rgba);
@@ -257,7 +262,7 @@ fn half_clear_square(mode: &str, more: &str) -> Vec<u8> {
         r#""scenes": [{{"nodes": [0]}}], "nodes": [{{"mesh": 0}}],
         "meshes": [{{"primitives": [{{"attributes": {{"POSITION": {p}, "NORMAL": {n}, "TEXCOORD_0": {t}}},
           "indices": {i}, "material": 0}}]}}],
-        "materials": [{{"alphaMode": "{mode}", "pbrMetallicRoughness": {{"baseColorTexture": {{"index": 0}}}}{more}}}],
+        "materials": [{{"alphaMode": "{mode}", "pbrMetallicRoughness": {{"baseColorTexture": {{"index": 0}}{pbr}}}{more}}}],
         "textures": [{{"source": 0}}],
         "images": [{{"bufferView": {image}, "mimeType": "image/png"}}]"#
     ))
@@ -319,6 +324,29 @@ fn the_occlusion_texture_scales_the_ambient_light_by_its_red_channel() {
     let (left, right) = (brightest(60), brightest(100));
     assert_eq!(left, 255, "the unoccluded half in full ambient light");
     assert_eq!(right, 188, "the occluded half gets half the light: {left}, {right}");
+}
+
+#[test]
+fn the_metallic_roughness_texture_is_read_by_the_metallic_roughness_model() {
+    let dir = tempfile::tempdir().unwrap();
+    // The square's texture as its metallic-roughness texture too: red (no metal, no roughness) on the left, green
+    // (roughness 1, no metal) on the right.
+    let pbr = r#", "metallicRoughnessTexture": {"index": 0}, "metallicFactor": 0.75"#;
+    fs::write(dir.path().join("metal.glb"), textured_square("OPAQUE", pbr, "")).unwrap();
+    let model = load_model(dir.path().join("metal.glb"), &ModelOptions::default()).unwrap();
+    assert!(model.warnings.is_empty(), "{:?}", model.warnings);
+    let material = model.part_material(0).unwrap();
+    assert_eq!((material.metallic, material.roughness), (Some(0.75), Some(1.0)));
+    let texels = &material.metallic_roughness_map.as_ref().unwrap().texels;
+    assert_eq!((texels[7], texels[8]), (0x00FF_0000, 0xFF00_FF00));
+    let explain = |more: &[&str]| {
+        let mut args = vec!["render", "metal.glb", "--explain"];
+        args.extend_from_slice(more);
+        String::from_utf8_lossy(&rastty(dir.path(), &args).stdout).into_owned()
+    };
+    let pbr = explain(&["--shading", "metallic-roughness"]);
+    assert!(pbr.contains("metallic-roughness; varyings") && pbr.contains("; metallic-roughness map"), "{pbr}");
+    assert!(!explain(&[]).contains("metallic-roughness map"), "Blinn-Phong reads no such map");
 }
 
 #[test]

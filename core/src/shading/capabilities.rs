@@ -31,7 +31,8 @@ pub const MIPMAPS: u32 = 1 << 9;
 /// Shading in linear light ([`crate::color::ShadingSpace::Linear`]): the sRGB decoding of colour maps and the
 /// encoding of each pixel, and their tables.
 pub const LINEAR_LIGHT: u32 = 1 << 10;
-/// The maps beyond the diffuse (albedo) map: normal, specular, glow and occlusion maps. A shader that carries
+/// The maps beyond the diffuse (albedo) map: normal, specular, glow, occlusion and metallic-roughness maps. A
+/// shader that carries
 /// texture coordinates without it reads a diffuse map alone; where batches hold one fragment and it is compiled
 /// without [`MIPMAPS`] and [`SHADOWS`] too, it then lights every fragment in scalar maths and compiles no batch
 /// stages for per-pixel lighting.

@@ -8,8 +8,9 @@
 //! per-triangle light (`light_terms.rs`: `vertex_light`, `face_light`), which is scalar already.
 
 use super::TangentFrame;
+use super::brdf::MetallicRoughness;
 use super::light_terms::{face_light, vertex_light};
-use super::material::decode_normal;
+use super::material::{decode_normal, metallic_roughness};
 use super::{
     Cutout, Light, LightTerms, Lighting, Material, NormalSource, ShadingModel, SpecularSource, Transforms, Variant,
     world_normal,
@@ -189,7 +190,12 @@ impl<'a> GeneralShader<'a> {
         };
         if variant.shading == ShadingModel::MetallicRoughness {
             // The BRDF's reflected light, the base colour in it, and the glow.
-            let surface = m.metallic_roughness(self.albedo(v.color, uv));
+            let texel = match m.metallic_roughness_map {
+                Some(map) if variant.metallic_roughness_map => Some(self.texel(&map, uv)),
+                _ => None,
+            };
+            let (metallic, roughness) = metallic_roughness(m.metallic, m.roughness, texel);
+            let surface = MetallicRoughness { base_color: self.albedo(v.color, uv), metallic, roughness };
             let mut reflected = surface.ambient(diffuse);
             for light in self.lights.lights {
                 let (to_light, share) = self.share(light, v.world, geometric);

@@ -6,9 +6,10 @@
 //! with a shadow map), the diffuse term, and the highlight only when the material has one. The passes are
 //! lane-wise loops ([`super::columns`]), except the shadow lookups, which read the map fragment by fragment.
 
+use super::brdf::MetallicRoughness;
 use super::capabilities::{self, has};
 use super::scratch::Scratch;
-use super::{Cone, Falloff, Light, LightKind, Lighting, Material};
+use super::{Cone, Falloff, Light, LightKind, Lighting};
 use crate::math::Vec3;
 use crate::math::float::{self, Exponent};
 use crate::pipeline::columns::{self, Column, Column3};
@@ -59,20 +60,26 @@ pub(crate) fn light<const CAPS: u32>(
 }
 
 /// Fills `s.diffuse` with the light each fragment reflects under glTF's metallic-roughness model, its base colour
-/// `s.albedo`: the ambient light (`s.ambient` when `occluded`, else the lights' own) reflected by the diffuse lobe
-/// ([`MetallicRoughness::ambient`]), then each light's ([`MetallicRoughness::lit_by`], times the share that
-/// arrives and that its shadow map lets through), fragment by fragment in scalar maths.
+/// `s.albedo`, its metallic factor and roughness `surface`: the ambient light (`s.ambient` when `occluded`, else the
+/// lights' own) reflected by the diffuse lobe ([`MetallicRoughness::ambient`]), then each light's
+/// ([`MetallicRoughness::lit_by`], times the share that arrives and that its shadow map lets through), fragment by
+/// fragment in scalar maths.
 pub(crate) fn light_metallic_roughness<const CAPS: u32>(
     s: &mut Scratch,
     lights: &Lighting<'_>,
     eye: Vec3,
-    material: &Material<'_>,
+    [metallic, roughness]: &[Column; 2],
     occluded: bool,
 ) {
     let len = s.len;
     let ambient = if occluded { s.ambient } else { Column3::splat(lights.ambient) };
+    let surface = |s: &Scratch, i: usize| MetallicRoughness {
+        base_color: s.albedo.get(i),
+        metallic: metallic[i],
+        roughness: roughness[i],
+    };
     for i in 0..lanes(len) {
-        s.diffuse.set(i, material.metallic_roughness(s.albedo.get(i)).ambient(ambient.get(i)));
+        s.diffuse.set(i, surface(s, i).ambient(ambient.get(i)));
     }
     if lights.lights.is_empty() {
         return;
@@ -82,9 +89,8 @@ pub(crate) fn light_metallic_roughness<const CAPS: u32>(
     for light in lights.lights {
         let (to_light, _, shares) = toward_light::<CAPS>(s, light);
         for i in 0..lanes(len) {
-            let surface = material.metallic_roughness(s.albedo.get(i));
             let share = shares.as_ref().map_or(1.0, |shares| shares[i]);
-            let lit = surface.lit_by(s.shading.get(i), s.view.get(i), to_light.get(i), light.color, share);
+            let lit = surface(s, i).lit_by(s.shading.get(i), s.view.get(i), to_light.get(i), light.color, share);
             s.diffuse.set(i, s.diffuse.get(i) + lit);
         }
     }

@@ -5,7 +5,7 @@ use core::marker::PhantomData;
 use super::scratch::{Coordinates, Scratch};
 use crate::color::{ShadingSpace, encode_srgb, unpack_rgb888};
 use crate::math::{Vec2, Vec3};
-use crate::pipeline::columns::Column3;
+use crate::pipeline::columns::{Column, Column3};
 use crate::pipeline::{BATCH_SIZE, Slopes, lanes};
 use crate::texture::{Filter, Footprint, MipChain, MipFilter, Texture, Wrap, footprint, light_between};
 
@@ -273,6 +273,25 @@ pub(crate) fn modulated<F: Filter, W: Wrap>(
 
 /// The shaded `colors` as a draw lit in `space` stores them: encoded from linear light to sRGB
 /// ([`encode_srgb`]), or as they are.
+/// Each fragment's metallic factor and roughness into `out` (in that order): `metallic` and `roughness` times the
+/// blue and green channels of the metallic-roughness map `map` at its coordinates, read as stored (data), as
+/// [`super::material::metallic_roughness`] computes them.
+#[inline(always)]
+pub(crate) fn metallic_roughness<F: Filter, W: Wrap>(
+    s: &Scratch,
+    maps: &mut MapReader<F, W>,
+    map: &Texture<'_>,
+    metallic: f32,
+    roughness: f32,
+    out: &mut [Column; 2],
+) {
+    let mut packed = [0; BATCH_SIZE];
+    maps.read(map, &s.at, &mut packed);
+    for (i, &texel) in packed.iter().enumerate().take(lanes(s.len)) {
+        (out[0][i], out[1][i]) = super::material::metallic_roughness(metallic, roughness, Some(texel));
+    }
+}
+
 #[inline(always)]
 pub(crate) fn stored(colors: &mut [Vec3], space: ShadingSpace) {
     if space == ShadingSpace::Linear {

@@ -1,6 +1,6 @@
 //! A surface's material with its maps: what a draw colours its pixels with.
 
-use super::brdf::MetallicRoughness;
+use crate::color::unpack_rgb888;
 use crate::math::Vec3;
 use crate::texture::{FilterMode, MipFilter, Texture, WrapMode};
 
@@ -59,6 +59,9 @@ pub struct Material<'a> {
     /// Scales the ambient light per texel, channel by channel (glTF's occlusion texture, whose red channel and
     /// strength a loader turns into grey texels). Read by per-pixel lighting only.
     pub occlusion_map: Option<Texture<'a>>,
+    /// Scales `metallic` by its blue channel and `roughness` by its green one, per texel (glTF's
+    /// metallic-roughness texture: data, never decoded from sRGB). Read by the metallic-roughness model only.
+    pub metallic_roughness_map: Option<Texture<'a>>,
     /// Filter of every map.
     pub filter: FilterMode,
     /// Wrap mode of every map.
@@ -98,6 +101,7 @@ impl Material<'_> {
             specular_map: None,
             glow_map: None,
             occlusion_map: None,
+            metallic_roughness_map: None,
             filter: FilterMode::Bilinear,
             wrap: WrapMode::Repeat,
             mip_filter: MipFilter::Linear,
@@ -115,12 +119,17 @@ impl Material<'_> {
     }
 }
 
-impl Material<'_> {
-    /// The surface under the metallic-roughness model with base colour `base` (the material colour, times the
-    /// vertex colour and the diffuse map where a draw reads them).
-    #[inline(always)]
-    pub(crate) fn metallic_roughness(&self, base: Vec3) -> MetallicRoughness {
-        MetallicRoughness { base_color: base, metallic: self.metallic, roughness: self.roughness }
+/// The metallic factor and the roughness of a fragment under the metallic-roughness model: the material's
+/// `metallic` and `roughness`, times the blue and green channels of its metallic-roughness map's texel `texel`
+/// (packed, as stored) where the draw reads one.
+#[inline(always)]
+pub(crate) fn metallic_roughness(metallic: f32, roughness: f32, texel: Option<u32>) -> (f32, f32) {
+    match texel {
+        Some(texel) => {
+            let t = unpack_rgb888(texel);
+            (metallic * t.z, roughness * t.y)
+        }
+        None => (metallic, roughness),
     }
 }
 

@@ -128,6 +128,7 @@ mod tests {
             specular: if specular { SpecularSource::Constant } else { SpecularSource::None },
             glow_map: false,
             occlusion_map: false,
+            metallic_roughness_map: false,
             cutout: Cutout::None,
             two_sided,
             space,

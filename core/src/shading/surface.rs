@@ -8,7 +8,7 @@
 
 use super::capabilities::{self, has};
 use super::coarse;
-use super::maps::{MapReader, Texels, albedo, glow, occluded_ambient, specular_color, stored};
+use super::maps::{MapReader, Texels, albedo, glow, metallic_roughness, occluded_ambient, specular_color, stored};
 use super::normals::{self, object_map, tangent_map};
 use super::scratch::{Coordinates, Scratch};
 use super::{Cutout, Layout, Lighting, Material, NormalSource, ShadingModel, SpecularSource, Variant, lighting};
@@ -16,7 +16,7 @@ use crate::color::{ShadingSpace, texel_alpha};
 use crate::math::Vec3;
 use crate::math::float::Exponent;
 use crate::pipeline::BATCH_SIZE;
-use crate::pipeline::columns::Column3;
+use crate::pipeline::columns::{Column, Column3};
 use crate::shading::Transforms;
 use crate::texture::{Bilinear, Clamp, Filter, FilterMode, MipFilter, Nearest, Repeat, Wrap, WrapMode};
 
@@ -107,8 +107,13 @@ impl<const CAPS: u32> Surface<'_, CAPS> {
             _ => false,
         };
         if v.shading == ShadingModel::MetallicRoughness {
-            // The reflected light, the base colour in it: plus the glow, and stored.
-            lighting::light_metallic_roughness::<CAPS>(s, &self.lights, self.transforms.eye, m, occluded);
+            // Each fragment's metallic factor and roughness, then the reflected light, the base colour in it: plus
+            // the glow, and stored.
+            let mut surface = [Column::splat(m.metallic), Column::splat(m.roughness)];
+            if let (true, true, Some(map)) = (MAPS, v.metallic_roughness_map, m.metallic_roughness_map) {
+                metallic_roughness(s, maps, &map, m.metallic, m.roughness, &mut surface);
+            }
+            lighting::light_metallic_roughness::<CAPS>(s, &self.lights, self.transforms.eye, &surface, occluded);
             if let (true, true, Some(map)) = (MAPS, v.glow_map, m.glow_map) {
                 glow(s, maps, &map, texels);
             }

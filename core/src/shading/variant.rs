@@ -115,6 +115,9 @@ pub struct Variant {
     pub glow_map: bool,
     /// The ambient light is scaled by the occlusion map (per-pixel lighting).
     pub occlusion_map: bool,
+    /// The metallic factor and the roughness are scaled by the metallic-roughness map (the metallic-roughness
+    /// model).
+    pub metallic_roughness_map: bool,
     /// Fragments discarded by alpha.
     pub cutout: Cutout,
     /// Back faces are lit as seen from behind: per-pixel lighting of a draw that does not cull back faces turns
@@ -251,6 +254,7 @@ impl Variant {
         let albedo_map = colored && material.diffuse.is_some() && uvs;
         let glow_map = lit && material.glow_map.is_some() && uvs;
         let occlusion_map = per_pixel && material.occlusion_map.is_some() && uvs;
+        let metallic_roughness_map = metallic_roughness && material.metallic_roughness_map.is_some() && uvs;
         let cutout = match material.alpha_cutoff {
             Some(cutoff) if albedo_map => Cutout::Map(cutoff),
             Some(cutoff) if colored && !material.keeps(255, cutoff) => Cutout::Everything,
@@ -263,6 +267,7 @@ impl Variant {
             (specular == SpecularSource::Map, material.specular_map),
             (glow_map, material.glow_map),
             (occlusion_map, material.occlusion_map),
+            (metallic_roughness_map, material.metallic_roughness_map),
         ];
         let mipmapped = read.iter().any(|(reads, map)| *reads && map.is_some_and(|map| map.has_mip_levels()));
         let state = object.transforms.adapt(state);
@@ -277,6 +282,7 @@ impl Variant {
             specular,
             glow_map,
             occlusion_map,
+            metallic_roughness_map,
             cutout,
             two_sided: per_pixel && state.cull != Cull::Back,
             space: if colored { space } else { ShadingSpace::Encoded },
@@ -291,14 +297,15 @@ impl Variant {
         })
     }
 
-    /// Whether the draw reads a map beyond the diffuse map: a normal, specular, glow or occlusion map (what
-    /// [`super::capabilities::LIGHTING_MAPS`] compiles).
+    /// Whether the draw reads a map beyond the diffuse map: a normal, specular, glow, occlusion or
+    /// metallic-roughness map (what [`super::capabilities::LIGHTING_MAPS`] compiles).
     #[must_use]
     pub fn lighting_maps(&self) -> bool {
         matches!(self.normals, NormalSource::TangentMap | NormalSource::ObjectMap)
             || self.specular == SpecularSource::Map
             || self.glow_map
             || self.occlusion_map
+            || self.metallic_roughness_map
     }
 
     /// The varying slots this variant's draw carries.
@@ -376,6 +383,9 @@ impl fmt::Display for Variant {
         }
         if self.occlusion_map {
             f.write_str("; occlusion map")?;
+        }
+        if self.metallic_roughness_map {
+            f.write_str("; metallic-roughness map")?;
         }
         if self.two_sided {
             f.write_str("; two-sided")?;

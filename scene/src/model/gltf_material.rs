@@ -70,11 +70,13 @@ pub(crate) fn convert(
     let (base_texture, normal_texture) = (pbr.base_color_texture(), material.normal_texture());
     let emissive_texture = material.emissive_texture();
     let occlusion_texture = material.occlusion_texture();
+    let metallic_roughness_texture = pbr.metallic_roughness_texture();
     let sets = [
         ("base colour", base_texture.as_ref().map(Info::tex_coord)),
         ("normal", normal_texture.as_ref().map(|n| n.tex_coord())),
         ("emissive", emissive_texture.as_ref().map(Info::tex_coord)),
         ("occlusion", occlusion_texture.as_ref().map(|o| o.tex_coord())),
+        ("metallic-roughness", metallic_roughness_texture.as_ref().map(Info::tex_coord)),
     ];
     for (role, set) in sets {
         if let Some(set) = set.filter(|&set| set != 0) {
@@ -97,9 +99,7 @@ pub(crate) fn convert(
     };
     let metallic = finite_unit(pbr.metallic_factor(), 1.0);
     let roughness = finite_unit(pbr.roughness_factor(), 1.0);
-    if pbr.metallic_roughness_texture().is_some() {
-        warn(format!("{label}: the metallic-roughness texture is not read; its factors are used"));
-    }
+    let metallic_roughness_map = metallic_roughness_texture.and_then(|info| image(info.texture().source().index()));
     let occlusion_map = occlusion_texture
         .and_then(|o| image(o.texture().source().index()).map(|map| occlusion_grey(map, o.strength())));
     let alpha_cutoff = match material.alpha_mode() {
@@ -124,6 +124,7 @@ pub(crate) fn convert(
         normal_map,
         glow_map,
         occlusion_map,
+        metallic_roughness_map,
         specular: Some(specular.map(linear_to_srgb)),
         shininess: Some(shininess),
         metallic: Some(metallic),

@@ -29,6 +29,9 @@ pub struct ModelMaterial {
     /// Scales the ambient light per texel (glTF's occlusion texture: its red channel `r` as the grey
     /// `1 + strength (r - 1)`).
     pub occlusion_map: Option<TextureImage>,
+    /// Scales the metallic factor by its blue channel and the roughness by its green one, per texel (glTF's
+    /// metallic-roughness texture); read by the metallic-roughness model alone.
+    pub metallic_roughness_map: Option<TextureImage>,
     /// The highlight's colour, sRGB-encoded, when the file gives one (glTF: from metallic and roughness); `None`
     /// keeps the renderer's default.
     pub specular: Option<Vec3>,
@@ -58,6 +61,7 @@ impl Default for ModelMaterial {
             normal_map: None,
             glow_map: None,
             occlusion_map: None,
+            metallic_roughness_map: None,
             specular: None,
             shininess: None,
             metallic: None,

@@ -23,15 +23,18 @@ pub enum MapRole {
     Glow,
     /// The occlusion map (the part's own: scene files have no key for it).
     Occlusion,
+    /// The metallic-roughness map (the part's own, glTF's: scene files have no key for it).
+    MetallicRoughness,
 }
 
 impl MapRole {
-    /// What the texels of a map in this role mean: colour (diffuse, specular, glow) or data (normals, occlusion),
+    /// What the texels of a map in this role mean: colour (diffuse, specular, glow) or data (normals, occlusion,
+    /// metallic-roughness),
     /// which decides how its levels of detail are averaged.
     pub fn content(self) -> MipContent {
         match self {
             Self::Diffuse | Self::Specular | Self::Glow => MipContent::Color,
-            Self::Normal | Self::Occlusion => MipContent::Data,
+            Self::Normal | Self::Occlusion | Self::MetallicRoughness => MipContent::Data,
         }
     }
 }
@@ -64,12 +67,12 @@ struct Place {
 #[derive(Clone, Debug)]
 pub struct PartMaps {
     /// Per [`MapRole`], indexed by its discriminant.
-    places: [Option<Place>; 5],
+    places: [Option<Place>; 6],
 }
 
 impl PartMaps {
     /// No map interleaved: every map is read from its image.
-    pub const NONE: Self = Self { places: [None, None, None, None, None] };
+    pub const NONE: Self = Self { places: [None, None, None, None, None, None] };
 
     /// Interleaves the maps that part `part_index` of `object` has, whether or not their effects are switched on
     /// (the switches change per frame), with their levels of detail when the object's material reads them,
@@ -77,16 +80,23 @@ impl PartMaps {
     pub fn new(object: &SceneObject, part_index: usize, made: &mut InterleavedBuffers) -> Self {
         let m = &object.material;
         let mtl = object.model.part_material(part_index);
-        let images: [Option<&TextureImage>; 5] = [
+        let images: [Option<&TextureImage>; 6] = [
             m.diffuse_over(mtl),
             m.normal_over(mtl).map(|(image, _)| image),
             m.specular_map.as_deref(),
             m.glow_over(mtl),
             mtl.and_then(|mtl| mtl.occlusion_map.as_ref()),
+            mtl.and_then(|mtl| mtl.metallic_roughness_map.as_ref()),
         ];
         let mut part = Self::NONE;
-        const ROLES: [MapRole; 5] =
-            [MapRole::Diffuse, MapRole::Normal, MapRole::Specular, MapRole::Glow, MapRole::Occlusion];
+        const ROLES: [MapRole; 6] = [
+            MapRole::Diffuse,
+            MapRole::Normal,
+            MapRole::Specular,
+            MapRole::Glow,
+            MapRole::Occlusion,
+            MapRole::MetallicRoughness,
+        ];
         // Groups of distinct images of one size with their first role, in role order; an image in two roles is
         // stored once.
         let mut groups: Vec<Vec<(&TextureImage, MapRole)>> = Vec::new();

@@ -25,6 +25,7 @@ use crate::scene_file::{NormalSpaceSpec, SceneObject};
 /// - metallic and roughness (read by the metallic-roughness model alone): the scene's, else the part's own
 ///   (glTF), else [`METALLIC`] and [`ROUGHNESS`];
 /// - normal and glow maps: the scene's, else the part's own (glTF), unless their effect is off;
+/// - the metallic-roughness map: the part's own (glTF);
 /// - filter, wrap and filter between levels of detail: the scene's, for every map (each map with its levels).
 ///
 /// Each map is read from `maps` (the part's [`crate::scene_render::PreparedScene::part_maps`]) when interleaved
@@ -75,6 +76,10 @@ pub fn part_material<'a>(
         Some(image) if effects.ambient_occlusion => Some(texture(MapRole::Occlusion, image)?),
         _ => None,
     };
+    let metallic_roughness_map = match mtl.and_then(|mtl| mtl.metallic_roughness_map.as_ref()) {
+        Some(image) => Some(texture(MapRole::MetallicRoughness, image)?),
+        None => None,
+    };
     Ok(Material {
         color: lit_color(m.color_over(mtl), space),
         specular,
@@ -86,6 +91,7 @@ pub fn part_material<'a>(
         specular_map,
         glow_map,
         occlusion_map,
+        metallic_roughness_map,
         filter: m.filter,
         wrap: m.wrap,
         mip_filter: m.mip_filter,
