@@ -7,7 +7,7 @@ use std::path::PathBuf;
 
 use rastty_bench::report::effects::ShadowMaps;
 use rastty_bench::report::frames::{self, FramesReport, rows};
-use rastty_scene::scene_render::{EffectToggles, PreparedScene, SceneEffect};
+use rastty_scene::scene_render::{EffectToggles, PreparedScene, SceneEffect, ShadingMode};
 
 fn load(path: &PathBuf, text: Option<String>) -> PreparedScene {
     let data = match text {
@@ -31,23 +31,28 @@ fn rows_are_the_scene_with_its_shadow_maps_kept_drawn_and_left_out() {
         labels,
         [
             "every effect, shadow maps kept",
+            "every effect, metallic-roughness, shadow maps kept",
             "every effect, shadow maps drawn every frame",
             "every effect but shadows",
             "every effect, 4x MSAA, shadow maps kept"
         ]
     );
     let all = EffectToggles::ALL_ON;
-    assert_eq!((with[0].effects, with[0].maps, with[0].multisample), (all, ShadowMaps::Kept, false));
-    assert_eq!((with[1].effects, with[1].maps, with[1].multisample), (all, ShadowMaps::Drawn, false));
+    let (phong, pbr) = (ShadingMode::Phong, ShadingMode::MetallicRoughness);
+    let of = |r: &frames::FramesRow| (r.effects, r.maps, r.multisample, r.shading);
+    assert_eq!(of(&with[0]), (all, ShadowMaps::Kept, false, phong));
+    assert_eq!(of(&with[1]), (all, ShadowMaps::Kept, false, pbr));
+    assert_eq!(of(&with[2]), (all, ShadowMaps::Drawn, false, phong));
     let mut no_shadows = all;
     no_shadows.set(SceneEffect::Shadows, false);
-    assert_eq!((with[2].effects, with[2].multisample), (no_shadows, false));
-    assert_eq!((with[3].effects, with[3].maps, with[3].multisample), (all, ShadowMaps::Kept, true));
+    assert_eq!(of(&with[3]), (no_shadows, ShadowMaps::Kept, false, phong));
+    assert_eq!(of(&with[4]), (all, ShadowMaps::Kept, true, phong));
     let without = rows(false);
     let labels: Vec<&str> = without.iter().map(|r| r.label).collect();
-    assert_eq!(labels, ["every effect", "every effect, 4x MSAA"]);
-    assert_eq!((without[0].effects, without[0].multisample), (all, false));
-    assert_eq!((without[1].effects, without[1].multisample), (all, true));
+    assert_eq!(labels, ["every effect", "every effect, metallic-roughness", "every effect, 4x MSAA"]);
+    assert_eq!(of(&without[0]), (all, ShadowMaps::Kept, false, phong));
+    assert_eq!(of(&without[1]), (all, ShadowMaps::Kept, false, pbr));
+    assert_eq!(of(&without[2]), (all, ShadowMaps::Kept, true, phong));
 }
 
 #[test]
@@ -66,8 +71,11 @@ fn the_report_has_every_row_and_every_number() {
         assert!(results.samples.iter().all(|s| s.frame.len() == 3), "three measured frames a row");
 
         let cells = table(&text);
-        assert_eq!(cells.len(), 2 + 4, "{text}");
-        assert_eq!(cells[0], ["configuration", "ms", "min ms", "shadow", "forward", "occlusion", "fragments"]);
+        assert_eq!(cells.len(), 2 + 5, "{text}");
+        assert_eq!(
+            cells[0],
+            ["configuration", "ms", "min ms", "shadow", "forward", "occlusion", "fragments", "ns/fragment"]
+        );
         for (row, label) in cells[2..].iter().zip(rows(true).iter().map(|r| r.label)) {
             assert_eq!(row[0], label);
             // spot_lamp has shadow maps and ambient occlusion: the shadow column is empty only without shadows.
@@ -80,17 +88,19 @@ fn the_report_has_every_row_and_every_number() {
             }
             let fragments: u64 = row[6].parse().unwrap_or_else(|_| panic!("{label}: {:?}", row[6]));
             assert!(fragments > 0, "{label}: the lamp and the ground cover pixels");
+            let ns: f64 = row[7].parse().unwrap_or_else(|_| panic!("{label}: {:?}", row[7]));
+            assert!(ns.is_finite() && ns >= 0.0, "{label}: {ns}");
         }
         // The same frame in every row: the same fragments; with four samples a pixel, more (pixels whose centre
         // a triangle misses but a sample does not).
         let fragments = |row: &Vec<String>| row[6].parse::<u64>().unwrap();
-        assert!(cells[2..5].iter().all(|row| row[6] == cells[2][6]), "{text}");
-        assert!(fragments(&cells[5]) > fragments(&cells[2]), "{text}");
+        assert!(cells[2..6].iter().all(|row| row[6] == cells[2][6]), "{text}");
+        assert!(fragments(&cells[6]) > fragments(&cells[2]), "{text}");
     }
 }
 
 #[test]
-fn a_scene_without_shadows_has_one_row_and_its_msaa_row() {
+fn a_scene_without_shadows_has_one_row_and_its_metallic_roughness_and_msaa_rows() {
     let path = common::root().join("assets/scenes/spot_sun.toml");
     let text = std::fs::read_to_string(&path).unwrap();
     assert!(text.contains("shadows = true"));
@@ -99,11 +109,12 @@ fn a_scene_without_shadows_has_one_row_and_its_msaa_row() {
     let mut out = Vec::new();
     let results = frames::run(&report, &scene, &mut out).unwrap();
     let text = String::from_utf8(out).unwrap();
-    assert_eq!(results.rows.len(), 2);
+    assert_eq!(results.rows.len(), 3);
     let cells = table(&text);
-    assert_eq!(cells.len(), 4, "{text}");
+    assert_eq!(cells.len(), 5, "{text}");
     assert_eq!((cells[2][0].as_str(), cells[2][3].as_str()), ("every effect", "–"), "{text}");
-    assert_eq!((cells[3][0].as_str(), cells[3][3].as_str()), ("every effect, 4x MSAA", "–"), "{text}");
+    assert_eq!((cells[3][0].as_str(), cells[3][3].as_str()), ("every effect, metallic-roughness", "–"), "{text}");
+    assert_eq!((cells[4][0].as_str(), cells[4][3].as_str()), ("every effect, 4x MSAA", "–"), "{text}");
     assert!(text.contains("no shadow map"), "{text}");
 }
 

@@ -221,6 +221,7 @@ enum ShadingIn {
     Flat,
     Gouraud,
     Phong,
+    MetallicRoughness,
     Depth { near: F, far: F },
     Normals,
 }
@@ -287,6 +288,10 @@ struct ExtrasIn {
     cutout: Option<(u8, u8)>,
     /// The tiny texture is the occlusion map too.
     occlusion_map: bool,
+    /// The metallic factor and roughness (any values: the metallic-roughness model clamps them).
+    metallic_roughness: (F, F),
+    /// The tiny texture is the metallic-roughness map too.
+    metallic_roughness_map: bool,
     /// Light the stored sRGB codes instead of linear light.
     encoded_light: bool,
     /// Draw the frame again into four samples per pixel ([`run`]'s step 7).
@@ -329,6 +334,7 @@ impl Input {
             ShadingIn::Phong => 3,
             ShadingIn::Depth { .. } => 4,
             ShadingIn::Normals => 5,
+            ShadingIn::MetallicRoughness => 6,
         };
         let indices = match self.indices {
             IndicesIn::Sequential => 0,
@@ -352,10 +358,10 @@ impl Input {
         (self.extras.point_lights | self.extras.shadowed) & lights != 0
     }
 
-    /// The tiny texture is a normal, specular or glow map.
+    /// The tiny texture is a normal, specular, glow or metallic-roughness map.
     fn extra_maps(&self) -> bool {
         let e = &self.extras;
-        e.normal_map.is_some() || e.specular_map || e.glow_map
+        e.normal_map.is_some() || e.specular_map || e.glow_map || e.metallic_roughness_map
     }
 }
 
@@ -788,6 +794,9 @@ pub fn run(input: Input) -> Option<DrawStats> {
         specular_map: texture.filter(|_| extras.specular_map),
         glow_map: texture.filter(|_| extras.glow_map),
         occlusion_map: texture.filter(|_| extras.occlusion_map),
+        metallic: extras.metallic_roughness.0.0,
+        roughness: extras.metallic_roughness.1.0,
+        metallic_roughness_map: texture.filter(|_| extras.metallic_roughness_map),
         filter,
         wrap,
         mip_filter,
@@ -832,6 +841,7 @@ pub fn run(input: Input) -> Option<DrawStats> {
         ShadingIn::Flat => ShadingModel::Flat,
         ShadingIn::Gouraud => ShadingModel::Gouraud,
         ShadingIn::Phong => ShadingModel::Phong,
+        ShadingIn::MetallicRoughness => ShadingModel::MetallicRoughness,
         ShadingIn::Depth { near, far } => ShadingModel::Depth { near: near.0, far: far.0 },
         ShadingIn::Normals => ShadingModel::Normals,
     };
@@ -844,8 +854,8 @@ pub fn run(input: Input) -> Option<DrawStats> {
     let style = input.wireframe.map(|(c, bias)| LineStyle { color: c.get(), depth_bias: bias.0 });
 
     // What the draw must answer.
-    let needs_normals = matches!(shading, ShadingModel::Gouraud | ShadingModel::Phong | ShadingModel::Normals);
-    let tangent_map = shading == ShadingModel::Phong
+    let needs_normals = shading.per_pixel() || matches!(shading, ShadingModel::Gouraud | ShadingModel::Normals);
+    let tangent_map = shading.per_pixel()
         && input.uvs
         && matches!(object.material.normal_map, Some(NormalMap { space: NormalSpace::Tangent, .. }));
     let given_tangents = tangents.map_or(0, <[Vec4]>::len);

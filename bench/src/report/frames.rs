@@ -7,8 +7,9 @@
 //! warm-up frame of its own, the configurations taking turns block by block. Its rows are the scene with every
 //! effect its file asks for, with the shadow maps kept (one [`SceneRenderer`] for every frame) and drawn every
 //! frame (a fresh renderer per frame, as `rastty render` makes one per image), and the scene without shadows;
-//! a scene without a shadow-casting light has the one row. A last row draws the first with four samples per pixel
-//! (`--msaa`).
+//! a scene without a shadow-casting light has the one row. The first row is drawn again with every surface lit by
+//! glTF's metallic-roughness model instead of Blinn-Phong (`--shading metallic-roughness`), and a last row draws it
+//! with four samples per pixel (`--msaa`).
 
 use std::fmt::Write as _;
 use std::io::Write;
@@ -20,7 +21,7 @@ use super::error::ReportError;
 use super::median;
 use rastty_scene::escaped::path_text;
 use rastty_scene::scene_render::{
-    EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError, SceneRenderer,
+    EffectToggles, PlanOptions, PreparedScene, SceneEffect, ScenePlan, SceneRenderError, SceneRenderer, ShadingMode,
 };
 
 /// Frame size measured unless another is given: the tinyrenderer comparison's.
@@ -92,29 +93,44 @@ pub struct FramesRow {
     pub maps: ShadowMaps,
     /// Four samples per pixel ([`PlanOptions::multisample`]).
     pub multisample: bool,
+    /// The shading mode of every surface.
+    pub shading: ShadingMode,
 }
 
 impl FramesRow {
     /// The row's plan of `scene`'s frame at `size` with its own camera.
     fn plan(&self, scene: &PreparedScene, size: (u32, u32)) -> Result<ScenePlan, SceneRenderError> {
-        let options = PlanOptions { effects: self.effects, multisample: self.multisample, ..PlanOptions::default() };
+        let options = PlanOptions {
+            effects: self.effects,
+            multisample: self.multisample,
+            shading: self.shading,
+            ..PlanOptions::default()
+        };
         ScenePlan::new(scene, &scene.camera(), size, &options)
     }
 }
 
 /// The rows for a scene: with shadow passes, every effect with the maps kept and drawn every frame and every
-/// effect but shadows; without, every effect alone; then the first row again with four samples per pixel.
+/// effect but shadows; without, every effect alone; then the first row again lit by the metallic-roughness model,
+/// and with four samples per pixel.
 pub fn rows(has_shadows: bool) -> Vec<FramesRow> {
     let all = EffectToggles::ALL_ON;
-    let row = |label, effects, maps| FramesRow { label, effects, maps, multisample: false };
-    let msaa = |label| FramesRow { label, effects: all, maps: ShadowMaps::Kept, multisample: true };
+    let phong = ShadingMode::Phong;
+    let row = |label, effects, maps| FramesRow { label, effects, maps, multisample: false, shading: phong };
+    let pbr = |label| FramesRow { shading: ShadingMode::MetallicRoughness, ..row(label, all, ShadowMaps::Kept) };
+    let msaa = |label| FramesRow { multisample: true, ..row(label, all, ShadowMaps::Kept) };
     if !has_shadows {
-        return vec![row("every effect", all, ShadowMaps::Kept), msaa("every effect, 4x MSAA")];
+        return vec![
+            row("every effect", all, ShadowMaps::Kept),
+            pbr("every effect, metallic-roughness"),
+            msaa("every effect, 4x MSAA"),
+        ];
     }
     let mut no_shadows = all;
     no_shadows.set(SceneEffect::Shadows, false);
     vec![
         row("every effect, shadow maps kept", all, ShadowMaps::Kept),
+        pbr("every effect, metallic-roughness, shadow maps kept"),
         row("every effect, shadow maps drawn every frame", all, ShadowMaps::Drawn),
         row("every effect but shadows", no_shadows, ShadowMaps::Kept),
         msaa("every effect, 4x MSAA, shadow maps kept"),
@@ -196,7 +212,11 @@ pub fn header(report: &FramesReport, plan: &ScenePlan, threads: usize, machine: 
             report.frames
         ),
         "- ms: wall time of `SceneRenderer::render`; shadow, forward, occlusion: the passes' times from its \
-         `FrameReport`, in ms (– where the plan has no such pass); fragments: shaded by the forward pass in a frame"
+         `FrameReport`, in ms (– where the plan has no such pass); fragments: shaded by the forward pass in a frame; \
+         ns/fragment: the forward pass's median wall time over those fragments (all threads' together)"
+            .to_owned(),
+        "- metallic-roughness: every surface lit by glTF's metallic-roughness model instead of Blinn-Phong \
+         (`--shading metallic-roughness`), the same fragments"
             .to_owned(),
         "- shadow maps kept: one renderer for every frame (as the viewer while only the camera moves); drawn every \
          frame: a fresh renderer for every frame (as `rastty render` makes one per image), its map's buffer \
@@ -210,14 +230,15 @@ pub fn header(report: &FramesReport, plan: &ScenePlan, threads: usize, machine: 
 pub fn table(results: &FramesResults) -> String {
     let ms = |d: Duration| format!("{:.2}", d.as_secs_f64() * 1e3);
     let mut lines = vec![
-        "| configuration | ms | min ms | shadow | forward | occlusion | fragments |".to_owned(),
-        "|---|---:|---:|---:|---:|---:|---:|".to_owned(),
+        "| configuration | ms | min ms | shadow | forward | occlusion | fragments | ns/fragment |".to_owned(),
+        "|---|---:|---:|---:|---:|---:|---:|---:|".to_owned(),
     ];
     for (row, s) in results.rows.iter().zip(&results.samples) {
         let pass = |present: bool, values: &[Duration]| if present { ms(median(values)) } else { "–".to_owned() };
         let min = s.frame.iter().min().copied().unwrap_or_default();
+        let per_fragment = median(&s.forward).as_secs_f64() * 1e9 / s.fragments.max(1) as f64;
         lines.push(format!(
-            "| {} | {} | {} | {} | {} | {} | {} |",
+            "| {} | {} | {} | {} | {} | {} | {} | {per_fragment:.1} |",
             row.label,
             ms(median(&s.frame)),
             ms(min),
