@@ -23,8 +23,7 @@ pub(crate) trait CentreEdges: Copy {
     /// there. Exact edges add a step; the default works the row out from its coordinates, as `f32` edges must
     /// (so that a band's rows get the frame's values).
     #[inline(always)]
-    fn down(&self, at: Self::At, x: i32, y: i32) -> Self::At {
-        let _ = at;
+    fn down(&self, _at: Self::At, x: i32, y: i32) -> Self::At {
         self.at(x, y + 1)
     }
     /// Whether the centre is covered, fill rule included.

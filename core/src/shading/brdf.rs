@@ -17,11 +17,13 @@ pub const DIELECTRIC_F0: f32 = 0.04;
 
 /// The least roughness the BRDF uses (a smaller one is raised to it): at roughness 0 the distribution is a Dirac
 /// delta, `0 / 0` at its peak. With `alpha = 0.045^2` its peak `1 / (pi alpha^2)` is about 77,600, so a highlight
-/// stays finite in `f32` (Filament, "Physically Based Rendering in Filament", 4.8.3.3, uses the same bound).
+/// stays finite in `f32` (the bound Filament's shaders used for `f32`, `MIN_PERCEPTUAL_ROUGHNESS` in
+/// `common_material.fs`).
 pub const MIN_ROUGHNESS: f32 = 0.045;
 
 /// The least `n . v` the BRDF uses: a normal that interpolation turned away from the viewer would otherwise make
-/// the visibility term infinite (the sample viewer's `clampedDot` does the same with 0).
+/// the visibility term infinite (Filament's `MIN_N_DOT_V`, after Neubelt and Pettineo, "Crafting a Next-gen
+/// Material Pipeline for The Order: 1886", 2013; the sample viewer's `clampedDot` clamps at 0 instead).
 pub const MIN_N_DOT_V: f32 = 1e-4;
 
 /// Schlick's approximation of the Fresnel reflectance at the angle whose cosine is `v_dot_h`, `f0` at normal

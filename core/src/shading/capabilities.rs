@@ -32,10 +32,9 @@ pub const MIPMAPS: u32 = 1 << 9;
 /// encoding of each pixel, and their tables.
 pub const LINEAR_LIGHT: u32 = 1 << 10;
 /// The maps beyond the diffuse (albedo) map: normal, specular, glow, occlusion and metallic-roughness maps. A
-/// shader that carries
-/// texture coordinates without it reads a diffuse map alone; where batches hold one fragment and it is compiled
-/// without [`MIPMAPS`] and [`SHADOWS`] too, it then lights every fragment in scalar maths and compiles no batch
-/// stages for per-pixel lighting.
+/// shader that carries texture coordinates without it reads a diffuse map alone; where batches hold one fragment
+/// and it is compiled without [`MIPMAPS`] and [`SHADOWS`] too, it then lights every Blinn-Phong fragment in scalar
+/// maths and compiles no batch stages for that lighting.
 pub const LIGHTING_MAPS: u32 = 1 << 11;
 /// glTF's metallic-roughness model ([`super::ShadingModel::MetallicRoughness`]), lit per pixel.
 pub const METALLIC_ROUGHNESS: u32 = 1 << 12;

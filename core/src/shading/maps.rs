@@ -271,8 +271,6 @@ pub(crate) fn modulated<F: Filter, W: Wrap>(
     }
 }
 
-/// The shaded `colors` as a draw lit in `space` stores them: encoded from linear light to sRGB
-/// ([`encode_srgb`]), or as they are.
 /// Each fragment's metallic factor and roughness into `out` (in that order): `metallic` and `roughness` times the
 /// blue and green channels of the metallic-roughness map `map` at its coordinates, read as stored (data), as
 /// [`super::material::metallic_roughness`] computes them.
@@ -292,6 +290,8 @@ pub(crate) fn metallic_roughness<F: Filter, W: Wrap>(
     }
 }
 
+/// The shaded `colors` as a draw lit in `space` stores them: encoded from linear light to sRGB
+/// ([`encode_srgb`]), or as they are.
 #[inline(always)]
 pub(crate) fn stored(colors: &mut [Vec3], space: ShadingSpace) {
     if space == ShadingSpace::Linear {

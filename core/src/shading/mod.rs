@@ -4,8 +4,7 @@
 //! [`Lighting`] (ambient, directional, point and spot [`Light`]s, each with an optional shadow map). It resolves a
 //! [`Variant`] once per draw, which covers every shading model: unlit (material or vertex colours), flat (light
 //! once per triangle), Gouraud (once per vertex), per-pixel (Blinn-Phong, or glTF's metallic-roughness BRDF,
-//! [`brdf`]), and the depth and normals views; which varyings are
-//! interpolated (the [`Layout`]); and which fragment stages run: normals (interpolated or from a tangent- or
+//! [`brdf`]), and the depth and normals views; which varyings are interpolated (the [`Layout`]); and which fragment stages run: normals (interpolated or from a tangent- or
 //! object-space map), albedo (colour, vertex colours, diffuse map), each light with or without its shadow map and
 //! highlights, specular colour (constant or map), glow. Its `Display` is the explanation `rastty render --explain`
 //! prints.

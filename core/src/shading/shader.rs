@@ -74,8 +74,8 @@ where
     /// [`ShadingError::Unsupported`] when the slot types do not carry the variant's [`Variant::layout`]
     /// (they may carry more), `CAPS` ([`capabilities`]) leaves out its shading model, point lights, shadow
     /// maps, two-sided lighting, cut-outs, mipmaps, linear light or lighting maps, or its per-pixel lighting takes
-    /// normals from
-    /// anything but the interpolated ones or a map read through texture coordinates (no resolved variant does).
+    /// normals from anything but the interpolated ones or a map read through texture coordinates (no resolved
+    /// variant does).
     pub fn new(
         variant: Variant,
         transforms: Transforms,

@@ -143,12 +143,6 @@ impl Scene {
         })
     }
 
-    /// How Spot looks in this scene.
-    #[must_use]
-    pub fn look(&self) -> Look {
-        self.look
-    }
-
     /// The scene's lights.
     fn lights(&self) -> Lighting<'_> {
         Lighting { ambient: AMBIENT, lights: &self.lights, space: SPACE }
