@@ -90,7 +90,8 @@ fn render(geometry: &Geometry, eye: Vec3, target: Vec3) -> Frame {
     // Already unit length: built as is rather than normalised again.
     let to_light = Vec3::new(0.408_248_3, 0.816_496_6, 0.408_248_3);
     let lights = [Light { kind: LightKind::Directional { to_light }, color: Vec3::ONE, shadow: None }];
-    let lighting = Lighting { ambient: Vec3::splat(0.1), lights: &lights, space: ShadingSpace::Linear };
+    let lighting =
+        Lighting { ambient: Vec3::splat(0.1), lights: &lights, environment: None, space: ShadingSpace::Linear };
     let mesh = Mesh::new(&geometry.positions, Indices::U32(&geometry.indices))
         .unwrap()
         .with_normals(&geometry.normals)

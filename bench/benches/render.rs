@@ -92,7 +92,7 @@ const LIGHTS: [Light<'static>; 1] = [Light {
 }];
 
 const LIGHTING: Lighting<'static> =
-    Lighting { ambient: Vec3::splat(0.1), lights: &LIGHTS, space: ShadingSpace::Linear };
+    Lighting { ambient: Vec3::splat(0.1), lights: &LIGHTS, environment: None, space: ShadingSpace::Linear };
 
 /// `mesh` under `shading` in a plain warm grey without highlights, textured by `texture` (bilinear, repeating)
 /// when given.
@@ -165,7 +165,8 @@ mod lights {
         let mut frame = Frame::new(800, 800);
         let o = object(sphere.mesh(), transforms(800, 800, 2.6), ShadingModel::Phong, None);
         let lights = [Light { kind, color, shadow: None }];
-        let lighting = Lighting { ambient: Vec3::splat(0.1), lights: &lights, space: ShadingSpace::Linear };
+        let lighting =
+            Lighting { ambient: Vec3::splat(0.1), lights: &lights, environment: None, space: ShadingSpace::Linear };
         bencher.bench_local(|| {
             let mut target = Target::new(Rgb888(&mut frame.color), &mut frame.depth[..], 800, 800).unwrap();
             target.clear(Vec3::ZERO);
@@ -343,7 +344,8 @@ fn surface(bencher: Bencher, maps: Maps) {
             light.shadow = Some(ShadowMap::new(view, &shadow_depth, ShadowBias::DEFAULT, 1).unwrap());
         }
         let lights = [light];
-        let scene = Lighting { ambient: Vec3::splat(0.1), lights: &lights, space: ShadingSpace::Linear };
+        let scene =
+            Lighting { ambient: Vec3::splat(0.1), lights: &lights, environment: None, space: ShadingSpace::Linear };
         let mut target = Target::new(Rgb888(&mut frame.color), &mut frame.depth[..], 800, 800).unwrap();
         target.clear(Vec3::ZERO);
         black_box(draw_mesh(&mut target, &object, &scene, &DrawState::default()).unwrap());

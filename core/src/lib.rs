@@ -19,7 +19,8 @@
 //!
 //! [`draw_mesh`] draws an [`Object`] under [`Lighting`]: it resolves the [`shading::Variant`] the object and the
 //! lights call for, once per draw, and runs the pipeline compiled for exactly that (see [`shading`]). Shadow maps
-//! ([`shadow`]) and ambient occlusion ([`occlusion`]) are passes of their own. [`pipeline::draw`] runs a
+//! ([`shadow`]) and ambient occlusion ([`occlusion`]) are passes of their own; an [`environment`] lights
+//! metallic-roughness surfaces from every direction. [`pipeline::draw`] runs a
 //! [`pipeline::Shader`] of your own: the low-level way in. A frame drawn band by band (through one small buffer, or
 //! on threads) bins its triangles once ([`pipeline::BandBins`]) and lends the bins to each band's target
 //! ([`target::FrameGeometry`]).
@@ -43,7 +44,7 @@
 //! let transforms = Transforms::new(Mat4::IDENTITY, view, projection);
 //! let object = Object { mesh, tangents: None, transforms, shading: ShadingModel::Phong, material: Material::default() };
 //! let sun = [Light::directional(Vec3::Z, Vec3::ONE)];
-//! let lights = Lighting { ambient: Vec3::splat(0.1), lights: &sun, space: ShadingSpace::Linear };
+//! let lights = Lighting { ambient: Vec3::splat(0.1), lights: &sun, environment: None, space: ShadingSpace::Linear };
 //!
 //! let (mut color, mut depth) = ([0u32; 32 * 32], [0f32; 32 * 32]);
 //! let mut target = Target::new(Rgb888(&mut color), &mut depth[..], 32, 32).unwrap();
@@ -63,6 +64,7 @@
 pub mod animation;
 pub mod camera;
 pub mod color;
+pub mod environment;
 mod light_kind;
 pub mod math;
 pub mod mesh;

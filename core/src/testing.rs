@@ -2,7 +2,7 @@
 //! benchmarks. Hidden from the documentation and not part of the API a renderer calls: slower by design.
 
 use crate::pipeline::DrawStats;
-use crate::shading::{LightUse, Lighting, Object, ShadingError, Variant};
+use crate::shading::{Lighting, Object, ShadingError, Variant};
 use crate::target::{ColorBuffer, DepthBuffer, Target};
 
 pub use crate::pipeline::draw::draw_unspecialised;
@@ -20,7 +20,7 @@ pub fn draw_mesh_general<C: ColorBuffer, D: DepthBuffer>(
     lights: &Lighting<'_>,
     state: &crate::pipeline::DrawState,
 ) -> Result<(Variant, DrawStats), ShadingError> {
-    let variant = Variant::resolve(object, lights.lights.iter().map(LightUse::from), lights.space, state)?;
+    let variant = Variant::resolve(object, lights.uses(), lights.space, state)?;
     let tangents = object.tangents.unwrap_or(&[]);
     let shader = GeneralShader::new(variant, object.transforms, tangents, object.material, *lights);
     let stats = draw_unspecialised(target, &object.mesh, &shader, &variant.state).map_err(ShadingError::Draw)?;

@@ -129,7 +129,8 @@ fn every_band_of_a_shaded_frame_with_its_wireframe_equals_the_frame() {
             wrap: WrapMode::Repeat,
             ..Material::default()
         };
-        let lighting = Lighting { ambient: Vec3::splat(0.1), lights: &lights, space: ShadingSpace::Linear };
+        let lighting =
+            Lighting { ambient: Vec3::splat(0.1), lights: &lights, environment: None, space: ShadingSpace::Linear };
         for edges in [EdgeArithmetic::FixedPoint, EdgeArithmetic::Float] {
             for depth_test in [DepthTest::Less, DepthTest::Off] {
                 for general in [false, true] {
@@ -227,7 +228,8 @@ fn every_band_of_a_mapped_surface_with_shadows_equals_the_frame() {
     sun.shadow = Some(ShadowMap::new(view, &map, ShadowBias::DEFAULT, 1).unwrap());
     let lamp = Light::point(Vec3::new(0.0, 2.0, 1.0), Vec3::new(0.5, 0.4, 0.3));
     let lights = [sun, lamp];
-    let lights = Lighting { ambient: Vec3::splat(0.08), lights: &lights, space: ShadingSpace::Linear };
+    let lights =
+        Lighting { ambient: Vec3::splat(0.08), lights: &lights, environment: None, space: ShadingSpace::Linear };
     for edges in [EdgeArithmetic::FixedPoint, EdgeArithmetic::Float] {
         for general in [false, true] {
             let state = DrawState { edges, ..DrawState::default() };
@@ -261,7 +263,8 @@ fn a_320x240_rgb565_frame_in_16_row_bands_uses_20_kib() {
         shading: ShadingModel::Gouraud,
         material: Material::default(),
     };
-    let lighting = Lighting { ambient: Vec3::splat(0.1), lights: &lights, space: ShadingSpace::Linear };
+    let lighting =
+        Lighting { ambient: Vec3::splat(0.1), lights: &lights, environment: None, space: ShadingSpace::Linear };
     let render = |target: &mut Frame<'_, '_>| {
         target.clear(Vec3::ZERO);
         draw_mesh(target, &object, &lighting, &DrawState::default()).unwrap().1

@@ -32,7 +32,7 @@ fn front_then_back(front: Material<'_>) -> (Vec<u32>, Vec<f32>, Cutout) {
     // Clip space is NDC: every matrix the identity.
     let transforms = Transforms::new(Mat4::IDENTITY, Mat4::IDENTITY, Mat4::IDENTITY);
     let state = DrawState { cull: Cull::None, ..DrawState::default() };
-    let lights = Lighting { ambient: Vec3::ZERO, lights: &[], space: ShadingSpace::Linear };
+    let lights = Lighting { ambient: Vec3::ZERO, lights: &[], environment: None, space: ShadingSpace::Linear };
     let mut cutout = Cutout::None;
     for (z, material) in [(0.25, front), (0.75, Material::plain(Vec3::new(0.0, 0.0, 1.0)))] {
         let (positions, uvs) = quad(z);

@@ -84,7 +84,7 @@ fn render(f: &Fixture, material: Material<'_>, lights: &[Light<'_>], general: bo
         shading: ShadingModel::Phong,
         material,
     };
-    let lights = Lighting { ambient: Vec3::splat(0.08), lights, space: ShadingSpace::Linear };
+    let lights = Lighting { ambient: Vec3::splat(0.08), lights, environment: None, space: ShadingSpace::Linear };
     let background = Vec3::new(0.1, 0.2, 0.3);
     let state = DrawState::default();
     let (variant, stats) = if general {
@@ -314,7 +314,7 @@ fn a_surface_shader_refuses_a_variant_it_was_not_compiled_for() {
     let f = Fixture::new();
     let material = Material { specular: Vec3::splat(0.3), ..Material::plain(Vec3::ONE) };
     let sources = [Light::directional(Vec3::Z, Vec3::ONE), Light::point(Vec3::new(0.0, 2.0, 2.0), Vec3::ONE)];
-    let lights = Lighting { ambient: Vec3::ZERO, lights: &sources, space: ShadingSpace::Linear };
+    let lights = Lighting { ambient: Vec3::ZERO, lights: &sources, environment: None, space: ShadingSpace::Linear };
     let uncoloured =
         Mesh::new(&f.torus.positions, Indices::U16(&f.torus.indices)).unwrap().with_normals(&f.torus.normals).unwrap();
     let resolve = |mesh, shading, lights: &[Light<'_>], space| {

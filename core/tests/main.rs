@@ -11,6 +11,7 @@ mod common;
 mod cutout;
 mod depth;
 mod effects;
+mod environment;
 mod fill_rule;
 mod inverse_sqrt;
 mod math;

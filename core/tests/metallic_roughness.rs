@@ -32,7 +32,7 @@ fn square(material: Material<'_>, ambient: Vec3) -> Vec<[u32; 3]> {
     let transforms = Transforms::new(Mat4::IDENTITY, view, perspective(0.8, 1.0, 0.5, 10.0).unwrap());
     let object = Object { mesh, tangents: None, transforms, shading: ShadingModel::MetallicRoughness, material };
     let lights = [Light::directional(Vec3::Z, Vec3::ONE)];
-    let lighting = Lighting { ambient, lights: &lights, space: ShadingSpace::Encoded };
+    let lighting = Lighting { ambient, lights: &lights, environment: None, space: ShadingSpace::Encoded };
     let mut color = vec![[0u32; 3]; (SIZE * SIZE) as usize];
     let mut depth = vec![1f32; color.len()];
     let mut target = Target::new(ExactColor(&mut color), &mut depth[..], SIZE, SIZE).unwrap();

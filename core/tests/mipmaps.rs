@@ -40,7 +40,7 @@ fn draw(
     target.clear(Vec3::ZERO);
     let mesh = Mesh::new(positions, Indices::U16(&INDICES)).unwrap().with_uvs(&uvs).unwrap();
     let object = Object { mesh, tangents: None, transforms, shading: ShadingModel::Unlit, material };
-    let lights = Lighting { ambient: Vec3::ZERO, lights: &[], space: ShadingSpace::Linear };
+    let lights = Lighting { ambient: Vec3::ZERO, lights: &[], environment: None, space: ShadingSpace::Linear };
     let state = DrawState { cull: Cull::None, ..DrawState::default() };
     let (variant, _) = draw_mesh(&mut target, &object, &lights, &state).unwrap();
     (color, variant.mip_filter)

@@ -226,7 +226,7 @@ fn render(
     );
     let object = Object { mesh, tangents: None, transforms, shading, material };
     let sun = [Light::directional(Vec3::new(0.3, 1.0, 0.6), Vec3::ONE)];
-    let lights = Lighting { ambient: Vec3::splat(0.1), lights: &sun, space: ShadingSpace::Linear };
+    let lights = Lighting { ambient: Vec3::splat(0.1), lights: &sun, environment: None, space: ShadingSpace::Linear };
     let len = SIZE as usize * (rows.end - rows.start) as usize * samples.count();
     let (mut color, mut depth) = (vec![[0u32; 3]; len], vec![0f32; len]);
     let mut target = common::multisampled(ExactColor(&mut color), &mut depth[..], SIZE, SIZE, rows, samples);
@@ -362,7 +362,7 @@ fn a_nearer_triangle_keeps_its_samples_against_one_drawn_later() {
         target.clear(Vec3::ZERO);
         let projection = rastty_core::camera::orthographic(-1.0, 1.0, -1.0, 1.0, 1.0, 3.0).unwrap();
         let transforms = Transforms::new(Mat4::IDENTITY, Mat4::IDENTITY, projection);
-        let lights = Lighting { ambient: Vec3::ONE, lights: &[], space: ShadingSpace::Linear };
+        let lights = Lighting { ambient: Vec3::ONE, lights: &[], environment: None, space: ShadingSpace::Linear };
         for (positions, color) in [(&near, NEAR), (&far, FAR)] {
             let mesh = Mesh::new(positions, Indices::Sequential).unwrap();
             let object = Object {

@@ -85,7 +85,8 @@ fn non_finite_attributes_skip_triangles_only_where_used() {
             .with_uvs(&uvs)
             .unwrap();
         let lights = [Light::directional(Vec3::new(1.0, 1.0, 1.0), Vec3::splat(0.7))];
-        let lighting = Lighting { ambient: Vec3::splat(0.3), lights: &lights, space: ShadingSpace::Linear };
+        let lighting =
+            Lighting { ambient: Vec3::splat(0.3), lights: &lights, environment: None, space: ShadingSpace::Linear };
         let material = material.unwrap_or_default();
         let object = Object { mesh, tangents: None, transforms, shading, material };
         let state = DrawState { cull: rastty_core::pipeline::Cull::None, ..DrawState::default() };
@@ -134,7 +135,7 @@ fn every_triangle_is_counted_exactly_once() {
         shading: ShadingModel::Flat,
         material: Material::default(),
     };
-    let lighting = Lighting { ambient: Vec3::ONE, lights: &[], space: ShadingSpace::Linear };
+    let lighting = Lighting { ambient: Vec3::ONE, lights: &[], environment: None, space: ShadingSpace::Linear };
     let (mut color, mut depth) = (vec![0u32; 24 * 24], vec![0f32; 24 * 24]);
     let mut target = common::frame(Rgb888(&mut color), &mut depth[..], 24, 24);
     let (_, s) = draw_mesh(&mut target, &object, &lighting, &DrawState::default()).unwrap();

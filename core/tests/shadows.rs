@@ -101,7 +101,7 @@ fn render_lit(objects: &[&Quads], light: Light<'_>, shadow: Option<(ShadowBias, 
         }
     };
     let lights = [light];
-    let scene = Lighting { ambient: Vec3::splat(0.2), lights: &lights, space: ShadingSpace::Linear };
+    let scene = Lighting { ambient: Vec3::splat(0.2), lights: &lights, environment: None, space: ShadingSpace::Linear };
     let (view, projection) = camera();
     let mut color = vec![0u32; (SIZE * SIZE) as usize];
     let mut depth = vec![0f32; (SIZE * SIZE) as usize];

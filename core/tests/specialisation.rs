@@ -234,6 +234,8 @@ fn every_choice_of_a_variant_equals_the_general_path() {
         ShadingModel::Normals,
     ];
     let meshes = [with_colors, without_colors, colors_without_uvs];
+    let environment = common::block_environment();
+    let environment = environment.environment();
     let (mut draws, mut clipped, mut multisampled) = (0, 0, 0);
     let mut seen = Seen::default();
     for projection in projections {
@@ -249,7 +251,9 @@ fn every_choice_of_a_variant_equals_the_general_path() {
                         // Every other draw lights the stored codes: seven light sets, an odd number, so each
                         // material meets each light set in both spaces.
                         let space = [ShadingSpace::Linear, ShadingSpace::Encoded][draws % 2];
-                        let lights = Lighting { ambient: Vec3::splat(0.08), lights, space };
+                        // Every third draw under an environment too, which the metallic-roughness model alone reads.
+                        let environment = (draws % 3 == 0).then_some(&environment);
+                        let lights = Lighting { ambient: Vec3::splat(0.08), lights, environment, space };
                         let samples = if draws % 4 == 0 { &[Samples::One, Samples::Four][..] } else { &[Samples::One] };
                         for &samples in samples {
                             let (fast, fast_depth, fast_stats, fast_variant) =
@@ -319,6 +323,8 @@ struct Seen {
     specular: Vec<SpecularSource>,
     glow_map: bool,
     occlusion_map: bool,
+    /// The environment seen with each number of lights (none, some).
+    environment: [bool; 2],
     filters: Vec<(FilterMode, WrapMode)>,
     mip_filters: Vec<MipFilter>,
     /// The shading models seen in each space.
@@ -338,6 +344,9 @@ impl Seen {
         self.albedo_map |= v.albedo_map;
         self.glow_map |= v.glow_map;
         self.occlusion_map |= v.occlusion_map;
+        if v.environment {
+            self.environment[usize::from(v.directional_lights + v.point_lights > 0)] = true;
+        }
         self.point_lights |= v.point_lights > 0;
         self.affine |= v.state.interpolation == Interpolation::Affine;
         self.two_sided[usize::from(v.two_sided)] = true;
@@ -373,6 +382,7 @@ impl Seen {
         assert!(self.albedo_map && self.glow_map && self.point_lights && self.affine);
         assert_eq!(self.vertex_colors.len(), 5, "models with vertex colours: {:?}", self.vertex_colors);
         assert!(self.occlusion_map);
+        assert_eq!(self.environment, [true, true], "the environment alone and with lights");
         assert_eq!(self.normals.len(), 6, "normal sources: {:?}", self.normals);
         assert_eq!(self.specular.len(), 3, "specular sources: {:?}", self.specular);
         assert_eq!(self.filters.len(), 4, "filter and wrap modes: {:?}", self.filters);

@@ -26,7 +26,8 @@ fn quad(normal: Vec3, front: bool, shading: ShadingModel, cull: Cull) -> (Vec<u3
     let transforms = Transforms::new(Mat4::IDENTITY, Mat4::IDENTITY, Mat4::IDENTITY);
     let object = Object { mesh, tangents: None, transforms, shading, material: Material::plain(Vec3::ONE) };
     let light = [Light::directional(Vec3::Z, Vec3::splat(0.5))];
-    let lights = Lighting { ambient: Vec3::splat(0.25), lights: &light, space: ShadingSpace::Linear };
+    let lights =
+        Lighting { ambient: Vec3::splat(0.25), lights: &light, environment: None, space: ShadingSpace::Linear };
     let (variant, _) = draw_mesh(&mut target, &object, &lights, &DrawState { cull, ..DrawState::default() }).unwrap();
     (color, variant.two_sided)
 }

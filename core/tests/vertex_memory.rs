@@ -87,7 +87,8 @@ fn draw_torus<C: ColorBuffer, D: DepthBuffer, M: VertexMemory>(
         wrap: WrapMode::Repeat,
         ..Material::default()
     };
-    let lighting = Lighting { ambient: Vec3::splat(0.1), lights: &lights, space: ShadingSpace::Linear };
+    let lighting =
+        Lighting { ambient: Vec3::splat(0.1), lights: &lights, environment: None, space: ShadingSpace::Linear };
     let transforms = common::near_cut_torus_transforms(W, H);
     let object = Object { mesh: torus.mesh(), tangents: None, transforms, shading, material };
     draw_mesh(target, &object, &lighting, state).unwrap().1

@@ -848,8 +848,8 @@ pub fn run(input: Input) -> Option<DrawStats> {
     let object = Object { mesh, tangents, transforms, shading, material };
     let ambient = input.ambient.get();
     let space = if input.extras.encoded_light { ShadingSpace::Encoded } else { ShadingSpace::Linear };
-    let lighting = Lighting { ambient, lights: &lights, space };
-    let general_lighting = Lighting { ambient, lights: &general_lights, space };
+    let lighting = Lighting { ambient, lights: &lights, environment: None, space };
+    let general_lighting = Lighting { ambient, lights: &general_lights, environment: None, space };
     let state = input.state.get();
     let style = input.wireframe.map(|(c, bias)| LineStyle { color: c.get(), depth_bias: bias.0 });
 

@@ -122,6 +122,20 @@ pub fn atan(x: f32) -> f32 {
     libm::atanf(x)
 }
 
+/// The angle of the point `(x, y)` from the positive `x` axis in radians, in `[-pi, pi]`.
+#[inline(always)]
+#[must_use]
+pub fn atan2(y: f32, x: f32) -> f32 {
+    libm::atan2f(y, x)
+}
+
+/// Base-2 logarithm.
+#[inline(always)]
+#[must_use]
+pub fn log2(x: f32) -> f32 {
+    libm::log2f(x)
+}
+
 /// `x` raised to the power `y`.
 ///
 /// Whole exponents up to 256 (Blinn-Phong shininess nearly always is one) are computed by repeated squaring: a

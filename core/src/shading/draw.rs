@@ -1,7 +1,7 @@
 //! Drawing a mesh: the variant is resolved once, then the pipeline compiled for its varyings runs.
 
 use super::varyings::Absent;
-use super::{LightUse, Lighting, Material, ShadingError, ShadingModel, SurfaceShader, Transforms, Variant};
+use super::{Lighting, Material, ShadingError, ShadingModel, SurfaceShader, Transforms, Variant};
 use crate::math::{Vec2, Vec3, Vec4};
 use crate::mesh::Mesh;
 use crate::pipeline::{DrawState, DrawStats, draw};
@@ -40,7 +40,7 @@ pub fn draw_mesh<C: ColorBuffer, D: DepthBuffer, M: VertexMemory>(
     lights: &Lighting<'_>,
     state: &DrawState,
 ) -> Result<(Variant, DrawStats), ShadingError> {
-    let variant = Variant::resolve(object, lights.lights.iter().map(LightUse::from), lights.space, state)?;
+    let variant = Variant::resolve(object, lights.uses(), lights.space, state)?;
     let tangents = object.tangents.unwrap_or(&[]);
     let (mesh, state) = (&object.mesh, &variant.state);
     macro_rules! run {

@@ -184,19 +184,26 @@ impl<'a> GeneralShader<'a> {
             if variant.two_sided && !front_facing { (geometric * -1.0, shading * -1.0) } else { (geometric, shading) };
         let highlights = variant.specular != SpecularSource::None;
         let to_eye = if highlights { (self.transforms.eye - v.world).normalize_or_zero() } else { Vec3::ZERO };
-        let mut diffuse = match m.occlusion_map {
-            Some(map) if variant.occlusion_map => self.lights.ambient.mul_elem(unpack_rgb888(self.texel(&map, uv))),
-            _ => self.lights.ambient,
+        let occlusion = match m.occlusion_map {
+            Some(map) if variant.occlusion_map => Some(unpack_rgb888(self.texel(&map, uv))),
+            _ => None,
         };
         if variant.shading == ShadingModel::MetallicRoughness {
-            // The BRDF's reflected light, the base colour in it, and the glow.
+            // The BRDF's reflected light, the base colour in it, and the glow. The indirect light (ambient and
+            // environment) is scaled by the occlusion map.
             let texel = match m.metallic_roughness_map {
                 Some(map) if variant.metallic_roughness_map => Some(self.texel(&map, uv)),
                 _ => None,
             };
             let (metallic, roughness) = metallic_roughness(m.metallic, m.roughness, texel);
             let surface = MetallicRoughness { base_color: self.albedo(v.color, uv), metallic, roughness };
-            let mut reflected = surface.ambient(diffuse);
+            let mut reflected = surface.ambient(self.lights.ambient);
+            if let (Some(environment), true) = (self.lights.environment, variant.environment) {
+                reflected += environment.reflected(&surface, shading, to_eye);
+            }
+            if let Some(occlusion) = occlusion {
+                reflected = reflected.mul_elem(occlusion);
+            }
             for light in self.lights.lights {
                 let (to_light, share) = self.share(light, v.world, geometric);
                 reflected += surface.lit_by(shading, to_eye, to_light, light.color, share.unwrap_or(1.0));
@@ -206,6 +213,10 @@ impl<'a> GeneralShader<'a> {
                 _ => reflected,
             };
         }
+        let mut diffuse = match occlusion {
+            Some(occlusion) => self.lights.ambient.mul_elem(occlusion),
+            None => self.lights.ambient,
+        };
         let mut specular = Vec3::ZERO;
         for light in self.lights.lights {
             let (to_light, share) = self.share(light, v.world, geometric);

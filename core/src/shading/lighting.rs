@@ -10,6 +10,7 @@ use super::brdf::MetallicRoughness;
 use super::capabilities::{self, has};
 use super::scratch::Scratch;
 use super::{Cone, Falloff, Light, LightKind, Lighting};
+use crate::environment::Environment;
 use crate::math::Vec3;
 use crate::math::float::{self, Exponent};
 use crate::pipeline::columns::{self, Column, Column3};
@@ -59,33 +60,49 @@ pub(crate) fn light<const CAPS: u32>(
     }
 }
 
+/// The light a metallic-roughness draw reflects besides its lights': the ambient light, scaled by the occlusion
+/// map's share in `s.ambient` when `occluded`, and the environment's, if it reads one (scaled alike).
+#[derive(Clone, Copy)]
+pub(crate) struct Indirect<'a> {
+    pub occluded: bool,
+    pub environment: Option<&'a Environment<'a>>,
+}
+
 /// Fills `s.diffuse` with the light each fragment reflects under glTF's metallic-roughness model, its base colour
-/// `s.albedo`, its metallic factor and roughness `surface`: the ambient light (`s.ambient` when `occluded`, else the
-/// lights' own) reflected by the diffuse lobe ([`MetallicRoughness::ambient`]), then each light's
-/// ([`MetallicRoughness::lit_by`], times the share that arrives and that its shadow map lets through), fragment by
-/// fragment in scalar maths.
+/// `s.albedo`, its metallic factor and roughness `surface`, fragment by fragment in scalar maths:
+/// - the ambient light reflected by the diffuse lobe ([`MetallicRoughness::ambient`]) and the environment's
+///   ([`Environment::reflected`]), each times the occlusion map's share when `indirect` says so;
+/// - each light's ([`MetallicRoughness::lit_by`], times the share that arrives and that its shadow map lets
+///   through).
 pub(crate) fn light_metallic_roughness<const CAPS: u32>(
     s: &mut Scratch,
     lights: &Lighting<'_>,
     eye: Vec3,
     [metallic, roughness]: &[Column; 2],
-    occluded: bool,
+    indirect: Indirect<'_>,
 ) {
     let len = s.len;
-    let ambient = if occluded { s.ambient } else { Column3::splat(lights.ambient) };
     let surface = |s: &Scratch, i: usize| MetallicRoughness {
         base_color: s.albedo.get(i),
         metallic: metallic[i],
         roughness: roughness[i],
     };
+    let environment = indirect.environment.filter(|_| has(CAPS, capabilities::METALLIC_ROUGHNESS));
+    if environment.is_some() || !lights.lights.is_empty() {
+        s.view = Column3::toward(eye, &s.world, len);
+        s.view.normalize(len);
+    }
     for i in 0..lanes(len) {
-        s.diffuse.set(i, surface(s, i).ambient(ambient.get(i)));
+        let surface = surface(s, i);
+        let mut reflected = surface.ambient(lights.ambient);
+        if let Some(environment) = environment {
+            reflected += environment.reflected(&surface, s.shading.get(i), s.view.get(i));
+        }
+        if indirect.occluded {
+            reflected = reflected.mul_elem(s.ambient.get(i));
+        }
+        s.diffuse.set(i, reflected);
     }
-    if lights.lights.is_empty() {
-        return;
-    }
-    s.view = Column3::toward(eye, &s.world, len);
-    s.view.normalize(len);
     for light in lights.lights {
         let (to_light, _, shares) = toward_light::<CAPS>(s, light);
         for i in 0..lanes(len) {

@@ -231,6 +231,11 @@ pub(crate) fn occluded_ambient<F: Filter, W: Wrap>(
     modulated(&mut s.ambient, &s.at, maps, map, Texels::AsStored, Some(&Column3::splat(ambient)), s.len);
 }
 
+/// The occlusion map's share of the indirect light, channel by channel, into `s.ambient`.
+pub(crate) fn occlusion<F: Filter, W: Wrap>(s: &mut Scratch, maps: &mut MapReader<F, W>, map: &Texture<'_>) {
+    modulated(&mut s.ambient, &s.at, maps, map, Texels::AsStored, None, s.len);
+}
+
 /// Emission: the glow map.
 pub(crate) fn glow<F: Filter, W: Wrap>(s: &mut Scratch, maps: &mut MapReader<F, W>, map: &Texture<'_>, texels: Texels) {
     modulated(&mut s.emission, &s.at, maps, map, texels, None, s.len);

@@ -129,6 +129,7 @@ mod tests {
             glow_map: false,
             occlusion_map: false,
             metallic_roughness_map: false,
+            environment: false,
             cutout: Cutout::None,
             two_sided,
             space,
@@ -194,7 +195,7 @@ mod tests {
                         transforms,
                         material,
                         shininess: Exponent::new(material.shininess),
-                        lights: Lighting { ambient: Vec3::splat(0.1), lights, space },
+                        lights: Lighting { ambient: Vec3::splat(0.1), lights, environment: None, space },
                         variant,
                         layout: Layout { first: true, second: true, uvs: false, tangents: false, colors },
                     };
@@ -251,7 +252,7 @@ mod tests {
                         transforms,
                         material,
                         shininess: Exponent::new(material.shininess),
-                        lights: Lighting { ambient: Vec3::splat(0.1), lights: &lights, space },
+                        lights: Lighting { ambient: Vec3::splat(0.1), lights: &lights, environment: None, space },
                         variant,
                         layout: Layout { first: true, second: true, uvs: true, tangents: false, colors: false },
                     };

@@ -8,7 +8,9 @@
 
 use super::capabilities::{self, has};
 use super::coarse;
-use super::maps::{MapReader, Texels, albedo, glow, metallic_roughness, occluded_ambient, specular_color, stored};
+use super::maps::{
+    self, MapReader, Texels, albedo, glow, metallic_roughness, occluded_ambient, specular_color, stored,
+};
 use super::normals::{self, object_map, tangent_map};
 use super::scratch::{Coordinates, Scratch};
 use super::{Cutout, Layout, Lighting, Material, NormalSource, ShadingModel, SpecularSource, Variant, lighting};
@@ -98,22 +100,23 @@ impl<const CAPS: u32> Surface<'_, CAPS> {
         if let (true, true, Some(map)) = (MAPS, v.albedo_map, m.diffuse) {
             albedo(s, maps, &map, texels);
         }
-        let specular = v.specular != SpecularSource::None;
-        let occluded = match m.occlusion_map {
-            Some(map) if MAPS && v.occlusion_map => {
-                occluded_ambient(s, maps, &map, self.lights.ambient);
-                true
-            }
-            _ => false,
+        let occlusion = match m.occlusion_map {
+            Some(map) if MAPS && v.occlusion_map => Some(map),
+            _ => None,
         };
-        if v.shading == ShadingModel::MetallicRoughness {
-            // Each fragment's metallic factor and roughness, then the reflected light, the base colour in it: plus
-            // the glow, and stored.
+        if has(CAPS, capabilities::METALLIC_ROUGHNESS) && v.shading == ShadingModel::MetallicRoughness {
+            // Each fragment's metallic factor and roughness and the occlusion of its indirect light, then the
+            // reflected light, the base colour in it: plus the glow, and stored.
             let mut surface = [Column::splat(m.metallic), Column::splat(m.roughness)];
             if let (true, true, Some(map)) = (MAPS, v.metallic_roughness_map, m.metallic_roughness_map) {
                 metallic_roughness(s, maps, &map, m.metallic, m.roughness, &mut surface);
             }
-            lighting::light_metallic_roughness::<CAPS>(s, &self.lights, self.transforms.eye, &surface, occluded);
+            if let Some(map) = occlusion {
+                maps::occlusion(s, maps, &map);
+            }
+            let environment = self.lights.environment.filter(|_| v.environment);
+            let indirect = lighting::Indirect { occluded: occlusion.is_some(), environment };
+            lighting::light_metallic_roughness::<CAPS>(s, &self.lights, self.transforms.eye, &surface, indirect);
             if let (true, true, Some(map)) = (MAPS, v.glow_map, m.glow_map) {
                 glow(s, maps, &map, texels);
             }
@@ -123,6 +126,11 @@ impl<const CAPS: u32> Surface<'_, CAPS> {
             }
             return stored(out, self.space());
         }
+        let specular = v.specular != SpecularSource::None;
+        if let Some(map) = occlusion {
+            occluded_ambient(s, maps, &map, self.lights.ambient);
+        }
+        let occluded = occlusion.is_some();
         lighting::light::<CAPS>(s, &self.lights, self.transforms.eye, self.shininess, specular, occluded);
         match (v.specular, m.specular_map) {
             (SpecularSource::Map, Some(map)) if MAPS => specular_color(s, maps, &map, texels, m.specular),

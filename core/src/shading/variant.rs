@@ -118,6 +118,8 @@ pub struct Variant {
     /// The metallic factor and the roughness are scaled by the metallic-roughness map (the metallic-roughness
     /// model).
     pub metallic_roughness_map: bool,
+    /// The environment's light is reflected (the metallic-roughness model under an environment).
+    pub environment: bool,
     /// Fragments discarded by alpha.
     pub cutout: Cutout,
     /// Back faces are lit as seen from behind: per-pixel lighting of a draw that does not cull back faces turns
@@ -183,6 +185,8 @@ impl Variant {
     ///   (flat and Gouraud light both faces alike).
     /// - Highlights only for a non-zero [`super::Material::specular`] with at least one light; the metallic-roughness
     ///   model's specular lobe with any light, of its own colour (no specular map).
+    /// - An environment ([`LightUse::environment`]) is reflected by the metallic-roughness model alone, which then
+    ///   has its specular lobe.
     /// - The world position only for per-pixel point or spot lights, highlights or shadows.
     /// - Affine interpolation under an orthographic projection, and the front face flipped for a mirroring model
     ///   matrix ([`crate::shading::Transforms::adapt`]).
@@ -226,8 +230,15 @@ impl Variant {
                 _ => NormalSource::Interpolated,
             },
         };
+        // The metallic-roughness model always has its specular lobe, of its own colour.
+        let metallic_roughness = shading == ShadingModel::MetallicRoughness;
         let (mut directional_lights, mut point_lights, mut shadowed_lights, mut pcf_radius) = (0, 0, 0, 0);
+        let mut environment = false;
         for light in lights.into_iter().filter(|_| lit) {
+            if light.environment {
+                environment |= metallic_roughness;
+                continue;
+            }
             if light.point {
                 point_lights += 1;
             } else {
@@ -238,9 +249,7 @@ impl Variant {
                 pcf_radius = pcf_radius.max(r);
             }
         }
-        // The metallic-roughness model always has its specular lobe, of its own colour.
-        let metallic_roughness = shading == ShadingModel::MetallicRoughness;
-        let specular = if directional_lights + point_lights == 0 {
+        let specular = if directional_lights + point_lights == 0 && !environment {
             SpecularSource::None
         } else if metallic_roughness {
             SpecularSource::Constant
@@ -283,6 +292,7 @@ impl Variant {
             glow_map,
             occlusion_map,
             metallic_roughness_map,
+            environment,
             cutout,
             two_sided: per_pixel && state.cull != Cull::Back,
             space: if colored { space } else { ShadingSpace::Encoded },
@@ -351,7 +361,10 @@ impl fmt::Display for Variant {
                 }
             }
         }
-        let lit = matches!(self.shading, ShadingModel::Flat | ShadingModel::Gouraud | ShadingModel::Phong);
+        let lit = matches!(
+            self.shading,
+            ShadingModel::Flat | ShadingModel::Gouraud | ShadingModel::Phong | ShadingModel::MetallicRoughness
+        );
         if lit || self.shading == ShadingModel::Unlit {
             f.write_str(match (self.vertex_colors, self.albedo_map) {
                 (true, true) => "; albedo colour x vertex colours x texture",
@@ -415,6 +428,7 @@ impl fmt::Display for Variant {
         }
         if lit {
             match (self.directional_lights, self.point_lights) {
+                (0, 0) if self.environment => f.write_str("; lights the environment")?,
                 (0, 0) => f.write_str("; unlit but ambient")?,
                 (d, 0) => write!(f, "; lights {d} directional")?,
                 (0, p) => write!(f, "; lights {p} point")?,
@@ -424,6 +438,9 @@ impl fmt::Display for Variant {
         if self.shadowed_lights > 0 {
             let side = 2 * self.pcf_radius + 1;
             write!(f, " ({} with shadows, pcf {side}x{side})", self.shadowed_lights)?;
+        }
+        if self.environment && self.directional_lights + self.point_lights > 0 {
+            f.write_str(" + the environment")?;
         }
         write!(f, "; {}", FixedFunction(&self.state))
     }

@@ -1,6 +1,10 @@
 //! Helpers shared by the core's integration tests: screen-space triangles, a coverage-count target, ASCII art.
 #![allow(dead_code)]
 
+use rastty_core::environment::panorama::Panorama;
+use rastty_core::environment::{
+    Environment, Irradiance, PanoramaChain, Prefiltering, SplitSum, detail_levels, fill_levels_of_detail, prefilter,
+};
 use rastty_core::math::{Lanes, Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh};
 use rastty_core::pipeline::{DrawState, DrawStats, Fragment, Shader, Slopes, draw};
@@ -557,4 +561,50 @@ impl<'a> From<PlainDepth16<'a>> for AnyDepth<'a> {
     fn from(d: PlainDepth16<'a>) -> Self {
         Self::Plain16(d)
     }
+}
+
+/// The buffers of an environment made ready from a panorama: its levels of detail and specular chain, its
+/// irradiance, and the split-sum table.
+pub struct Prepared {
+    pub specular: Vec<Vec3>,
+    pub irradiance: Irradiance,
+    pub height: u32,
+    pub levels: u32,
+    pub split_sum: SplitSum,
+}
+
+impl Prepared {
+    pub fn new(panorama: &Panorama<'_>, prefiltering: Prefiltering) -> Self {
+        let height = prefiltering.height_for(panorama.height());
+        let lod_levels = detail_levels(height);
+        let mut lods = vec![Vec3::ZERO; PanoramaChain::texel_count(height, lod_levels).unwrap()];
+        fill_levels_of_detail(panorama, height, &mut lods).unwrap();
+        let lods = PanoramaChain::new(height, lod_levels, &lods).unwrap();
+        let mut specular = vec![Vec3::ZERO; PanoramaChain::texel_count(height, prefiltering.levels).unwrap()];
+        prefilter(&lods, &prefiltering, height, &mut specular).unwrap();
+        let irradiance = Irradiance::of(&lods.level(0));
+        Self { specular, irradiance, height, levels: prefiltering.levels, split_sum: SplitSum::new() }
+    }
+
+    pub fn environment(&self) -> Environment<'_> {
+        let chain = PanoramaChain::new(self.height, self.levels, &self.specular).unwrap();
+        Environment::new(self.irradiance, chain, &self.split_sum)
+    }
+}
+
+/// A 64x32 panorama of 8x8 blocks, each its own colour.
+pub fn blocks() -> Vec<Vec3> {
+    (0..64 * 32)
+        .map(|i| {
+            let (bx, by) = ((i % 64) / 8, (i / 64) / 8);
+            Vec3::new(bx as f32 / 8.0, by as f32 / 4.0, ((bx * 7 + by * 3) % 11) as f32 / 11.0)
+        })
+        .collect()
+}
+
+/// An environment of [`blocks`], its first level the panorama itself.
+pub fn block_environment() -> Prepared {
+    let texels = blocks();
+    let panorama = Panorama::new(64, 32, &texels).unwrap();
+    Prepared::new(&panorama, Prefiltering { height: 32, ..Prefiltering::DEFAULT })
 }

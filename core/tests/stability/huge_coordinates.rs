@@ -95,7 +95,7 @@ fn a_band_equals_the_frame_when_a_corner_is_1e35_away() {
     let mesh = Mesh::new(&positions, Indices::Sequential).unwrap();
     let object =
         Object { mesh, tangents: None, transforms, shading: ShadingModel::Unlit, material: Material::default() };
-    let lighting = Lighting { ambient: Vec3::ONE, lights: &[], space: ShadingSpace::Linear };
+    let lighting = Lighting { ambient: Vec3::ONE, lights: &[], environment: None, space: ShadingSpace::Linear };
     let (w, h, band) = (40u32, 35u32, 0..21u32);
     let draw = |cull: Cull, rows: core::ops::Range<u32>| {
         let state = DrawState { cull, depth_test: DepthTest::Off, subpixel_bits: 0, ..DrawState::DEFAULT };

@@ -145,7 +145,7 @@ impl Scene {
 
     /// The scene's lights.
     fn lights(&self) -> Lighting<'_> {
-        Lighting { ambient: AMBIENT, lights: &self.lights, space: SPACE }
+        Lighting { ambient: AMBIENT, lights: &self.lights, environment: None, space: SPACE }
     }
 
     /// Clears `target` to [`BACKGROUND`] and draws Spot: into a band, or a whole frame (the same pixels).

@@ -171,7 +171,7 @@ mod tests {
         ) -> DrawStats {
             let shading = ShadingModel::Depth { near: 0.0, far: 1.0 };
             let object = Object { mesh, tangents: None, transforms, shading, material: Material::default() };
-            let lights = Lighting { ambient: Vec3::ZERO, lights: &[], space: ShadingSpace::Linear };
+            let lights = Lighting { ambient: Vec3::ZERO, lights: &[], environment: None, space: ShadingSpace::Linear };
             draw_mesh(target, &object, &lights, state).unwrap().1
         }
         let (mut whole, mut depth) = (vec![0u32; (w * h) as usize], vec![0f32; (w * h) as usize]);

@@ -240,6 +240,7 @@ impl ScenePlan {
             .iter()
             .map(|l| LightUse {
                 point: l.kind.position().is_some(),
+                environment: false,
                 shadow_pcf: l.shadow_pass.map(|p| self.shadow_passes[p].pcf_radius),
             })
             .collect();

@@ -262,7 +262,7 @@ impl SceneRenderer {
 
         let start = Instant::now();
         let sources = Self::light_sources(&self.slots, plan)?;
-        let lights = Lighting { ambient: plan.ambient, lights: &sources, space: plan.space };
+        let lights = Lighting { ambient: plan.ambient, lights: &sources, environment: None, space: plan.space };
         let (color, depth) = target.buffers_mut();
         let (pixels, depth) = (&mut *color.0, &mut **depth);
         let samples = self.samples.bands(plan.samples(), width, rows.clone(), band_rows);

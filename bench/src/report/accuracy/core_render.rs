@@ -151,7 +151,7 @@ impl<'a> CoreScene<'a> {
         let space = setting.space;
         let ambient = in_space(narrow(self.scene.lighting.ambient), space);
         let lights = if space == ShadingSpace::Linear { &self.lights } else { &self.encoded_lights };
-        let lighting = Lighting { ambient, lights, space };
+        let lighting = Lighting { ambient, lights, environment: None, space };
         for o in &self.objects {
             let src = o.source;
             let mut mesh = Mesh::new(&o.positions, Indices::U32(&src.indices)).map_err(CoreRenderError::Mesh)?;

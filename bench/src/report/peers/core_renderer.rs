@@ -54,7 +54,12 @@ impl CoreRenderer {
         };
         let lights = [Light::directional(to_light(), Vec3::splat(DIFFUSE))];
         // The peers light the stored sRGB values.
-        let lighting = Lighting { ambient: Vec3::splat(AMBIENT), lights: &lights, space: ShadingSpace::Encoded };
+        let lighting = Lighting {
+            ambient: Vec3::splat(AMBIENT),
+            lights: &lights,
+            environment: None,
+            space: ShadingSpace::Encoded,
+        };
         let mut target = Target::new(Rgb888(&mut self.color), &mut self.depth[..], scene.width, scene.height)
             .expect("buffers of the frame's size")
             .with_vertex_memory(&mut self.vertices);
