@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use rastty_bench::report::effects::{self, EffectsReport, ShadowMaps, configurations};
 use rastty_scene::scene_render::{EffectToggles, PreparedScene, SceneEffect};
 
-const ROWS: [&str; 9] = [
+const ROWS: [&str; 10] = [
     "none",
     "normal maps",
     "specular",
@@ -16,6 +16,7 @@ const ROWS: [&str; 9] = [
     "shadows, map drawn every frame",
     "shadows, map kept",
     "ambient occlusion",
+    "environment light",
     "all, map drawn every frame",
     "all, map kept",
 ];
@@ -38,13 +39,13 @@ fn configurations_are_none_each_effect_alone_and_all() {
     assert_eq!(labels, ROWS);
     let none = EffectToggles::all_but(&SceneEffect::ALL);
     assert_eq!(rows[0].effects, none);
-    for row in &rows[1..7] {
+    for row in &rows[1..8] {
         let on: Vec<SceneEffect> = SceneEffect::ALL.into_iter().filter(|&e| row.effects.get(e)).collect();
         assert_eq!(on.len(), 1, "{}: one effect alone", row.label);
     }
     assert_eq!((rows[4].maps, rows[5].maps), (ShadowMaps::Drawn, ShadowMaps::Kept));
-    assert_eq!((rows[7].effects, rows[7].maps), (EffectToggles::ALL_ON, ShadowMaps::Drawn));
-    assert_eq!((rows[8].effects, rows[8].maps), (EffectToggles::ALL_ON, ShadowMaps::Kept));
+    assert_eq!((rows[8].effects, rows[8].maps), (EffectToggles::ALL_ON, ShadowMaps::Drawn));
+    assert_eq!((rows[9].effects, rows[9].maps), (EffectToggles::ALL_ON, ShadowMaps::Kept));
 }
 
 #[test]

@@ -95,6 +95,18 @@ pub enum ShadingSpace {
     Encoded,
 }
 
+impl ShadingSpace {
+    /// A colour lit in this space as a frame stores it: encoded from linear light to sRGB ([`encode_srgb`]), or as
+    /// it is.
+    #[inline(always)]
+    pub fn stored(self, color: Vec3) -> Vec3 {
+        match self {
+            Self::Linear => encode_srgb(color),
+            Self::Encoded => color,
+        }
+    }
+}
+
 /// The sRGB decoding of an encoded channel `c` to linear light (IEC 61966-2-1, the piecewise curve with exponent
 /// 2.4), computed in `f64` and rounded once: the same bits on every target, and at compile time for tables.
 /// Values above 1 follow the curve; values at or below 0 stay linear.

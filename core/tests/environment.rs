@@ -13,10 +13,10 @@ use rastty_core::math::{Mat4, Vec3};
 use rastty_core::mesh::{Indices, Mesh};
 use rastty_core::pipeline::DrawState;
 use rastty_core::shading::{Lighting, Material, Object, ShadingModel, Transforms, draw_mesh};
-use rastty_core::target::Target;
+use rastty_core::target::{Samples, Target};
 use rastty_core::texture::Texture;
 
-use crate::common::{ExactColor, Prepared, Torus, blocks};
+use crate::common::{ExactColor, Prepared, Torus, blocks, multisampled};
 
 const SIZE: u32 = 96;
 
@@ -135,4 +135,20 @@ fn a_turned_environment_is_seen_turned() {
         let seen = turned.radiance(Vec3::new(d.z, d.y, -d.x));
         assert!((seen - environment.radiance(d)).length() < 1e-5, "{d:?}");
     }
+}
+
+#[test]
+fn a_frame_cleared_pixel_by_pixel_holds_each_pixels_colour_in_every_sample() {
+    // Rows 1 and 2 of a 6x4 frame, four samples a pixel.
+    let (width, rows) = (6usize, 1..3u32);
+    let mut color = vec![[0u32; 3]; width * 2 * 4];
+    let mut depth = vec![0f32; color.len()];
+    let mut target = multisampled(ExactColor(&mut color), &mut depth[..], 6, 4, rows, Samples::Four);
+    target.clear_with(|x, y| Vec3::new(x as f32, y as f32, 0.5));
+    for (i, c) in color.iter().enumerate() {
+        let (pixel, _sample) = (i / 4, i % 4);
+        let (x, y) = (pixel % width, 1 + pixel / width);
+        assert_eq!(*c, [(x as f32).to_bits(), (y as f32).to_bits(), 0.5f32.to_bits()], "sample {i}");
+    }
+    assert!(depth.iter().all(|&d| d == 1.0), "the depth is cleared to the far plane");
 }

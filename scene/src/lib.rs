@@ -27,6 +27,7 @@
 //! ```
 
 pub mod builtin;
+pub mod environment;
 pub mod escaped;
 pub mod input_file;
 pub mod model;

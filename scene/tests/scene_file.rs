@@ -185,7 +185,7 @@ fn toml_syntax_errors_name_the_line_and_the_key_being_written() {
 fn unknown_keys_are_named_with_their_table() {
     assert_eq!(
         error(&format!("backgruond = \"000000\"\n{CAMERA}{SPOT}")),
-        "scene.toml:1:1: backgruond: unknown key, expected one of `background`, `ambient`, `ambient_occlusion`, \
+        "scene.toml:1:1: backgruond: unknown key, expected one of `background`, `ambient`, `environment`, `ambient_occlusion`, \
          `linear_light`, `camera`, `lights`, `viewer_lights`, `objects`"
     );
     assert_eq!(
@@ -945,5 +945,100 @@ fn project_made_assets_match_their_recipe() {
         let image = TextureImage::load(&path).unwrap_or_else(|e| panic!("{e}"));
         assert_eq!((image.width, image.height), (SIDE, SIDE), "{name}");
         assert!(image.texels == expected_texels(color, &data), "{name} differs from its recipe");
+    }
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Environments
+
+/// A Radiance `.hdr` file of `width x height` texels, uncompressed scanlines, each texel the RGBE bytes `texel(x, y)`.
+fn hdr_bytes(width: u32, height: u32, texel: impl Fn(u32, u32) -> [u8; 4]) -> Vec<u8> {
+    let mut out = format!("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y {height} +X {width}\n").into_bytes();
+    for y in 0..height {
+        for x in 0..width {
+            out.extend_from_slice(&texel(x, y));
+        }
+    }
+    out
+}
+
+/// The environment a scene of `environment_line` and Spot (a physically based one when `metal`) loads, from a
+/// directory holding `files`: its name, or the error.
+fn environment_of(environment_line: &str, metal: bool, files: &[(&str, &[u8])]) -> Result<Option<String>, String> {
+    let dir = dir_with(files);
+    let material = if metal { "[objects.material]\nmetallic = 1\n" } else { "" };
+    let text = format!("{environment_line}\n{SPOT}{material}");
+    let path = dir.path().join("scene.toml");
+    fs::write(&path, &text).unwrap();
+    let scene = load(&path).map_err(|e| e.to_string())?;
+    Ok(scene.environment.as_ref().map(|e| e.name.clone()))
+}
+
+#[test]
+fn a_physically_based_scene_gets_the_studio_unless_it_names_an_environment() {
+    assert_eq!(environment_of("", true, &[]).unwrap().as_deref(), Some("studio"));
+    assert_eq!(environment_of("", false, &[]).unwrap(), None);
+    assert_eq!(environment_of("environment = \"none\"", true, &[]).unwrap(), None);
+    assert_eq!(environment_of("environment = \"studio\"", false, &[]).unwrap().as_deref(), Some("studio"));
+    // An image, relative to the scene file: a 16x8 panorama of RGBE (128, 64, 32, 129), which decodes to 1, 0.5,
+    // 0.25.
+    let hdr = hdr_bytes(16, 8, |_, _| [128, 64, 32, 129]);
+    let name = environment_of("environment = \"sky/room.hdr\"", false, &[("sky/room.hdr", &hdr)]).unwrap();
+    assert_eq!(name.as_deref(), Some("room.hdr"));
+    let decoded = rastty_scene::environment::PanoramaImage::decode(Path::new("room.hdr"), &hdr).unwrap();
+    assert_eq!((decoded.width, decoded.height, decoded.clamped), (16, 8, 0));
+    assert!(decoded.texels.iter().all(|t| *t == Vec3::new(1.0, 0.5, 0.25)), "{:?}", decoded.texels[0]);
+}
+
+#[test]
+fn a_bad_environment_image_is_refused_naming_the_line_and_the_reason() {
+    let refused = |name: &str, bytes: &[u8]| {
+        let line = format!("environment = \"{name}\"");
+        environment_of(&line, true, &[(name, bytes)]).expect_err(name)
+    };
+    // Not twice as wide as tall.
+    let square = encode_png(4, 4, png::ColorType::Rgb, &[0; 48]);
+    let e = refused("square.png", &square);
+    assert!(e.contains("scene.toml:1:15") && e.contains("environment") && e.contains("not 4x4"), "{e}");
+    // A header promising more texels than allowed: refused before anything is allocated.
+    let e = refused("huge.hdr", b"#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 100000 +X 200000\n");
+    assert!(e.contains("huge.hdr") && e.to_lowercase().contains("limit"), "{e}");
+    // Empty, truncated and unknown data.
+    let e = refused("empty.hdr", b"");
+    assert!(e.contains("empty.hdr") && e.contains("unknown environment image format"), "{e}");
+    let mut truncated = hdr_bytes(16, 8, |_, _| [128, 128, 128, 128]);
+    truncated.truncate(truncated.len() - 100);
+    let e = refused("truncated.hdr", &truncated);
+    assert!(e.contains("truncated.hdr"), "{e}");
+    let e = refused("notes.txt", b"not an image at all");
+    assert!(e.contains("unknown environment image format"), "{e}");
+    // A missing file.
+    let e = environment_of("environment = \"gone.hdr\"", true, &[]).unwrap_err();
+    assert!(e.contains("gone.hdr") && e.contains("scene.toml:1:15"), "{e}");
+    // An empty name.
+    let e = environment_of("environment = \" \"", true, &[]).unwrap_err();
+    assert!(e.contains("environment") && e.contains("must name an environment"), "{e}");
+}
+
+#[test]
+fn an_environment_brighter_than_half_floats_is_clamped_with_a_warning() {
+    // Exponent 255: about 1.7e38 each, whose sums over the sphere would overflow.
+    let hdr = hdr_bytes(16, 8, |x, _| if x < 4 { [255, 255, 255, 255] } else { [128, 128, 128, 129] });
+    let dir = dir_with(&[("bright.hdr", &hdr)]);
+    let path = dir.path().join("scene.toml");
+    fs::write(&path, format!("environment = \"bright.hdr\"\n{SPOT}")).unwrap();
+    let scene = load(&path).unwrap();
+    let environment = scene.environment.as_ref().unwrap();
+    assert_eq!(environment.clamped, 4 * 8);
+    let warning = scene.warnings.iter().find(|w| w.contains("bright.hdr")).expect("a warning");
+    assert!(
+        warning.contains("32 texels") && warning.contains("clamped") && warning.contains("scene.toml:1"),
+        "{warning}"
+    );
+    // What lights surfaces is finite.
+    let light = environment.environment();
+    for d in [Vec3::X, Vec3::Y, -Vec3::Z] {
+        let r = light.radiance(d);
+        assert!(r.is_finite() && r.max_elem() <= rastty_scene::environment::MAX_RADIANCE, "{r:?}");
     }
 }

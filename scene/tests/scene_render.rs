@@ -49,7 +49,7 @@ fn assert_not_blank(name: &str, pixels: &[u32], background: Vec3) {
 #[test]
 fn every_example_scene_renders_a_picture() {
     let scenes = scenes_in(&root().join("assets/scenes"));
-    assert_eq!(scenes.len(), 3, "{scenes:?}");
+    assert_eq!(scenes.len(), 4, "{scenes:?}");
     for path in &scenes {
         let scene = prepared(path);
         let image = render_scene_image(&scene, &scene.camera(), (96, 72), 1, &PlanOptions::default())

@@ -38,6 +38,7 @@ use rastty::graphics::GraphicsProtocol;
 use rastty::graphics::frame_palette::Dither;
 use rastty::screen::{CellMode, ColorMode};
 use rastty_core::math::Vec3;
+use rastty_scene::environment::EnvironmentChoice;
 use rastty_scene::escaped::Escaped;
 use rastty_scene::input_file::{parse_byte_size, recording_reads, set_max_file_bytes};
 use rastty_scene::model::{ModelLens, ModelLightKind, ModelOptions, RigListing};
@@ -192,9 +193,22 @@ struct SceneArgs {
     /// Far clipping plane distance, in radii (default: just behind the scene).
     #[arg(long, allow_negative_numbers = true, value_parser = positive)]
     far: Option<f32>,
-    /// unlit, flat, gouraud, phong, metallic-roughness, depth or normals.
-    #[arg(long, default_value = "phong", value_parser = ShadingMode::from_str)]
+    /// material (each surface as its material says: glTF's metallic-roughness model for glTF materials and scene
+    /// objects that give metallic or roughness, phong for the others), unlit, flat, gouraud, phong,
+    /// metallic-roughness, depth or normals.
+    #[arg(long, default_value = "material", value_parser = ShadingMode::from_str)]
     shading: ShadingMode,
+    /// The light from every direction that metallic-roughness surfaces reflect: `studio` (built in), `none`, or an
+    /// equirectangular image twice as wide as tall (Radiance .hdr, PNG or JPEG). Default: the scene file's, else
+    /// the studio for a scene with a physically based material.
+    #[arg(long, value_name = "FILE|studio|none", value_parser = parse_environment)]
+    environment: Option<EnvironmentChoice>,
+    /// Turn the environment about the vertical axis by this many degrees (counter-clockwise seen from above).
+    #[arg(long, value_name = "DEGREES", allow_negative_numbers = true, value_parser = finite, default_value_t = 0.0)]
+    environment_turn: f32,
+    /// Show the environment behind the objects instead of the background colour.
+    #[arg(long)]
+    environment_background: bool,
     /// Use this image as the texture of every object.
     #[arg(long, value_name = "FILE", conflicts_with = "no_texture")]
     texture: Option<PathBuf>,
@@ -211,7 +225,7 @@ struct SceneArgs {
     /// Background colour, RRGGBB (default: the scene's).
     #[arg(long, value_name = "RRGGBB", value_parser = parse_hex_color)]
     background: Option<Vec3>,
-    /// Leave effects out (normal-maps, specular, glow-maps, shadows, ambient-occlusion).
+    /// Leave effects out (normal-maps, specular, glow-maps, shadows, ambient-occlusion, environment).
     #[arg(long, value_name = "EFFECT,...", value_delimiter = ',', value_parser = SceneEffect::from_str)]
     without: Vec<SceneEffect>,
     /// The largest file read (model, material library, image, scene file), in bytes or with K, M, G: larger files
@@ -259,6 +273,8 @@ impl SceneArgs {
             wireframe: self.wireframe,
             background: self.background,
             multisample: self.msaa,
+            environment_turn: self.environment_turn.to_radians(),
+            environment_background: self.environment_background,
         }
     }
 
@@ -288,6 +304,12 @@ impl SceneArgs {
         if let Some(camera) = &self.file_camera {
             opened.data.use_file_camera(camera).map_err(|e| format!("{}: {e}", opened.name))?;
         }
+        if let Some(choice) = &self.environment {
+            opened.data.environment = choice.light().map_err(|e| format!("--environment: {e}"))?;
+            if let Some(warning) = opened.data.environment.as_ref().and_then(|e| e.warning()) {
+                opened.data.warnings.push(format!("--environment: {warning}"));
+            }
+        }
         let mut warnings: Vec<String> = opened.warnings().map(|w| Escaped(w).to_string()).collect();
         let in_scene = |e: &dyn std::fmt::Display| format!("{}: {e}", opened.name);
         let mut scene = PreparedScene::new(opened.data).map_err(|e| in_scene(&e))?;
@@ -300,6 +322,13 @@ impl SceneArgs {
         }
         Ok((scene, opened.name, self.plan(textures), warnings))
     }
+}
+
+fn parse_environment(s: &str) -> Result<EnvironmentChoice, String> {
+    if s.trim().is_empty() {
+        return Err("expected studio, none or an image file".into());
+    }
+    Ok(EnvironmentChoice::parse(s, Path::new("")))
 }
 
 fn smooth_angle(s: &str) -> Result<f32, String> {

@@ -101,7 +101,8 @@ fn spot_from_obj_and_gltf_gives_the_same_picture() {
     let texture = spot("spot_texture.png");
     let lit = picture(dir.path(), obj, &["--texture", texture.to_str().unwrap(), "--without", "specular"]);
     for name in ["spot.gltf", "spot.glb"] {
-        let other = picture(dir.path(), name, &["--without", "specular"]);
+        // Blinn-Phong, as the OBJ is drawn (a glTF material is drawn with the metallic-roughness model by default).
+        let other = picture(dir.path(), name, &["--without", "specular", "--shading", "phong"]);
         let differing = lit.chunks_exact(3).zip(other.chunks_exact(3)).filter(|(a, b)| a != b).count();
         assert!(differing * 1000 < lit.len() / 3, "{name}: {differing} of {} pixels differ", lit.len() / 3);
     }
@@ -309,11 +310,11 @@ fn the_occlusion_texture_scales_the_ambient_light_by_its_red_channel() {
     };
     assert!(explain(&[]).contains("; occlusion map"), "{}", explain(&[]));
     assert!(!explain(&["--without", "ambient-occlusion"]).contains("occlusion map"));
-    // Lit by a white ambient light alone (no lights in the scene file), the right half gets half the light: in
+    // Lit by a white ambient light alone (no lights in the scene file), under Blinn-Phong, the right half gets half the light: in
     // linear light (occlusion 128 / 255 times white) that encodes to 188.3, code 188.
     let scene = "ambient = [1, 1, 1]\n\n[camera]\nposition = [0.5, 0.5, 2]\ntarget = [0.5, 0.5, 0]\n\n[[objects]]\nmesh = \"occluded.glb\"\n";
     fs::write(dir.path().join("scene.toml"), scene).unwrap();
-    let args = ["--background", "000000", "--size", "160x120"];
+    let args = ["--background", "000000", "--size", "160x120", "--shading", "phong"];
     let mut all = vec!["render", "scene.toml", "-o", "ambient.png"];
     all.extend_from_slice(&args);
     let output = rastty(dir.path(), &all);
@@ -344,9 +345,14 @@ fn the_metallic_roughness_texture_is_read_by_the_metallic_roughness_model() {
         args.extend_from_slice(more);
         String::from_utf8_lossy(&rastty(dir.path(), &args).stdout).into_owned()
     };
-    let pbr = explain(&["--shading", "metallic-roughness"]);
+    // A glTF material is drawn with the metallic-roughness model by default, under the studio environment.
+    let pbr = explain(&[]);
     assert!(pbr.contains("metallic-roughness; varyings") && pbr.contains("; metallic-roughness map"), "{pbr}");
-    assert!(!explain(&[]).contains("metallic-roughness map"), "Blinn-Phong reads no such map");
+    assert!(pbr.contains("environment studio (") && pbr.contains("reflected by 1 metallic-roughness draw"), "{pbr}");
+    assert_eq!(explain(&["--shading", "metallic-roughness"]), pbr);
+    assert!(!explain(&["--shading", "phong"]).contains("metallic-roughness map"), "Blinn-Phong reads no such map");
+    let dark = explain(&["--environment", "none"]);
+    assert!(dark.contains("metallic-roughness; varyings") && !dark.contains("environment"), "{dark}");
 }
 
 #[test]
@@ -364,7 +370,8 @@ fn a_scene_file_places_a_gltf_model_and_draws_its_double_sided_part_without_cull
     assert!(line("part \"red square\"").contains("cull none"), "{plan}");
     assert!(line("part \"glowing square\"").contains("cull back") && line("glowing").contains("glow map"), "{plan}");
     // Seen from behind, the double-sided red squares are still drawn; the one-sided glowing square is not.
-    let behind = picture(dir.path(), "scene.toml", &["--yaw", "180", "--pitch", "0", "--background", "000000"]);
+    let args = ["--yaw", "180", "--pitch", "0", "--background", "000000", "--shading", "phong"];
+    let behind = picture(dir.path(), "scene.toml", &args);
     let reddish = behind.chunks_exact(3).filter(|p| p[0] > 0 && p[1] == 0 && p[2] == 0).count();
     let greenish = behind.chunks_exact(3).filter(|p| p[1] > p[0] && p[1] > p[2]).count();
     assert!(reddish > 0 && greenish == 0, "from behind: {reddish} red, {greenish} green pixels");
@@ -461,7 +468,8 @@ fn vertex_colours_multiply_the_base_colour_under_every_shading_model() {
     let explain =
         String::from_utf8_lossy(&rastty(dir.path(), &["render", "colored.glb", "--explain"]).stdout).into_owned();
     assert!(
-        explain.contains("phong; varyings colour+normal") && explain.contains("albedo colour x vertex colours"),
+        explain.contains("metallic-roughness; varyings colour+normal")
+            && explain.contains("albedo colour x vertex colours"),
         "{explain}"
     );
     // Lit by a white ambient light alone: the base colour (1, 0.5, 0.5) times the vertex colour (0, 0.4, 0.8) is

@@ -5,6 +5,7 @@
 
 mod cli;
 mod common;
+mod environment;
 mod gltf_animation;
 mod gltf_lights;
 mod gltf_models;

@@ -120,7 +120,7 @@ fn a_scene_file_shows_and_its_effects_switch_off() {
         let screen = tmux.screen();
         (screen.contains("spot_sun.toml") && screen.contains("4 shadows on")).then_some(screen)
     });
-    assert!(hud.contains("phong perspective texture on wire off msaa off"), "HUD:\n{hud}");
+    assert!(hud.contains("material perspective texture on wire off msaa off"), "HUD:\n{hud}");
     assert!(hud.contains("passes: 1 shadow"), "HUD:\n{hud}");
 
     // Shadows off: no shadow pass, and the picture changes (the ground under Spot is lit).

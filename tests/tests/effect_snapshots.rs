@@ -1,11 +1,14 @@
-//! Golden images of the scene files' effects (normal maps, specular, glow maps, shadows, ambient occlusion), in
-//! `tests/snapshots/effects/`, 200x150 without supersampling:
+//! Golden images of the scene files' effects (normal maps, specular, glow maps, shadows, ambient occlusion,
+//! environment light), in `tests/snapshots/effects/`, 200x150 without supersampling:
 //!
 //! - `spot_lamp_all`: `assets/scenes/spot_lamp.toml` as written, every effect on (its floor has every map, the
 //!   point lamp casts shadows, ambient occlusion is on);
-//! - `spot_lamp_none`: the same with all five effects off;
-//! - `spot_lamp_without_EFFECT`: each effect alone left out (`rastty render --without EFFECT`);
-//! - `spot_sun_all`: `assets/scenes/spot_sun.toml`, a directional light's shadow.
+//! - `spot_lamp_none`: the same with every effect off;
+//! - `spot_lamp_without_EFFECT`: each effect alone left out (`rastty render --without EFFECT`), but the
+//!   environment, which `spot_lamp` has none of (no physically based material);
+//! - `spot_sun_all`: `assets/scenes/spot_sun.toml`, a directional light's shadow;
+//! - `spot_studio_all` and `spot_studio_without_environment`: `assets/scenes/spot_studio.toml`, metallic-roughness
+//!   surfaces in the studio environment, and without it.
 //!
 //! The comparison and blessing are the harness's (`snapshot/`): no difference allowed, `NAME.actual.png` and
 //! `NAME.diff.png` written beside a golden that does not match, `UPDATE_SNAPSHOTS=1 cargo test -p rastty-tests`
@@ -38,6 +41,7 @@ fn example(name: &str) -> PreparedScene {
 
 static SPOT_LAMP: LazyLock<PreparedScene> = LazyLock::new(|| example("spot_lamp.toml"));
 static SPOT_SUN: LazyLock<PreparedScene> = LazyLock::new(|| example("spot_sun.toml"));
+static SPOT_STUDIO: LazyLock<PreparedScene> = LazyLock::new(|| example("spot_studio.toml"));
 
 /// `scene` through its own camera at [`SIZE`], with the effects `effects` allows (textures on, no wireframe).
 fn render(scene: &PreparedScene, effects: EffectToggles) -> Image {
@@ -49,7 +53,15 @@ fn render(scene: &PreparedScene, effects: EffectToggles) -> Image {
 // Each frame is rendered once, for its snapshot and for the comparisons between frames.
 static LAMP_ALL: LazyLock<Image> = LazyLock::new(|| render(&SPOT_LAMP, EffectToggles::ALL_ON));
 static LAMP_NONE: LazyLock<Image> = LazyLock::new(|| render(&SPOT_LAMP, EffectToggles::all_but(&SceneEffect::ALL)));
-/// `spot_lamp` without each effect of [`SceneEffect::ALL`], in that order.
+/// The effects `spot_lamp` calls for: every one but the environment.
+const LAMP_EFFECTS: [SceneEffect; 5] = [
+    SceneEffect::NormalMaps,
+    SceneEffect::Specular,
+    SceneEffect::GlowMaps,
+    SceneEffect::Shadows,
+    SceneEffect::AmbientOcclusion,
+];
+/// `spot_lamp` without each effect of [`LAMP_EFFECTS`], in that order.
 static LAMP_WITHOUT: [LazyLock<Image>; 5] = [
     LazyLock::new(|| lamp_without_nth(0)),
     LazyLock::new(|| lamp_without_nth(1)),
@@ -58,14 +70,17 @@ static LAMP_WITHOUT: [LazyLock<Image>; 5] = [
     LazyLock::new(|| lamp_without_nth(4)),
 ];
 static SUN_ALL: LazyLock<Image> = LazyLock::new(|| render(&SPOT_SUN, EffectToggles::ALL_ON));
+static STUDIO_ALL: LazyLock<Image> = LazyLock::new(|| render(&SPOT_STUDIO, EffectToggles::ALL_ON));
+static STUDIO_WITHOUT_ENVIRONMENT: LazyLock<Image> =
+    LazyLock::new(|| render(&SPOT_STUDIO, EffectToggles::all_but(&[SceneEffect::Environment])));
 
 fn lamp_without_nth(i: usize) -> Image {
-    render(&SPOT_LAMP, EffectToggles::all_but(&[SceneEffect::ALL[i]]))
+    render(&SPOT_LAMP, EffectToggles::all_but(&[LAMP_EFFECTS[i]]))
 }
 
 /// `spot_lamp` with every effect but `effect`.
 fn lamp_without(effect: SceneEffect) -> &'static Image {
-    let i = SceneEffect::ALL.iter().position(|&e| e == effect).expect("every effect is in SceneEffect::ALL");
+    let i = LAMP_EFFECTS.iter().position(|&e| e == effect).expect("an effect spot_lamp calls for");
     &LAMP_WITHOUT[i]
 }
 
@@ -126,6 +141,16 @@ fn spot_sun_all() {
     check("spot_sun_all", &SUN_ALL);
 }
 
+#[test]
+fn spot_studio_all() {
+    check("spot_studio_all", &STUDIO_ALL);
+}
+
+#[test]
+fn spot_studio_without_environment() {
+    check("spot_studio_without_environment", &STUDIO_WITHOUT_ENVIRONMENT);
+}
+
 // ---------------------------------------------------------------------------------------------------------------
 // Every effect shows
 
@@ -143,13 +168,19 @@ fn assert_differ(what: &str, a: &Image, b: &Image) -> usize {
 #[test]
 fn leaving_out_any_effect_changes_spot_lamp() {
     let mut changed = Vec::new();
-    for effect in SceneEffect::ALL {
+    for effect in LAMP_EFFECTS {
         let n = assert_differ(&format!("spot_lamp without {}", effect.name()), &LAMP_ALL, lamp_without(effect));
         changed.push(format!("{}: {n}", effect.name()));
     }
     let n = assert_differ("spot_lamp without any effect", &LAMP_ALL, &LAMP_NONE);
     changed.push(format!("all: {n}"));
     println!("pixels changed by leaving out {}", changed.join(", "));
+}
+
+#[test]
+fn leaving_out_the_environment_changes_spot_studio() {
+    let n = assert_differ("spot_studio without the environment", &STUDIO_ALL, &STUDIO_WITHOUT_ENVIRONMENT);
+    println!("pixels changed by leaving out the environment: {n}");
 }
 
 #[test]

@@ -2,6 +2,7 @@
 //! [`rastty_scene::scene_render::SceneRenderer::render`] draws for a [`ScenePlan`] of them.
 
 use rastty_core::pipeline::Cull;
+use rastty_core::shading::ShadingModel;
 use rastty_core::texture::FilterMode;
 
 use super::math::{self, DMat4, V3};
@@ -99,7 +100,7 @@ impl ReferenceScene {
     ///
     /// [`ShadingMode::Unlit`] is drawn unlit; the three lit modes ([`ShadingMode::Flat`],
     /// [`ShadingMode::Gouraud`], [`ShadingMode::Phong`]) all get the truth they approximate, per-pixel
-    /// Blinn-Phong.
+    /// Blinn-Phong, as does [`ShadingMode::Material`] for a scene without physically based materials.
     ///
     /// # Errors
     /// [`ReferenceError::Unsupported`] for what the reference does not draw: the metallic-roughness model, the
@@ -116,7 +117,8 @@ impl ReferenceScene {
     ) -> Result<Self, ReferenceError> {
         let shading = match options.shading {
             ShadingMode::Unlit => Shading::Unlit,
-            ShadingMode::Flat | ShadingMode::Gouraud | ShadingMode::Phong => Shading::Lit,
+            // Each part by its material: the plan below refuses physically based ones.
+            ShadingMode::Material | ShadingMode::Flat | ShadingMode::Gouraud | ShadingMode::Phong => Shading::Lit,
             ShadingMode::MetallicRoughness => return Err(ReferenceError::Unsupported("the metallic-roughness model")),
             ShadingMode::Depth => return Err(ReferenceError::Unsupported("the depth view")),
             ShadingMode::Normals => return Err(ReferenceError::Unsupported("the normals view")),
@@ -135,6 +137,12 @@ impl ReferenceScene {
         }
         if plan.ambient_occlusion.is_some() {
             return Err(ReferenceError::Unsupported("ambient occlusion"));
+        }
+        if plan.draws.iter().any(|d| d.variant.shading == ShadingModel::MetallicRoughness) {
+            return Err(ReferenceError::Unsupported("the metallic-roughness model"));
+        }
+        if plan.environment.as_ref().is_some_and(|e| e.background) {
+            return Err(ReferenceError::Unsupported("the environment as the background"));
         }
 
         let view = Camera {

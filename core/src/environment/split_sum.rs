@@ -21,7 +21,7 @@ pub struct SplitSum {
 }
 
 impl SplitSum {
-    /// The table, integrated over [`SAMPLES`] GGX-distributed microfacet normals per node (about half a million
+    /// The table, integrated over 512 GGX-distributed microfacet normals per node (`SAMPLES`; about half a million
     /// samples in all).
     #[must_use]
     pub fn new() -> Self {

@@ -15,7 +15,7 @@ use super::{
     Cutout, Light, LightTerms, Lighting, Material, NormalSource, ShadingModel, SpecularSource, Transforms, Variant,
     world_normal,
 };
-use crate::color::{ShadingSpace, encode_srgb, texel_alpha, unpack_rgb888};
+use crate::color::{ShadingSpace, texel_alpha, unpack_rgb888};
 use crate::math::{Vec2, Vec3, Vec4, float};
 use crate::mesh::{Attributes, Mesh};
 use crate::pipeline::{Fragment, Shader, Slopes};
@@ -110,10 +110,7 @@ impl<'a> GeneralShader<'a> {
 
     /// A shaded colour as the draw stores it: encoded to sRGB from linear light, or as it is.
     fn stored(&self, color: Vec3) -> Vec3 {
-        match self.variant.space {
-            ShadingSpace::Linear => encode_srgb(color),
-            ShadingSpace::Encoded => color,
-        }
+        self.variant.space.stored(color)
     }
 
     /// The material colour, times the vertex colour `color` when the variant reads it, times the diffuse map at

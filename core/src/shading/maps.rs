@@ -3,7 +3,7 @@
 use core::marker::PhantomData;
 
 use super::scratch::{Coordinates, Scratch};
-use crate::color::{ShadingSpace, encode_srgb, unpack_rgb888};
+use crate::color::{ShadingSpace, unpack_rgb888};
 use crate::math::{Vec2, Vec3};
 use crate::pipeline::columns::{Column, Column3};
 use crate::pipeline::{BATCH_SIZE, Slopes, lanes};
@@ -296,11 +296,11 @@ pub(crate) fn metallic_roughness<F: Filter, W: Wrap>(
 }
 
 /// The shaded `colors` as a draw lit in `space` stores them: encoded from linear light to sRGB
-/// ([`encode_srgb`]), or as they are.
+/// ([`crate::color::encode_srgb`]), or as they are.
 #[inline(always)]
 pub(crate) fn stored(colors: &mut [Vec3], space: ShadingSpace) {
     if space == ShadingSpace::Linear {
-        colors.iter_mut().for_each(|c| *c = encode_srgb(*c));
+        colors.iter_mut().for_each(|c| *c = space.stored(*c));
     }
 }
 

@@ -201,6 +201,22 @@ impl<C: ColorBuffer, D: DepthBuffer, V: VertexMemory> Target<C, D, V> {
         self.depth.clear();
     }
 
+    /// As [`Self::clear`], each pixel (every sample of it) to `color(x, y)`, for column `x` and frame row `y`: a
+    /// background that changes over the frame (the environment seen through the camera, say). Colours are stored
+    /// as the colour buffer stores draws' colours (encoded, when they are in linear light, by the caller).
+    pub fn clear_with(&mut self, color: impl Fn(u32, u32) -> Vec3) {
+        self.depth.clear();
+        let count = self.samples.count();
+        let every = ((1u32 << count) - 1) as u8;
+        let mut first = 0;
+        for y in self.rows.clone() {
+            for x in 0..self.width {
+                self.color.write_samples(first, every, color(x, y));
+                first += count;
+            }
+        }
+    }
+
     /// This target's buffers lent to one draw with its geometry computed beforehand for the frame
     /// ([`FrameGeometry`]): the draw it was made for reads its vertices from its [`SharedScreenVertices`] (no
     /// position stage) and takes only the triangles its [`crate::pipeline::BandBins`] hold for the target's band; any

@@ -25,6 +25,7 @@ use super::schema::{
 use super::transform::object_transform;
 use super::validate::{BUILTIN_PREFIX, Checker, unit};
 use crate::builtin::builtin_model;
+use crate::environment::{EnvironmentChoice, EnvironmentLight};
 use crate::escaped::{Escaped, not_among, path_text};
 use crate::model::{Model, ModelOptions, TextureImage, load_model};
 
@@ -54,12 +55,13 @@ pub(crate) fn load_scene_file(file: &SceneFile) -> Result<SceneData, SceneFileEr
     }
     let background =
         spec.background.as_ref().and_then(|b| parse_hex_color(b.get_ref()).ok()).unwrap_or(defaults::BACKGROUND);
+    let environment = loader.environment(spec.environment.as_ref())?;
     let Loader { images, warnings, .. } = loader;
     let mut lights: Vec<SceneLight> = spec.lights.iter().map(|l| light(l.get_ref())).collect();
     if spec.viewer_lights {
         lights.extend(defaults::VIEWER_LIGHTS);
     }
-    Ok(SceneData {
+    let mut data = SceneData {
         camera: spec.camera.as_ref().map_or(CameraPlacement::Framed(FramedCamera::DEFAULT), |c| camera(c.get_ref())),
         lights,
         lights_of: None,
@@ -67,10 +69,15 @@ pub(crate) fn load_scene_file(file: &SceneFile) -> Result<SceneData, SceneFileEr
         background,
         ambient: vec3_or(&spec.ambient, defaults::AMBIENT),
         ambient_occlusion: spec.ambient_occlusion,
+        environment,
         space: if spec.linear_light { ShadingSpace::Linear } else { ShadingSpace::Encoded },
         images,
         warnings,
-    })
+    };
+    if spec.environment.is_none() && data.physically_based() {
+        data.environment = Some(EnvironmentLight::studio());
+    }
+    Ok(data)
 }
 
 fn camera(c: &CameraSpec) -> CameraPlacement {
@@ -255,6 +262,27 @@ impl Loader<'_> {
                 Mipmaps::Anisotropic16 => MipFilter::Anisotropic(Anisotropy::X16),
             },
         })
+    }
+
+    /// The environment the file names (`environment`), made ready; without the key, `None` here (the caller gives
+    /// a physically based scene the studio).
+    fn environment(&mut self, spec: Option<&Spanned<String>>) -> Result<Option<Arc<EnvironmentLight>>, SceneFileError> {
+        let Some(spec) = spec else { return Ok(None) };
+        let choice = EnvironmentChoice::parse(spec.get_ref(), self.base);
+        let light = choice.light().map_err(|error| {
+            let location = self.checker.locate(&spec.span());
+            let path = match &choice {
+                EnvironmentChoice::File(path) => path.clone(),
+                _ => PathBuf::from(spec.get_ref()),
+            };
+            let kind = SceneFileErrorKind::Image { path, error: Box::new(error) };
+            SceneFileError::new(self.checker.file, Some(location), Some("environment".into()), kind)
+        })?;
+        if let Some(warning) = light.as_ref().and_then(|l| l.warning()) {
+            let location = self.checker.locate(&spec.span());
+            self.warnings.push(format!("{}:{location}: environment: {warning}", path_text(self.checker.file)));
+        }
+        Ok(light)
     }
 
     fn image(&mut self, spec: &Spanned<String>, key: &str, has_uvs: bool) -> Result<Arc<TextureImage>, SceneFileError> {

@@ -10,6 +10,7 @@ use rastty_core::shading::Falloff;
 use rastty_core::texture::{FilterMode, MipFilter, WrapMode};
 
 use super::schema::{LightSpace, NormalSpaceSpec};
+use crate::environment::EnvironmentLight;
 use crate::model::{self, Model, TextureImage};
 
 /// Everything a scene file describes, loaded and checked, ready for a renderer.
@@ -31,6 +32,9 @@ pub struct SceneData {
     pub ambient: Vec3,
     /// Whether ambient occlusion is wanted.
     pub ambient_occlusion: bool,
+    /// The light from every direction that metallic-roughness surfaces reflect (the file's `environment`, or
+    /// the studio for a scene with a physically based material), made ready.
+    pub environment: Option<Arc<EnvironmentLight>>,
     /// How surfaces are lit: in linear light, or on the stored sRGB values (the file's `linear_light`). The
     /// colours here (background, ambient, lights, materials) are as written, sRGB-encoded; the plan decodes them
     /// for linear light.
@@ -227,6 +231,22 @@ impl SceneObject {
     /// ([`crate::model::ModelLight::scene_light`]); those the transform leaves no place or direction are left out.
     pub fn own_lights(&self) -> Vec<SceneLight> {
         self.model.lights.iter().filter_map(|light| light.scene_light(&self.transform)).collect()
+    }
+
+    /// Whether part `part` is physically based: its material gives a metallic factor or a roughness, the scene's
+    /// keys or its model's own (every glTF material does). Such a part is drawn with the metallic-roughness model
+    /// unless a front end asks for another ([`crate::scene_render::ShadingMode::Material`]).
+    pub fn physically_based(&self, part: usize) -> bool {
+        let mtl = self.model.part_material(part);
+        self.material.metallic_over(mtl).is_some() || self.material.roughness_over(mtl).is_some()
+    }
+}
+
+impl SceneData {
+    /// Whether any part of any object is physically based ([`SceneObject::physically_based`]): such a scene gets
+    /// the studio environment unless it names another.
+    pub fn physically_based(&self) -> bool {
+        self.objects.iter().any(|o| (0..o.model.parts.len()).any(|part| o.physically_based(part)))
     }
 }
 

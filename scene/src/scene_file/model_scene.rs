@@ -8,6 +8,7 @@ use rastty_core::color::ShadingSpace;
 
 use super::defaults::{AMBIENT, BACKGROUND, VIEWER_LIGHTS};
 use super::loaded::{CameraPlacement, FramedCamera, ObjectMaterial, SceneData, SceneObject};
+use crate::environment::EnvironmentLight;
 use crate::model::Model;
 #[cfg(doc)]
 use crate::model::ModelLight;
@@ -18,7 +19,8 @@ impl SceneData {
     /// ([`FramedCamera::DEFAULT`]), ambient light and background; the model's own lights, fitted with it
     /// ([`SceneObject::own_lights`], [`ModelLight::scene_light`]; [`Self::lights_of`] is then `Some(0)`), or the
     /// viewer's ([`VIEWER_LIGHTS`], which follow the camera) for a model
-    /// that has none; linear light; no ambient occlusion. The model keeps its warnings ([`Model::warnings`]).
+    /// that has none; linear light; no ambient occlusion; the built-in studio environment when a material is
+    /// physically based ([`Self::physically_based`]). The model keeps its warnings ([`Model::warnings`]).
     pub fn from_model(model: Model, mesh_path: PathBuf) -> Self {
         let transform = model.fit();
         let object = SceneObject {
@@ -33,7 +35,7 @@ impl SceneData {
         } else {
             (object.own_lights(), Some(0))
         };
-        Self {
+        let mut data = Self {
             camera: CameraPlacement::Framed(FramedCamera::DEFAULT),
             lights,
             lights_of,
@@ -41,9 +43,12 @@ impl SceneData {
             background: BACKGROUND,
             ambient: AMBIENT,
             ambient_occlusion: false,
+            environment: None,
             space: ShadingSpace::Linear,
             images: Vec::new(),
             warnings: Vec::new(),
-        }
+        };
+        data.environment = data.physically_based().then(EnvironmentLight::studio);
+        data
     }
 }

@@ -25,6 +25,11 @@ pub struct SceneSpec {
     /// `ambient = [r, g, b]`: light reaching every surface from every direction, each component finite and not
     /// negative. Optional; the viewer's ambient light ([`super::defaults::AMBIENT`]) when absent.
     pub ambient: Option<Spanned<Triple>>,
+    /// `environment = "studio"|"none"|"FILE"`: the light from every direction that metallic-roughness surfaces
+    /// reflect: the built-in studio, none, or an equirectangular image (Radiance `.hdr`, PNG or JPEG, twice as wide
+    /// as tall), its path relative to the scene file. Optional; the studio when an object's material is
+    /// physically based (a glTF model's, or one that gives `metallic` or `roughness`), else none.
+    pub environment: Option<Spanned<String>>,
     /// `ambient_occlusion = true|false`: darken creases and contact areas. Default `false`.
     #[serde(default)]
     pub ambient_occlusion: bool,

@@ -142,6 +142,7 @@ pub(crate) fn validate(c: &Checker<'_>, scene: &SceneSpec) -> Result<(), SceneFi
     if let Some(ambient) = &scene.ambient {
         c.not_negative3(ambient, "ambient")?;
     }
+    c.path(&scene.environment, "environment", "an environment (studio, none, or an image file)")?;
     if let Some(spec) = &scene.camera {
         camera(c, spec)?;
     }

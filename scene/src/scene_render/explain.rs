@@ -42,7 +42,7 @@ impl fmt::Display for ScenePlan {
             },
             ShortTriple(self.ambient)
         )?;
-        if self.lights.is_empty() && self.dropped_lights.is_empty() {
+        if self.lights.is_empty() && self.dropped_lights.is_empty() && self.environment.is_none() {
             writeln!(f, "lights: none (ambient light only)")?;
         } else {
             writeln!(f, "lights:")?;
@@ -68,6 +68,19 @@ impl fmt::Display for ScenePlan {
             };
             let (name, color) = (self.light_name(light), ShortTriple(light.color));
             writeln!(f, "  {name}: colour {color}{falloff}{cone}{shadows}")?;
+        }
+        if let Some(environment) = &self.environment {
+            let turn = match ShortNumber(environment.turn.to_degrees()).to_string().as_str() {
+                "0" => String::new(),
+                degrees => format!(", turned {degrees} degrees"),
+            };
+            let background = if environment.background { ", shown behind the objects" } else { "" };
+            let readers = self.draws.iter().filter(|d| d.variant.environment).count();
+            let reflected = match readers {
+                0 => "reflected by no draw (no metallic-roughness surface)".to_owned(),
+                n => format!("reflected by {n} metallic-roughness draw{}", if n == 1 { "" } else { "s" }),
+            };
+            writeln!(f, "  environment {}{turn}{background}: {reflected}", environment.description)?;
         }
         for light in &self.dropped_lights {
             let why = if light.source.intensity == 0.0 { "intensity 0" } else { "black colour" };

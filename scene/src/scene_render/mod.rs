@@ -99,8 +99,8 @@ pub use lights::{DroppedLight, PlannedLight, core_light};
 pub use material::{part_material, part_state};
 pub use orbit::Orbit;
 pub use plan::{
-    AMBIENT_OCCLUSION, MAX_CUBE_FACE, MAX_SHADOW_MAP, MIN_SHADOW_MAP, PCF_RADIUS, PlannedDraw, ScenePlan, ShadowPass,
-    shadow_map_size,
+    AMBIENT_OCCLUSION, MAX_CUBE_FACE, MAX_SHADOW_MAP, MIN_SHADOW_MAP, PCF_RADIUS, PlannedDraw, PlannedEnvironment,
+    ScenePlan, ShadowPass, shadow_map_size,
 };
 pub use prepared::PreparedScene;
 pub use render::{BAND_PIXELS, BANDS_PER_THREAD, FrameReport, SceneRenderer, ShadowPassReport};

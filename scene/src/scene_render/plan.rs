@@ -65,6 +65,17 @@ impl ShadowPass {
     }
 }
 
+/// The environment light of a frame.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlannedEnvironment {
+    /// The environment as `--explain` names it ([`crate::environment::EnvironmentLight`]'s `Display`, escaped).
+    pub description: String,
+    /// Its turn about the vertical axis, in radians ([`PlanOptions::environment_turn`]).
+    pub turn: f32,
+    /// Shown behind the objects instead of the background colour.
+    pub background: bool,
+}
+
 /// One draw of the forward pass: a part of an object's model.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PlannedDraw {
@@ -113,6 +124,8 @@ pub struct ScenePlan {
     pub wireframe: bool,
     /// The ambient occlusion step after the forward pass, when the scene asks for it and the effect is on.
     pub ambient_occlusion: Option<AmbientOcclusion>,
+    /// The environment light, when the scene has one and the effect is on.
+    pub environment: Option<PlannedEnvironment>,
     /// The diffuse textures are used.
     pub textures: bool,
     /// The effects allowed when the plan was made.
@@ -211,6 +224,13 @@ impl ScenePlan {
             wireframe: options.wireframe,
             ambient_occlusion: (data.ambient_occlusion && options.effects.ambient_occlusion)
                 .then_some(AmbientOcclusion { space: data.space, ..AMBIENT_OCCLUSION }),
+            environment: data.environment.as_ref().filter(|_| options.effects.environment).map(|light| {
+                PlannedEnvironment {
+                    description: light.to_string(),
+                    turn: options.environment_turn,
+                    background: options.environment_background,
+                }
+            }),
             textures: options.textures,
             options: *options,
         };
@@ -234,7 +254,7 @@ impl ScenePlan {
 
     /// The forward pass's draws, with their variants resolved for the planned lights.
     fn plan_draws(&self, scene: &PreparedScene, camera: &SceneCamera) -> Result<Vec<PlannedDraw>, SceneRenderError> {
-        let shading = self.options.shading.model(self.depth_range(camera));
+        let depth_range = self.depth_range(camera);
         let lights: Vec<LightUse> = self
             .lights
             .iter()
@@ -243,6 +263,7 @@ impl ScenePlan {
                 environment: false,
                 shadow_pcf: l.shadow_pass.map(|p| self.shadow_passes[p].pcf_radius),
             })
+            .chain(self.environment.as_ref().map(|_| LightUse::ENVIRONMENT))
             .collect();
         let mut draws = Vec::new();
         for (index, object) in scene.data().objects.iter().enumerate() {
@@ -257,6 +278,7 @@ impl ScenePlan {
                 let material = part_material(object, maps, part_index, self.space, &self.options)
                     .map_err(|error| SceneRenderError::Texture { draw: label.clone(), error })?;
                 let tangents = tangents_for(scene, index, &material);
+                let shading = self.options.shading.model(depth_range, object.physically_based(part_index));
                 let object = Object { mesh, tangents, transforms, shading, material };
                 let state = part_state(&scene.data().objects[index], part_index);
                 let variant = Variant::resolve(&object, lights.iter().copied(), self.space, &state)

@@ -6,7 +6,8 @@ use std::ops::Range;
 use std::thread;
 use std::time::{Duration, Instant};
 
-use rastty_core::math::Vec3;
+use rastty_core::environment::Environment;
+use rastty_core::math::{Mat4, Vec3, Vec4};
 use rastty_core::mesh::Mesh;
 use rastty_core::pipeline::{Bands, DrawStats, LineStyle, MAX_BINNED_BANDS, draw_wireframe};
 use rastty_core::shading::{Light, Lighting, Object, ShadingError, Variant, draw_mesh};
@@ -20,7 +21,7 @@ use super::frame_geometry::{DrawGeometry, GeometryMemory};
 use super::material::part_material;
 use super::plan::{PlannedDraw, ShadowPass, tangents_for};
 use super::workers::Workers;
-use super::{PreparedScene, ScenePlan, SceneRenderError};
+use super::{PlannedCamera, PreparedScene, ScenePlan, SceneRenderError};
 use crate::scene_file::SceneObject;
 
 /// Wireframe lines (`--wireframe`, the viewer's `x` key): a pale cyan drawn just in front of the surface.
@@ -262,7 +263,9 @@ impl SceneRenderer {
 
         let start = Instant::now();
         let sources = Self::light_sources(&self.slots, plan)?;
-        let lights = Lighting { ambient: plan.ambient, lights: &sources, environment: None, space: plan.space };
+        let environment = scene_environment(scene, plan);
+        let lights =
+            Lighting { ambient: plan.ambient, lights: &sources, environment: environment.as_ref(), space: plan.space };
         let (color, depth) = target.buffers_mut();
         let (pixels, depth) = (&mut *color.0, &mut **depth);
         let samples = self.samples.bands(plan.samples(), width, rows.clone(), band_rows);
@@ -458,6 +461,41 @@ fn planned_mesh<'a>(
     Ok((object, mesh))
 }
 
+/// The scene's environment as the plan turns it, when the plan has one.
+fn scene_environment<'a>(scene: &'a PreparedScene, plan: &ScenePlan) -> Option<Environment<'a>> {
+    let planned = plan.environment.as_ref()?;
+    Some(scene.data().environment.as_ref()?.environment().turned(planned.turn))
+}
+
+/// The directions of the rays through a frame's pixel centres, from the camera's matrices.
+struct CameraRays {
+    /// Clip space to world space.
+    world_from_clip: Mat4,
+    size: (f32, f32),
+}
+
+impl CameraRays {
+    fn new(camera: &PlannedCamera, width: u32, height: u32) -> Self {
+        let clip_from_world = camera.projection * camera.view;
+        Self {
+            world_from_clip: clip_from_world.inverse().unwrap_or(Mat4::IDENTITY),
+            size: (width as f32, height as f32),
+        }
+    }
+
+    /// The unit direction through the centre of pixel `(x, y)` (row 0 at the top): from the near plane's point to
+    /// the far plane's.
+    fn through(&self, x: u32, y: u32) -> Vec3 {
+        let ndc_x = (x as f32 + 0.5) / self.size.0 * 2.0 - 1.0;
+        let ndc_y = 1.0 - (y as f32 + 0.5) / self.size.1 * 2.0;
+        let point = |z: f32| {
+            let p = self.world_from_clip * Vec4::new(ndc_x, ndc_y, z, 1.0);
+            p.truncate() * (1.0 / p.w)
+        };
+        (point(1.0) - point(-1.0)).normalize_or_zero()
+    }
+}
+
 /// The forward pass over one band: clears it to the background and draws every planned part into it, each lent its
 /// geometry for the frame (so with the triangles binned into the band); into its samples when the plan multisamples,
 /// then averaged into its pixels, each pixel's depth its nearest sample's.
@@ -494,7 +532,13 @@ fn draw_band(
     (width, height): (u32, u32),
 ) -> Result<BandResult, SceneRenderError> {
     let mut band = Target::multisampled(Rgb888(colors), depths, width, height, rows, samples)?;
-    band.clear(plan.background);
+    match lights.environment.filter(|_| plan.environment.as_ref().is_some_and(|e| e.background)) {
+        Some(environment) => {
+            let rays = CameraRays::new(&plan.camera, width, height);
+            band.clear_with(|x, y| plan.space.stored(environment.radiance(rays.through(x, y))));
+        }
+        None => band.clear(plan.background),
+    }
     let mut result = BandResult { fragments: 0, variants: Vec::with_capacity(plan.draws.len()) };
     for (draw, geometry) in plan.draws.iter().zip(geometry) {
         let (object, mesh) = planned_mesh(scene, draw)?;

@@ -2,18 +2,21 @@
 
 use rastty_core::shading::ShadingModel;
 
-/// The shading modes offered to users. A scene's surfaces are lit per pixel ([`Self::Phong`]) unless a front end
-/// asks for another mode; the mode applies to every object.
+/// The shading modes offered to users. Each surface is shaded as its material says ([`Self::Material`]) unless a
+/// front end asks for another mode, which then applies to every object.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum ShadingMode {
+    /// Each part by its material: glTF's metallic-roughness model for a physically based one
+    /// ([`crate::scene_file::SceneObject::physically_based`]), per-pixel Blinn-Phong for the others.
+    #[default]
+    Material,
     /// Colours and textures, no lighting.
     Unlit,
     /// Lit once per triangle.
     Flat,
     /// Lit per vertex.
     Gouraud,
-    /// Lit per pixel.
-    #[default]
+    /// Lit per pixel by the Blinn-Phong model.
     Phong,
     /// Lit per pixel by glTF's metallic-roughness model.
     MetallicRoughness,
@@ -25,12 +28,21 @@ pub enum ShadingMode {
 
 impl ShadingMode {
     /// All modes, in the viewer's cycling order.
-    pub const ALL: [Self; 7] =
-        [Self::Unlit, Self::Flat, Self::Gouraud, Self::Phong, Self::MetallicRoughness, Self::Depth, Self::Normals];
+    pub const ALL: [Self; 8] = [
+        Self::Material,
+        Self::Unlit,
+        Self::Flat,
+        Self::Gouraud,
+        Self::Phong,
+        Self::MetallicRoughness,
+        Self::Depth,
+        Self::Normals,
+    ];
 
     /// The mode's name as given on the command line.
     pub fn name(self) -> &'static str {
         match self {
+            Self::Material => "material",
             Self::Unlit => "unlit",
             Self::Flat => "flat",
             Self::Gouraud => "gouraud",
@@ -60,9 +72,12 @@ impl std::str::FromStr for ShadingMode {
 }
 
 impl ShadingMode {
-    /// The core's shading model for this mode; the depth view maps the NDC depths `near` (white) to `far` (black).
-    pub fn model(self, (near, far): (f32, f32)) -> ShadingModel {
+    /// The core's shading model for this mode, for a part that is `physically_based` or not; the depth view maps
+    /// the NDC depths `near` (white) to `far` (black).
+    pub fn model(self, (near, far): (f32, f32), physically_based: bool) -> ShadingModel {
         match self {
+            Self::Material if physically_based => ShadingModel::MetallicRoughness,
+            Self::Material => ShadingModel::Phong,
             Self::Unlit => ShadingModel::Unlit,
             Self::Flat => ShadingModel::Flat,
             Self::Gouraud => ShadingModel::Gouraud,

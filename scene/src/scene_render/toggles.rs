@@ -18,12 +18,14 @@ pub enum SceneEffect {
     Shadows,
     /// Ambient occlusion: the pass after the forward pass, and the occlusion maps of models (glTF).
     AmbientOcclusion,
+    /// Environment light, which metallic-roughness surfaces reflect.
+    Environment,
 }
 
 impl SceneEffect {
-    /// Every effect, in the order of the viewer's keys `1` to `5`.
-    pub const ALL: [Self; 5] =
-        [Self::NormalMaps, Self::Specular, Self::GlowMaps, Self::Shadows, Self::AmbientOcclusion];
+    /// Every effect, in the order of the viewer's keys `1` to `6`.
+    pub const ALL: [Self; 6] =
+        [Self::NormalMaps, Self::Specular, Self::GlowMaps, Self::Shadows, Self::AmbientOcclusion, Self::Environment];
 
     /// Its name in messages and the viewer's HUD.
     pub fn name(self) -> &'static str {
@@ -33,6 +35,7 @@ impl SceneEffect {
             Self::GlowMaps => "glow maps",
             Self::Shadows => "shadows",
             Self::AmbientOcclusion => "ambient occlusion",
+            Self::Environment => "environment light",
         }
     }
 
@@ -44,10 +47,11 @@ impl SceneEffect {
             Self::GlowMaps => "glow-maps",
             Self::Shadows => "shadows",
             Self::AmbientOcclusion => "ambient-occlusion",
+            Self::Environment => "environment",
         }
     }
 
-    /// The viewer's key for it: `'1'` to `'5'`.
+    /// The viewer's key for it: `'1'` to `'6'`.
     pub fn key(self) -> char {
         match self {
             Self::NormalMaps => '1',
@@ -55,10 +59,11 @@ impl SceneEffect {
             Self::GlowMaps => '3',
             Self::Shadows => '4',
             Self::AmbientOcclusion => '5',
+            Self::Environment => '6',
         }
     }
 
-    /// The effect of a viewer key, if it is one of `'1'` to `'5'`.
+    /// The effect of a viewer key, if it is one of `'1'` to `'6'`.
     pub fn from_key(key: char) -> Option<Self> {
         Self::ALL.into_iter().find(|e| e.key() == key)
     }
@@ -91,12 +96,20 @@ pub struct EffectToggles {
     pub shadows: bool,
     /// Ambient occlusion: its pass and occlusion maps.
     pub ambient_occlusion: bool,
+    /// Environment light.
+    pub environment: bool,
 }
 
 impl EffectToggles {
     /// Everything on: the scene as written.
-    pub const ALL_ON: Self =
-        Self { normal_maps: true, specular: true, glow_maps: true, shadows: true, ambient_occlusion: true };
+    pub const ALL_ON: Self = Self {
+        normal_maps: true,
+        specular: true,
+        glow_maps: true,
+        shadows: true,
+        ambient_occlusion: true,
+        environment: true,
+    };
 
     /// Whether `effect` is on.
     pub fn get(&self, effect: SceneEffect) -> bool {
@@ -106,6 +119,7 @@ impl EffectToggles {
             SceneEffect::GlowMaps => self.glow_maps,
             SceneEffect::Shadows => self.shadows,
             SceneEffect::AmbientOcclusion => self.ambient_occlusion,
+            SceneEffect::Environment => self.environment,
         }
     }
 
@@ -117,6 +131,7 @@ impl EffectToggles {
             SceneEffect::GlowMaps => &mut self.glow_maps,
             SceneEffect::Shadows => &mut self.shadows,
             SceneEffect::AmbientOcclusion => &mut self.ambient_occlusion,
+            SceneEffect::Environment => &mut self.environment,
         };
         *flag = on;
     }
@@ -146,7 +161,7 @@ impl Default for EffectToggles {
 /// Everything a front end chooses about a scene's frame besides the camera and the size.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PlanOptions {
-    /// How every object is shaded.
+    /// How objects are shaded: each by its material ([`ShadingMode::Material`]), or every one alike.
     pub shading: ShadingMode,
     /// The effects allowed.
     pub effects: EffectToggles,
@@ -158,19 +173,25 @@ pub struct PlanOptions {
     pub background: Option<Vec3>,
     /// Four samples per pixel (multisample anti-aliasing): smooth edges, each pixel still shaded once per triangle.
     pub multisample: bool,
+    /// How far the environment is turned about the vertical axis, in radians (counter-clockwise seen from above).
+    pub environment_turn: f32,
+    /// The environment shown behind the objects instead of the background colour (when the scene has one).
+    pub environment_background: bool,
 }
 
 impl Default for PlanOptions {
-    /// The scene as written: lit per pixel, every effect, textures, no wireframe, the scene's background, one
-    /// sample per pixel.
+    /// The scene as written: each object shaded by its material, every effect, textures, no wireframe, the
+    /// scene's background colour, one sample per pixel, the environment not turned.
     fn default() -> Self {
         Self {
-            shading: ShadingMode::Phong,
+            shading: ShadingMode::Material,
             effects: EffectToggles::ALL_ON,
             textures: true,
             wireframe: false,
             background: None,
             multisample: false,
+            environment_turn: 0.0,
+            environment_background: false,
         }
     }
 }
@@ -182,11 +203,11 @@ mod tests {
     #[test]
     fn keys_one_to_five_name_each_effect_once() {
         let keys: String = SceneEffect::ALL.iter().map(|e| e.key()).collect();
-        assert_eq!(keys, "12345");
+        assert_eq!(keys, "123456");
         for effect in SceneEffect::ALL {
             assert_eq!(SceneEffect::from_key(effect.key()), Some(effect));
         }
-        assert_eq!(SceneEffect::from_key('6'), None);
+        assert_eq!(SceneEffect::from_key('7'), None);
         for effect in SceneEffect::ALL {
             assert_eq!(effect.option_name().parse(), Ok(effect));
         }

@@ -36,6 +36,10 @@ pub enum Action {
     ToggleWireframe,
     /// Multisample anti-aliasing on / off.
     ToggleMultisample,
+    /// Turn the environment about the vertical axis by one step (+1 counter-clockwise seen from above, -1 back).
+    TurnEnvironment(i32),
+    /// The environment shown behind the objects, or the background colour.
+    ToggleEnvironmentBackground,
     /// Turntable rotation on / off.
     ToggleTurntable,
     /// Play / pause the animation.
@@ -70,7 +74,9 @@ pub const HELP: &[&str] = &[
     "x                     wireframe",
     "e                     smooth edges (4x MSAA)",
     "1 2 3                 normal maps, specular, glow",
-    "4 5                   shadows, ambient occlusion",
+    "4 5 6                 shadows, ambient occlusion, environment",
+    "v V                   turn the environment",
+    "b                     environment as background",
     "space                 turntable",
     "o                     play / pause animation",
     ", .                   previous / next animation",
@@ -113,10 +119,13 @@ fn key_action(key: Key) -> Option<Action> {
         Key::Char('r') => Some(Action::Reset),
         Key::Char('p') => Some(Action::ToggleProjection),
         Key::Char('m') => Some(Action::CycleShading),
-        Key::Char(c @ '1'..='5') => SceneEffect::from_key(c).map(Action::ToggleEffect),
+        Key::Char(c @ '1'..='6') => SceneEffect::from_key(c).map(Action::ToggleEffect),
         Key::Char('t') => Some(Action::ToggleTexture),
         Key::Char('x') => Some(Action::ToggleWireframe),
         Key::Char('e') => Some(Action::ToggleMultisample),
+        Key::Char('v') => Some(Action::TurnEnvironment(1)),
+        Key::Char('V') => Some(Action::TurnEnvironment(-1)),
+        Key::Char('b') => Some(Action::ToggleEnvironmentBackground),
         Key::Char(' ') => Some(Action::ToggleTurntable),
         Key::Char('o') => Some(Action::TogglePlayback),
         Key::Char('.') => Some(Action::StepAnimation(1)),

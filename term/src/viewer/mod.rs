@@ -7,7 +7,7 @@
 //!
 //! A model and a scene file are both a scene ([`rastty_scene::scene_file::open`]) drawn by [`rastty_scene::scene_render`]: each
 //! frame is planned from the orbited camera, the shading mode (key `m`) and the effects switched on (keys `1` to
-//! `5`), so a switched-off effect is not computed, and the shadow maps are kept from frame to frame (they do not
+//! `6`), so a switched-off effect is not computed, and the shadow maps are kept from frame to frame (they do not
 //! depend on the camera).
 
 mod capture;

@@ -14,6 +14,8 @@ const ZOOM_FACTOR: f32 = 1.12;
 pub const TURNTABLE_DEGREES_PER_SECOND: f32 = 40.0;
 /// The slowest and fastest an animation plays, times its own speed (`<` halves it, `>` doubles it).
 const SPEEDS: (f32, f32) = (1.0 / 16.0, 16.0);
+/// Degrees the environment turns per press of `v` or `V`.
+const ENVIRONMENT_STEP_DEGREES: f32 = 30.0;
 
 /// An animation of the scene, playing or paused.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -144,6 +146,13 @@ impl ViewerState {
             Action::ToggleTexture => self.options.textures = !self.options.textures,
             Action::ToggleWireframe => self.options.wireframe = !self.options.wireframe,
             Action::ToggleMultisample => self.options.multisample = !self.options.multisample,
+            Action::TurnEnvironment(step) => {
+                let turn = self.options.environment_turn + step as f32 * ENVIRONMENT_STEP_DEGREES.to_radians();
+                self.options.environment_turn = turn.rem_euclid(core::f32::consts::TAU);
+            }
+            Action::ToggleEnvironmentBackground => {
+                self.options.environment_background = !self.options.environment_background;
+            }
             Action::ToggleTurntable => self.turntable = !self.turntable,
             Action::TogglePlayback => {
                 let Some(p) = &mut self.playback else { return Effect::None };
@@ -233,12 +242,32 @@ mod tests {
     #[test]
     fn m_cycles_the_shading_mode_of_every_object() {
         let mut state = state();
-        assert_eq!(state.options.shading, ShadingMode::Phong);
+        assert_eq!(state.options.shading, ShadingMode::Material);
         assert_eq!(state.apply(Action::CycleShading), Effect::Redraw);
-        assert_eq!(state.options.shading, ShadingMode::MetallicRoughness);
+        assert_eq!(state.options.shading, ShadingMode::Unlit);
         for _ in 1..ShadingMode::ALL.len() {
             state.apply(Action::CycleShading);
         }
-        assert_eq!(state.options.shading, ShadingMode::Phong, "the cycle has every mode once");
+        assert_eq!(state.options.shading, ShadingMode::Material, "the cycle has every mode once");
+    }
+
+    #[test]
+    fn v_turns_the_environment_and_b_shows_it_behind() {
+        let mut state = state();
+        assert_eq!(state.options.environment_turn, 0.0);
+        assert_eq!(state.apply(Action::TurnEnvironment(1)), Effect::Redraw);
+        assert!((state.options.environment_turn - 30f32.to_radians()).abs() < 1e-6);
+        state.apply(Action::TurnEnvironment(-1));
+        state.apply(Action::TurnEnvironment(-1));
+        // Kept within one turn.
+        assert!((state.options.environment_turn - 330f32.to_radians()).abs() < 1e-5);
+        assert!(!state.options.environment_background);
+        state.apply(Action::ToggleEnvironmentBackground);
+        assert!(state.options.environment_background);
+        state.apply(Action::ToggleEffect(SceneEffect::Environment));
+        assert!(!state.options.effects.environment);
+        // Reset brings the environment back to where it started.
+        state.apply(Action::Reset);
+        assert_eq!((state.options.environment_turn, state.options.environment_background), (0.0, false));
     }
 }

@@ -95,6 +95,7 @@ impl ThreadedRenderer {
             background: Vec3::ZERO,
             ambient: Vec3::splat(AMBIENT),
             ambient_occlusion: false,
+            environment: None,
             // The peers light the stored sRGB values.
             space: ShadingSpace::Encoded,
             images: Vec::new(),
