@@ -451,7 +451,10 @@ fn a_flat_quad_facing_the_light_is_lit_exactly() {
 
     // With a highlight, at each pixel centre: h = normalize(l + v), v toward the eye at (0, 0, 1).
     let specular = [0.3, 0.2, 0.1];
-    let lit = ReferenceObject { material: ReferenceMaterial { color: albedo, specular, shininess: 20.0 }, ..quad };
+    let lit = ReferenceObject {
+        material: ReferenceMaterial { color: albedo, specular, shininess: 20.0, ..ReferenceMaterial::default() },
+        ..quad
+    };
     let scene = ReferenceScene { objects: vec![lit], ..scene };
     let renderer = Renderer::new(&scene).unwrap();
     for (x, y) in [(0.5, 0.5), (2.5, 1.5), (3.5, 3.5)] {

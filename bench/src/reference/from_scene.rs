@@ -221,6 +221,8 @@ impl ReferenceScene {
                     color: widen(material.color),
                     specular: widen(material.specular),
                     shininess: f64::from(material.shininess),
+                    metallic: f64::from(material.metallic),
+                    roughness: f64::from(material.roughness),
                 },
                 texture,
                 wrap: material.wrap,
@@ -235,6 +237,8 @@ impl ReferenceScene {
             lighting: ReferenceLighting { ambient: widen(plan.ambient), lights },
             background: widen(plan.background),
             objects,
+            // The plan has no metallic-roughness draw (refused above): nothing would reflect an environment.
+            environment: None,
             space: plan.space,
         })
     }

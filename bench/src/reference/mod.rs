@@ -38,6 +38,11 @@
 //! `albedo * (ambient + sum c s max(0, n.l)) + specular * sum over lights with n.l > 0 of c s max(0, n.h)^shininess`,
 //! `h = normalize(l + v)`, `v = normalize(eye - p)`, `l` toward the light and `s` the share of it arriving (1 for a
 //! directional light; the fall-off and cone of a point or spot light, [`ReferenceLight::toward`]).
+//! [`Shading::MetallicRoughness`] is glTF's BRDF (single scattering, as rastty's `shading::brdf`) with Kulla and
+//! Conty's multiple-scattering lobe, lit by the lights, the ambient light and the scene's
+//! [`ReferenceEnvironment`], whose light is integrated over the BRDF by [`ENVIRONMENT_SAMPLES`] directions per
+//! sample drawn from the GGX lobe, the cosine lobe and the environment's brightness (multiple importance
+//! sampling): no spherical harmonics, prefiltering or table.
 //!
 //! # Use
 //!
@@ -71,6 +76,7 @@
 mod from_scene;
 mod image;
 pub mod math;
+mod metallic_roughness;
 mod render;
 pub mod srgb;
 mod texture;
@@ -83,6 +89,7 @@ use rastty_core::pipeline::Cull;
 use rastty_core::texture::WrapMode;
 
 pub use image::ReferenceImage;
+pub use metallic_roughness::ReferenceEnvironment;
 pub use render::{Probe, Renderer, SAMPLES_PER_AXIS, render};
 pub use texture::sample_bilinear;
 
@@ -105,6 +112,8 @@ pub struct ReferenceScene {
     pub background: [f64; 3],
     /// The objects, in drawing order (which only matters for exact depth ties).
     pub objects: Vec<ReferenceObject>,
+    /// The light from every direction that [`Shading::MetallicRoughness`] objects reflect, if any.
+    pub environment: Option<ReferenceEnvironment>,
     /// How the truth is lit, as rastty's [`ShadingSpace`]: in linear light (texels decoded before filtering,
     /// light added up, the samples' light averaged and encoded) or on the stored values.
     pub space: ShadingSpace,
@@ -120,6 +129,7 @@ impl ReferenceScene {
             lighting: ReferenceLighting::default(),
             background: [0.0; 3],
             objects: Vec::new(),
+            environment: None,
             space: ShadingSpace::Linear,
         }
     }
@@ -247,12 +257,16 @@ pub struct ReferenceMaterial {
     pub specular: [f64; 3],
     /// Blinn-Phong exponent.
     pub shininess: f64,
+    /// How much of a metal the surface is, 0 to 1 ([`Shading::MetallicRoughness`] only).
+    pub metallic: f64,
+    /// Perceptual roughness, 0 to 1 ([`Shading::MetallicRoughness`] only).
+    pub roughness: f64,
 }
 
 impl Default for ReferenceMaterial {
-    /// The core's default material: grey 0.8, no highlights, shininess 32.
+    /// The core's default material: grey 0.8, no highlights, shininess 32; a dielectric of roughness 1.
     fn default() -> Self {
-        Self { color: [0.8; 3], specular: [0.0; 3], shininess: 32.0 }
+        Self { color: [0.8; 3], specular: [0.0; 3], shininess: 32.0, metallic: 0.0, roughness: 1.0 }
     }
 }
 
@@ -265,7 +279,16 @@ pub enum Shading {
     /// the object has no normals).
     #[default]
     Lit,
+    /// glTF's metallic-roughness BRDF with a multiple-scattering lobe, lit by the lights (the BRDF times pi, as
+    /// rastty's), the ambient light (times the diffuse colour) and the environment, integrated by
+    /// [`ENVIRONMENT_SAMPLES`] directions per sample (see `metallic_roughness.rs`).
+    MetallicRoughness,
 }
+
+/// Directions of the environment integrated per sample of a [`Shading::MetallicRoughness`] surface: with the
+/// 256 samples of a pixel, 16,384 a pixel. On the accuracy report's spheres (320x240) 16 a sample left noise that
+/// cost the comparison 0.6 dB of PSNR inside the spheres; 64 take 70 s on 2 cores.
+pub const ENVIRONMENT_SAMPLES: u32 = 64;
 
 /// A triangle mesh with its transform, material and texture.
 #[derive(Clone, Debug, PartialEq)]

@@ -1,5 +1,6 @@
 //! Visibility and shading of samples: the prepared scene, binning, tiles, threads.
 
+use std::f64::consts::PI;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use rastty_core::camera::CameraError;
@@ -8,9 +9,12 @@ use rastty_core::pipeline::Cull;
 use rastty_core::target::MAX_DIMENSION;
 
 use super::math::{self, V3};
+use super::metallic_roughness::{EnvironmentSampler, Surface, WhiteAlbedo, alpha_of, random_numbers};
 use super::srgb;
 use super::texture::sample_bilinear;
-use super::{Camera, ReferenceError, ReferenceImage, ReferenceProjection, ReferenceScene, Shading};
+use super::{
+    Camera, ENVIRONMENT_SAMPLES, ReferenceError, ReferenceImage, ReferenceProjection, ReferenceScene, Shading,
+};
 
 /// Samples per pixel along each axis: a regular 16x16 grid, 256 samples per pixel.
 pub const SAMPLES_PER_AXIS: u32 = 16;
@@ -126,6 +130,10 @@ pub struct Renderer<'a> {
     tiles_x: u32,
     tiles_y: u32,
     bins: Vec<Vec<u32>>,
+    /// Per object: the white albedo of its roughness, for a [`Shading::MetallicRoughness`] object.
+    albedos: Vec<Option<WhiteAlbedo>>,
+    /// Directions drawn in proportion to the environment's light, when the scene has one.
+    sampler: Option<EnvironmentSampler>,
 }
 
 /// Renders `scene`: 16x16 samples per pixel, averaged (see the [module documentation](super)).
@@ -276,6 +284,14 @@ impl<'a> Renderer<'a> {
             tiles_x,
             tiles_y,
             bins: vec![Vec::new(); (tiles_x * tiles_y) as usize],
+            albedos: scene
+                .objects
+                .iter()
+                .map(|o| {
+                    (o.shading == Shading::MetallicRoughness).then(|| WhiteAlbedo::new(alpha_of(o.material.roughness)))
+                })
+                .collect(),
+            sampler: scene.environment.as_ref().map(EnvironmentSampler::new),
         };
         for (index, object) in scene.objects.iter().enumerate() {
             r.add_object(index, object, &view);
@@ -331,7 +347,7 @@ impl<'a> Renderer<'a> {
             self.vertices.push(Vertex { world, normal, uv });
             view_positions.push(math::transform_point(view, world));
         }
-        let lit_normals = o.shading == Shading::Lit && o.normals.is_some();
+        let lit_normals = o.shading != Shading::Unlit && o.normals.is_some();
         for (index, t) in o.indices.chunks_exact(3).enumerate() {
             let idx = [t[0], t[1], t[2]];
             let v = idx.map(|i| view_positions[i as usize]);
@@ -540,7 +556,9 @@ impl<'a> Renderer<'a> {
                         } else {
                             hits += 1;
                             let tri = &self.tris[t as usize];
-                            self.shade(tri, tri.barycentric(sx[c], sy[r])).0
+                            // Each sample's own random numbers, from its place in the image.
+                            let seed = ((row0 + r as i64) as u64) << 32 | (col0 + c as i64) as u64;
+                            self.shade(tri, tri.barycentric(sx[c], sy[r]), seed).0
                         };
                     }
                 }
@@ -552,8 +570,9 @@ impl<'a> Renderer<'a> {
         out
     }
 
-    /// The colour (clamped), shading normal and texture coordinates at barycentric `b` of `tri`.
-    fn shade(&self, tri: &Tri, b: [f64; 3]) -> (V3, Option<V3>, Option<[f64; 2]>) {
+    /// The colour (clamped), shading normal and texture coordinates at barycentric `b` of `tri`; `seed` chooses the
+    /// directions a metallic-roughness surface integrates its environment over.
+    fn shade(&self, tri: &Tri, b: [f64; 3], seed: u64) -> (V3, Option<V3>, Option<[f64; 2]>) {
         let o = &self.scene.objects[tri.object as usize];
         let v = tri.vertices.map(|i| &self.vertices[i as usize]);
         let uv = o.uvs.as_ref().map(|_| {
@@ -575,7 +594,44 @@ impl<'a> Renderer<'a> {
                 let world = interpolate(v, b, |x| x.world);
                 (self.light(albedo, n, world, &o.material).clamp01(), Some(n), uv)
             }
+            Shading::MetallicRoughness => {
+                let n = if o.normals.is_some() {
+                    interpolate(v, b, |x| x.normal).normalize_or_zero()
+                } else {
+                    tri.face_normal
+                };
+                let world = interpolate(v, b, |x| x.world);
+                let albedo_table = self.albedos[tri.object as usize].as_ref();
+                let color = albedo_table.map_or(V3::ZERO, |table| {
+                    let surface = Surface {
+                        base: albedo,
+                        metallic: o.material.metallic,
+                        alpha: alpha_of(o.material.roughness),
+                        albedo: table,
+                    };
+                    self.metallic_roughness(&surface, n, world, seed)
+                });
+                (color.clamp01(), Some(n), uv)
+            }
         }
+    }
+
+    /// The light `surface` reflects at `world` of unit normal `n`: the ambient light times its diffuse colour, each
+    /// light's (the BRDF times pi), and the environment's.
+    fn metallic_roughness(&self, surface: &Surface<'_>, n: V3, world: V3, seed: u64) -> V3 {
+        let lighting = &self.scene.lighting;
+        let v = (self.eye - world).normalize_or_zero();
+        let diffuse = surface.base * (1.0 - surface.metallic.clamp(0.0, 1.0));
+        let mut light = V3::from_array(lighting.ambient).mul_elem(diffuse);
+        for source in &lighting.lights {
+            let (l, share) = source.toward(world.to_array());
+            light += surface.reflected(n, v, V3::from_array(l)).mul_elem(V3::from_array(source.color)) * (PI * share);
+        }
+        if let (Some(environment), Some(sampler)) = (&self.scene.environment, &self.sampler) {
+            let mut random = random_numbers(seed);
+            light += surface.environment_light(environment, sampler, n, v, ENVIRONMENT_SAMPLES, &mut random);
+        }
+        light
     }
 
     /// Blinn-Phong at a point with unit normal `n` (the core's `ReferenceLighting::diffuse` and `ReferenceLighting::specular`).
@@ -631,7 +687,8 @@ impl<'a> Renderer<'a> {
         let (depth, t) = best?;
         let tri = &self.tris[t as usize];
         let barycentric = tri.barycentric(sx, sy);
-        let (color, normal, uv) = self.shade(tri, barycentric);
+        let seed = (y * f64::from(N as u32)) as u64 ^ ((x * f64::from(N as u32)) as u64) << 32;
+        let (color, normal, uv) = self.shade(tri, barycentric, seed);
         let v = tri.vertices.map(|i| self.vertices[i as usize].world);
         let world = v[0] * barycentric[0] + v[1] * barycentric[1] + v[2] * barycentric[2];
         Some(Probe {

@@ -5,6 +5,10 @@ use std::time::{Duration, Instant};
 
 use rastty_core::camera::{CameraError, look_at, orthographic, perspective};
 use rastty_core::color::{ShadingSpace, linear_to_srgb};
+use rastty_core::environment::{
+    Environment, Irradiance, Panorama, PanoramaChain, PanoramaError, Prefiltering, SplitSum, detail_levels,
+    fill_levels_of_detail, prefilter,
+};
 use rastty_core::math::{Mat4, Vec2, Vec3, Vec4};
 use rastty_core::mesh::{Indices, Mesh, MeshError};
 use rastty_core::pipeline::DrawState;
@@ -16,7 +20,7 @@ use rastty_core::target::{
 };
 use rastty_core::texture::{MipContent, MipFilter};
 
-use super::settings::{DepthFormat, LitShading, Setting};
+use super::settings::{self, DepthFormat, LitShading, Setting};
 use crate::reference::{self, ReferenceLight, ReferenceProjection, ReferenceScene, Shading};
 
 /// Why a scene could not be drawn.
@@ -30,6 +34,8 @@ pub enum CoreRenderError {
     Draw(ShadingError),
     /// The image size is not usable.
     Target(TargetError),
+    /// The environment cannot be made ready.
+    Environment(PanoramaError),
 }
 
 /// A reference light as the core takes it.
@@ -55,6 +61,7 @@ impl std::fmt::Display for CoreRenderError {
             Self::Mesh(e) => write!(f, "mesh: {e}"),
             Self::Draw(e) => write!(f, "draw: {e}"),
             Self::Target(e) => write!(f, "target: {e}"),
+            Self::Environment(e) => write!(f, "environment: {e}"),
         }
     }
 }
@@ -69,6 +76,39 @@ struct CoreObject<'a> {
     source: &'a reference::ReferenceObject,
 }
 
+/// An environment made ready with one prefiltering: the buffers the core's [`Environment`] borrows, and how long
+/// making them took.
+pub struct PreparedEnvironment {
+    /// The prefiltering.
+    pub prefiltering: Prefiltering,
+    /// Time to make the levels of detail, the specular chain and the irradiance, on one thread.
+    pub time: Duration,
+    height: u32,
+    specular: Vec<Vec3>,
+    irradiance: Irradiance,
+}
+
+impl PreparedEnvironment {
+    /// `source` made ready as `prefiltering` says, on this thread, timed.
+    fn new(source: &Panorama<'_>, prefiltering: Prefiltering) -> Result<Self, PanoramaError> {
+        let start = Instant::now();
+        let height = prefiltering.height_for(source.height());
+        let lod_levels = detail_levels(height);
+        let mut lods = vec![Vec3::ZERO; PanoramaChain::texel_count(height, lod_levels)?];
+        fill_levels_of_detail(source, height, &mut lods)?;
+        let lods = PanoramaChain::new(height, lod_levels, &lods)?;
+        let mut specular = vec![Vec3::ZERO; PanoramaChain::texel_count(height, prefiltering.levels)?];
+        prefilter(&lods, &prefiltering, height, &mut specular)?;
+        let irradiance = Irradiance::of(&lods.level(0));
+        Ok(Self { prefiltering, time: start.elapsed(), height, specular, irradiance })
+    }
+
+    fn environment<'t>(&'t self, split_sum: &'t SplitSum) -> Result<Environment<'t>, PanoramaError> {
+        let chain = PanoramaChain::new(self.height, self.prefiltering.levels, &self.specular)?;
+        Ok(Environment::new(self.irradiance, chain, split_sum))
+    }
+}
+
 /// A reference scene converted once: meshes in `f32`, matrices from the core's own camera functions.
 pub struct CoreScene<'a> {
     scene: &'a ReferenceScene,
@@ -79,6 +119,9 @@ pub struct CoreScene<'a> {
     lights: Vec<Light<'static>>,
     /// The lights with their colours encoded ([`in_space`]).
     encoded_lights: Vec<Light<'static>>,
+    /// The scene's environment made ready with each prefiltering the settings name (none without one).
+    pub environments: Vec<PreparedEnvironment>,
+    split_sum: SplitSum,
 }
 
 /// A colour the scene gives in linear light as a draw lit in `space` takes it: as it is, or encoded to sRGB (what a
@@ -135,7 +178,18 @@ impl<'a> CoreScene<'a> {
             .collect();
         let encoded_lights =
             lights.iter().map(|l| Light { color: in_space(l.color, ShadingSpace::Encoded), ..*l }).collect();
-        Ok(Self { scene, objects, view, projection, lights, encoded_lights })
+        let mut environments: Vec<PreparedEnvironment> = Vec::new();
+        if let Some(e) = &scene.environment {
+            let texels: Vec<Vec3> = e.texels.iter().map(|&t| narrow(t)).collect();
+            let source = Panorama::new(e.width, e.height, &texels).map_err(CoreRenderError::Environment)?;
+            for setting in &settings::ALL {
+                if !environments.iter().any(|p| p.prefiltering == setting.prefiltering) {
+                    let prepared = PreparedEnvironment::new(&source, setting.prefiltering);
+                    environments.push(prepared.map_err(CoreRenderError::Environment)?);
+                }
+            }
+        }
+        Ok(Self { scene, objects, view, projection, lights, encoded_lights, environments, split_sum: SplitSum::new() })
     }
 
     /// Clears `target` and draws the scene with `setting` (its supersampling is the caller's business).
@@ -151,7 +205,11 @@ impl<'a> CoreScene<'a> {
         let space = setting.space;
         let ambient = in_space(narrow(self.scene.lighting.ambient), space);
         let lights = if space == ShadingSpace::Linear { &self.lights } else { &self.encoded_lights };
-        let lighting = Lighting { ambient, lights, environment: None, space };
+        let environment = match self.environments.iter().find(|p| p.prefiltering == setting.prefiltering) {
+            Some(prepared) => Some(prepared.environment(&self.split_sum).map_err(CoreRenderError::Environment)?),
+            None => None,
+        };
+        let lighting = Lighting { ambient, lights, environment: environment.as_ref(), space };
         for o in &self.objects {
             let src = o.source;
             let mut mesh = Mesh::new(&o.positions, Indices::U32(&src.indices)).map_err(CoreRenderError::Mesh)?;
@@ -163,6 +221,7 @@ impl<'a> CoreScene<'a> {
             }
             let shading = match (src.shading, setting.shading) {
                 (Shading::Unlit, _) => ShadingModel::Unlit,
+                (Shading::MetallicRoughness, _) => ShadingModel::MetallicRoughness,
                 (Shading::Lit, LitShading::Flat) => ShadingModel::Flat,
                 // Without normals the reference lights with the face normal, which is what flat shading does.
                 (Shading::Lit, _) if o.normals.is_none() => ShadingModel::Flat,
@@ -174,6 +233,8 @@ impl<'a> CoreScene<'a> {
                 color: in_space(narrow(m.color), space),
                 specular: in_space(narrow(m.specular), space),
                 shininess: m.shininess as f32,
+                metallic: m.metallic as f32,
+                roughness: m.roughness as f32,
                 diffuse: src.texture.as_ref().and_then(|t| match setting.mip_filter {
                     MipFilter::Off => t.texture().ok(),
                     _ => t.mipmapped(MipContent::Color).ok(),

@@ -9,6 +9,9 @@ use super::core_render::Rendered;
 pub struct Score {
     /// Peak signal-to-noise ratio over all channels of all pixels, in dB (infinite for an exact match).
     pub psnr: f64,
+    /// The same over the pixels that no edge crosses (the reference covers all or none of their samples): the
+    /// error of shading and texturing alone, without that of edges.
+    pub inside_psnr: f64,
     /// Largest difference of any channel, in 8-bit steps, from the reference rounded to 8 bits.
     pub max_error: u32,
     /// Pixels covered in one picture and not in the other: the pixel centre against the exact centre test for
@@ -38,5 +41,16 @@ pub fn score(reference: &ReferenceImage, rendered: &Rendered, sampled: bool) -> 
             }
         })
         .count();
-    Score { psnr, max_error, coverage_errors }
+    let inside: Vec<usize> =
+        (0..truth.len()).filter(|&i| reference.coverage[i] == 0.0 || reference.coverage[i] == 1.0).collect();
+    let squared: f64 = inside
+        .iter()
+        .map(|&i| {
+            let (c, p) = (reference.rgb[i], rendered.pixels[i]);
+            let ch = |shift: u32| f64::from((p >> shift) & 0xFF) / 255.0;
+            [c[0] - ch(16), c[1] - ch(8), c[2] - ch(0)].iter().map(|v| v * v).sum::<f64>()
+        })
+        .sum();
+    let inside_psnr = if squared > 0.0 { -10.0 * (squared / (3 * inside.len()) as f64).log10() } else { f64::INFINITY };
+    Score { psnr, inside_psnr, max_error, coverage_errors }
 }

@@ -5,8 +5,11 @@ use rastty_core::pipeline::Cull;
 use rastty_core::texture::WrapMode;
 
 use crate::reference::{
-    Camera, ReferenceLight, ReferenceLighting, ReferenceObject, ReferenceProjection, ReferenceScene, Shading, math,
+    Camera, ReferenceEnvironment, ReferenceLight, ReferenceLighting, ReferenceObject, ReferenceProjection,
+    ReferenceScene, Shading, math,
 };
+use rastty_core::environment::studio;
+use rastty_core::math::Vec3;
 use rastty_scene::model::TextureImage;
 use rastty_scene::scene_file::open;
 use rastty_scene::scene_render::{CameraOptions, PlanOptions, PreparedScene};
@@ -26,7 +29,13 @@ pub struct AccuracyScene {
 /// # Errors
 /// A message when the built-in model cannot be loaded or its reference scene built.
 pub fn all(width: u32, height: u32) -> Result<Vec<AccuracyScene>, String> {
-    Ok(vec![floor(width, height), model(width, height)?, slivers(width, height), far_surfaces(width, height)])
+    Ok(vec![
+        floor(width, height),
+        model(width, height)?,
+        slivers(width, height),
+        far_surfaces(width, height),
+        spheres(width, height),
+    ])
 }
 
 fn perspective(eye: [f64; 3], target: [f64; 3], fovy_degrees: f64, (w, h): (u32, u32), near: f64, far: f64) -> Camera {
@@ -162,4 +171,63 @@ fn far_surfaces(w: u32, h: u32) -> AccuracyScene {
         ReferenceLighting { ambient: [1.0; 3], lights: vec![ReferenceLight::directional([0.0, 0.0, 1.0], [0.0; 3])] };
     scene.objects = vec![back, front];
     AccuracyScene { name: "far surfaces", purpose: "two surfaces 500 units away and 0.5 apart: depth precision", scene }
+}
+
+/// A sphere of radius 1 around the origin: `rings` rows of `2 rings` quads, normals along the radius.
+fn sphere(rings: u32) -> ReferenceObject {
+    let (rows, columns) = (rings, 2 * rings);
+    let mut positions = Vec::new();
+    for i in 0..=rows {
+        let polar = std::f64::consts::PI * f64::from(i) / f64::from(rows);
+        for j in 0..=columns {
+            let azimuth = std::f64::consts::TAU * f64::from(j) / f64::from(columns);
+            positions.push([polar.sin() * azimuth.cos(), polar.cos(), -polar.sin() * azimuth.sin()]);
+        }
+    }
+    let mut indices = Vec::new();
+    for i in 0..rows {
+        for j in 0..columns {
+            let (a, b) = (i * (columns + 1) + j, (i + 1) * (columns + 1) + j);
+            indices.extend([a, b, b + 1, a, b + 1, a + 1]);
+        }
+    }
+    let mut o = ReferenceObject::new(positions.clone(), indices);
+    o.normals = Some(positions);
+    o
+}
+
+/// The side of the studio panorama the spheres reflect: 512x256 texels, as the program makes it.
+const STUDIO_HEIGHT: u32 = 256;
+
+/// Spheres over a 5x5 grid of metallic factor (rows, 1 at the top to 0) and roughness (columns, 0 to 1), gold,
+/// lit by the built-in studio alone (as `rastty_core::environment::studio` fills a 512x256 panorama), like the
+/// Khronos sample MetalRoughSpheres: what the split-sum approximation, the irradiance's nine coefficients and the
+/// prefiltered levels cost. The reference integrates the studio's texels over the BRDF directly.
+fn spheres(w: u32, h: u32) -> AccuracyScene {
+    let mut objects = Vec::new();
+    for row in 0..5 {
+        for column in 0..5 {
+            let mut o = sphere(24);
+            o.shading = Shading::MetallicRoughness;
+            o.material.color = [1.0, 0.77, 0.34];
+            o.material.metallic = 1.0 - f64::from(row) / 4.0;
+            o.material.roughness = f64::from(column) / 4.0;
+            let centre = [(f64::from(column) - 2.0) * 1.1, (2.0 - f64::from(row)) * 1.0, 0.0];
+            o.model = math::mul(&math::translation(centre), &math::scale(0.45));
+            objects.push(o);
+        }
+    }
+    let (width, height) = (2 * STUDIO_HEIGHT, STUDIO_HEIGHT);
+    let mut texels = vec![Vec3::ZERO; (width * height) as usize];
+    studio::fill(STUDIO_HEIGHT, &mut texels).expect("a panorama's size");
+    let texels = texels.iter().map(|t| [t.x, t.y, t.z].map(f64::from)).collect();
+    let mut scene = ReferenceScene::new(w, h, perspective([0.0, 0.0, 12.0], [0.0; 3], 25.0, (w, h), 8.0, 16.0));
+    scene.background = [0.1, 0.1, 0.11];
+    scene.environment = Some(ReferenceEnvironment { width, height, texels });
+    scene.objects = objects;
+    AccuracyScene {
+        name: "spheres",
+        purpose: "a grid of metallic and roughness values in the studio environment: image-based lighting",
+        scene,
+    }
 }

@@ -1,6 +1,7 @@
 //! The quality knobs: each setting changes one of them from the default.
 
 use rastty_core::color::ShadingSpace;
+use rastty_core::environment::Prefiltering;
 use rastty_core::pipeline::{DrawState, EdgeArithmetic, Interpolation};
 use rastty_core::target::Samples;
 use rastty_core::texture::{Anisotropy, FilterMode, MipFilter};
@@ -52,10 +53,13 @@ pub struct Setting {
     pub multisample: Samples,
     /// Depth format.
     pub depth: DepthFormat,
+    /// How the environment's specular light is prefiltered (scenes with an environment).
+    pub prefiltering: Prefiltering,
 }
 
 /// rastty's defaults: 8 sub-pixel bits, fixed-point edges, perspective-correct, bilinear, trilinear mipmaps,
-/// per-pixel lighting, linear light, one sample per pixel (neither supersampled nor multisampled), `f32` depth.
+/// per-pixel lighting, linear light, one sample per pixel (neither supersampled nor multisampled), `f32` depth,
+/// the environment prefiltered as the program does ([`Prefiltering::DEFAULT`]: 256x128, 6 levels, 64 samples).
 pub const DEFAULT: Setting = Setting {
     name: "default",
     knob: "-",
@@ -69,10 +73,16 @@ pub const DEFAULT: Setting = Setting {
     supersample: 1,
     multisample: Samples::One,
     depth: DepthFormat::F32,
+    prefiltering: Prefiltering::DEFAULT,
 };
 
+/// The default prefiltering with one field changed.
+const fn prefiltered(height: u32, levels: u32, samples: u32) -> Prefiltering {
+    Prefiltering { height, levels, samples }
+}
+
 /// Every setting measured: the default, then one knob at a time.
-pub const ALL: [Setting; 19] = [
+pub const ALL: [Setting; 25] = [
     DEFAULT,
     Setting { name: "0 sub-pixel bits", knob: "sub-pixel bits", subpixel_bits: 0, ..DEFAULT },
     Setting { name: "4 sub-pixel bits", knob: "sub-pixel bits", subpixel_bits: 4, ..DEFAULT },
@@ -92,6 +102,12 @@ pub const ALL: [Setting; 19] = [
     Setting { name: "2x2 SSAA", knob: "anti-aliasing", supersample: 2, ..DEFAULT },
     Setting { name: "4x4 SSAA", knob: "anti-aliasing", supersample: 4, ..DEFAULT },
     Setting { name: "u16 depth", knob: "depth buffer", depth: DepthFormat::U16, ..DEFAULT },
+    Setting { name: "env 128x64", knob: "environment size", prefiltering: prefiltered(64, 6, 64), ..DEFAULT },
+    Setting { name: "env 512x256", knob: "environment size", prefiltering: prefiltered(256, 6, 64), ..DEFAULT },
+    Setting { name: "env 4 levels", knob: "environment levels", prefiltering: prefiltered(128, 4, 64), ..DEFAULT },
+    Setting { name: "env 10 levels", knob: "environment levels", prefiltering: prefiltered(128, 10, 64), ..DEFAULT },
+    Setting { name: "env 16 samples", knob: "prefilter samples", prefiltering: prefiltered(128, 6, 16), ..DEFAULT },
+    Setting { name: "env 256 samples", knob: "prefilter samples", prefiltering: prefiltered(128, 6, 256), ..DEFAULT },
 ];
 
 impl Setting {
