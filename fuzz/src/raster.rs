@@ -8,12 +8,17 @@
 //! arithmetic), a few vertices with normals, UVs and colours, `u16`/`u32` indices (some out of range), an optional
 //! tiny texture, a shading model, a material, lights and a wireframe style, then ([`ExtrasIn`]) which lights are
 //! point lights and which cast shadows, and which maps the tiny texture serves as (diffuse, normal, specular, glow)
-//! with tangents computed, missing or given. Every float may be anything: small values, NaN, infinities, huge, tiny
+//! with tangents computed, missing or given, and an optional environment (the studio, scaled and turned by any
+//! values). Every float may be anything: small values, NaN, infinities, huge, tiny
 //! or raw bit patterns. [`run`] draws it and panics when an invariant fails; docs/fuzzing.md lists them.
 
 use arbitrary::{Arbitrary, Result, Unstructured};
 use rastty_core::camera::{look_at, orthographic, perspective};
 use rastty_core::color::{ShadingSpace, pack_rgb888};
+use rastty_core::environment::{
+    Environment, Irradiance, Panorama, PanoramaChain, Prefiltering, SplitSum, detail_levels, fill_levels_of_detail,
+    prefilter, studio,
+};
 use rastty_core::math::BoundingSphere;
 use rastty_core::math::{Lanes, Mat4, Vec2, Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh, compute_tangents};
@@ -296,6 +301,41 @@ struct ExtrasIn {
     encoded_light: bool,
     /// Draw the frame again into four samples per pixel ([`run`]'s step 7).
     multisample: bool,
+    /// An environment: the built-in studio at 16x8 texels times a factor (any value), turned by an angle (any).
+    environment: Option<(F, F)>,
+}
+
+/// An environment's buffers: the studio at 16x8 texels times a factor, prefiltered small, and the split-sum table
+/// (made once for every run).
+struct EnvironmentBuffers {
+    specular: Vec<Vec3>,
+    irradiance: Irradiance,
+}
+
+/// Rows of the fuzzed environment's panorama and chain; levels of the chain; samples per texel.
+const ENVIRONMENT: Prefiltering = Prefiltering { height: 8, levels: 3, samples: 4 };
+
+impl EnvironmentBuffers {
+    fn new(factor: f32) -> Self {
+        let h = ENVIRONMENT.height;
+        let mut texels = vec![Vec3::ZERO; (2 * h * h) as usize];
+        studio::fill(h, &mut texels).expect("a panorama's size");
+        texels.iter_mut().for_each(|t| *t = *t * factor);
+        let panorama = Panorama::new(2 * h, h, &texels).expect("a panorama");
+        let lod_levels = detail_levels(h);
+        let mut lods = vec![Vec3::ZERO; PanoramaChain::texel_count(h, lod_levels).expect("a chain")];
+        fill_levels_of_detail(&panorama, h, &mut lods).expect("its levels");
+        let lods = PanoramaChain::new(h, lod_levels, &lods).expect("a chain");
+        let mut specular = vec![Vec3::ZERO; PanoramaChain::texel_count(h, ENVIRONMENT.levels).expect("a chain")];
+        prefilter(&lods, &ENVIRONMENT, h, &mut specular).expect("its levels");
+        Self { specular, irradiance: Irradiance::of(&lods.level(0)) }
+    }
+
+    fn environment(&self) -> Environment<'_> {
+        static SPLIT_SUM: std::sync::OnceLock<SplitSum> = std::sync::OnceLock::new();
+        let chain = PanoramaChain::new(ENVIRONMENT.height, ENVIRONMENT.levels, &self.specular).expect("a chain");
+        Environment::new(self.irradiance, chain, SPLIT_SUM.get_or_init(SplitSum::new))
+    }
 }
 
 /// One fuzz input: a scene to draw.
@@ -848,8 +888,13 @@ pub fn run(input: Input) -> Option<DrawStats> {
     let object = Object { mesh, tangents, transforms, shading, material };
     let ambient = input.ambient.get();
     let space = if input.extras.encoded_light { ShadingSpace::Encoded } else { ShadingSpace::Linear };
-    let lighting = Lighting { ambient, lights: &lights, environment: None, space };
-    let general_lighting = Lighting { ambient, lights: &general_lights, environment: None, space };
+    let environment_buffers = extras.environment.map(|(factor, _)| EnvironmentBuffers::new(factor.0));
+    let environment = environment_buffers
+        .as_ref()
+        .zip(extras.environment)
+        .map(|(buffers, (_, turn))| buffers.environment().turned(turn.0));
+    let lighting = Lighting { ambient, lights: &lights, environment: environment.as_ref(), space };
+    let general_lighting = Lighting { ambient, lights: &general_lights, environment: environment.as_ref(), space };
     let state = input.state.get();
     let style = input.wireframe.map(|(c, bias)| LineStyle { color: c.get(), depth_bias: bias.0 });
 

@@ -3,7 +3,7 @@
 
 use core::ops::Range;
 
-use super::panorama::{Panorama, PanoramaError, check_shape};
+use super::panorama::{Panorama, PanoramaError, check_shape, to_panorama};
 use crate::math::{Vec3, float};
 
 /// The fewest rows a level has: below that, the chain's levels keep this height.
@@ -73,11 +73,13 @@ impl<'a> PanoramaChain<'a> {
         let lod = float::clamp(lod, 0.0, last);
         let below = float::floor(lod);
         let fraction = lod - below;
-        let near = self.level(below as u32).sample(d);
+        // The direction's coordinates once, for both levels.
+        let (u, v) = to_panorama(d);
+        let near = self.level(below as u32).sample_at(u, v);
         if fraction == 0.0 {
             return near;
         }
-        near.lerp(self.level(below as u32 + 1).sample(d), fraction)
+        near.lerp(self.level(below as u32 + 1).sample_at(u, v), fraction)
     }
 }
 

@@ -95,6 +95,11 @@ impl<'a> Panorama<'a> {
     /// columns wrap around, rows stop at the poles.
     pub fn sample(&self, d: Vec3) -> Vec3 {
         let (u, v) = to_panorama(d);
+        self.sample_at(u, v)
+    }
+
+    /// The light at panorama coordinates `(u, v)` ([`to_panorama`]), blended as [`Self::sample`] blends it.
+    pub fn sample_at(&self, u: f32, v: f32) -> Vec3 {
         let (w, h) = (self.width, self.height);
         let x = u * w as f32 - 0.5;
         let y = float::clamp(v * h as f32 - 0.5, 0.0, (h - 1) as f32);

@@ -25,7 +25,7 @@
 //!
 //! - [`PreparedScene`]: what every frame shares (bounds, tangents, interleaved maps, object names).
 //! - [`ScenePlan`]: one frame's passes, from the scene, the camera, the frame's size and the [`PlanOptions`]
-//!   ([`EffectToggles`]: the viewer's keys `1` to `5`). A switched-off effect is not in the plan, so it costs
+//!   ([`EffectToggles`]: the viewer's keys `1` to `6`). A switched-off effect is not in the plan, so it costs
 //!   nothing. Its `Display` is the explanation, one line per pass and per draw.
 //! - [`SceneRenderer`]: runs plans, keeping shadow maps from frame to frame (they depend on the scene and the
 //!   lights, not the camera), into a whole frame or a band of its rows.
