@@ -22,6 +22,7 @@ macro_rules! outln {
 }
 
 mod render_stats;
+mod snapshot;
 mod turntable_export;
 mod viewer;
 
@@ -30,6 +31,7 @@ use std::process::ExitCode;
 use std::str::FromStr;
 
 use crate::render_stats::{FrameStats, PassCounts, SceneCounts, TurntableFrameTimes, TurntableSummary};
+use crate::snapshot::{MatchTolerance, Mode, SnapshotOptions, ViewChoice};
 use crate::turntable_export::{DEFAULT_FPS, MAX_FPS, MAX_FRAMES, Turntable, TurntableError, TurntableOutput};
 use crate::viewer::file_list::FileList;
 use crate::viewer::{ColorChoice, Files, GraphicsChoice, Loaded, Shown, ViewerExit, ViewerOptions};
@@ -64,6 +66,47 @@ enum Command {
     /// Render a model or a scene file to a PNG file (or a turntable to an animated GIF or PNG), or explain a scene's
     /// passes.
     Render(RenderArgs),
+    /// Pictures of models and scene files from fixed views into a folder, or checked against the pictures already
+    /// there (snapshot tests; docs/snapshots.md).
+    Snapshot(SnapshotArgs),
+}
+
+/// Options of `rastty snapshot`.
+#[derive(Args, Debug)]
+struct SnapshotArgs {
+    /// Models, scene files, folders of them, or names with * and ? in their last part.
+    #[arg(required = true)]
+    paths: Vec<PathBuf>,
+    /// The folder of the pictures, NAME-VIEW.png each.
+    #[arg(long, value_name = "DIR", default_value = "snapshots")]
+    out: PathBuf,
+    /// N views at equal steps around each model, 15 degrees above it (default: front, side and three-quarter from
+    /// above; a scene file's own camera, when it places one).
+    #[arg(long, value_name = "N", value_parser = ViewChoice::from_str)]
+    views: Option<ViewChoice>,
+    /// The pictures' size.
+    #[arg(long, value_name = "WxH", default_value = "320x240", value_parser = parse_size)]
+    size: (u32, u32),
+    /// Compare with the pictures in the folder instead of writing them: a differing one is written beside its
+    /// stored one as NAME-VIEW.new.png with a NAME-VIEW.diff.png, a missing one as NAME-VIEW.new.png; the exit
+    /// status is 1 when any differs, is missing or fails.
+    #[arg(long, conflicts_with = "update")]
+    check: bool,
+    /// Compare as --check, and write each differing or missing picture over the stored one (accept the change).
+    #[arg(long)]
+    update: bool,
+    /// How different a picture may be and still match: DISTANCE[:PIXELS|:PERCENT%], the largest Oklab distance of
+    /// a pixel's two colours that counts as equal and how many pixels may exceed it (default: exact, every bit).
+    #[arg(long, value_name = "DISTANCE[:PIXELS]", value_parser = MatchTolerance::from_str)]
+    tolerance: Option<MatchTolerance>,
+    /// Files drawn at once (default: one per logical CPU).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
+    jobs: Option<u32>,
+    /// Also write the results as JUnit XML, for CI systems that read it.
+    #[arg(long, value_name = "FILE")]
+    junit: Option<PathBuf>,
+    #[command(flatten)]
+    scene: SceneArgs,
 }
 
 /// Options of the interactive viewer.
@@ -398,6 +441,7 @@ fn main() -> ExitCode {
     };
     let result = match cli.command {
         Some(Command::Render(args)) => render(&args).map(|()| ExitCode::SUCCESS),
+        Some(Command::Snapshot(args)) => snapshot(&args),
         None => view(&cli.viewer),
     };
     result.unwrap_or_else(|message| {
@@ -457,6 +501,32 @@ fn render(args: &RenderArgs) -> Result<(), String> {
         out!("{}", FrameStats { scene: &scene, name: &name, image: &image });
     }
     Ok(())
+}
+
+/// `rastty snapshot PATHS...`: every file's views drawn and written, checked or updated; the table of what
+/// failed, and a failing exit status when anything did.
+fn snapshot(args: &SnapshotArgs) -> Result<ExitCode, String> {
+    let started = std::time::Instant::now();
+    let load = |path: &Path| args.scene.open(Some(path));
+    let options = SnapshotOptions {
+        folder: args.out.clone(),
+        views: args.views.unwrap_or(ViewChoice::Standard),
+        size: args.size,
+        mode: if args.update {
+            Mode::Update
+        } else if args.check {
+            Mode::Check
+        } else {
+            Mode::Write
+        },
+        tolerance: args.tolerance.unwrap_or(MatchTolerance::EXACT),
+        jobs: args.jobs.map_or_else(|| std::thread::available_parallelism().map_or(1, usize::from), |j| j as usize),
+        camera: args.scene.camera(),
+        load: &load,
+    };
+    let rows = snapshot::run(&args.paths, &options)?;
+    let passed = snapshot::report(&rows, args.junit.as_deref(), started)?;
+    Ok(if passed { ExitCode::SUCCESS } else { ExitCode::FAILURE })
 }
 
 /// Prints what each glTF object gives beyond its meshes: its animations (their channels and lengths), skins,

@@ -15,6 +15,7 @@ mod scene_cli;
 mod screen_cells;
 mod screen_encoder;
 mod screen_palette;
+mod snapshot;
 mod stl_models;
 mod turntable_export;
 mod viewer_graphics;

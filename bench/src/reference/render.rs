@@ -583,24 +583,15 @@ impl<'a> Renderer<'a> {
         if let (Some(texture), Some(uv)) = (&o.texture, uv) {
             albedo = albedo.mul_elem(V3::from_array(sample_bilinear(texture, o.wrap, self.scene.space, uv)));
         }
+        if o.shading == Shading::Unlit {
+            return (albedo.clamp01(), None, uv);
+        }
+        // Lit: the interpolated normal (the face's without normals) and the point.
+        let n = if o.normals.is_some() { interpolate(v, b, |x| x.normal).normalize_or_zero() } else { tri.face_normal };
+        let world = interpolate(v, b, |x| x.world);
         match o.shading {
-            Shading::Unlit => (albedo.clamp01(), None, uv),
-            Shading::Lit => {
-                let n = if o.normals.is_some() {
-                    interpolate(v, b, |x| x.normal).normalize_or_zero()
-                } else {
-                    tri.face_normal
-                };
-                let world = interpolate(v, b, |x| x.world);
-                (self.light(albedo, n, world, &o.material).clamp01(), Some(n), uv)
-            }
+            Shading::Unlit | Shading::Lit => (self.light(albedo, n, world, &o.material).clamp01(), Some(n), uv),
             Shading::MetallicRoughness => {
-                let n = if o.normals.is_some() {
-                    interpolate(v, b, |x| x.normal).normalize_or_zero()
-                } else {
-                    tri.face_normal
-                };
-                let world = interpolate(v, b, |x| x.world);
                 let albedo_table = self.albedos[tri.object as usize].as_ref();
                 let color = albedo_table.map_or(V3::ZERO, |table| {
                     let surface = Surface {
