@@ -1,4 +1,5 @@
-//! `rastty snapshot`: a golden set written and checked through the command itself, a changed material caught with
+//! `rastty snapshot`: the stored pictures of the example scenes (`tests/snapshots/command/`) checked through the
+//! command itself, a golden set written and checked, a changed material caught with
 //! a diff image, tolerances, JUnit, thumbnails, and bad input that fails its row and not the others.
 
 use crate::common;
@@ -179,4 +180,29 @@ fn wildcards_views_around_and_thumbnails() {
         let (code, _, stderr) = snapshot(dir.path(), &["models", bad[0], bad[1]]);
         assert_eq!(code, Some(2), "{bad:?}: {stderr}");
     }
+}
+
+#[test]
+fn the_stored_pictures_of_the_example_scenes_pass_their_check() {
+    // tests/snapshots/command/ holds `rastty snapshot` pictures of three example scenes at 96x72, each through its
+    // own camera; a copy is checked, so that a failure writes its .new and .diff pictures outside the repository.
+    let root = common::root();
+    let dir = tempfile::tempdir().unwrap();
+    let stored = root.join("tests/snapshots/command");
+    for entry in fs::read_dir(&stored).unwrap() {
+        let path = entry.unwrap().path();
+        fs::copy(&path, dir.path().join(path.file_name().unwrap())).unwrap();
+    }
+    let scenes: Vec<String> = ["spot_sun", "spot_studio", "spot_herd"]
+        .iter()
+        .map(|name| root.join(format!("assets/scenes/{name}.toml")).display().to_string())
+        .collect();
+    let out = dir.path().display().to_string();
+    let mut args = vec!["snapshot", "--size", "96x72", "--check", "--out", out.as_str()];
+    args.extend(scenes.iter().map(String::as_str));
+    let output = rastty_in(dir.path(), &args);
+    let stdout = String::from_utf8_lossy(&output.stdout);
+    assert!(output.status.success(), "{stdout}{}", String::from_utf8_lossy(&output.stderr));
+    assert!(stdout.contains("3 pictures: 3 matching"), "{stdout}");
+    assert_eq!(names(dir.path()), names(&stored), "nothing written beside the stored pictures");
 }
