@@ -1,6 +1,6 @@
 //! `rastty snapshot`: the stored pictures of the example scenes (`tests/snapshots/command/`) checked through the
-//! command itself, a golden set written and checked, a changed material caught with
-//! a diff image, tolerances, JUnit, thumbnails, and bad input that fails its row and not the others.
+//! command itself; a golden set written and checked, a changed material caught with a diff image, tolerances,
+//! JUnit, thumbnails; and bad input that fails its row and not the others.
 
 use crate::common;
 
