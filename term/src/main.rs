@@ -81,7 +81,8 @@ struct SnapshotArgs {
     #[arg(long, value_name = "DIR", default_value = "snapshots")]
     out: PathBuf,
     /// N views at equal steps around each model, 15 degrees above it (default: front, side and three-quarter from
-    /// above; a scene file's own camera, when it places one).
+    /// above; a scene file's own camera, when it places one). The views set --yaw and --pitch; the other camera
+    /// options apply to each.
     #[arg(long, value_name = "N", value_parser = ViewChoice::from_str)]
     views: Option<ViewChoice>,
     /// The pictures' size.
