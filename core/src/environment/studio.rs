@@ -75,3 +75,24 @@ pub fn fill(height: u32, out: &mut [Vec3]) -> Result<(), PanoramaError> {
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::environment::{Irradiance, Panorama};
+
+    extern crate std;
+    use std::vec;
+
+    #[test]
+    fn a_white_surface_facing_the_key_light_reflects_about_one() {
+        let mut texels = vec![Vec3::ZERO; 128 * 64];
+        fill(64, &mut texels).unwrap();
+        let irradiance = Irradiance::of(&Panorama::new(128, 64, &texels).unwrap());
+        let key = boxes()[0].centre;
+        let facing = irradiance.at(key).x;
+        assert!((0.8..=1.2).contains(&facing), "{facing}");
+        // Lit from every side: less facing away, least facing the floor.
+        assert!(irradiance.at(-key).x < facing && irradiance.at(-Vec3::Y).x < irradiance.at(-key).x);
+    }
+}

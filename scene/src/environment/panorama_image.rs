@@ -11,8 +11,10 @@ use rastty_core::math::Vec3;
 use crate::input_file::read_input_file;
 use crate::model::{LoadError, LoadErrorKind};
 
-/// The widest environment image accepted: 8192x4096 texels, 400 MB of linear light once decoded.
-pub const MAX_PANORAMA_WIDTH: u32 = 8192;
+/// The widest environment image accepted: 4096x2048 texels, 100 MB of linear light once decoded (held twice while
+/// it is converted). The program averages it down to 256x128 texels (the default prefiltering), so a larger image
+/// would add memory and time and nothing a picture shows.
+pub const MAX_PANORAMA_WIDTH: u32 = 4096;
 
 /// The brightest light an environment texel keeps (the largest finite half-precision float, what `.hdr` files
 /// are usually made for): brighter values are lowered to it, so that sums over the panorama stay finite.

@@ -18,8 +18,8 @@ pub struct Picture {
 }
 
 /// How different two pictures may be and still match: a pixel differs when its colours are more than `distance`
-/// apart in Oklab (Euclidean, lightness from 0 to 1: 0.02 is about the least difference people see between
-/// colours side by side), and at most `pixels` pixels may differ. Exact ([`MatchTolerance::EXACT`]) by default: any
+/// apart in Oklab (Euclidean, lightness from 0 to 1: 0.02 is the just-noticeable difference CSS Color 4 takes for
+/// this distance), and at most `pixels` pixels may differ. Exact ([`MatchTolerance::EXACT`]) by default: any
 /// change of any channel differs.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MatchTolerance {
