@@ -21,6 +21,7 @@ macro_rules! outln {
     }};
 }
 
+mod file_list;
 mod render_stats;
 mod snapshot;
 mod turntable_export;
@@ -30,10 +31,10 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::str::FromStr;
 
+use crate::file_list::FileList;
 use crate::render_stats::{FrameStats, PassCounts, SceneCounts, TurntableFrameTimes, TurntableSummary};
 use crate::snapshot::{MatchTolerance, Mode, SnapshotOptions, ViewChoice};
 use crate::turntable_export::{DEFAULT_FPS, MAX_FPS, MAX_FRAMES, Turntable, TurntableError, TurntableOutput};
-use crate::viewer::file_list::FileList;
 use crate::viewer::{ColorChoice, Files, GraphicsChoice, Loaded, Shown, ViewerExit, ViewerOptions};
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 use rastty::graphics::GraphicsProtocol;

@@ -26,7 +26,7 @@ use rastty_scene::escaped::{Escaped, path_text};
 use rastty_scene::png_file::write_png;
 use rastty_scene::scene_render::{CameraOptions, PlanOptions, PreparedScene, SceneRenderer, render_scene_image_with};
 
-use crate::viewer::file_list::FileList;
+use crate::file_list::FileList;
 
 /// What to do with the pictures drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -12,7 +12,6 @@
 
 mod capture;
 mod controls;
-pub mod file_list;
 mod file_watch;
 mod frame_writer;
 mod graphics_probe;

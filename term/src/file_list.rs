@@ -1,5 +1,5 @@
-//! The files the viewer steps through (`rastty a.glb b.stl c.obj`, or a folder): the ones named, each folder
-//! replaced by the models and scene files in it, sorted by name.
+//! The files a command is given (`rastty a.glb b.stl c.obj`, or a folder): the ones named, each folder replaced by
+//! the models and scene files in it, sorted by name. The viewer steps through them; `rastty snapshot` draws them.
 
 use std::fs;
 use std::io;
