@@ -16,8 +16,7 @@ use arbitrary::{Arbitrary, Result, Unstructured};
 use rastty_core::camera::{look_at, orthographic, perspective};
 use rastty_core::color::{ShadingSpace, pack_rgb888};
 use rastty_core::environment::{
-    Environment, Irradiance, Panorama, PanoramaChain, Prefiltering, SplitSum, detail_levels, fill_levels_of_detail,
-    prefilter, studio,
+    Environment, Irradiance, Panorama, PanoramaChain, Prefiltering, SplitSum, prepare, studio,
 };
 use rastty_core::math::BoundingSphere;
 use rastty_core::math::{Lanes, Mat4, Vec2, Vec3, Vec4};
@@ -322,13 +321,10 @@ impl EnvironmentBuffers {
         studio::fill(h, &mut texels).expect("a panorama's size");
         texels.iter_mut().for_each(|t| *t = *t * factor);
         let panorama = Panorama::new(2 * h, h, &texels).expect("a panorama");
-        let lod_levels = detail_levels(h);
-        let mut lods = vec![Vec3::ZERO; PanoramaChain::texel_count(h, lod_levels).expect("a chain")];
-        fill_levels_of_detail(&panorama, h, &mut lods).expect("its levels");
-        let lods = PanoramaChain::new(h, lod_levels, &lods).expect("a chain");
-        let mut specular = vec![Vec3::ZERO; PanoramaChain::texel_count(h, ENVIRONMENT.levels).expect("a chain")];
-        prefilter(&lods, &ENVIRONMENT, h, &mut specular).expect("its levels");
-        Self { specular, irradiance: Irradiance::of(&lods.level(0)) }
+        let (lods, specular) = ENVIRONMENT.texel_counts(h).expect("the chains' sizes");
+        let (mut lods, mut specular) = (vec![Vec3::ZERO; lods], vec![Vec3::ZERO; specular]);
+        let irradiance = prepare(&panorama, &ENVIRONMENT, &mut lods, &mut specular).expect("its chains");
+        Self { specular, irradiance }
     }
 
     fn environment(&self) -> Environment<'_> {

@@ -36,8 +36,7 @@ pub struct ReferenceEnvironment {
 impl ReferenceEnvironment {
     /// The light from the unit direction `d`.
     pub(crate) fn radiance(&self, d: V3) -> V3 {
-        let u = 0.5 + d.x.atan2(-d.z) / TAU;
-        let v = d.y.clamp(-1.0, 1.0).acos() / PI;
+        let (u, v) = panorama_coordinates(d);
         let (w, h) = (self.width as usize, self.height as usize);
         let x = u * w as f64 - 0.5;
         let y = (v * h as f64 - 0.5).clamp(0.0, (h - 1) as f64);
@@ -111,14 +110,19 @@ impl EnvironmentSampler {
 
     /// The density of [`Self::direction`]'s directions at the unit direction `d`, per steradian.
     pub fn density(&self, d: V3) -> f64 {
-        let u = 0.5 + d.x.atan2(-d.z) / TAU;
-        let v = d.y.clamp(-1.0, 1.0).acos() / PI;
+        let (u, v) = panorama_coordinates(d);
         let x = ((u * self.width as f64) as usize).min(self.width - 1);
         let y = ((v * self.height as f64) as usize).min(self.height - 1);
         let polar = |row: usize| PI * row as f64 / self.height as f64;
         let angle = TAU / self.width as f64 * (polar(y).cos() - polar(y + 1).cos());
         self.shares[y * self.width + x] / angle
     }
+}
+
+/// The panorama coordinates `(u, v)` of the unit direction `d`, as the core's `environment::panorama::to_panorama`
+/// gives them.
+fn panorama_coordinates(d: V3) -> (f64, f64) {
+    (0.5 + d.x.atan2(-d.z) / TAU, d.y.clamp(-1.0, 1.0).acos() / PI)
 }
 
 /// The single-scattering directional albedo of a white metal of one roughness, over `n . v`, and its
@@ -394,8 +398,7 @@ mod tests {
         let bright = (0..10_000)
             .filter(|_| {
                 let d = sampler.direction(random(), random(), random());
-                let u = 0.5 + d.x.atan2(-d.z) / TAU;
-                let v = d.y.acos() / PI;
+                let (u, v) = panorama_coordinates(d);
                 ((u * 16.0) as usize, (v * 8.0) as usize) == (5, 3)
             })
             .count();

@@ -125,21 +125,26 @@ pub fn reduce(source: &Panorama<'_>, height: u32, out: &mut [Vec3]) -> Result<()
     }
     let (sw, sh) = (source.width(), source.height());
     let sine = |sy: u32| float::sin(core::f32::consts::PI * (sy as f32 + 0.5) / sh as f32);
-    for y in 0..height {
+    for (y, row_out) in (0..height).zip(out.chunks_exact_mut(width as usize)) {
         let rows = first_centre_in(y, height, sh)..first_centre_in(y + 1, height, sh);
-        let weight: f32 = rows.clone().map(sine).sum();
-        for x in 0..width {
-            let columns = first_centre_in(x, width, sw)..first_centre_in(x + 1, width, sw);
-            let mut sum = Vec3::ZERO;
-            for sy in rows.clone() {
+        // Each source row's weighted sums into the row of `out`, row by row in order (each row's weight worked out
+        // once), then the means.
+        row_out.fill(Vec3::ZERO);
+        let mut weight = 0.0;
+        for sy in rows {
+            let w = sine(sy);
+            weight += w;
+            for (x, sum) in (0..width).zip(row_out.iter_mut()) {
                 let mut row = Vec3::ZERO;
-                for sx in columns.clone() {
+                for sx in first_centre_in(x, width, sw)..first_centre_in(x + 1, width, sw) {
                     row += source.texel(sx, sy);
                 }
-                sum += row * sine(sy);
+                *sum += row * w;
             }
-            let total = weight * columns.len() as f32;
-            out[(y * width + x) as usize] = if total > 0.0 { sum * (1.0 / total) } else { Vec3::ZERO };
+        }
+        for (x, texel) in (0..width).zip(row_out.iter_mut()) {
+            let total = weight * (first_centre_in(x + 1, width, sw) - first_centre_in(x, width, sw)) as f32;
+            *texel = if total > 0.0 { *texel * (1.0 / total) } else { Vec3::ZERO };
         }
     }
     Ok(())

@@ -24,7 +24,7 @@ pub mod studio;
 pub use chain::{PanoramaChain, reduce};
 pub use irradiance::Irradiance;
 pub use panorama::{Panorama, PanoramaError};
-pub use prefilter::{Prefiltering, detail_levels, fill_levels_of_detail, prefilter, prefilter_rows};
+pub use prefilter::{Prefiltering, detail_levels, fill_levels_of_detail, prefilter, prefilter_rows, prepare};
 pub use split_sum::SplitSum;
 
 use crate::math::{Vec3, float};

@@ -7,6 +7,7 @@
 use core::f32::consts::PI;
 use core::ops::Range;
 
+use super::Irradiance;
 use super::chain::{MOST_LEVELS, PanoramaChain, level_height, level_range, reduce};
 use super::panorama::{Panorama, PanoramaError, check_shape, texel_direction};
 use super::sampling::{ggx_half_vector, hammersley, reflect};
@@ -102,6 +103,38 @@ impl Prefiltering {
     pub fn height_for(&self, source_height: u32) -> u32 {
         self.height.min(source_height)
     }
+
+    /// The texels [`prepare`] fills for a source of `source_height` rows: its levels of detail, its specular chain.
+    ///
+    /// # Errors
+    /// As [`PanoramaChain::texel_count`].
+    pub fn texel_counts(&self, source_height: u32) -> Result<(usize, usize), PanoramaError> {
+        let height = self.height_for(source_height);
+        Ok((
+            PanoramaChain::texel_count(height, detail_levels(height))?,
+            PanoramaChain::texel_count(height, self.levels)?,
+        ))
+    }
+}
+
+/// Makes `source` ready on this thread as `prefiltering` says: its levels of detail into `lods`
+/// ([`fill_levels_of_detail`]), its specular chain into `specular` ([`prefilter`]), each sized by
+/// [`Prefiltering::texel_counts`]; returns its irradiance. A caller with threads fills the chain's rows itself
+/// ([`prefilter_rows`]).
+///
+/// # Errors
+/// As [`fill_levels_of_detail`] and [`prefilter`].
+pub fn prepare(
+    source: &Panorama<'_>,
+    prefiltering: &Prefiltering,
+    lods: &mut [Vec3],
+    specular: &mut [Vec3],
+) -> Result<Irradiance, PanoramaError> {
+    let height = prefiltering.height_for(source.height());
+    fill_levels_of_detail(source, height, lods)?;
+    let lods = PanoramaChain::new(height, detail_levels(height), lods)?;
+    prefilter(&lods, prefiltering, height, specular)?;
+    Ok(Irradiance::of(&lods.level(0)))
 }
 
 impl Default for Prefiltering {

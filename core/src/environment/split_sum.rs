@@ -2,7 +2,7 @@
 //! a scale of the reflectance at normal incidence and a bias, over `n . v` and roughness (Karis, "Real Shading in
 //! Unreal Engine 4", SIGGRAPH 2013, eq. 8), with the height-correlated Smith visibility term the BRDF uses.
 
-use super::sampling::hammersley;
+use super::sampling::{ggx_half_vector, hammersley};
 use crate::math::{Vec3, float};
 use crate::shading::brdf::{MIN_N_DOT_V, visibility};
 
@@ -62,16 +62,11 @@ impl Default for SplitSum {
 /// sampling density (Karis 2013, the `IntegrateBRDF` listing).
 fn integrate(n_dot_v: f32, roughness: f32) -> [f32; 2] {
     let alpha = roughness * roughness;
-    let a2 = alpha * alpha;
     let v = Vec3::new(float::sqrt(1.0 - n_dot_v * n_dot_v), 0.0, n_dot_v);
     let (mut a, mut b) = (0.0, 0.0);
     for i in 0..SAMPLES {
         let (s, t) = hammersley(i, SAMPLES);
-        // A GGX microfacet normal around +z (the normal), as `sampling::ggx_half_vector` draws it.
-        let cos_theta = float::sqrt((1.0 - t) / (1.0 + (a2 - 1.0) * t));
-        let sin_theta = float::sqrt(float::max(1.0 - cos_theta * cos_theta, 0.0));
-        let phi = core::f32::consts::TAU * s;
-        let h = Vec3::new(sin_theta * float::cos(phi), sin_theta * float::sin(phi), cos_theta);
+        let h = ggx_half_vector(s, t, alpha, Vec3::Z);
         let v_dot_h = v.dot(h);
         let n_dot_l = 2.0 * v_dot_h * h.z - v.z;
         if n_dot_l > 0.0 && h.z > 0.0 {

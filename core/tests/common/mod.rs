@@ -2,9 +2,7 @@
 #![allow(dead_code)]
 
 use rastty_core::environment::panorama::Panorama;
-use rastty_core::environment::{
-    Environment, Irradiance, PanoramaChain, Prefiltering, SplitSum, detail_levels, fill_levels_of_detail, prefilter,
-};
+use rastty_core::environment::{Environment, Irradiance, PanoramaChain, Prefiltering, SplitSum, prepare};
 use rastty_core::math::{Lanes, Vec3, Vec4};
 use rastty_core::mesh::{Attributes, Indices, Mesh};
 use rastty_core::pipeline::{DrawState, DrawStats, Fragment, Shader, Slopes, draw};
@@ -576,13 +574,9 @@ pub struct Prepared {
 impl Prepared {
     pub fn new(panorama: &Panorama<'_>, prefiltering: Prefiltering) -> Self {
         let height = prefiltering.height_for(panorama.height());
-        let lod_levels = detail_levels(height);
-        let mut lods = vec![Vec3::ZERO; PanoramaChain::texel_count(height, lod_levels).unwrap()];
-        fill_levels_of_detail(panorama, height, &mut lods).unwrap();
-        let lods = PanoramaChain::new(height, lod_levels, &lods).unwrap();
-        let mut specular = vec![Vec3::ZERO; PanoramaChain::texel_count(height, prefiltering.levels).unwrap()];
-        prefilter(&lods, &prefiltering, height, &mut specular).unwrap();
-        let irradiance = Irradiance::of(&lods.level(0));
+        let (lods, specular) = prefiltering.texel_counts(panorama.height()).unwrap();
+        let (mut lods, mut specular) = (vec![Vec3::ZERO; lods], vec![Vec3::ZERO; specular]);
+        let irradiance = prepare(panorama, &prefiltering, &mut lods, &mut specular).unwrap();
         Self { specular, irradiance, height, levels: prefiltering.levels, split_sum: SplitSum::new() }
     }
 

@@ -6,8 +6,7 @@ use std::time::{Duration, Instant};
 use rastty_core::camera::{CameraError, look_at, orthographic, perspective};
 use rastty_core::color::{ShadingSpace, linear_to_srgb};
 use rastty_core::environment::{
-    Environment, Irradiance, Panorama, PanoramaChain, PanoramaError, Prefiltering, SplitSum, detail_levels,
-    fill_levels_of_detail, prefilter,
+    Environment, Irradiance, Panorama, PanoramaChain, PanoramaError, Prefiltering, SplitSum, prepare,
 };
 use rastty_core::math::{Mat4, Vec2, Vec3, Vec4};
 use rastty_core::mesh::{Indices, Mesh, MeshError};
@@ -92,14 +91,10 @@ impl PreparedEnvironment {
     /// `source` made ready as `prefiltering` says, on this thread, timed.
     fn new(source: &Panorama<'_>, prefiltering: Prefiltering) -> Result<Self, PanoramaError> {
         let start = Instant::now();
+        let (lods, specular) = prefiltering.texel_counts(source.height())?;
+        let (mut lods, mut specular) = (vec![Vec3::ZERO; lods], vec![Vec3::ZERO; specular]);
+        let irradiance = prepare(source, &prefiltering, &mut lods, &mut specular)?;
         let height = prefiltering.height_for(source.height());
-        let lod_levels = detail_levels(height);
-        let mut lods = vec![Vec3::ZERO; PanoramaChain::texel_count(height, lod_levels)?];
-        fill_levels_of_detail(source, height, &mut lods)?;
-        let lods = PanoramaChain::new(height, lod_levels, &lods)?;
-        let mut specular = vec![Vec3::ZERO; PanoramaChain::texel_count(height, prefiltering.levels)?];
-        prefilter(&lods, &prefiltering, height, &mut specular)?;
-        let irradiance = Irradiance::of(&lods.level(0));
         Ok(Self { prefiltering, time: start.elapsed(), height, specular, irradiance })
     }
 
